@@ -1,0 +1,48 @@
+"""The isocsg error hierarchy.
+
+Every error raised on purpose by isocsg derives from :class:`IsocsgError`.
+Each subclass also inherits the builtin exception it refines, so callers may
+catch either ``isocsg.InvalidGeometryError`` or plain ``ValueError``.
+
+Messages always name the offending field, say what was expected and what was
+received, e.g. ``Sphere.radius must be > 0, got -1.0``.
+"""
+
+from __future__ import annotations
+
+__all__ = [
+    "IsocsgError",
+    "InvalidGeometryError",
+    "InvalidLightError",
+    "InvalidParameterError",
+    "SceneFileError",
+    "MissingDependencyError",
+]
+
+
+class IsocsgError(Exception):
+    """Base class of every error that isocsg raises deliberately."""
+
+
+class InvalidGeometryError(IsocsgError, ValueError):
+    """A primitive, CSG node or occluder is malformed (NaN, zero size, ...)."""
+
+
+class InvalidLightError(IsocsgError, ValueError):
+    """A light or material is malformed (non-convex source, bad radiance, ...)."""
+
+
+class InvalidParameterError(IsocsgError, ValueError):
+    """A rendering or evaluation parameter is out of range (contours, camera, ...)."""
+
+
+class SceneFileError(IsocsgError, ValueError):
+    """A scene file cannot be read or does not follow the documented structure.
+
+    The message starts with the file name (when known) and the dotted path of
+    the offending field, e.g. ``scene.toml: objects[0].shape.sphere.radius: ...``.
+    """
+
+
+class MissingDependencyError(IsocsgError, ImportError):
+    """An optional dependency needed by the called function is not installed."""

@@ -1,0 +1,790 @@
+"""Analytic CSG primitives: sphere, generalised truncus, box and convex polyhedron.
+
+Every primitive is an immutable, validated value (a frozen dataclass holding
+tuples) that describes a closed convex solid. Arrays are exposed through
+properties. All primitives share the :class:`Solid` interface:
+
+- ``contains(points)``: vectorised inside test (the boundary counts as inside),
+- ``bounds``: ``(2, 3)`` array of the axis-aligned bounding box,
+- ``intersect_rays(origins, directions)``: entry and exit parameters and
+  outward normals of rays against the solid (``inf`` where missed),
+- ``to_trimesh(resolution)`` and ``to_polyhedron(resolution)``: tessellations,
+- ``to_dict()``: a JSON/TOML-ready mapping with a ``kind`` tag.
+
+The ``|``, ``&`` and ``-`` operators build CSG trees (see :mod:`isocsg.csg`).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from typing import TYPE_CHECKING, Any
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from .._validation import Vec3, nonzero_vector3, points_array, scalar, vector3
+from ..errors import InvalidGeometryError
+
+if TYPE_CHECKING:  # pragma: no cover
+    import trimesh
+
+__all__ = [
+    "Solid",
+    "Primitive",
+    "Sphere",
+    "Truncus",
+    "Cylinder",
+    "Cone",
+    "Box",
+    "ConvexPolyhedron",
+    "RayHits",
+]
+
+DEFAULT_RESOLUTION = 64
+
+
+@dataclass(frozen=True, slots=True)
+class RayHits:
+    """Where rays enter and leave a convex solid.
+
+    Attributes
+    ----------
+    t_in, t_out : ndarray, shape (n,)
+        Ray parameters of entry and exit (``inf`` for rays that miss;
+        ``t_in`` may be negative when the origin is inside).
+    n_in, n_out : ndarray, shape (n, 3)
+        Outward unit normals of the solid at entry and exit (zero on misses).
+    """
+
+    t_in: NDArray[np.float64]
+    t_out: NDArray[np.float64]
+    n_in: NDArray[np.float64]
+    n_out: NDArray[np.float64]
+
+    @property
+    def hit(self) -> NDArray[np.bool_]:
+        """Rays whose line meets the solid (``t_in <= t_out``, finite)."""
+        return np.isfinite(self.t_in) & (self.t_in <= self.t_out)
+
+
+class Solid:
+    """Base of every solid: primitives and CSG trees.
+
+    Provides the Boolean operators; subclasses implement ``contains``,
+    ``bounds`` and ``to_trimesh``.
+    """
+
+    __slots__ = ()
+
+    def __or__(self, other: Solid) -> Solid:
+        from ..csg import union
+
+        return union(self, other)
+
+    def __and__(self, other: Solid) -> Solid:
+        from ..csg import intersection
+
+        return intersection(self, other)
+
+    def __sub__(self, other: Solid) -> Solid:
+        from ..csg import difference
+
+        return difference(self, other)
+
+    # Subclasses override these.
+    def contains(self, points: ArrayLike) -> NDArray[np.bool_]:  # pragma: no cover
+        raise NotImplementedError
+
+    @property
+    def bounds(self) -> NDArray[np.float64]:  # pragma: no cover
+        raise NotImplementedError
+
+
+class Primitive(Solid):
+    """Base of the convex analytic primitives."""
+
+    __slots__ = ()
+    kind: str = "primitive"
+
+    def _points(self, points: ArrayLike) -> NDArray[np.float64]:
+        return points_array(f"{type(self).__name__}.contains(points)", points)
+
+    def intersect_rays(self, origins: ArrayLike, directions: ArrayLike) -> RayHits:  # pragma: no cover
+        """Intersect rays with the solid; see :class:`RayHits`."""
+        raise NotImplementedError
+
+    def to_trimesh(self, resolution: int = DEFAULT_RESOLUTION) -> "trimesh.Trimesh":
+        """A closed triangle mesh of the solid (vertices on the true surface)."""
+        import trimesh
+
+        poly = self.to_polyhedron(resolution)
+        return trimesh.Trimesh(poly.hull_vertices, poly.triangles, process=False)
+
+    def to_polyhedron(self, resolution: int = DEFAULT_RESOLUTION) -> "ConvexPolyhedron":  # pragma: no cover
+        """A :class:`ConvexPolyhedron` inscribed in the solid."""
+        raise NotImplementedError
+
+    def to_dict(self) -> dict[str, Any]:  # pragma: no cover
+        """A plain mapping ``{kind: {field: value}}`` for scene files."""
+        raise NotImplementedError
+
+
+def _as_rays(origins: ArrayLike, directions: ArrayLike) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+    o = points_array("origins", origins)
+    d = points_array("directions", directions)
+    if o.shape[0] == 1 and d.shape[0] > 1:
+        o = np.broadcast_to(o, d.shape)
+    if o.shape != d.shape:
+        raise InvalidGeometryError(f"origins and directions must have the same shape, got {o.shape} and {d.shape}")
+    return o, d
+
+
+def _unit(v: Vec3) -> NDArray[np.float64]:
+    a = np.asarray(v, dtype=np.float64)
+    return a / np.linalg.norm(a)
+
+
+def _perpendicular_frame(axis: NDArray[np.float64]) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+    """Two unit vectors that complete ``axis`` (unit) to a right-handed frame."""
+    helper = np.array([1.0, 0.0, 0.0]) if abs(axis[0]) < 0.9 else np.array([0.0, 1.0, 0.0])
+    u = np.cross(axis, helper)
+    u /= np.linalg.norm(u)
+    return u, np.cross(axis, u)
+
+
+# ----------------------------------------------------------------------------- sphere
+
+
+@dataclass(frozen=True, slots=True)
+class Sphere(Primitive):
+    """A solid ball.
+
+    Parameters
+    ----------
+    center : array_like, shape (3,)
+        Centre in metres.
+    radius : float
+        Radius, > 0.
+
+    Raises
+    ------
+    InvalidGeometryError
+        If the centre is not 3 finite numbers or the radius is not > 0.
+
+    Examples
+    --------
+    >>> s = Sphere((0, 0, 0), 1.0)
+    >>> s.contains([[0, 0, 0.5], [0, 0, 2]]).tolist()
+    [True, False]
+    """
+
+    center: Vec3
+    radius: float
+    kind = "sphere"
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "center", vector3("Sphere.center", self.center))
+        object.__setattr__(self, "radius", scalar("Sphere.radius", self.radius, low=0.0))
+
+    @property
+    def center_array(self) -> NDArray[np.float64]:
+        """The centre as a float64 array."""
+        return np.asarray(self.center, dtype=np.float64)
+
+    def contains(self, points: ArrayLike) -> NDArray[np.bool_]:
+        """Boolean mask of the points inside or on the sphere."""
+        p = self._points(points)
+        return np.einsum("ij,ij->i", p - self.center_array, p - self.center_array) <= self.radius**2 * (1 + 1e-12)
+
+    @property
+    def bounds(self) -> NDArray[np.float64]:
+        """Axis-aligned bounds, shape (2, 3)."""
+        c = self.center_array
+        return np.stack([c - self.radius, c + self.radius])
+
+    @property
+    def volume(self) -> float:
+        """Exact volume, 4/3 pi r^3."""
+        return 4.0 / 3.0 * math.pi * self.radius**3
+
+    def normals_at(self, points: ArrayLike) -> NDArray[np.float64]:
+        """Outward unit normals at surface points."""
+        p = self._points(points) - self.center_array
+        return p / np.linalg.norm(p, axis=1, keepdims=True)
+
+    def intersect_rays(self, origins: ArrayLike, directions: ArrayLike) -> RayHits:
+        """Analytic ray-sphere intersection; see :class:`RayHits`."""
+        o, d = _as_rays(origins, directions)
+        oc = o - self.center_array
+        a = np.einsum("ij,ij->i", d, d)
+        b = np.einsum("ij,ij->i", oc, d)
+        c = np.einsum("ij,ij->i", oc, oc) - self.radius**2
+        disc = b * b - a * c
+        ok = (disc >= 0) & (a > 0)
+        sq = np.sqrt(np.where(ok, disc, 0.0))
+        with np.errstate(divide="ignore", invalid="ignore"):
+            t0 = np.where(ok, (-b - sq) / a, np.inf)
+            t1 = np.where(ok, (-b + sq) / a, -np.inf)
+        n0 = np.where(ok[:, None], (oc + np.nan_to_num(t0)[:, None] * d) / self.radius, 0.0)
+        n1 = np.where(ok[:, None], (oc + np.nan_to_num(t1)[:, None] * d) / self.radius, 0.0)
+        return RayHits(t0, t1, n0, n1)
+
+    def to_polyhedron(self, resolution: int = DEFAULT_RESOLUTION) -> "ConvexPolyhedron":
+        """Inscribed UV-sphere polyhedron with ``resolution`` segments around."""
+        m = max(int(resolution), 4)
+        rings = max(m // 2, 2)
+        theta = np.linspace(0, math.pi, rings + 1)[1:-1]
+        phi = np.linspace(0, 2 * math.pi, m, endpoint=False)
+        st, ct = np.sin(theta)[:, None], np.cos(theta)[:, None]
+        ring = np.stack(
+            [st * np.cos(phi)[None, :], st * np.sin(phi)[None, :], np.broadcast_to(ct, (rings - 1, m))], axis=-1
+        ).reshape(-1, 3)
+        pts = np.vstack([[0, 0, 1.0], ring, [0, 0, -1.0]]) * self.radius + self.center_array
+        return ConvexPolyhedron(pts)
+
+    def to_dict(self) -> dict[str, Any]:
+        """``{"sphere": {"center": [...], "radius": r}}``."""
+        return {"sphere": {"center": list(self.center), "radius": self.radius}}
+
+
+# ----------------------------------------------------------------------------- truncus
+
+
+@dataclass(frozen=True, slots=True)
+class Truncus(Primitive):
+    """The generalised truncus of the isoluminance paper: a cylinder, cone or frustum.
+
+    End E1 of radius ``r1`` is centred at ``center + axis / 2`` and end E2 of
+    radius ``r2`` at ``center - axis / 2``; the length of ``axis`` is the
+    height. ``r1 == r2`` gives a cylinder (a disc when short, a rod when long
+    and thin), one radius 0 a cone, anything else a frustum.
+
+    Parameters
+    ----------
+    center : array_like, shape (3,)
+    axis : array_like, shape (3,)
+        Non-zero; from the E2 end to the E1 end.
+    r1, r2 : float
+        Radii of the ends, >= 0 and not both 0.
+
+    Raises
+    ------
+    InvalidGeometryError
+        On non-finite values, a zero axis, a negative radius, or both radii 0.
+
+    Examples
+    --------
+    >>> t = Truncus((0, 0, 0), (0, 0, 2), 1.0, 0.5)
+    >>> round(t.height, 3), t.contains([[0, 0, 0.99], [0.9, 0, -0.9]]).tolist()
+    (2.0, [True, False])
+    """
+
+    center: Vec3
+    axis: Vec3
+    r1: float
+    r2: float
+    kind = "truncus"
+
+    def __post_init__(self) -> None:
+        name = type(self).__name__
+        object.__setattr__(self, "center", vector3(f"{name}.center", self.center))
+        object.__setattr__(self, "axis", nonzero_vector3(f"{name}.axis", self.axis))
+        r1 = scalar(f"{name}.r1", self.r1, low=0.0, low_inclusive=True)
+        r2 = scalar(f"{name}.r2", self.r2, low=0.0, low_inclusive=True)
+        if r1 == 0.0 and r2 == 0.0:
+            raise InvalidGeometryError(f"{name}.r1 and {name}.r2 must not both be 0")
+        object.__setattr__(self, "r1", r1)
+        object.__setattr__(self, "r2", r2)
+
+    @property
+    def height(self) -> float:
+        """Length of the axis."""
+        return float(math.hypot(*self.axis))
+
+    @property
+    def unit_axis(self) -> NDArray[np.float64]:
+        """Unit vector from E2 to E1."""
+        return _unit(self.axis)
+
+    @property
+    def center_array(self) -> NDArray[np.float64]:
+        """The centre as a float64 array."""
+        return np.asarray(self.center, dtype=np.float64)
+
+    @property
+    def end_centers(self) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+        """Centres of E1 (``center + axis/2``) and E2 (``center - axis/2``)."""
+        c, a = self.center_array, np.asarray(self.axis)
+        return c + a / 2, c - a / 2
+
+    @property
+    def slope(self) -> float:
+        """d(radius)/d(s) along the unit axis: ``(r1 - r2) / height``."""
+        return (self.r1 - self.r2) / self.height
+
+    def radius_at(self, s: ArrayLike) -> NDArray[np.float64]:
+        """Radius at signed axial coordinate ``s`` (0 at the centre, +h/2 at E1)."""
+        s = np.asarray(s, dtype=np.float64)
+        return self.r2 + self.slope * (s + self.height / 2)
+
+    @property
+    def volume(self) -> float:
+        """Exact volume, pi h (r1^2 + r1 r2 + r2^2) / 3."""
+        return math.pi * self.height * (self.r1**2 + self.r1 * self.r2 + self.r2**2) / 3.0
+
+    def _local(self, p: NDArray[np.float64]) -> tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.float64]]:
+        """Axial coordinate s, radial distance rho and radial unit vector of points."""
+        ax = self.unit_axis
+        rel = p - self.center_array
+        s = rel @ ax
+        radial = rel - s[:, None] * ax
+        rho = np.linalg.norm(radial, axis=1)
+        er = np.divide(radial, rho[:, None], out=np.zeros_like(radial), where=rho[:, None] > 0)
+        return s, rho, er
+
+    def contains(self, points: ArrayLike) -> NDArray[np.bool_]:
+        """Boolean mask of the points inside or on the truncus."""
+        p = self._points(points)
+        s, rho, _ = self._local(p)
+        h2 = self.height / 2
+        eps = 1e-12 * max(self.height, self.r1, self.r2)
+        return (np.abs(s) <= h2 + eps) & (rho <= self.radius_at(np.clip(s, -h2, h2)) + eps)
+
+    @property
+    def bounds(self) -> NDArray[np.float64]:
+        """Axis-aligned bounds, shape (2, 3) (exact for circular ends)."""
+        ax = self.unit_axis
+        ext = np.sqrt(np.clip(1 - ax**2, 0, 1))  # half-extent of a unit circle normal to ax
+        lo, hi = [], []
+        for c, r in zip(self.end_centers, (self.r1, self.r2)):
+            lo.append(c - r * ext)
+            hi.append(c + r * ext)
+        return np.stack([np.minimum(*lo), np.maximum(*hi)])
+
+    def side_normals(self, points: ArrayLike) -> NDArray[np.float64]:
+        """Exact outward unit normals of the lateral surface at ``points``."""
+        p = points_array("points", points)
+        _, _, er = self._local(p)
+        n = er - self.slope * self.unit_axis
+        return n / np.linalg.norm(n, axis=1, keepdims=True)
+
+    def intersect_rays(self, origins: ArrayLike, directions: ArrayLike) -> RayHits:
+        """Analytic ray-truncus intersection (lateral quadric and two end caps)."""
+        o, d = _as_rays(origins, directions)
+        ax = self.unit_axis
+        h2 = self.height / 2
+        k = self.slope
+        rel = o - self.center_array
+        s0, ds = rel @ ax, d @ ax
+        q0 = rel - s0[:, None] * ax  # radial parts
+        qd = d - ds[:, None] * ax
+        # lateral surface: |q0 + t qd|^2 = (r0 + k (s0 + t ds))^2 with r0 = radius at s = 0
+        r0 = self.radius_at(0.0)
+        rs0 = r0 + k * s0
+        a = np.einsum("ij,ij->i", qd, qd) - (k * ds) ** 2
+        b = np.einsum("ij,ij->i", q0, qd) - rs0 * k * ds
+        c = np.einsum("ij,ij->i", q0, q0) - rs0**2
+        n = len(o)
+        t_in = np.full(n, -np.inf)
+        t_out = np.full(n, np.inf)
+        n_in = np.zeros((n, 3))
+        n_out = np.zeros((n, 3))
+        with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+            # --- slab between the end planes
+            t_e1 = (h2 - s0) / ds
+            t_e2 = (-h2 - s0) / ds
+            par = np.abs(ds) < 1e-300
+            outside_slab = par & (np.abs(s0) > h2)
+            lo_t = np.where(par, -np.inf, np.minimum(t_e1, t_e2))
+            hi_t = np.where(par, np.inf, np.maximum(t_e1, t_e2))
+            lo_n = np.where((t_e1 < t_e2)[:, None], ax, -ax)
+            hi_n = -lo_n
+            t_in, t_out = lo_t, hi_t
+            n_in = np.where(np.isfinite(lo_t)[:, None], lo_n, 0.0)
+            n_out = np.where(np.isfinite(hi_t)[:, None], hi_n, 0.0)
+            # --- the (double) cone or cylinder: inside where c(t) = |q|^2 - r(s)^2 <= 0 and r(s) >= 0
+            disc = b * b - a * c
+            sq = np.sqrt(np.where(disc > 0, disc, 0.0))
+            ta = (-b - sq) / a
+            tb = (-b + sq) / a
+            lin = np.abs(a) < 1e-14 * np.maximum(1.0, np.abs(b))
+            # intervals where c(t) <= 0: a > 0 -> [ta, tb]; a < 0 -> outside (tb, ta) i.e. two rays
+            c_lo = np.full(n, -np.inf)
+            c_hi = np.full(n, np.inf)
+            empty = np.zeros(n, dtype=bool)
+            pos = (~lin) & (a > 0)
+            c_lo[pos], c_hi[pos] = ta[pos], tb[pos]
+            empty |= pos & (disc < 0)
+            # a < 0 (steep cone lines): the inside set is (-inf, tb] U [ta, inf); the slab picks one
+            neg = (~lin) & (a < 0)
+            # linear case: 2 b t + c <= 0
+            lin_ok = lin & (np.abs(b) > 0)
+            tl = -c / (2 * b)
+            c_hi = np.where(lin_ok & (b > 0), tl, c_hi)
+            c_lo = np.where(lin_ok & (b < 0), tl, c_lo)
+            empty |= lin & (np.abs(b) == 0) & (c > 0)
+            empty |= neg & (disc < 0) & (c > 0)
+        # for a < 0 with real roots, choose the branch on the sheet r(s) >= 0 inside the slab
+        neg_real = neg & (disc >= 0)
+        if np.any(neg_real):
+            # which of the two rays intersects the slab on the correct nappe: test midpoints
+            for idx in np.nonzero(neg_real)[0]:
+                cands = [(-np.inf, min(ta[idx], tb[idx])), (max(ta[idx], tb[idx]), np.inf)]
+                best = None
+                for lo, hi in cands:
+                    lo2, hi2 = max(lo, t_in[idx]), min(hi, t_out[idx])
+                    if lo2 <= hi2:
+                        tm = 0.5 * (lo2 + hi2) if np.isfinite(lo2 + hi2) else (lo2 if np.isfinite(lo2) else hi2)
+                        if r0 + k * (s0[idx] + tm * ds[idx]) >= 0:
+                            best = (lo, hi)
+                if best is None:
+                    empty[idx] = True
+                else:
+                    c_lo[idx], c_hi[idx] = best
+        # where the whole slab-interval is in the cone (c(t) <= 0 everywhere) c_lo/c_hi stay infinite
+        p_lo = o + np.nan_to_num(c_lo, posinf=0, neginf=0)[:, None] * d
+        p_hi = o + np.nan_to_num(c_hi, posinf=0, neginf=0)[:, None] * d
+        nl = self._side_normals_raw(p_lo)
+        nh = self._side_normals_raw(p_hi)
+        use_lo = c_lo > t_in
+        t_in = np.where(use_lo, c_lo, t_in)
+        n_in = np.where(use_lo[:, None], nl, n_in)
+        use_hi = c_hi < t_out
+        t_out = np.where(use_hi, c_hi, t_out)
+        n_out = np.where(use_hi[:, None], nh, n_out)
+        # the side on the wrong nappe of a double cone (r(s) < 0) is not part of the solid
+        mid = 0.5 * (np.clip(t_in, -1e300, 1e300) + np.clip(t_out, -1e300, 1e300))
+        smid = s0 + mid * ds
+        bad = empty | outside_slab | (t_in > t_out) | ~np.isfinite(t_in) | ~np.isfinite(t_out)
+        bad |= self.radius_at(np.clip(smid, -h2, h2)) < -1e-12
+        t_in = np.where(bad, np.inf, t_in)
+        t_out = np.where(bad, -np.inf, t_out)
+        n_in = np.where(bad[:, None], 0.0, n_in)
+        n_out = np.where(bad[:, None], 0.0, n_out)
+        return RayHits(t_in, t_out, n_in, n_out)
+
+    def _side_normals_raw(self, p: NDArray[np.float64]) -> NDArray[np.float64]:
+        _, _, er = self._local(p)
+        n = er - self.slope * self.unit_axis
+        return n / np.maximum(np.linalg.norm(n, axis=1, keepdims=True), 1e-300)
+
+    def to_polyhedron(self, resolution: int = DEFAULT_RESOLUTION) -> "ConvexPolyhedron":
+        """Inscribed polyhedron with ``resolution`` points on each end circle."""
+        m = max(int(resolution), 3)
+        u, v = _perpendicular_frame(self.unit_axis)
+        ang = np.linspace(0, 2 * math.pi, m, endpoint=False)
+        circle = np.cos(ang)[:, None] * u + np.sin(ang)[:, None] * v
+        pts = []
+        for c, r in zip(self.end_centers, (self.r1, self.r2)):
+            pts.append(c[None, :] if r == 0 else c + r * circle)
+        return ConvexPolyhedron(np.vstack(pts))
+
+    def to_dict(self) -> dict[str, Any]:
+        """``{"truncus": {"center", "axis", "r1", "r2"}}``."""
+        return {"truncus": {"center": list(self.center), "axis": list(self.axis), "r1": self.r1, "r2": self.r2}}
+
+
+class Cylinder(Truncus):
+    """A right circular cylinder: a :class:`Truncus` with ``r1 == r2 == radius``.
+
+    Examples
+    --------
+    >>> c = Cylinder((0, 0, 0), (0, 0, 2), 0.5)
+    >>> c.r1 == c.r2 == c.radius == 0.5
+    True
+    """
+
+    __slots__ = ()
+    kind = "cylinder"
+
+    def __init__(self, center: ArrayLike, axis: ArrayLike, radius: float) -> None:
+        r = scalar("Cylinder.radius", radius, low=0.0)
+        Truncus.__init__(self, center, axis, r, r)  # type: ignore[arg-type]
+
+    @property
+    def radius(self) -> float:
+        """The common radius of both ends."""
+        return self.r1
+
+    def __repr__(self) -> str:
+        return f"Cylinder(center={self.center}, axis={self.axis}, radius={self.radius})"
+
+    def to_dict(self) -> dict[str, Any]:
+        """``{"cylinder": {"center", "axis", "radius"}}``."""
+        return {"cylinder": {"center": list(self.center), "axis": list(self.axis), "radius": self.radius}}
+
+
+class Cone(Truncus):
+    """A right circular cone: base of ``radius`` at ``center + axis/2`` (E1), apex at ``center - axis/2``.
+
+    Examples
+    --------
+    >>> k = Cone((0, 0, 0), (0, 0, 1), 1.0)
+    >>> (k.r1, k.r2)
+    (1.0, 0.0)
+    """
+
+    __slots__ = ()
+    kind = "cone"
+
+    def __init__(self, center: ArrayLike, axis: ArrayLike, radius: float) -> None:
+        r = scalar("Cone.radius", radius, low=0.0)
+        Truncus.__init__(self, center, axis, r, 0.0)  # type: ignore[arg-type]
+
+    @property
+    def radius(self) -> float:
+        """Radius of the base."""
+        return self.r1
+
+    def __repr__(self) -> str:
+        return f"Cone(center={self.center}, axis={self.axis}, radius={self.radius})"
+
+    def to_dict(self) -> dict[str, Any]:
+        """``{"cone": {"center", "axis", "radius"}}``."""
+        return {"cone": {"center": list(self.center), "axis": list(self.axis), "radius": self.radius}}
+
+
+# ----------------------------------------------------------------------------- polyhedra
+
+
+def _ray_halfspaces(
+    o: NDArray[np.float64], d: NDArray[np.float64], normals: NDArray[np.float64], offsets: NDArray[np.float64]
+) -> RayHits:
+    """Clip rays against the convex solid {x : normals @ x <= offsets}."""
+    num = offsets[None, :] - o @ normals.T  # (n, k): >= 0 where the origin is inside plane k
+    den = d @ normals.T
+    with np.errstate(divide="ignore", invalid="ignore"):
+        t = num / den
+    entering = den < 0
+    leaving = den > 0
+    t_enter = np.where(entering, t, -np.inf)
+    t_leave = np.where(leaving, t, np.inf)
+    i_in = np.argmax(t_enter, axis=1)
+    i_out = np.argmin(t_leave, axis=1)
+    rows = np.arange(len(o))
+    t_in = t_enter[rows, i_in]
+    t_out = t_leave[rows, i_out]
+    parallel_out = np.any((den == 0) & (num < 0), axis=1)
+    miss = parallel_out | (t_in > t_out) | ~np.isfinite(t_in) | ~np.isfinite(t_out)
+    n_in = np.where(miss[:, None], 0.0, normals[i_in])
+    n_out = np.where(miss[:, None], 0.0, normals[i_out])
+    return RayHits(np.where(miss, np.inf, t_in), np.where(miss, -np.inf, t_out), n_in, n_out)
+
+
+def _hull(points: NDArray[np.float64], name: str) -> tuple[NDArray[np.float64], list[NDArray[np.int64]], NDArray[np.float64], NDArray[np.float64], NDArray[np.int64]]:
+    """Convex hull as merged planar faces.
+
+    Returns hull vertices, faces (vertex indices counter-clockwise seen from
+    outside), unit outward normals, plane offsets (``n . x = d``) and a
+    triangulation of the faces.
+    """
+    from scipy.spatial import ConvexHull, QhullError
+
+    scale = float(np.max(np.ptp(points, axis=0))) if len(points) else 0.0
+    if scale <= 0:
+        raise InvalidGeometryError(f"{name} are all the same point")
+    try:
+        hull = ConvexHull(points)
+    except (QhullError, ValueError):
+        raise InvalidGeometryError(f"{name} are coplanar or degenerate: their hull has no volume") from None
+    if hull.volume <= 1e-12 * scale**3:
+        raise InvalidGeometryError(f"{name} are coplanar or degenerate: their hull has no volume")
+    verts_idx = hull.vertices
+    remap = -np.ones(len(points), dtype=np.int64)
+    remap[verts_idx] = np.arange(len(verts_idx))
+    hv = points[verts_idx]
+    eq = hull.equations  # n . x + e = 0, n outward unit
+    # merge coplanar facets
+    key = np.round(np.column_stack([eq[:, :3], eq[:, 3] / scale]), 7)
+    _, group = np.unique(key, axis=0, return_inverse=True)
+    group = group.ravel()
+    faces, normals, offsets = [], [], []
+    for g in range(group.max() + 1):
+        members = np.nonzero(group == g)[0]
+        n = eq[members[0], :3]
+        idx = np.unique(remap[hull.simplices[members].ravel()])
+        pts = hv[idx]
+        c = pts.mean(axis=0)
+        u, v = _perpendicular_frame(n)
+        ang = np.arctan2((pts - c) @ v, (pts - c) @ u)
+        faces.append(idx[np.argsort(ang)])  # CCW around the outward normal
+        normals.append(n)
+        offsets.append(-eq[members[0], 3])
+    tris = []
+    for f in faces:
+        for i in range(1, len(f) - 1):
+            tris.append((f[0], f[i], f[i + 1]))
+    return hv, faces, np.array(normals), np.array(offsets), np.array(tris, dtype=np.int64)
+
+
+@dataclass(frozen=True, slots=True)
+class ConvexPolyhedron(Primitive):
+    """The convex hull of a set of points.
+
+    Parameters
+    ----------
+    vertices : array_like, shape (n, 3)
+        At least 4 points, not all coplanar. Interior points are allowed and
+        dropped from ``hull_vertices``.
+
+    Raises
+    ------
+    InvalidGeometryError
+        On fewer than 4 points, non-finite values or a flat (volume-less) hull.
+
+    Examples
+    --------
+    >>> t = ConvexPolyhedron([(0, 0, 0), (1, 0, 0), (0, 1, 0), (0, 0, 1)])
+    >>> len(t.faces), round(t.volume, 6)
+    (4, 0.166667)
+    """
+
+    vertices: tuple[Vec3, ...]
+    hull_vertices: NDArray[np.float64] = field(init=False, repr=False, compare=False, hash=False)
+    faces: tuple[NDArray[np.int64], ...] = field(init=False, repr=False, compare=False, hash=False)
+    face_normals: NDArray[np.float64] = field(init=False, repr=False, compare=False, hash=False)
+    face_offsets: NDArray[np.float64] = field(init=False, repr=False, compare=False, hash=False)
+    triangles: NDArray[np.int64] = field(init=False, repr=False, compare=False, hash=False)
+    kind = "polyhedron"
+
+    def __post_init__(self) -> None:
+        name = f"{type(self).__name__}.vertices"
+        pts = points_array(name, self.vertices, min_rows=4)
+        object.__setattr__(self, "vertices", tuple(tuple(map(float, p)) for p in pts))
+        hv, faces, normals, offsets, tris = _hull(pts, name)
+        for arr in (hv, normals, offsets, tris):
+            arr.setflags(write=False)
+        object.__setattr__(self, "hull_vertices", hv)
+        object.__setattr__(self, "faces", tuple(faces))
+        object.__setattr__(self, "face_normals", normals)
+        object.__setattr__(self, "face_offsets", offsets)
+        object.__setattr__(self, "triangles", tris)
+
+    def face_polygons(self) -> list[NDArray[np.float64]]:
+        """Each face as a (k, 3) array, counter-clockwise seen from outside."""
+        return [self.hull_vertices[f] for f in self.faces]
+
+    def contains(self, points: ArrayLike) -> NDArray[np.bool_]:
+        """Boolean mask of the points inside or on the polyhedron."""
+        p = self._points(points)
+        scale = float(np.max(np.ptp(self.hull_vertices, axis=0)))
+        return np.all(p @ self.face_normals.T <= self.face_offsets + 1e-12 * scale, axis=1)
+
+    @property
+    def bounds(self) -> NDArray[np.float64]:
+        """Axis-aligned bounds, shape (2, 3)."""
+        return np.stack([self.hull_vertices.min(axis=0), self.hull_vertices.max(axis=0)])
+
+    @property
+    def volume(self) -> float:
+        """Exact volume of the hull."""
+        v = self.hull_vertices[self.triangles]
+        return float(abs(np.einsum("ij,ij->i", v[:, 0], np.cross(v[:, 1], v[:, 2])).sum()) / 6.0)
+
+    def intersect_rays(self, origins: ArrayLike, directions: ArrayLike) -> RayHits:
+        """Exact ray-polyhedron intersection by half-space clipping."""
+        o, d = _as_rays(origins, directions)
+        return _ray_halfspaces(o, d, self.face_normals, self.face_offsets)
+
+    def to_polyhedron(self, resolution: int = DEFAULT_RESOLUTION) -> "ConvexPolyhedron":
+        """The polyhedron itself (it is already exact)."""
+        return self
+
+    def to_dict(self) -> dict[str, Any]:
+        """``{"polyhedron": {"vertices": [...]}}``."""
+        return {"polyhedron": {"vertices": [list(v) for v in self.vertices]}}
+
+
+@dataclass(frozen=True, slots=True)
+class Box(Primitive):
+    """An axis-aligned box.
+
+    Parameters
+    ----------
+    center : array_like, shape (3,)
+    size : array_like, shape (3,)
+        Edge lengths ``[sx, sy, sz]``, each > 0.
+
+    Raises
+    ------
+    InvalidGeometryError
+        On non-finite values or a size that is not > 0 in every axis.
+
+    Examples
+    --------
+    >>> b = Box((0, 0, 0), (2, 2, 2))
+    >>> b.volume, b.contains([[0.9, 0.9, 0.9], [1.1, 0, 0]]).tolist()
+    (8.0, [True, False])
+    """
+
+    center: Vec3
+    size: Vec3
+    kind = "box"
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "center", vector3("Box.center", self.center))
+        size = vector3("Box.size", self.size)
+        if min(size) <= 0:
+            raise InvalidGeometryError(f"Box.size must be > 0 in every axis, got {size}")
+        object.__setattr__(self, "size", size)
+
+    @property
+    def center_array(self) -> NDArray[np.float64]:
+        """The centre as a float64 array."""
+        return np.asarray(self.center, dtype=np.float64)
+
+    @property
+    def half_size(self) -> NDArray[np.float64]:
+        """Half edge lengths."""
+        return np.asarray(self.size, dtype=np.float64) / 2
+
+    @property
+    def corners(self) -> NDArray[np.float64]:
+        """The 8 corners, shape (8, 3)."""
+        signs = np.array([[x, y, z] for x in (-1, 1) for y in (-1, 1) for z in (-1, 1)], dtype=np.float64)
+        return self.center_array + signs * self.half_size
+
+    @property
+    def face_normals(self) -> NDArray[np.float64]:
+        """Outward normals of the 6 faces (+x, -x, +y, -y, +z, -z)."""
+        return np.array([[1, 0, 0], [-1, 0, 0], [0, 1, 0], [0, -1, 0], [0, 0, 1], [0, 0, -1]], dtype=np.float64)
+
+    @property
+    def face_offsets(self) -> NDArray[np.float64]:
+        """Plane offsets ``n . x = d`` of the 6 faces."""
+        n = self.face_normals
+        return n @ self.center_array + np.abs(n) @ self.half_size
+
+    def face_polygons(self) -> list[NDArray[np.float64]]:
+        """Each face as a (4, 3) array, counter-clockwise seen from outside."""
+        return self.to_polyhedron().face_polygons()
+
+    def contains(self, points: ArrayLike) -> NDArray[np.bool_]:
+        """Boolean mask of the points inside or on the box."""
+        p = self._points(points)
+        tol = 1e-12 * max(self.size)
+        return np.all(np.abs(p - self.center_array) <= self.half_size + tol, axis=1)
+
+    @property
+    def bounds(self) -> NDArray[np.float64]:
+        """Axis-aligned bounds, shape (2, 3)."""
+        return np.stack([self.center_array - self.half_size, self.center_array + self.half_size])
+
+    @property
+    def volume(self) -> float:
+        """Exact volume."""
+        return float(np.prod(self.size))
+
+    def intersect_rays(self, origins: ArrayLike, directions: ArrayLike) -> RayHits:
+        """Exact ray-box intersection (slab method)."""
+        o, d = _as_rays(origins, directions)
+        return _ray_halfspaces(o, d, self.face_normals, self.face_offsets)
+
+    def to_polyhedron(self, resolution: int = DEFAULT_RESOLUTION) -> ConvexPolyhedron:
+        """The box as a :class:`ConvexPolyhedron` (exact)."""
+        return ConvexPolyhedron(self.corners)
+
+    def to_dict(self) -> dict[str, Any]:
+        """``{"box": {"center", "size"}}``."""
+        return {"box": {"center": list(self.center), "size": list(self.size)}}
