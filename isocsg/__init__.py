@@ -16,6 +16,7 @@ from .errors import (
 )
 from .geometry import Box, Cone, ConvexPolyhedron, Cylinder, Primitive, RayHits, Solid, Sphere, Truncus
 from .lighting import DirectionalLight, Material, PointLight, shade
+from .scene import RenderSettings, Scene, SceneObject
 from .csg import CSGNode, Difference, Intersection, Union, difference, intersection, union, union_all
 
 __version__ = "0.1.0"
@@ -27,5 +28,6 @@ __all__ = [
     "SceneFileError", "MissingDependencyError",
     "Solid", "Primitive", "RayHits", "Sphere", "Truncus", "Cylinder", "Cone", "Box", "ConvexPolyhedron",
     "PointLight", "DirectionalLight", "Material", "shade",
+    "Scene", "SceneObject", "RenderSettings",
     "CSGNode", "Union", "Intersection", "Difference", "union", "intersection", "difference", "union_all",
 ]
