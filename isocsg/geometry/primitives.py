@@ -426,22 +426,27 @@ class Truncus(Primitive):
             empty |= lin & (np.abs(b) == 0) & (c > 0)
             empty |= neg & (disc < 0) & (c > 0)
         # for a < 0 with real roots, choose the branch on the sheet r(s) >= 0 inside the slab
+        # a < 0 with real roots: the inside set (c(t) <= 0) is two rays, one on each nappe
+        # of the double cone; keep the one whose part inside the slab lies on r(s) >= 0.
         neg_real = neg & (disc >= 0)
         if np.any(neg_real):
-            # which of the two rays intersects the slab on the correct nappe: test midpoints
-            for idx in np.nonzero(neg_real)[0]:
-                cands = [(-np.inf, min(ta[idx], tb[idx])), (max(ta[idx], tb[idx]), np.inf)]
-                best = None
-                for lo, hi in cands:
-                    lo2, hi2 = max(lo, t_in[idx]), min(hi, t_out[idx])
-                    if lo2 <= hi2:
-                        tm = 0.5 * (lo2 + hi2) if np.isfinite(lo2 + hi2) else (lo2 if np.isfinite(lo2) else hi2)
-                        if r0 + k * (s0[idx] + tm * ds[idx]) >= 0:
-                            best = (lo, hi)
-                if best is None:
-                    empty[idx] = True
-                else:
-                    c_lo[idx], c_hi[idx] = best
+            lo_root, hi_root = np.minimum(ta, tb), np.maximum(ta, tb)
+            chosen_lo = np.full(n, np.inf)
+            chosen_hi = np.full(n, -np.inf)
+            found = np.zeros(n, dtype=bool)
+            for cand_lo, cand_hi in ((np.full(n, -np.inf), lo_root), (hi_root, np.full(n, np.inf))):
+                lo2, hi2 = np.maximum(cand_lo, t_in), np.minimum(cand_hi, t_out)
+                overlap = neg_real & (lo2 <= hi2)
+                fin_lo, fin_hi = np.isfinite(lo2), np.isfinite(hi2)
+                tm = np.where(fin_lo & fin_hi, 0.5 * (np.where(fin_lo, lo2, 0) + np.where(fin_hi, hi2, 0)),
+                              np.where(fin_lo, lo2, np.where(fin_hi, hi2, 0.0)))
+                good = overlap & (r0 + k * (s0 + tm * ds) >= 0)
+                chosen_lo = np.where(good, cand_lo, chosen_lo)
+                chosen_hi = np.where(good, cand_hi, chosen_hi)
+                found |= good
+            empty |= neg_real & ~found
+            c_lo = np.where(neg_real & found, chosen_lo, c_lo)
+            c_hi = np.where(neg_real & found, chosen_hi, c_hi)
         # where the whole slab-interval is in the cone (c(t) <= 0 everywhere) c_lo/c_hi stay infinite
         p_lo = o + np.nan_to_num(c_lo, posinf=0, neginf=0)[:, None] * d
         p_hi = o + np.nan_to_num(c_hi, posinf=0, neginf=0)[:, None] * d
