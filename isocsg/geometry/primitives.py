@@ -226,8 +226,8 @@ class Sphere(Primitive):
         with np.errstate(divide="ignore", invalid="ignore"):
             t0 = np.where(ok, (-b - sq) / a, np.inf)
             t1 = np.where(ok, (-b + sq) / a, -np.inf)
-        n0 = np.where(ok[:, None], (oc + np.nan_to_num(t0)[:, None] * d) / self.radius, 0.0)
-        n1 = np.where(ok[:, None], (oc + np.nan_to_num(t1)[:, None] * d) / self.radius, 0.0)
+        n0 = np.where(ok[:, None], (oc + np.where(ok, t0, 0.0)[:, None] * d) / self.radius, 0.0)
+        n1 = np.where(ok[:, None], (oc + np.where(ok, t1, 0.0)[:, None] * d) / self.radius, 0.0)
         return RayHits(t0, t1, n0, n1)
 
     def to_polyhedron(self, resolution: int = DEFAULT_RESOLUTION) -> "ConvexPolyhedron":
