@@ -1,5 +1,31 @@
 """Scenes: immutable values and the TOML/JSON scene-file reader."""
 
+from .io import (
+    BUILTIN_SCENES,
+    builtin_scene,
+    builtin_scene_path,
+    dumps_scene,
+    load_scene,
+    loads_scene,
+    save_scene,
+    scene_from_dict,
+    scene_to_dict,
+)
 from .model import MAX_CONTOURS, RENDER_MODES, RenderSettings, Scene, SceneObject
 
-__all__ = ["Scene", "SceneObject", "RenderSettings", "MAX_CONTOURS", "RENDER_MODES"]
+__all__ = [
+    "Scene",
+    "SceneObject",
+    "RenderSettings",
+    "MAX_CONTOURS",
+    "RENDER_MODES",
+    "load_scene",
+    "loads_scene",
+    "save_scene",
+    "dumps_scene",
+    "scene_from_dict",
+    "scene_to_dict",
+    "builtin_scene",
+    "builtin_scene_path",
+    "BUILTIN_SCENES",
+]

@@ -1,0 +1,108 @@
+"""Helpers shared by the sub-commands: the parser class, sizes, progress bars, rendering."""
+
+from __future__ import annotations
+
+import argparse
+import dataclasses
+import sys
+from collections.abc import Callable, Iterator
+from contextlib import contextmanager
+from pathlib import Path
+from typing import IO, Any, NoReturn
+
+from ..errors import InvalidParameterError
+from ..scene.model import Scene
+
+__all__ = ["ArgumentParser", "parse_size", "progress_bar", "render_scene", "write_outputs", "add_common_render_options"]
+
+ProgressCallback = Callable[[int, int], None]
+
+
+class ArgumentParser(argparse.ArgumentParser):
+    """An argparse parser whose usage errors are one line and exit with code 2."""
+
+    def error(self, message: str) -> NoReturn:
+        self.exit(2, f"{self.prog}: error: {message} (see {self.prog} --help)\n")
+
+
+def parse_size(text: str) -> tuple[int, int]:
+    """``"640x480"`` -> ``(640, 480)``; an argparse ``type``."""
+    parts = text.lower().split("x")
+    if len(parts) != 2 or not all(p.strip().isdigit() for p in parts):
+        raise argparse.ArgumentTypeError(f"expected WIDTHxHEIGHT such as 640x480, got {text!r}")
+    return int(parts[0]), int(parts[1])
+
+
+def add_common_render_options(parser: argparse.ArgumentParser) -> None:
+    """``--size``, ``--contours`` and ``--no-progress``."""
+    parser.add_argument("--size", type=parse_size, metavar="WxH", help="image size in pixels, e.g. 640x480 (default: the scene's)")
+    parser.add_argument(
+        "--contours", type=int, metavar="N", help="isoluminance contours per light (default: the scene's render.contours)"
+    )
+    parser.add_argument("--no-progress", action="store_true", help="do not show the progress bar on stderr")
+
+
+@contextmanager
+def progress_bar(desc: str, *, enabled: bool = True, file: IO[str] | None = None, delay: float = 0.5) -> Iterator[ProgressCallback]:
+    """A ``progress(done, total)`` callable that drives a tqdm bar on stderr.
+
+    The bar appears only when the work lasts longer than ``delay`` seconds,
+    so quick renders stay silent.
+    """
+    from tqdm import tqdm
+
+    bar: Any = None
+
+    def update(done: int, total: int) -> None:
+        nonlocal bar
+        if not enabled:
+            return
+        if bar is None:
+            bar = tqdm(total=total, desc=desc, file=file if file is not None else sys.stderr, delay=delay, leave=False, unit="step")
+        if bar.total != total:
+            bar.total = total
+        if done > bar.n:
+            bar.update(done - bar.n)
+
+    try:
+        yield update
+    finally:
+        if bar is not None:
+            bar.close()
+
+
+def apply_overrides(scene: Scene, *, size: tuple[int, int] | None = None, contours: int | None = None) -> Scene:
+    """The scene with the command line's image size and contour count."""
+    if size is not None:
+        scene = dataclasses.replace(scene, camera=scene.camera.with_size(*size))
+    if contours is not None:
+        scene = dataclasses.replace(scene, render=dataclasses.replace(scene.render, contours=contours))
+    return scene
+
+
+def render_scene(scene: Scene, *, progress: ProgressCallback | None = None) -> Any:
+    """Render with the method the scene asks for (``render.mode``)."""
+    if scene.render.mode == "halftone":
+        from ..shadows.halftone import render_halftone
+
+        return render_halftone(scene, progress=progress)
+    from ..render import render
+
+    return render(scene, progress=progress)
+
+
+def write_outputs(image: Any, png: str | Path | None, npy: str | Path | None = None) -> list[Path]:
+    """Write the PNG (and NPY) files, creating missing parent folders."""
+    from ..render.image import save_npy, save_png
+
+    written = []
+    for path, suffix, writer in ((png, ".png", save_png), (npy, ".npy", save_npy)):
+        if path is None:
+            continue
+        p = Path(path)
+        if p.suffix.lower() != suffix:
+            raise InvalidParameterError(f"output file {str(p)!r} must end in {suffix}")
+        p.parent.mkdir(parents=True, exist_ok=True)
+        writer(p, image)
+        written.append(p)
+    return written

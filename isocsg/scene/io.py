@@ -1,0 +1,555 @@
+"""Scene files: TOML and JSON readers and writers.
+
+A scene file holds four parts (TOML shown; JSON uses the same structure)::
+
+    [camera]                       # required
+    eye = [6, -8, 5]               # required
+    target = [0, 0, 0]             # required
+    up = [0, 0, 1]                 # optional, default [0, 0, 1]
+    fov = 40                       # vertical, degrees
+    width = 480
+    height = 360
+
+    [render]                       # optional
+    contours = 64
+    mode = "isoluminance"          # or "halftone"
+    exposure = 1.0
+    interval = 1
+
+    [[lights]]
+    kind = "point"                 # point | directional | area | polyhedron
+    position = [5, -5, 8]
+    intensity = 1.0
+
+    [[objects]]
+    material = { ambient = 0.1, kd = 0.8, ks = 0.0, shininess = 20 }
+    shape = { difference = [
+        { box = { center = [0, 0, 0], size = [2, 2, 2] } },
+        { sphere = { center = [1, 1, 1], radius = 0.8 } },
+    ] }
+
+Every error is a :class:`~isocsg.errors.SceneFileError` whose message starts
+with the file name and the dotted path of the offending field, e.g.
+``scene.toml: objects[0].shape.sphere.radius: must be > 0, got -1``.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+import os
+import re
+import tomllib
+from collections.abc import Callable, Mapping
+from importlib import resources
+from pathlib import Path
+from typing import Any
+
+from ..camera import Camera
+from ..csg.tree import CSGNode, Difference, Intersection, Union
+from ..errors import (
+    InvalidGeometryError,
+    InvalidLightError,
+    InvalidParameterError,
+    SceneFileError,
+)
+from ..geometry.primitives import Box, Cone, ConvexPolyhedron, Cylinder, Solid, Sphere, Truncus
+from ..lighting.lights import DirectionalLight, Material, PointLight
+from .model import RenderSettings, Scene, SceneObject
+
+__all__ = [
+    "load_scene",
+    "loads_scene",
+    "save_scene",
+    "dumps_scene",
+    "scene_from_dict",
+    "scene_to_dict",
+    "builtin_scene",
+    "builtin_scene_path",
+    "BUILTIN_SCENES",
+    "SHAPE_KINDS",
+    "LIGHT_KINDS",
+]
+
+#: Names of the scenes shipped in ``isocsg/data`` (``<name>.toml``).
+BUILTIN_SCENES = ("demo", "halftone")
+
+#: Primitive node kinds and their (required, optional) fields.
+_PRIMITIVE_FIELDS: dict[str, tuple[tuple[str, ...], tuple[str, ...]]] = {
+    "sphere": (("center", "radius"), ()),
+    "truncus": (("center", "axis", "r1", "r2"), ()),
+    "cylinder": (("center", "axis", "radius"), ()),
+    "cone": (("center", "axis", "radius"), ()),
+    "box": (("center", "size"), ()),
+    "polyhedron": (("vertices",), ()),
+}
+_PRIMITIVE_TYPES: dict[str, Callable[..., Solid]] = {
+    "sphere": Sphere,
+    "truncus": Truncus,
+    "cylinder": Cylinder,
+    "cone": Cone,
+    "box": Box,
+    "polyhedron": ConvexPolyhedron,
+}
+# Class names that appear as prefixes in the value types' own messages.
+_CLASS_NAMES = {
+    "sphere": "Sphere",
+    "truncus": "Truncus",
+    "cylinder": "Cylinder",
+    "cone": "Cone",
+    "box": "Box",
+    "polyhedron": "ConvexPolyhedron",
+}
+_CSG_TYPES: dict[str, type[CSGNode]] = {"union": Union, "intersection": Intersection, "difference": Difference}
+
+#: Every node kind accepted in an object's ``shape`` tree.
+SHAPE_KINDS = tuple(_PRIMITIVE_FIELDS) + tuple(_CSG_TYPES)
+
+#: Light kinds and their (required, optional) fields.
+_LIGHT_FIELDS: dict[str, tuple[tuple[str, ...], tuple[str, ...]]] = {
+    "point": (("position",), ("intensity",)),
+    "directional": (("direction",), ("intensity",)),
+    "area": (("vertices",), ("radiance",)),
+    "polyhedron": (("vertices",), ("radiance",)),
+}
+LIGHT_KINDS = tuple(_LIGHT_FIELDS)
+
+_CAMERA_FIELDS = (("eye", "target"), ("up", "fov", "width", "height", "orthographic", "height_m"))
+_RENDER_FIELDS = ((), ("contours", "mode", "exposure", "interval"))
+_MATERIAL_FIELDS = ((), ("ambient", "kd", "ks", "shininess"))
+_OBJECT_FIELDS = (("shape",), ("material",))
+_TOP_FIELDS = (("camera", "objects"), ("render", "lights"))
+
+_VALUE_ERRORS = (InvalidGeometryError, InvalidLightError, InvalidParameterError)
+
+
+# ----------------------------------------------------------------------------- helpers
+
+
+class _Reader:
+    """Walks a decoded document; every error it raises names the file and field."""
+
+    def __init__(self, source: str | None) -> None:
+        self.source = source
+
+    def fail(self, path: str, message: str) -> SceneFileError:
+        where = f"{path}: " if path else ""
+        prefix = f"{self.source}: " if self.source else ""
+        return SceneFileError(f"{prefix}{where}{message}")
+
+    def table(self, path: str, value: Any, fields: tuple[tuple[str, ...], tuple[str, ...]]) -> Mapping[str, Any]:
+        """Check that ``value`` is a table with the required keys and no unknown ones."""
+        if not isinstance(value, Mapping):
+            raise self.fail(path, f"must be a table, got {_type_name(value)}")
+        required, optional = fields
+        unknown = [k for k in value if k not in required and k not in optional]
+        if unknown:
+            expected = ", ".join(required + optional)
+            names = ", ".join(repr(k) for k in unknown)
+            word = "key" if len(unknown) == 1 else "keys"
+            raise self.fail(path, f"unknown {word} {names} (expected {expected})")
+        for k in required:
+            if k not in value:
+                raise self.fail(_join(path, k), "missing required field")
+        return value
+
+    def array(self, path: str, value: Any) -> list[Any]:
+        if not isinstance(value, list):
+            raise self.fail(path, f"must be an array, got {_type_name(value)}")
+        return value
+
+    def construct(self, path: str, class_name: str, factory: Callable[..., Any], **kwargs: Any) -> Any:
+        """Call a value type's constructor; re-word its error with the field path.
+
+        The value types say ``Sphere.radius must be > 0, got -1``; the scene
+        file says ``objects[0].shape.sphere.radius: must be > 0, got -1``.
+        """
+        try:
+            return factory(**kwargs)
+        except _VALUE_ERRORS as exc:
+            raise self.fail(*_reword(path, class_name, str(exc))) from None
+        except (TypeError, ValueError) as exc:  # a value that numpy cannot even convert
+            raise self.fail(path, str(exc)) from None
+
+
+def _join(path: str, key: str) -> str:
+    return f"{path}.{key}" if path else key
+
+
+def _type_name(value: Any) -> str:
+    if isinstance(value, Mapping):
+        return "a table"
+    if isinstance(value, list):
+        return "an array"
+    if isinstance(value, str):
+        return f"a string {value!r}"
+    if isinstance(value, bool):
+        return f"a boolean {str(value).lower()}"
+    return f"{type(value).__name__} {value!r}"
+
+
+def _reword(path: str, class_name: str, message: str) -> tuple[str, str]:
+    """Turn ``Class.field rest`` into ``(path.field, rest)``."""
+    m = re.match(rf"^{re.escape(class_name)}\.(\w+) (.*)$", message, flags=re.DOTALL)
+    if m is None:
+        return path, message
+    field, rest = m.group(1), m.group(2)
+    if f"{class_name}." in rest:  # a message about several fields stays at the node
+        return path, message.replace(f"{class_name}.", "")
+    return _join(path, field), rest
+
+
+# ----------------------------------------------------------------------------- readers
+
+
+def _camera(r: _Reader, value: Any) -> Camera:
+    t = r.table("camera", value, _CAMERA_FIELDS)
+    return r.construct("camera", "camera", Camera, **dict(t))
+
+
+def _render(r: _Reader, value: Any) -> RenderSettings:
+    t = r.table("render", value, _RENDER_FIELDS)
+    if "mode" in t and not isinstance(t["mode"], str):
+        raise r.fail("render.mode", f"must be a string, got {_type_name(t['mode'])}")
+    return r.construct("render", "render", RenderSettings, **dict(t))
+
+
+def _light(r: _Reader, path: str, value: Any) -> Any:
+    if not isinstance(value, Mapping):
+        raise r.fail(path, f"must be a table, got {_type_name(value)}")
+    if "kind" not in value:
+        raise r.fail(_join(path, "kind"), f"missing required field (one of {', '.join(LIGHT_KINDS)})")
+    kind = value["kind"]
+    if not isinstance(kind, str) or kind not in _LIGHT_FIELDS:
+        raise r.fail(_join(path, "kind"), f"unknown light kind {kind!r} (expected one of {', '.join(LIGHT_KINDS)})")
+    required, optional = _LIGHT_FIELDS[kind]
+    t = dict(r.table(path, value, (("kind",) + required, optional)))
+    del t["kind"]
+    if kind == "point":
+        return r.construct(path, "PointLight", PointLight, **t)
+    if kind == "directional":
+        return r.construct(path, "DirectionalLight", DirectionalLight, **t)
+    # Area and polyhedron sources live with the shadow code; import them only when used.
+    from ..shadows import lights as shadow_lights
+
+    cls = shadow_lights.AreaLight if kind == "area" else shadow_lights.PolyhedronLight
+    return r.construct(path, cls.__name__, cls, **t)
+
+
+def _material(r: _Reader, path: str, value: Any) -> Material:
+    t = r.table(path, value, _MATERIAL_FIELDS)
+    return r.construct(path, "Material", Material, **dict(t))
+
+
+def _shape(r: _Reader, path: str, value: Any) -> Solid:
+    if not isinstance(value, Mapping):
+        raise r.fail(path, f"a shape node must be a table with one key ({', '.join(SHAPE_KINDS)}), got {_type_name(value)}")
+    if len(value) != 1:
+        keys = ", ".join(repr(k) for k in value)
+        got = f"{len(value)} ({keys})" if value else "none"
+        raise r.fail(path, f"a shape node must have exactly one key ({', '.join(SHAPE_KINDS)}), got {got}")
+    ((kind, body),) = value.items()
+    if kind not in SHAPE_KINDS:
+        raise r.fail(path, f"unknown shape {kind!r} (expected one of {', '.join(SHAPE_KINDS)})")
+    here = _join(path, kind)
+    if kind in _CSG_TYPES:
+        operands = r.array(here, body)
+        if not operands:
+            raise r.fail(here, "needs at least one operand, got none")
+        children = [_shape(r, f"{here}[{i}]", child) for i, child in enumerate(operands)]
+        return _CSG_TYPES[kind](*children)
+    t = r.table(here, body, _PRIMITIVE_FIELDS[kind])
+    return r.construct(here, _CLASS_NAMES[kind], _PRIMITIVE_TYPES[kind], **dict(t))
+
+
+def _object(r: _Reader, path: str, value: Any) -> SceneObject:
+    t = r.table(path, value, _OBJECT_FIELDS)
+    shape = _shape(r, _join(path, "shape"), t["shape"])
+    material = _material(r, _join(path, "material"), t["material"]) if "material" in t else Material()
+    return SceneObject(shape, material)
+
+
+def scene_from_dict(data: Mapping[str, Any], *, source: str | os.PathLike[str] | None = None) -> Scene:
+    """Build a :class:`~isocsg.scene.Scene` from a decoded scene document.
+
+    Parameters
+    ----------
+    data : mapping
+        The document, as read from TOML or JSON (see the module docstring).
+    source : str or path-like, optional
+        Name that starts every error message (usually the file name).
+
+    Returns
+    -------
+    Scene
+
+    Raises
+    ------
+    SceneFileError
+        On unknown keys, missing fields, wrong types, empty operand lists,
+        unknown node or light kinds, and every invalid value; the message
+        gives the file name and the dotted path of the field.
+
+    Examples
+    --------
+    >>> doc = {"camera": {"eye": [0, -5, 0], "target": [0, 0, 0]},
+    ...        "lights": [{"kind": "point", "position": [0, -5, 5]}],
+    ...        "objects": [{"shape": {"sphere": {"center": [0, 0, 0], "radius": 1}}}]}
+    >>> scene = scene_from_dict(doc)
+    >>> scene.objects[0].shape
+    Sphere(center=(0.0, 0.0, 0.0), radius=1.0)
+    >>> doc["objects"][0]["shape"]["sphere"]["radius"] = -1
+    >>> scene_from_dict(doc, source="scene.toml")
+    Traceback (most recent call last):
+    ...
+    isocsg.errors.SceneFileError: scene.toml: objects[0].shape.sphere.radius: must be > 0, got -1
+    """
+    r = _Reader(None if source is None else os.fspath(source))
+    if not isinstance(data, Mapping):
+        raise r.fail("", f"the document must be a table, got {_type_name(data)}")
+    top = r.table("", data, _TOP_FIELDS)
+    camera = _camera(r, top["camera"])
+    render = _render(r, top["render"]) if "render" in top else RenderSettings()
+    lights_doc = r.array("lights", top["lights"]) if "lights" in top else []
+    lights = tuple(_light(r, f"lights[{i}]", v) for i, v in enumerate(lights_doc))
+    objects_doc = r.array("objects", top["objects"])
+    if not objects_doc:
+        raise r.fail("objects", "needs at least one object, got none")
+    objects = tuple(_object(r, f"objects[{i}]", v) for i, v in enumerate(objects_doc))
+    return Scene(camera, lights, objects, render)
+
+
+def loads_scene(text: str, *, format: str = "toml", source: str | os.PathLike[str] | None = None) -> Scene:
+    """Parse scene text in ``"toml"`` or ``"json"`` format.
+
+    Parameters
+    ----------
+    text : str
+    format : {"toml", "json"}
+    source : str or path-like, optional
+        Name that starts every error message.
+
+    Returns
+    -------
+    Scene
+
+    Raises
+    ------
+    SceneFileError
+        On malformed text or an invalid scene (see :func:`scene_from_dict`).
+
+    Examples
+    --------
+    >>> text = '''
+    ... [camera]
+    ... eye = [0, -5, 0]
+    ... target = [0, 0, 0]
+    ... [[objects]]
+    ... shape = { box = { center = [0, 0, 0], size = [1, 1, 1] } }
+    ... '''
+    >>> loads_scene(text).objects[0].shape.size
+    (1.0, 1.0, 1.0)
+    """
+    name = None if source is None else os.fspath(source)
+    prefix = f"{name}: " if name else ""
+    if format == "toml":
+        try:
+            data: Any = tomllib.loads(text)
+        except tomllib.TOMLDecodeError as exc:
+            raise SceneFileError(f"{prefix}invalid TOML: {exc}") from None
+    elif format == "json":
+        try:
+            data = json.loads(text)
+        except json.JSONDecodeError as exc:
+            raise SceneFileError(f"{prefix}invalid JSON: {exc}") from None
+    else:
+        raise SceneFileError(f"{prefix}unknown scene format {format!r} (expected 'toml' or 'json')")
+    return scene_from_dict(data, source=name)
+
+
+def _format_of(path: Path) -> str:
+    suffix = path.suffix.lower()
+    if suffix == ".toml":
+        return "toml"
+    if suffix == ".json":
+        return "json"
+    raise SceneFileError(f"{path}: unknown scene file extension {path.suffix!r} (expected .toml or .json)")
+
+
+def load_scene(path: str | os.PathLike[str]) -> Scene:
+    """Read a scene file (``.toml`` or ``.json``).
+
+    Parameters
+    ----------
+    path : str or path-like
+
+    Returns
+    -------
+    Scene
+
+    Raises
+    ------
+    SceneFileError
+        If the file cannot be read, is not valid TOML/JSON, or does not
+        describe a valid scene; the message starts with the file name and the
+        dotted path of the field.
+
+    Examples
+    --------
+    >>> scene = load_scene(builtin_scene_path("demo"))
+    >>> scene.render.mode
+    'isoluminance'
+    """
+    p = Path(path)
+    fmt = _format_of(p)
+    try:
+        text = p.read_text(encoding="utf-8")
+    except (OSError, UnicodeDecodeError) as exc:
+        reason = exc.strerror if isinstance(exc, OSError) and exc.strerror else str(exc)
+        raise SceneFileError(f"{p}: cannot read the file: {reason}") from None
+    return loads_scene(text, format=fmt, source=p)
+
+
+# ----------------------------------------------------------------------------- writers
+
+
+def _light_to_dict(light: Any) -> dict[str, Any]:
+    if hasattr(light, "to_dict"):
+        d = dict(light.to_dict())
+    else:  # a source without its own mapping: the documented fields
+        d = {"vertices": [list(map(float, v)) for v in light.vertices], "radiance": float(light.radiance)}
+    d.setdefault("kind", getattr(light, "kind", None))
+    # `kind` first reads best in files.
+    return {"kind": d.pop("kind"), **d}
+
+
+def scene_to_dict(scene: Scene) -> dict[str, Any]:
+    """The scene-file document of a scene (the inverse of :func:`scene_from_dict`).
+
+    Parameters
+    ----------
+    scene : Scene
+
+    Returns
+    -------
+    dict
+        Plain lists, numbers and strings, ready for ``json.dump`` or
+        :func:`dumps_scene`.
+
+    Examples
+    --------
+    >>> from isocsg import Camera, Sphere, Box, PointLight
+    >>> s = Scene(Camera((0, -5, 0), (0, 0, 0)), [PointLight((0, -5, 5))],
+    ...           [Box((0, 0, 0), (2, 2, 2)) - Sphere((1, 1, 1), 1)])
+    >>> scene_from_dict(scene_to_dict(s)) == s
+    True
+    """
+    cam = scene.camera
+    camera = cam.to_dict()
+    if cam.orthographic:
+        camera.update(orthographic=True, height_m=cam.height_m)
+    rs = scene.render
+    return {
+        "camera": camera,
+        "render": {"contours": rs.contours, "mode": rs.mode, "exposure": rs.exposure, "interval": rs.interval},
+        "lights": [_light_to_dict(light) for light in scene.lights],
+        "objects": [{"material": o.material.to_dict(), "shape": o.shape.to_dict()} for o in scene.objects],  # type: ignore[attr-defined]
+    }
+
+
+def _toml_value(v: Any) -> str:
+    if isinstance(v, bool):
+        return "true" if v else "false"
+    if isinstance(v, int):
+        return str(v)
+    if isinstance(v, float):
+        if math.isnan(v):
+            return "nan"
+        if math.isinf(v):
+            return "inf" if v > 0 else "-inf"
+        return repr(v)
+    if isinstance(v, str):
+        return json.dumps(v)  # a JSON string is a valid TOML basic string
+    if isinstance(v, Mapping):
+        return "{ " + ", ".join(f"{k} = {_toml_value(x)}" for k, x in v.items()) + " }"
+    if isinstance(v, (list, tuple)):
+        return "[" + ", ".join(_toml_value(x) for x in v) + "]"
+    raise SceneFileError(f"cannot write {type(v).__name__} to TOML")
+
+
+def dumps_scene(scene: Scene, *, format: str = "toml") -> str:
+    """Scene-file text of a scene, in ``"toml"`` or ``"json"``.
+
+    Examples
+    --------
+    >>> from isocsg import Camera, Sphere
+    >>> s = Scene(Camera((0, -5, 0), (0, 0, 0)), [], [Sphere((0, 0, 0), 1)])
+    >>> loads_scene(dumps_scene(s)) == s
+    True
+    """
+    doc = scene_to_dict(scene)
+    if format == "json":
+        return json.dumps(doc, indent=2) + "\n"
+    if format != "toml":
+        raise SceneFileError(f"unknown scene format {format!r} (expected 'toml' or 'json')")
+    lines: list[str] = []
+    for table in ("camera", "render"):
+        lines.append(f"[{table}]")
+        lines += [f"{k} = {_toml_value(v)}" for k, v in doc[table].items()]
+        lines.append("")
+    for table in ("lights", "objects"):
+        for item in doc[table]:
+            lines.append(f"[[{table}]]")
+            lines += [f"{k} = {_toml_value(v)}" for k, v in item.items()]
+            lines.append("")
+    return "\n".join(lines)
+
+
+def save_scene(scene: Scene, path: str | os.PathLike[str]) -> Path:
+    """Write a scene file; the format follows the extension (``.toml`` or ``.json``).
+
+    Returns
+    -------
+    pathlib.Path
+        The path written.
+
+    Raises
+    ------
+    SceneFileError
+        On an unknown extension.
+    """
+    p = Path(path)
+    p.write_text(dumps_scene(scene, format=_format_of(p)), encoding="utf-8")
+    return p
+
+
+# ----------------------------------------------------------------------------- built-in scenes
+
+
+def builtin_scene_path(name: str = "demo") -> Path:
+    """Path of a scene shipped with isocsg (see :data:`BUILTIN_SCENES`).
+
+    Raises
+    ------
+    SceneFileError
+        On an unknown name.
+
+    Examples
+    --------
+    >>> builtin_scene_path("demo").name
+    'demo.toml'
+    """
+    if name not in BUILTIN_SCENES:
+        raise SceneFileError(f"unknown built-in scene {name!r} (expected one of {', '.join(BUILTIN_SCENES)})")
+    return Path(str(resources.files("isocsg").joinpath("data", f"{name}.toml")))
+
+
+def builtin_scene(name: str = "demo") -> Scene:
+    """Load a scene shipped with isocsg.
+
+    Examples
+    --------
+    >>> builtin_scene("halftone").render.mode
+    'halftone'
+    """
+    return load_scene(builtin_scene_path(name))
