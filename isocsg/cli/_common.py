@@ -13,7 +13,16 @@ from typing import IO, Any, NoReturn
 from ..errors import InvalidParameterError
 from ..scene.model import Scene
 
-__all__ = ["ArgumentParser", "parse_size", "progress_bar", "render_scene", "write_outputs", "add_common_render_options"]
+__all__ = [
+    "ArgumentParser",
+    "parse_size",
+    "progress_bar",
+    "apply_overrides",
+    "render_scene",
+    "check_outputs",
+    "write_outputs",
+    "add_common_render_options",
+]
 
 ProgressCallback = Callable[[int, int], None]
 
@@ -63,6 +72,8 @@ def progress_bar(desc: str, *, enabled: bool = True, file: IO[str] | None = None
             bar.total = total
         if done > bar.n:
             bar.update(done - bar.n)
+        if done >= total:
+            bar.refresh()  # show the finished state even within tqdm's refresh interval
 
     try:
         yield update
@@ -91,17 +102,23 @@ def render_scene(scene: Scene, *, progress: ProgressCallback | None = None) -> A
     return render(scene, progress=progress)
 
 
+def check_outputs(png: str | Path | None, npy: str | Path | None = None) -> None:
+    """Reject output names with the wrong extension before any work is done."""
+    for path, suffix in ((png, ".png"), (npy, ".npy")):
+        if path is not None and Path(path).suffix.lower() != suffix:
+            raise InvalidParameterError(f"output file {str(path)!r} must end in {suffix}")
+
+
 def write_outputs(image: Any, png: str | Path | None, npy: str | Path | None = None) -> list[Path]:
     """Write the PNG (and NPY) files, creating missing parent folders."""
     from ..render.image import save_npy, save_png
 
+    check_outputs(png, npy)
     written = []
-    for path, suffix, writer in ((png, ".png", save_png), (npy, ".npy", save_npy)):
+    for path, writer in ((png, save_png), (npy, save_npy)):
         if path is None:
             continue
         p = Path(path)
-        if p.suffix.lower() != suffix:
-            raise InvalidParameterError(f"output file {str(p)!r} must end in {suffix}")
         p.parent.mkdir(parents=True, exist_ok=True)
         writer(p, image)
         written.append(p)

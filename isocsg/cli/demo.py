@@ -6,7 +6,14 @@ import argparse
 from typing import Any
 
 from ..scene.io import builtin_scene_path, load_scene
-from ._common import add_common_render_options, apply_overrides, progress_bar, render_scene, write_outputs
+from ._common import (
+    add_common_render_options,
+    apply_overrides,
+    check_outputs,
+    progress_bar,
+    render_scene,
+    write_outputs,
+)
 
 __all__ = ["register", "run"]
 
@@ -35,8 +42,9 @@ def run(args: argparse.Namespace) -> int:
     if args.print_scene:
         print(source)
         return 0
-    scene = apply_overrides(load_scene(source), size=args.size, contours=args.contours)
     output = args.output or f"isocsg-{name}.png"
+    check_outputs(output)
+    scene = apply_overrides(load_scene(source), size=args.size, contours=args.contours)
     with progress_bar(f"demo {name}", enabled=not args.no_progress) as progress:
         result = render_scene(scene, progress=progress)
     (path,) = write_outputs(result.image, output)

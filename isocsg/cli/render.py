@@ -6,7 +6,14 @@ import argparse
 from typing import Any
 
 from ..scene.io import load_scene
-from ._common import add_common_render_options, apply_overrides, progress_bar, render_scene, write_outputs
+from ._common import (
+    add_common_render_options,
+    apply_overrides,
+    check_outputs,
+    progress_bar,
+    render_scene,
+    write_outputs,
+)
 
 __all__ = ["register", "run"]
 
@@ -30,6 +37,7 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
 
 def run(args: argparse.Namespace) -> int:
     """Load, render, write; prints the files written."""
+    check_outputs(args.output, args.npy)
     scene = apply_overrides(load_scene(args.scene), size=args.size, contours=args.contours)
     with progress_bar(f"render {scene.render.mode}", enabled=not args.no_progress) as progress:
         result = render_scene(scene, progress=progress)
