@@ -27,7 +27,7 @@ from isocsg import (
     Truncus,
 )
 from isocsg.csg import Difference, Intersection, Union
-from isocsg.scene import RenderSettings, Scene
+from isocsg.scene import RenderSettings, Scene, SceneObject
 
 NAN, INF = math.nan, math.inf
 EYE, TARGET = (0.0, -5.0, 1.0), (0.0, 0.0, 0.0)
@@ -165,3 +165,66 @@ def test_numpy_inputs_are_accepted_and_stored_as_tuples() -> None:
 def test_scene_rejects_a_non_solid_object() -> None:
     with pytest.raises(InvalidGeometryError, match=re.escape("SceneObject.shape must be a solid, got str")):
         Scene(Camera(EYE, TARGET), (), ("sphere",))
+
+
+# ----------------------------------------------------------------------------- a light inside an object
+
+
+def _render_function():
+    try:
+        from isocsg.render import render
+    except ImportError:
+        pytest.skip("isocsg.render is not available")
+    return render
+
+
+def _sphere_hits(camera: Camera, center: np.ndarray, radius: float) -> np.ndarray:
+    """Pixels whose ray meets the sphere, by the quadratic formula (independent of isocsg)."""
+    f = np.subtract(camera.target, camera.eye)
+    f /= np.linalg.norm(f)
+    r = np.cross(f, camera.up)
+    r /= np.linalg.norm(r)
+    u = np.cross(r, f)
+    t = math.tan(math.radians(camera.fov) / 2)
+    x = (2 * (np.arange(camera.width) + 0.5) / camera.width - 1) * t * camera.width / camera.height
+    y = (1 - 2 * (np.arange(camera.height) + 0.5) / camera.height) * t
+    d = f + x[None, :, None] * r + y[:, None, None] * u
+    d /= np.linalg.norm(d, axis=-1, keepdims=True)
+    oc = np.asarray(camera.eye) - center
+    b = d @ oc
+    disc = b * b - (oc @ oc - radius**2)
+    return disc >= 0
+
+
+@pytest.mark.parametrize(
+    "light",
+    [PointLight((0.0, 0.0, 0.0)), PointLight((0.3, -0.2, 0.4))],
+    ids=["at-centre", "off-centre"],
+)
+def test_light_inside_an_object_leaves_only_ambient(light: PointLight) -> None:
+    render = _render_function()
+    material = Material(ambient=0.15, kd=0.8)
+    camera = Camera((0.0, -5.0, 1.5), (0, 0, 0), fov=30, width=48, height=40)
+    scene = Scene(camera, [light], [SceneObject(Sphere((0, 0, 0), 1.0), material)])
+    image = render(scene, contours=8).image  # not an error
+    hits = _sphere_hits(camera, np.zeros(3), 1.0)
+    seen = np.isfinite(image)
+    # Pixels whose centre ray grazes the silhouette may go either way.
+    assert (seen == hits).mean() > 0.97
+    # Every surface point faces away from a light inside the convex solid: ambient only.
+    np.testing.assert_allclose(image[seen], material.ambient, rtol=0, atol=1e-6)
+
+
+def test_light_inside_a_box_leaves_only_ambient() -> None:
+    render = _render_function()
+    material = Material(ambient=0.2, kd=0.7)
+    camera = Camera((3.0, -4.0, 2.5), (0, 0, 0), fov=35, width=40, height=40)
+    scene = Scene(camera, [PointLight((0.1, 0.2, -0.1)), PointLight((5, -5, 5))], [SceneObject(Box((0, 0, 0), (1, 1, 1)), material)])
+    lit_from_outside = render(scene, contours=8).image
+    alone = render(Scene(camera, [PointLight((0.1, 0.2, -0.1))], scene.objects), contours=8).image
+    assert np.isfinite(alone).any()
+    np.testing.assert_allclose(alone[np.isfinite(alone)], material.ambient, rtol=0, atol=1e-6)
+    # The inside light adds nothing to what the outside light gives.
+    outside_only = render(Scene(camera, [PointLight((5, -5, 5))], scene.objects), contours=8).image
+    np.testing.assert_array_equal(np.isnan(lit_from_outside), np.isnan(outside_only))
+    np.testing.assert_allclose(lit_from_outside[np.isfinite(outside_only)], outside_only[np.isfinite(outside_only)], atol=1e-6)
