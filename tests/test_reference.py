@@ -10,6 +10,8 @@ rays parallel to an axis), and CSG identities and reversed normals.
 from __future__ import annotations
 
 import math
+import sys
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -26,6 +28,9 @@ from isocsg import (
     Sphere,
     Truncus,
 )
+# the shared helpers live next to the tests (pytest runs with --import-mode=importlib)
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+
 from reference import camera_rays, compare, primitive_intervals, raycast, silhouette_iou
 from reference.raycaster import PART_CAP1, PART_CAP2, PART_LATERAL, SIDE_ENTRY, SIDE_EXIT, first_hit
 from scenes import ALL_SCENES, CSG_SCENES

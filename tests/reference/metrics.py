@@ -26,6 +26,7 @@ __all__ = [
     "neighbourhood_all",
     "comparison_mask",
     "compare",
+    "compare_images",
 ]
 
 #: Relative tolerance on intensities, as a fraction of the reference's range.
@@ -65,7 +66,8 @@ def _same_neighbours(ids: NDArray[np.int64]) -> NDArray[np.bool_]:
 
 
 def comparison_mask(
-    image: NDArray[np.floating], reference: ReferenceImage, *, seams: bool = True
+    image: NDArray[np.floating], reference: ReferenceImage | NDArray[np.floating], *, seams: bool = True,
+    surface_id: NDArray[np.int64] | None = None,
 ) -> NDArray[np.bool_]:
     """Pixels compared: inside both silhouettes minus a 1-pixel band, minus seams.
 
@@ -73,14 +75,20 @@ def comparison_mask(
     ----------
     image : ndarray (H, W)
         The rendering under test (NaN background).
-    reference : ReferenceImage
+    reference : ReferenceImage or ndarray (H, W)
+        The exact image, or another float image (then seams come from ``surface_id``).
     seams : bool, default True
         Also leave out pixels next to a change of the reference's surface id.
+    surface_id : ndarray (H, W), optional
+        Surface ids when ``reference`` is a plain image.
     """
-    both = np.isfinite(image) & reference.mask
-    keep = neighbourhood_all(both)
-    if seams:
-        keep &= _same_neighbours(reference.surface_id)
+    if isinstance(reference, ReferenceImage):
+        ref_mask, ids = reference.mask, reference.surface_id
+    else:
+        ref_mask, ids = np.isfinite(reference), surface_id
+    keep = neighbourhood_all(np.isfinite(image) & ref_mask)
+    if seams and ids is not None:
+        keep &= _same_neighbours(ids)
     return keep
 
 
@@ -126,18 +134,26 @@ def compare(image: NDArray[np.floating], reference: ReferenceImage, *, seams: bo
     If the reference has a single intensity (range 0), the tolerance is
     ``TOLERANCE * max(|I_max|, 1e-12)``.
     """
+    return compare_images(image, reference.image, surface_id=reference.surface_id if seams else None)
+
+
+def compare_images(
+    image: NDArray[np.floating], expected: NDArray[np.floating], *, surface_id: NDArray[np.int64] | None = None
+) -> Comparison:
+    """:func:`compare` of two float images; seams are left out only where ``surface_id`` is given."""
     img = np.asarray(image, dtype=np.float64)
-    ref = reference.image
+    ref = np.asarray(expected, dtype=np.float64)
     if img.shape != ref.shape:
         raise ValueError(f"image shape {img.shape} differs from the reference's {ref.shape}")
     iou = silhouette_iou(img, ref)
-    if reference.mask.any():
+    ref_mask = np.isfinite(ref)
+    if ref_mask.any():
         lo, hi = float(np.nanmin(ref)), float(np.nanmax(ref))
         span = hi - lo if hi > lo else max(abs(hi), 1e-12)
     else:
         span = 0.0
     tol = TOLERANCE * span
-    keep = comparison_mask(img, reference, seams=seams)
+    keep = comparison_mask(img, ref, surface_id=surface_id)
     err = np.abs(img[keep] - ref[keep])
     n = int(err.size)
     return Comparison(
@@ -147,6 +163,6 @@ def compare(image: NDArray[np.floating], reference: ReferenceImage, *, seams: bo
         max_error=float(err.max()) if n else 0.0,
         tol=tol,
         compared=n,
-        hit_ref=int(np.count_nonzero(reference.mask)),
+        hit_ref=int(np.count_nonzero(ref_mask)),
         hit_image=int(np.count_nonzero(np.isfinite(img))),
     )
