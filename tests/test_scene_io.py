@@ -409,3 +409,25 @@ def test_errors_have_no_chained_traceback() -> None:
     with pytest.raises(SceneFileError) as info:
         scene_from_dict(_doc(render__contours=0))
     assert info.value.__cause__ is None and info.value.__suppress_context__
+
+
+@pytest.mark.parametrize(
+    "light, message",
+    [
+        ({"kind": "area", "vertices": [[0, 0, 3], [1, 0, 3], [2, 0, 3]]}, "lights[0].vertices: are collinear: the polygon has zero area"),
+        ({"kind": "area", "vertices": [[0, 0, 3], [0, 1, 3], [1, 1, 3]], "radiance": -1}, "lights[0].radiance: must be >= 0, got -1"),
+        ({"kind": "area", "vertices": [[0, 0, 3], [0, 1, 3]]}, "lights[0].vertices: needs at least 3 rows, got 2"),
+        ({"kind": "area", "position": [0, 0, 3]}, "lights[0]: unknown key 'position' (expected kind, vertices, radiance)"),
+        ({"kind": "polyhedron", "vertices": [[0, 0, 0], [1, 0, 0], [0, 1, 0], [1, 1, 0]]},
+         "lights[0].vertices: are coplanar or degenerate: their hull has no volume"),
+    ],
+    ids=["area-collinear", "area-radiance", "area-two-vertices", "area-unknown-key", "polyhedron-flat"],
+)
+def test_area_and_polyhedron_light_errors(tmp_path: Path, monkeypatch: pytest.MonkeyPatch, light: dict[str, Any], message: str) -> None:
+    pytest.importorskip("isocsg.shadows.lights")
+    monkeypatch.chdir(tmp_path)
+    doc = _doc(lights=[light])
+    doc["render"]["mode"] = "halftone"
+    Path("scene.json").write_text(json.dumps(doc))
+    with pytest.raises(SceneFileError, match=f"^{re.escape('scene.json: ' + message)}$"):
+        load_scene("scene.json")
