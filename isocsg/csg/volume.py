@@ -19,6 +19,7 @@ from collections.abc import Callable
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
+from shapely.geometry import Polygon
 
 from .._validation import integer, nonzero_vector3, scalar
 from ..errors import InvalidParameterError
@@ -26,6 +27,8 @@ from ..geometry.primitives import Box, ConvexPolyhedron, Primitive, Solid, Spher
 from .section import combine_sections, plane_frame, primitive_section, solid_program
 
 __all__ = ["volume", "section_areas", "breakpoints"]
+
+_EMPTY = Polygon()
 
 
 def _extents(prim: Primitive, w: NDArray[np.float64]) -> list[float]:
@@ -116,9 +119,21 @@ def section_areas(
     return np.array([_area(prims, prog, w, float(zi), res) for zi in z])
 
 
-def _area(prims: list[Primitive], prog: NDArray[np.int64], w: NDArray[np.float64], z: float, res: int) -> float:
+def _area(
+    prims: list[Primitive],
+    prog: NDArray[np.int64],
+    w: NDArray[np.float64],
+    z: float,
+    res: int,
+    spans: list[tuple[float, float]] | None = None,
+) -> float:
     F = plane_frame(z * w, w)
-    return float(combine_sections(prog, [primitive_section(p, F, res) for p in prims]).area)
+    if spans is None:
+        geoms = [primitive_section(p, F, res) for p in prims]
+    else:
+        # leaves whose extent along w excludes z have an empty section: skip the work
+        geoms = [primitive_section(p, F, res) if lo < z < hi else _EMPTY for p, (lo, hi) in zip(prims, spans)]
+    return float(combine_sections(prog, geoms).area)
 
 
 def volume(
@@ -186,8 +201,10 @@ def volume(
     span = float(np.max(b[:, 1] - b[:, 0]))
     abs_floor = 1e-3 * tol_ * span**3
 
+    spans = [(min(e), max(e)) for e in (_extents(p, w) for p in prims)]
+
     def f(x: float) -> float:
-        return _area(prims, prog, w, x, res)
+        return _area(prims, prog, w, x, res, spans)
 
     total = 0.0
     n = len(z) - 1
