@@ -1,0 +1,215 @@
+"""The compiled triangle fill against an independent per-pixel ray cast.
+
+The reference shoots each pixel's ray (from the camera's own ray definition of
+the conventions) at every triangle with the Moller-Trumbore test, so coverage,
+depth and the nearest/farthest triangle are computed without any screen-space
+arithmetic. Pixels whose centre lies within a hair of an edge are ambiguous
+(the fill rule decides them) and are left out of the comparison.
+"""
+
+from __future__ import annotations
+
+import re
+
+import numpy as np
+import pytest
+
+from isocsg import Camera, InvalidGeometryError, InvalidParameterError, Sphere
+from isocsg.render.raster import homogeneous, rasterize
+
+EDGE_MARGIN = 1e-7  # barycentric margin that separates "clearly inside" from "on the edge"
+
+
+def ray_cast(camera: Camera, vertices: np.ndarray, triangles: np.ndarray):
+    """Per pixel and triangle: camera depth of the hit (nan if none) and an ambiguity flag."""
+    o = camera.ray_origins().reshape(-1, 1, 3)
+    d = camera.ray_directions().reshape(-1, 1, 3)
+    f = camera.frame[0]
+    p0, p1, p2 = (vertices[triangles[:, k]][None] for k in range(3))
+    e1, e2 = p1 - p0, p2 - p0
+    pv = np.cross(d, e2)
+    det = np.einsum("ptk,ptk->pt", e1, pv)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        inv = 1.0 / det
+        tv = o - p0
+        u = np.einsum("ptk,ptk->pt", tv, pv) * inv
+        qv = np.cross(tv, e1)
+        v = np.einsum("ptk,ptk->pt", d, qv) * inv
+        t = np.einsum("ptk,ptk->pt", e2, qv) * inv
+    w = 1 - u - v
+    m = np.minimum(np.minimum(u, v), w)
+    hit = (m > EDGE_MARGIN) & (t > 0)
+    ambiguous = (np.abs(m) <= EDGE_MARGIN) & (t > 0)
+    depth = np.where(hit, t * (d[..., :] @ f), np.nan)
+    shape = (camera.height, camera.width, len(triangles))
+    return depth.reshape(shape), ambiguous.reshape(shape)
+
+
+def random_triangles(rng: np.random.Generator, n: int, spread: float = 1.5):
+    centres = rng.uniform(-spread, spread, (n, 1, 3))
+    verts = (centres + rng.normal(0, 0.8, (n, 3, 3))).reshape(-1, 3)
+    return verts, np.arange(3 * n).reshape(n, 3)
+
+
+CAMERAS = {
+    "perspective": Camera((0.7, -6.0, 1.3), (0, 0, 0), fov=45, width=40, height=30),
+    "orthographic": Camera((0.7, -6.0, 1.3), (0, 0, 0), width=36, height=28, orthographic=True, height_m=5.0),
+}
+
+
+@pytest.mark.parametrize("cam", CAMERAS.values(), ids=CAMERAS.keys())
+@pytest.mark.parametrize("seed", [0, 1, 2], ids=lambda s: f"seed{s}")
+def test_nearest_and_farthest_match_ray_cast(cam, seed):
+    rng = np.random.default_rng(seed)
+    verts, tris = random_triangles(rng, 12)
+    vout = rng.uniform(0, 1, len(tris))
+    vin = rng.uniform(0, 1, len(tris))
+    r = rasterize(cam, verts, tris, vout, vin, cull=False)
+    depth, amb = ray_cast(cam, verts, tris)
+    any_hit = np.isfinite(depth).any(axis=2)
+    # Leave out pixels near any edge, and pixels where two surfaces are nearly at the same depth.
+    clear = ~amb.any(axis=2)
+    srt = np.sort(np.where(np.isnan(depth), np.inf, depth), axis=2)
+    with np.errstate(invalid="ignore"):
+        gap_ok = ~(np.abs(srt[..., 1] - srt[..., 0]) < 1e-6)
+    assert clear.mean() > 0.9
+    np.testing.assert_array_equal(r.covered[clear], any_hit[clear])
+    ok = clear & any_hit & gap_ok
+    assert ok.sum() > 100
+    near_t = np.nanargmin(np.where(np.isnan(depth), np.inf, depth)[ok], axis=1)
+    np.testing.assert_allclose(r.front_depth[ok], np.nanmin(depth[ok], axis=1), rtol=1e-9)
+    np.testing.assert_array_equal(r.front_value[ok], vout[near_t].astype(np.float32))
+    far_t = np.argmax(np.where(np.isnan(depth), -np.inf, depth)[ok], axis=1)
+    np.testing.assert_allclose(r.back_depth[ok], np.nanmax(depth[ok], axis=1), rtol=1e-9)
+    np.testing.assert_array_equal(r.back_value[ok], vin[far_t].astype(np.float32))
+    assert np.all(np.isnan(r.front_value[clear & ~any_hit]))
+
+
+@pytest.mark.parametrize("cam", CAMERAS.values(), ids=CAMERAS.keys())
+def test_closed_mesh_front_and_back_faces(cam):
+    """With culling, front faces give the ray's entry, back faces its exit."""
+    mesh = Sphere((0.2, 0.1, -0.1), 1.7).to_trimesh(12)
+    v, t = np.asarray(mesh.vertices), np.asarray(mesh.faces)
+    vals = np.arange(len(t), dtype=float)
+    r = rasterize(cam, v, t, vals, vals + 0.5)
+    depth, amb = ray_cast(cam, v, t)
+    clear = ~amb.any(axis=2)
+    hit = np.isfinite(depth).any(axis=2)
+    np.testing.assert_array_equal(r.covered[clear], hit[clear])
+    np.testing.assert_array_equal(np.isfinite(r.back_depth)[clear], hit[clear])
+    ok = clear & hit
+    d = depth[ok]
+    np.testing.assert_allclose(r.front_depth[ok], np.nanmin(d, axis=1), rtol=1e-9)
+    np.testing.assert_allclose(r.back_depth[ok], np.nanmax(d, axis=1), rtol=1e-9)
+    np.testing.assert_array_equal(r.front_value[ok], np.nanargmin(np.where(np.isnan(d), np.inf, d), axis=1))
+    np.testing.assert_array_equal(r.back_value[ok], np.nanargmax(np.where(np.isnan(d), -np.inf, d), axis=1) + 0.5)
+
+
+def _ortho_pixel_camera(n: int) -> Camera:
+    """Orthographic camera where world (x, y) maps to (col, row) = (x + n/2, n/2 - y) exactly."""
+    return Camera((0, 0, 10), (0, 0, 0), up=(0, 1, 0), width=n, height=n, orthographic=True, height_m=float(n))
+
+
+def _coverage_counts(cam: Camera, verts, tris) -> np.ndarray:
+    counts = np.zeros((cam.height, cam.width), int)
+    for t in tris:
+        counts += rasterize(cam, verts, [t], [1.0], cull=False).covered
+    return counts
+
+
+def test_quad_split_on_pixel_centres_is_covered_exactly_once():
+    n = 12
+    cam = _ortho_pixel_camera(n)
+    # Corners at pixel centres: the diagonal and all four sides run through pixel centres.
+    c = np.array([(-4.5, -4.5), (3.5, -4.5), (3.5, 3.5), (-4.5, 3.5)])
+    verts = np.column_stack([c, np.zeros(4)])
+    for tris in ([(0, 1, 2), (0, 2, 3)], [(0, 1, 3), (1, 2, 3)]):
+        counts = _coverage_counts(cam, verts, tris)
+        assert counts.max() == 1
+        # Independent coverage of the closed square with the half-open rule: x in [-4.5, 3.5), y in (-4.5, 3.5]
+        col = np.arange(n) + 0.5 - n / 2  # world x of pixel centres
+        row_y = n / 2 - (np.arange(n) + 0.5)
+        expected = ((col >= -4.5) & (col < 3.5))[None, :] & ((row_y > -4.5) & (row_y <= 3.5))[:, None]
+        np.testing.assert_array_equal(counts, expected.astype(int))
+
+
+@pytest.mark.parametrize("centre", [(0.5, 0.5), (0.0, 0.0), (0.3, -0.2)], ids=["on-centre", "on-corner", "generic"])
+def test_fan_around_a_vertex_has_no_gaps_or_overlaps(centre):
+    n = 16
+    cam = _ortho_pixel_camera(n)
+    k = 7
+    ang = np.linspace(0, 2 * np.pi, k, endpoint=False) + 0.1
+    ring = np.column_stack([6 * np.cos(ang), 6 * np.sin(ang), np.zeros(k)])
+    verts = np.vstack([[centre[0], centre[1], 0.0], ring])
+    tris = [(0, 1 + i, 1 + (i + 1) % k) for i in range(k)]
+    counts = _coverage_counts(cam, verts, tris)
+    assert counts.max() == 1
+    # Every pixel centre strictly inside the heptagon (away from its outer sides) is covered once.
+    cx = np.arange(n) + 0.5 - n / 2
+    cy = n / 2 - (np.arange(n) + 0.5)
+    X, Y = np.meshgrid(cx, cy)
+    inside = np.ones_like(X, bool)
+    for i in range(k):
+        a, b = ring[i, :2], ring[(i + 1) % k, :2]
+        crs = (b[0] - a[0]) * (Y - a[1]) - (b[1] - a[1]) * (X - a[0])
+        inside &= crs > 1e-9
+    assert inside.sum() > 50
+    assert np.all(counts[inside] == 1)
+
+
+def test_closed_mesh_front_faces_cover_the_silhouette_once():
+    cam = Camera((2.0, -5.0, 1.5), (0, 0, 0), fov=40, width=48, height=40)
+    mesh = Sphere((0, 0, 0), 1.2).to_trimesh(10)
+    v, t = np.asarray(mesh.vertices), np.asarray(mesh.faces)
+    counts = np.zeros((cam.height, cam.width), int)
+    for tri in t:
+        counts += rasterize(cam, v, [tri], [1.0]).covered  # culled: front faces only
+    depth, amb = ray_cast(cam, v, t)
+    hit = np.isfinite(depth).any(axis=2)
+    assert counts.max() == 1
+    clear = ~amb.any(axis=2)
+    np.testing.assert_array_equal(counts[clear] == 1, hit[clear])
+    # The silhouette (a pixel centre on it is ambiguous for the reference) never doubles up.
+    whole = rasterize(cam, v, t, np.ones(len(t))).covered
+    np.testing.assert_array_equal(whole, counts == 1)
+
+
+def test_near_plane_clipping_keeps_the_part_in_front():
+    """A floor that passes under and behind the eye: clipped, not dropped."""
+    cam = Camera((0.0, 0.0, 1.0), (0.0, 5.0, 0.0), fov=70, width=40, height=32)
+    verts = np.array([(-30.0, -20.0, 0.0), (30.0, -20.0, 0.0), (0.0, 40.0, 0.0), (0.0, -1.0, 3.0), (0.5, 0.5, -2.0), (-0.5, 0.8, 2.0)])
+    tris = np.array([(0, 1, 2), (3, 4, 5)])  # the second crosses the eye's plane in front and behind
+    h = homogeneous(cam, verts)
+    assert (h[3] < 0).any() and (h[3] > 0).any()
+    r = rasterize(cam, verts, tris, [0.25, 0.75], cull=False)
+    depth, amb = ray_cast(cam, verts, tris)
+    clear = ~amb.any(axis=2)
+    hit = np.isfinite(depth).any(axis=2)
+    assert hit[clear].mean() > 0.3
+    np.testing.assert_array_equal(r.covered[clear], hit[clear])
+    ok = clear & hit
+    np.testing.assert_allclose(r.front_depth[ok], np.nanmin(depth[ok], axis=1), rtol=1e-9)
+    best = np.nanargmin(np.where(np.isnan(depth[ok]), np.inf, depth[ok]), axis=1)
+    np.testing.assert_array_equal(r.front_value[ok], np.array([0.25, 0.75], np.float32)[best])
+
+
+def test_triangle_entirely_behind_the_eye_draws_nothing():
+    cam = Camera((0, 0, 0), (0, 1, 0), width=16, height=16)
+    r = rasterize(cam, [(-1, -2, -1), (1, -2, -1), (0, -2, 1)], [(0, 1, 2)], [1.0], cull=False)
+    assert not r.covered.any()
+
+
+@pytest.mark.parametrize(
+    ("kwargs", "error", "message"),
+    [
+        ({"vertices": np.zeros((3, 2))}, InvalidGeometryError, "vertices must have shape (V, 3), got (3, 2)"),
+        ({"triangles": [(0, 1, 3)]}, InvalidGeometryError, "triangles index vertices 0..2, got 0..3"),
+        ({"value_out": [1.0, 2.0]}, InvalidParameterError, "value_out must have one entry per triangle (1), got 2"),
+        ({"value_in": []}, InvalidParameterError, "value_in must have one entry per triangle (1), got 0"),
+    ],
+    ids=["vertex-shape", "index-range", "value-out-length", "value-in-length"],
+)
+def test_bad_input_names_the_field(kwargs, error, message):
+    args = {"vertices": np.eye(3), "triangles": [(0, 1, 2)], "value_out": [1.0]} | kwargs
+    with pytest.raises(error, match=re.escape(message)):
+        rasterize(CAMERAS["perspective"], **args)
