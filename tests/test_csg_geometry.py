@@ -238,3 +238,51 @@ def test_to_trimesh_is_closed_inscribed_and_converges(name):
     # inscribed: every vertex is in the closed solid (up to float32 storage: shrink by 1e-5 about the middle)
     mid = p.bounds.mean(axis=0)
     assert p.contains(mid + (1 - 1e-5) * (mesh.vertices - mid)).all()
+
+
+# --------------------------------------------------------------------------- clipped laminae
+
+
+def _disc_lamina(center, normal, radius, m=720, intensity=0.5):
+    from isocsg.laminae.model import Lamina
+
+    n = np.asarray(normal, float) / np.linalg.norm(normal)
+    a = np.cross(n, [0.31, 0.52, 0.79])
+    a /= np.linalg.norm(a)
+    b = np.cross(n, a)
+    t = np.linspace(0, 2 * np.pi, m, endpoint=False)
+    verts = np.asarray(center, float) + radius * (np.cos(t)[:, None] * a + np.sin(t)[:, None] * b)
+    return Lamina(verts, n, intensity, float(n @ verts[0]), "contour", 0)
+
+
+@pytest.mark.parametrize("z", [-0.6, 0.0, 0.35], ids=["below", "equator", "above"])
+def test_clipped_sphere_laminae_are_annuli(z):
+    from isocsg.csg.clip import clip_lamina_set
+
+    R, r = 1.0, 0.4
+    tree = Sphere((0, 0, 0), R) - Cylinder((0, 0, 0), (0, 0, 3), r)
+    rho = math.sqrt(R * R - z * z)
+    (c_sphere,) = clip_lamina_set(tree, 0, [_disc_lamina((0, 0, z), (0, 0, 1), rho, intensity=0.7)], resolution=1024)
+    (c_hole,) = clip_lamina_set(tree, 1, [_disc_lamina((0, 0, z), (0, 0, 1), r)], resolution=1024)
+    assert c_sphere.polarity == 1 and c_hole.polarity == -1
+    assert c_sphere.intensity == 0.7
+    assert c_sphere.area == pytest.approx(math.pi * (rho * rho - r * r), rel=1e-4)
+    # the subtracted cylinder's lamina keeps what it carves out of the sphere: its whole disc here
+    assert c_hole.area == pytest.approx(math.pi * r * r, rel=1e-4)
+    for ring in c_sphere.rings_3d():
+        np.testing.assert_allclose(ring[:, 2], z, atol=1e-12)
+
+
+@pytest.mark.parametrize("name", ["sphere-and-box", "nested", "cone-minus-sphere"], ids=str)
+def test_clipped_tilted_lamina_matches_manifold_slice(name):
+    from isocsg.csg.clip import clip_lamina_set
+
+    n = np.array([0.3, -0.4, 0.87])
+    lam = _disc_lamina((0.05, -0.05, 0.15), n, 0.9)
+    (c,) = clip_lamina_set(SCENES[name], 0, [lam], resolution=512)
+    ref = reference_slice(name, c.frame)
+    disc2d = Polygon((lam.vertices - c.frame[:3, 3]) @ c.frame[:3, :2])
+    expected = ref.intersection(disc2d)
+    assert expected.area > 0.05
+    assert c.area == pytest.approx(expected.area, rel=5e-3)
+    assert c.geometry.symmetric_difference(expected).area < 1e-2 * expected.area
