@@ -228,7 +228,7 @@ def _source_polygon(p, nr, s, s_verts, s_off, s_normal, s_u, s_w, s_q0, scale, P
     N = s_normal[s]
     q0 = s_q0[s]
     h = N[0] * (p[0] - q0[0]) + N[1] * (p[1] - q0[1]) + N[2] * (p[2] - q0[2])
-    if h <= 1e-12 * scale:
+    if h <= 1e-14 * scale:  # in (or behind) the source plane
         return 0, h, 0.0
     # 3D Sutherland-Hodgman against the receiving plane, written straight into 2D coordinates
     a0 = s_off[s]
@@ -419,18 +419,18 @@ def _evaluate(p, nr, s, s_verts, s_off, s_normal, s_u, s_w, s_q0, scale,
 
 @numba.njit(cache=True, parallel=True)
 def _kernel(P, NR, s_verts, s_off, s_normal, s_u, s_w, s_q0, s_L, s_group, ngroups, scale,
-            v_verts, v_voff, v_edges, v_eoff, v_center, v_radius, maxpts, E, state, overflow):
+            v_verts, v_voff, v_edges, v_eoff, v_center, v_radius, maxpts, vmax, E, state, overflow):
     n = P.shape[0]
     ns = s_L.shape[0]
     nchunk = min(n, 256)
     for c in prange(nchunk):
-        P2 = np.empty((MAXV, 2))
+        P2 = np.empty((vmax, 2))
         pts = np.empty((maxpts, 2))
         hull = np.empty((maxpts + 1, 2))
-        tmp = np.empty((MAXV, 2))
-        blk = np.empty((MAXB, MAXV, 2))
+        tmp = np.empty((vmax, 2))
+        blk = np.empty((MAXB, vmax, 2))
         blk_n = np.empty(MAXB, dtype=np.int64)
-        stk = np.empty((MAXB + 1, MAXV, 2))
+        stk = np.empty((MAXB + 1, vmax, 2))
         stk_n = np.empty(MAXB + 1, dtype=np.int64)
         stk_next = np.empty(MAXB + 1, dtype=np.int64)
         gstat = np.empty(ngroups, dtype=np.int64)
@@ -469,6 +469,12 @@ def _kernel(P, NR, s_verts, s_off, s_normal, s_u, s_w, s_q0, s_L, s_group, ngrou
             state[i] = worst
 
 
+def _vmax(sources: SourceArrays, pieces: PieceArrays) -> int:
+    """Vertex capacity of the polygon buffers: the source (plus its receiving-plane cut) and a silhouette."""
+    msrc = int(np.max(np.diff(sources.off))) if len(sources.off) > 1 else 0
+    return max(MAXV, msrc + 2 + min(pieces.maxpts, 4 * MAXV))
+
+
 def visible_illuminance(
     points: NDArray[np.float64],
     normals: NDArray[np.float64],
@@ -492,19 +498,19 @@ def visible_illuminance(
         sources.verts, sources.off, sources.normal, sources.u, sources.w, sources.q0, sources.radiance,
         sources.group, sources.ngroups, float(scale),
         pieces.verts, pieces.voff, pieces.edges, pieces.eoff, pieces.center, pieces.radius, pieces.maxpts,
-        E, state, overflow,
+        _vmax(sources, pieces), E, state, overflow,
     )
     return E, state, overflow
 
 
 @numba.njit(cache=True)
 def _single(p, nr, s, s_verts, s_off, s_normal, s_u, s_w, s_q0, scale,
-            v_verts, v_voff, v_edges, v_eoff, v_center, v_radius, maxpts, maxb):
-    P2 = np.empty((MAXV, 2))
+            v_verts, v_voff, v_edges, v_eoff, v_center, v_radius, maxpts, maxb, vmax):
+    P2 = np.empty((vmax, 2))
     pts = np.empty((maxpts, 2))
     hull = np.empty((maxpts + 1, 2))
-    tmp = np.empty((MAXV, 2))
-    blk = np.empty((maxb, MAXV, 2))
+    tmp = np.empty((vmax, 2))
+    blk = np.empty((maxb, vmax, 2))
     blk_n = np.zeros(maxb, dtype=np.int64)
     n2, h, A0 = _source_polygon(p, nr, s, s_verts, s_off, s_normal, s_u, s_w, s_q0, scale, P2)
     if n2 == 0 or A0 <= 0.0:
@@ -524,6 +530,6 @@ def blockers_single(
         np.ascontiguousarray(point, dtype=np.float64), np.ascontiguousarray(normal, dtype=np.float64), s,
         sources.verts, sources.off, sources.normal, sources.u, sources.w, sources.q0, float(scale),
         pieces.verts, pieces.voff, pieces.edges, pieces.eoff, pieces.center, pieces.radius, pieces.maxpts,
-        max(npieces, 1),
+        max(npieces, 1), 4 * _vmax(sources, pieces),
     )
     return P2, [blk[k, : blk_n[k]] for k in range(len(blk_n))]
