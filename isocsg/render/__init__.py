@@ -1,0 +1,17 @@
+"""Isoluminance rendering: compiled band fill, per-pixel CSG and image writers."""
+
+from __future__ import annotations
+
+from .painter import Renderer, RenderResult, RenderTimings, default_renderer, render
+from .raster import Raster, homogeneous, rasterize
+
+__all__ = [
+    "render",
+    "Renderer",
+    "RenderResult",
+    "RenderTimings",
+    "default_renderer",
+    "rasterize",
+    "Raster",
+    "homogeneous",
+]

@@ -1,0 +1,452 @@
+"""Isoluminance rendering of a scene: band fill, per-pixel CSG, depth test.
+
+Each primitive's surface bands (planar triangles of constant value, built by
+:func:`isocsg.laminae.build_laminae` and cached there because they do not
+depend on the viewpoint) are filled with :mod:`isocsg.render.raster`:
+
+- an object that is a single primitive needs its front surface only (back
+  faces are culled), filled straight into the image with a depth test;
+- an object that is a CSG tree fills the front *and* back surface of every
+  leaf (the ray's interval ``[front, back]`` through the convex leaf) inside
+  the object's screen rectangle, then the tree's postfix program is evaluated
+  per pixel on those intervals: the first depth where the result turns from
+  outside to inside is the visible point. If it is leaf i's front the pixel
+  shows i's ``value_out``; if it is leaf i's back (the inside of a cut), i's
+  ``value_in``. Results that are empty along the ray stay background.
+
+Several objects: the nearest visible point wins.
+"""
+
+from __future__ import annotations
+
+import math
+import time
+from collections import OrderedDict
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+from numba import njit
+from numpy.typing import NDArray
+
+from .._validation import integer
+from ..camera import Camera
+from ..csg.tree import CSGNode
+from ..errors import InvalidParameterError
+from ..geometry.primitives import Primitive
+from ..laminae.model import BandMesh
+from ..scene.model import MAX_CONTOURS, Scene
+from .raster import NEAR_RELATIVE, fill_kernel, homogeneous, key_to_depth
+
+__all__ = ["RenderResult", "RenderTimings", "Renderer", "render", "default_renderer"]
+
+#: ``build(primitive, lights, material, contours, eye=...) -> LaminaSet`` (or a BandMesh).
+BandBuilder = Callable[..., Any]
+
+
+@dataclass(frozen=True, slots=True)
+class RenderTimings:
+    """Wall-clock seconds spent in one render.
+
+    Attributes
+    ----------
+    build : float
+        Obtaining the band meshes (building them, or fetching them from cache).
+    fill : float
+        Projection, triangle fill, per-pixel CSG and composition of the image.
+    """
+
+    build: float
+    fill: float
+
+    @property
+    def total(self) -> float:
+        """``build + fill``."""
+        return self.build + self.fill
+
+
+@dataclass(frozen=True, slots=True, eq=False)
+class RenderResult:
+    """An isoluminance image and what each pixel shows.
+
+    Attributes
+    ----------
+    image : ndarray, shape (H, W), float32
+        Intensity; NaN where no object is visible.
+    depth : ndarray, shape (H, W), float64
+        Camera depth (along the view direction) of the visible point; ``inf``
+        on the background.
+    object_index : ndarray, shape (H, W), int32
+        Index into ``scene.objects`` of the visible object, -1 on the background.
+    primitive_index : ndarray, shape (H, W), int32
+        Index of the visible leaf in the object's ``CSGNode.program()`` leaves
+        (0 for an object that is a single primitive), -1 on the background.
+    timings : RenderTimings
+    camera : Camera
+    """
+
+    image: NDArray[np.float32]
+    depth: NDArray[np.float64]
+    object_index: NDArray[np.int32]
+    primitive_index: NDArray[np.int32]
+    timings: RenderTimings
+    camera: Camera
+
+
+# --------------------------------------------------------------------- kernels
+@njit(cache=True, inline="always")
+def _evaluate(program: NDArray[np.int64], inside: NDArray[np.bool_], stack: NDArray[np.bool_]) -> bool:
+    # Postfix program of CSGNode.program(): i >= 0 pushes leaf i; -(op*1000+k) pops k.
+    sp = 0
+    for p in program:
+        if p >= 0:
+            stack[sp] = inside[p]
+            sp += 1
+            continue
+        code = -p
+        op = code // 1000
+        k = code % 1000
+        base = sp - k
+        if op == 1:  # union
+            r = False
+            for s in range(base, sp):
+                r = r or stack[s]
+        elif op == 2:  # intersection
+            r = True
+            for s in range(base, sp):
+                r = r and stack[s]
+        else:  # difference: first minus the others
+            r = stack[base]
+            for s in range(base + 1, sp):
+                r = r and not stack[s]
+        stack[base] = r
+        sp = base + 1
+    return stack[0]
+
+
+@njit(cache=True)
+def resolve_csg(
+    kf: NDArray[np.float64], vf: NDArray[np.float32], kb: NDArray[np.float64], vb: NDArray[np.float32],
+    program: NDArray[np.int64], gid_base: int, ox: int, oy: int,
+    zkey: NDArray[np.float64], value: NDArray[np.float32], gid: NDArray[np.int32],
+) -> None:
+    """Per-pixel CSG on leaf intervals, depth-tested into the image buffers.
+
+    ``kf``/``kb`` (n, h, w) are the depth keys of each leaf's front (``+inf``
+    where none) and back (``-inf`` where none) over the viewport at
+    ``(oy, ox)``; a back without a front means the eye is inside that leaf.
+    Events at the same depth are applied together (regularised operations:
+    touching or coincident surfaces do not show).
+    """
+    n, h, w = kf.shape
+    ev_key = np.empty(2 * n)
+    ev_leaf = np.empty(2 * n, np.int64)
+    ev_enter = np.empty(2 * n, np.bool_)
+    inside = np.zeros(n, np.bool_)
+    stack = np.zeros(max(len(program), 1), np.bool_)
+    for r in range(h):
+        for c in range(w):
+            m = 0
+            for i in range(n):
+                f = kf[i, r, c]
+                b = kb[i, r, c]
+                inside[i] = False
+                if b == -np.inf:
+                    continue  # no interval (a front without a back is a zero-width sliver)
+                if f == np.inf:
+                    inside[i] = True  # entered behind the near plane
+                else:
+                    # insertion sort by key; entries before exits at equal keys are
+                    # harmless because equal keys are applied as one group
+                    j = m
+                    while j > 0 and ev_key[j - 1] > f:
+                        ev_key[j] = ev_key[j - 1]
+                        ev_leaf[j] = ev_leaf[j - 1]
+                        ev_enter[j] = ev_enter[j - 1]
+                        j -= 1
+                    ev_key[j] = f
+                    ev_leaf[j] = i
+                    ev_enter[j] = True
+                    m += 1
+                j = m
+                while j > 0 and ev_key[j - 1] > b:
+                    ev_key[j] = ev_key[j - 1]
+                    ev_leaf[j] = ev_leaf[j - 1]
+                    ev_enter[j] = ev_enter[j - 1]
+                    j -= 1
+                ev_key[j] = b
+                ev_leaf[j] = i
+                ev_enter[j] = False
+                m += 1
+            if m == 0:
+                continue
+            state = _evaluate(program, inside, stack)
+            k = 0
+            while k < m:
+                key = ev_key[k]
+                g = k
+                while g < m and ev_key[g] == key:
+                    inside[ev_leaf[g]] = ev_enter[g]
+                    g += 1
+                now = _evaluate(program, inside, stack)
+                if now and not state:
+                    # The surface that starts the solid: an entry if there is one.
+                    e = k
+                    for q in range(k, g):
+                        if ev_enter[q]:
+                            e = q
+                            break
+                    leaf = ev_leaf[e]
+                    rr = r + oy
+                    cc = c + ox
+                    if key < zkey[rr, cc]:
+                        zkey[rr, cc] = key
+                        value[rr, cc] = vf[leaf, r, c] if ev_enter[e] else vb[leaf, r, c]
+                        gid[rr, cc] = gid_base + leaf
+                    break
+                state = now
+                k = g
+
+
+@njit(cache=True)
+def _finish(
+    zkey: NDArray[np.float64], value: NDArray[np.float32], gid: NDArray[np.int32],
+    obj_of: NDArray[np.int32], leaf_of: NDArray[np.int32], perspective: bool,
+    image: NDArray[np.float32], depth: NDArray[np.float64], obj: NDArray[np.int32], prim: NDArray[np.int32],
+) -> None:
+    h, w = zkey.shape
+    for r in range(h):
+        for c in range(w):
+            g = gid[r, c]
+            if g < 0:
+                image[r, c] = np.nan
+                depth[r, c] = np.inf
+                obj[r, c] = -1
+                prim[r, c] = -1
+            else:
+                image[r, c] = value[r, c]
+                depth[r, c] = -1.0 / zkey[r, c] if perspective else zkey[r, c]
+                obj[r, c] = obj_of[g]
+                prim[r, c] = leaf_of[g]
+
+
+# ------------------------------------------------------------------- renderer
+@dataclass(frozen=True, slots=True, eq=False)
+class _Prepared:
+    vertices: NDArray[np.float64]
+    triangles: NDArray[np.int32]
+    value_out: NDArray[np.float32]
+    value_in: NDArray[np.float32]
+
+
+class Renderer:
+    """Renders scenes with the isoluminance method, reusing band meshes.
+
+    Parameters
+    ----------
+    build_laminae : callable, optional
+        ``build_laminae(primitive, lights, material, contours, eye=eye)``
+        returning a :class:`~isocsg.laminae.model.LaminaSet` (or a
+        :class:`~isocsg.laminae.model.BandMesh`). Defaults to
+        :func:`isocsg.laminae.build_laminae`, which caches the
+        view-independent bands, so rendering from a new viewpoint only fills.
+
+    Examples
+    --------
+    >>> from isocsg import Camera, PointLight, Scene, Sphere
+    >>> scene = Scene(Camera((0, -5, 0), (0, 0, 0), width=32, height=32),
+    ...               [PointLight((3, -5, 4))], [Sphere((0, 0, 0), 1)])
+    >>> result = Renderer().render(scene, contours=16)  # doctest: +SKIP
+    """
+
+    def __init__(self, build_laminae: BandBuilder | None = None) -> None:
+        self._build = build_laminae
+        # Arrays converted for the kernels, keyed by the band mesh's identity.
+        self._prepared: OrderedDict[int, tuple[BandMesh, _Prepared]] = OrderedDict()
+
+    def _builder(self) -> BandBuilder:
+        if self._build is None:
+            from ..laminae import build_laminae
+
+            self._build = build_laminae
+        return self._build
+
+    def bands(self, primitive: Primitive, lights: Sequence[Any], material: Any, contours: int, eye: Any) -> BandMesh:
+        """The band mesh of one primitive (from the builder and its cache)."""
+        out = self._builder()(primitive, tuple(lights), material, contours, eye=eye)
+        bands = getattr(out, "bands", out)
+        if not isinstance(bands, BandMesh):
+            raise InvalidParameterError(f"build_laminae must return a LaminaSet or BandMesh, got {type(out).__name__}")
+        return bands
+
+    def _prepare(self, bands: BandMesh) -> _Prepared:
+        key = id(bands)
+        hit = self._prepared.get(key)
+        if hit is not None and hit[0] is bands:
+            self._prepared.move_to_end(key)
+            return hit[1]
+        prep = _Prepared(
+            np.ascontiguousarray(bands.vertices, dtype=np.float64),
+            np.ascontiguousarray(bands.triangles, dtype=np.int32),
+            np.ascontiguousarray(bands.value_out, dtype=np.float32),
+            np.ascontiguousarray(bands.value_in, dtype=np.float32),
+        )
+        self._prepared[key] = (bands, prep)
+        while len(self._prepared) > 256:
+            self._prepared.popitem(last=False)
+        return prep
+
+    def render(
+        self,
+        scene: Scene,
+        *,
+        camera: Camera | None = None,
+        contours: int | None = None,
+        progress: Callable[[int, int], None] | None = None,
+    ) -> RenderResult:
+        """Render ``scene`` (optionally from another camera or with another contour count).
+
+        Parameters
+        ----------
+        scene : Scene
+        camera : Camera, optional
+            Defaults to ``scene.camera``.
+        contours : int, optional
+            Contours per light family; defaults to ``scene.render.contours``.
+        progress : callable, optional
+            Called as ``progress(done, total)`` after each primitive is filled.
+
+        Returns
+        -------
+        RenderResult
+
+        Raises
+        ------
+        InvalidParameterError
+            On a non-scene argument, a bad camera or contour count.
+        """
+        if not isinstance(scene, Scene):
+            raise InvalidParameterError(f"scene must be a Scene, got {type(scene).__name__}")
+        cam = scene.camera if camera is None else camera
+        if not isinstance(cam, Camera):
+            raise InvalidParameterError(f"camera must be a Camera, got {type(cam).__name__}")
+        n_contours = scene.render.contours if contours is None else contours
+        n_contours = integer("contours", n_contours, low=1, high=MAX_CONTOURS, error=InvalidParameterError)
+
+        t0 = time.perf_counter()
+        objects: list[tuple[int, list[Primitive], NDArray[np.int64] | None, list[_Prepared]]] = []
+        for k, obj in enumerate(scene.objects):
+            if isinstance(obj.shape, CSGNode):
+                leaves, program = obj.shape.program()
+            else:
+                leaves, program = [obj.shape], None
+            preps = [
+                self._prepare(self.bands(p, scene.lights, obj.material, n_contours, cam.eye)) for p in leaves
+            ]
+            objects.append((k, leaves, program, preps))
+        t1 = time.perf_counter()
+
+        H, W = cam.height, cam.width
+        persp = not cam.orthographic
+        projected = [[homogeneous(cam, p.vertices) for p in preps] for _, _, _, preps in objects]
+        far = max((float(np.max(np.abs(h[3]))) for hs in projected for h in hs if h.shape[1]), default=1.0)
+        near = NEAR_RELATIVE * max(far, 1e-300)
+        zkey = np.full((H, W), np.inf)
+        value = np.empty((H, W), np.float32)
+        gid = np.full((H, W), -1, np.int32)
+        obj_of: list[int] = []
+        leaf_of: list[int] = []
+        total = sum(len(o[1]) for o in objects)
+        done = 0
+        dummy_k = np.full((1, 1), -np.inf)
+        dummy_v = np.empty((1, 1), np.float32)
+        for (k, leaves, program, preps), hs in zip(objects, projected):
+            base = len(obj_of)
+            obj_of.extend([k] * len(leaves))
+            leaf_of.extend(range(len(leaves)))
+            if program is None:
+                p, h = preps[0], hs[0]
+                fill_kernel(
+                    h[0], h[1], h[2], h[3], p.triangles, p.value_out, p.value_in, near, persp, True, False,
+                    base, 0, 0, zkey, value, gid, dummy_k, dummy_v,
+                )
+            else:
+                self._fill_csg(preps, hs, program, near, persp, base, W, H, zkey, value, gid, progress, done, total)
+            done += len(leaves)
+            if progress is not None:
+                progress(done, total)
+        image = np.empty((H, W), np.float32)
+        depth = np.empty((H, W))
+        obj_idx = np.empty((H, W), np.int32)
+        prim_idx = np.empty((H, W), np.int32)
+        _finish(
+            zkey, value, gid, np.asarray(obj_of, np.int32), np.asarray(leaf_of, np.int32), persp,
+            image, depth, obj_idx, prim_idx,
+        )
+        t2 = time.perf_counter()
+        return RenderResult(image, depth, obj_idx, prim_idx, RenderTimings(t1 - t0, t2 - t1), cam)
+
+    @staticmethod
+    def _fill_csg(
+        preps: list[_Prepared], hs: list[NDArray[np.float64]], program: NDArray[np.int64], near: float,
+        persp: bool, base: int, W: int, H: int,
+        zkey: NDArray[np.float64], value: NDArray[np.float32], gid: NDArray[np.int32],
+        progress: Callable[[int, int], None] | None, done: int, total: int,
+    ) -> None:
+        # The object's screen rectangle (the whole image if anything crosses the near plane).
+        ox, oy, x1, y1 = 0, 0, W, H
+        allh = np.hstack(hs) if hs else np.zeros((4, 0))
+        if allh.shape[1] and np.all(allh[3] >= near):
+            cols, rows = allh[0] / allh[2], allh[1] / allh[2]
+            ox = min(max(int(math.floor(cols.min())) - 1, 0), W)
+            oy = min(max(int(math.floor(rows.min())) - 1, 0), H)
+            x1 = min(max(int(math.ceil(cols.max())) + 1, 0), W)
+            y1 = min(max(int(math.ceil(rows.max())) + 1, 0), H)
+        w, h = x1 - ox, y1 - oy
+        if w <= 0 or h <= 0:
+            return
+        n = len(preps)
+        kf = np.full((n, h, w), np.inf)
+        kb = np.full((n, h, w), -np.inf)
+        vf = np.empty((n, h, w), np.float32)
+        vb = np.empty((n, h, w), np.float32)
+        scratch = np.empty((h, w), np.int32)
+        for i, (p, hv) in enumerate(zip(preps, hs)):
+            fill_kernel(
+                hv[0], hv[1], hv[2], hv[3], p.triangles, p.value_out, p.value_in, near, persp, True, True,
+                0, ox, oy, kf[i], vf[i], scratch, kb[i], vb[i],
+            )
+            if progress is not None and i < n - 1:
+                progress(done + i + 1, total)
+        resolve_csg(kf, vf, kb, vb, program, base, ox, oy, zkey, value, gid)
+
+
+_DEFAULT: Renderer | None = None
+
+
+def default_renderer() -> Renderer:
+    """The module-wide :class:`Renderer` used by :func:`render`."""
+    global _DEFAULT
+    if _DEFAULT is None:
+        _DEFAULT = Renderer()
+    return _DEFAULT
+
+
+def render(
+    scene: Scene,
+    *,
+    camera: Camera | None = None,
+    contours: int | None = None,
+    progress: Callable[[int, int], None] | None = None,
+) -> RenderResult:
+    """Render a scene with isoluminance bands; see :meth:`Renderer.render`.
+
+    Examples
+    --------
+    >>> from isocsg import Camera, PointLight, Scene, Sphere
+    >>> scene = Scene(Camera((0, -5, 0), (0, 0, 0), width=32, height=32),
+    ...               [PointLight((3, -5, 4))], [Sphere((0, 0, 0), 1)])
+    >>> result = render(scene, contours=16)  # doctest: +SKIP
+    """
+    return default_renderer().render(scene, camera=camera, contours=contours, progress=progress)

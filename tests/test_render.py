@@ -1,0 +1,317 @@
+"""Scene rendering: silhouettes, CSG resolution, depth test and band reuse.
+
+The band meshes here come from a small builder written in this file (the
+primitive's inscribed triangle mesh with the exact shading at each face
+centre), so these tests check the fill, the per-pixel CSG and the composition
+against analytic ray-sphere intervals computed independently below.
+"""
+
+from __future__ import annotations
+
+import functools
+import itertools
+
+import numpy as np
+import pytest
+
+from isocsg import (
+    Camera,
+    Difference,
+    Intersection,
+    InvalidParameterError,
+    Material,
+    PointLight,
+    Scene,
+    SceneObject,
+    Sphere,
+    Union,
+    shade,
+)
+from isocsg.laminae.model import BandMesh
+from isocsg.render import Renderer
+from isocsg.render.painter import resolve_csg
+
+RES = 48  # segments of the inscribed test meshes
+
+
+def mesh_bands(primitive, lights, material, contours, *, eye):
+    """Faceted stand-in for the laminae: constant exact shading per face.
+
+    ``value_in`` is made negative so that a test can tell which side is shown.
+    """
+    mesh = primitive.to_trimesh(RES)
+    v = np.asarray(mesh.vertices, dtype=float)
+    t = np.asarray(mesh.faces, dtype=np.int32)
+    n = np.cross(v[t[:, 1]] - v[t[:, 0]], v[t[:, 2]] - v[t[:, 0]])
+    n /= np.linalg.norm(n, axis=1, keepdims=True)
+    c = v[t].mean(axis=1)
+    out = shade(c, n, eye, lights, material)
+    inside = -1.0 - shade(c, -n, eye, lights, material)
+    return BandMesh(v, t, out, inside, np.zeros(len(t), np.int32))
+
+
+def sphere_intervals(camera: Camera, spheres):
+    """Camera depth of entry and exit of every pixel ray for each sphere (inf / -inf on a miss)."""
+    o = camera.ray_origins().reshape(-1, 3)
+    d = camera.ray_directions().reshape(-1, 3)
+    cosf = d @ camera.frame[0]
+    fronts, backs, dist = [], [], []
+    for s in spheres:
+        oc = o - np.asarray(s.center)
+        b = np.einsum("ij,ij->i", oc, d)
+        disc = b * b - (np.einsum("ij,ij->i", oc, oc) - s.radius**2)
+        hit = disc > 0
+        sq = np.sqrt(np.where(hit, disc, 0))
+        t0, t1 = -b - sq, -b + sq
+        fronts.append(np.where(hit & (t0 > 0), t0 * cosf, np.where(hit & (t1 > 0), -np.inf, np.inf)))
+        backs.append(np.where(hit & (t1 > 0), t1 * cosf, -np.inf))
+        # distance from the centre to the ray line, relative to the radius
+        dist.append(np.sqrt(np.maximum(np.einsum("ij,ij->i", oc, oc) - b * b, 0)) / s.radius)
+    shape = (camera.height, camera.width)
+    return [f.reshape(shape) for f in fronts], [b.reshape(shape) for b in backs], [x.reshape(shape) for x in dist]
+
+
+LIGHTS = (PointLight((4.0, -6.0, 5.0)),)
+CAM = Camera((0.5, -6.0, 1.5), (0, 0, 0), fov=40, width=64, height=56)
+ORTHO = Camera((0.5, -6.0, 1.5), (0, 0, 0), width=60, height=50, orthographic=True, height_m=4.0)
+CAMS = {"perspective": CAM, "orthographic": ORTHO}
+# A pixel whose ray passes this close to a sphere's silhouette (relative) is left out: the
+# inscribed mesh of RES segments lies within 1 - cos(pi / RES) of the true surface.
+SIL = 0.01
+
+
+def renderer():
+    return Renderer(build_laminae=mesh_bands)
+
+
+@pytest.mark.parametrize("cam", CAMS.values(), ids=CAMS.keys())
+def test_sphere_silhouette_is_the_analytic_disc(cam):
+    s = Sphere((0.2, 0.3, -0.1), 1.3)
+    res = renderer().render(Scene(cam, LIGHTS, [s]), contours=8)
+    _, _, (dist,) = sphere_intervals(cam, [s])
+    clear = np.abs(dist - 1) > SIL
+    disc = dist < 1
+    assert disc[clear].sum() > 200 and (~disc)[clear].sum() > 200
+    np.testing.assert_array_equal(np.isfinite(res.image)[clear], disc[clear])
+    np.testing.assert_array_equal((res.object_index == 0)[clear], disc[clear])
+    np.testing.assert_array_equal(res.primitive_index[clear], np.where(disc, 0, -1)[clear])
+    assert np.all(res.image[np.isfinite(res.image)] > 0)  # only outside values of the front surface
+    front, _, _ = sphere_intervals(cam, [s])
+    ok = clear & disc
+    np.testing.assert_allclose(res.depth[ok], front[0][ok], rtol=0.02)
+    assert res.image.dtype == np.float32 and res.object_index.dtype == np.int32
+
+
+def _random_tree(rng, pool, depth):
+    if depth == 0 or rng.random() < 0.25:
+        return pool[rng.integers(len(pool))]
+    kind = rng.choice([Union, Intersection, Difference])
+    k = int(rng.integers(2, 4))
+    return kind(*[_random_tree(rng, pool, depth - 1) for _ in range(k)])
+
+
+@pytest.mark.parametrize("seed", range(6), ids=lambda s: f"tree{s}")
+def test_csg_resolution_matches_brute_force_on_intervals(seed):
+    rng = np.random.default_rng(seed)
+    pool = [Sphere((float(i), 0, 0), 1) for i in range(5)]
+    tree = _random_tree(rng, pool, 3)
+    if isinstance(tree, Sphere):
+        tree = Union(tree, pool[-1])
+    leaves, program = tree.program()
+    n, h, w = len(leaves), 12, 10
+    # Integer-valued keys: many coincident events exercise the grouping.
+    f = rng.integers(0, 8, (n, h, w)).astype(float)
+    b = f + rng.integers(0, 5, (n, h, w))
+    empty = rng.random((n, h, w)) < 0.25
+    eye_inside = rng.random((n, h, w)) < 0.1
+    f[empty | eye_inside] = np.inf
+    b[empty] = -np.inf
+    vf = rng.uniform(0, 1, (n, h, w)).astype(np.float32)
+    vb = -rng.uniform(0, 1, (n, h, w)).astype(np.float32)
+    zkey = np.full((h, w), np.inf)
+    zkey[0, :] = 2.5  # something already nearer in the image on row 0
+    value = np.zeros((h, w), np.float32)
+    gid = np.full((h, w), -1, np.int32)
+    resolve_csg(f, vf, b, vb, program, 10, 0, 0, zkey, value, gid)
+    n_visible = 0
+    for r, c in itertools.product(range(h), range(w)):
+        # Brute force: membership on each open stretch between consecutive distinct depths,
+        # evaluated on the tree structure itself (not on the postfix program).
+        def member(t):
+            flags = [
+                ((-np.inf if (f[i, r, c] == np.inf and b[i, r, c] > -np.inf) else f[i, r, c]) < t < b[i, r, c])
+                for i in range(n)
+            ]
+            it = iter(flags)
+            return _evaluate_positional(tree, it)
+
+        ts = np.unique(np.concatenate([f[:, r, c], b[:, r, c]]))
+        ts = ts[np.isfinite(ts)]
+        expected = None
+        prev = member(-1e9)
+        for k, t in enumerate(ts):
+            nxt = ts[k + 1] if k + 1 < len(ts) else t + 1.0
+            now = member((t + nxt) / 2)
+            if now and not prev:
+                expected = t
+                break
+            prev = now
+        if expected is None or expected >= (2.5 if r == 0 else np.inf):
+            assert gid[r, c] == -1
+            continue
+        n_visible += 1
+        assert zkey[r, c] == expected
+        leaf = gid[r, c] - 10
+        assert 0 <= leaf < n
+        # The shown surface is one of that leaf's surfaces at this depth, with the matching value.
+        if value[r, c] > 0:
+            assert f[leaf, r, c] == expected and value[r, c] == vf[leaf, r, c]
+        else:
+            assert b[leaf, r, c] == expected and value[r, c] == vb[leaf, r, c]
+            # a back face shows only when no leaf enters at that depth
+            entering = [i for i in range(n) if f[i, r, c] == expected]
+            assert not entering
+    assert n_visible > 5
+
+
+def _evaluate_positional(node, flags):
+    if isinstance(node, Sphere):
+        return next(flags)
+    vals = [_evaluate_positional(c, flags) for c in node.children]
+    if isinstance(node, Union):
+        return any(vals)
+    if isinstance(node, Intersection):
+        return all(vals)
+    return vals[0] and not any(vals[1:])
+
+
+def _visible_from_intervals(fronts, backs, tree_eval):
+    """Analytic visible surface per pixel: (leaf, is_front, depth) from the exact intervals."""
+    h, w = fronts[0].shape
+    leaf = np.full((h, w), -1)
+    is_front = np.zeros((h, w), bool)
+    depth = np.full((h, w), np.inf)
+    n = len(fronts)
+    for r, c in itertools.product(range(h), range(w)):
+        ev = sorted(
+            [(fronts[i][r, c], i, True) for i in range(n) if np.isfinite(fronts[i][r, c])]
+            + [(backs[i][r, c], i, False) for i in range(n) if np.isfinite(backs[i][r, c])]
+        )
+        state = [fronts[i][r, c] == -np.inf for i in range(n)]
+        prev = tree_eval(state)
+        for t, i, enter in ev:
+            state[i] = enter
+            now = tree_eval(state)
+            if now and not prev:
+                leaf[r, c], is_front[r, c], depth[r, c] = i, enter, t
+                break
+            prev = now
+    return leaf, is_front, depth
+
+
+CSG_CASES = {
+    "difference": (Difference(Sphere((0, 0, 0), 1.2), Sphere((0.3, -0.9, 0.4), 0.8)), lambda s: s[0] and not s[1]),
+    "intersection": (Intersection(Sphere((-0.4, 0, 0), 1.1), Sphere((0.4, 0.1, 0.1), 1.0)), lambda s: s[0] and s[1]),
+    "union": (Union(Sphere((-0.5, 0, 0), 0.9), Sphere((0.6, 0.2, 0.1), 0.8)), lambda s: s[0] or s[1]),
+}
+
+
+@pytest.mark.parametrize("cam", CAMS.values(), ids=CAMS.keys())
+@pytest.mark.parametrize("case", CSG_CASES.values(), ids=CSG_CASES.keys())
+def test_csg_render_matches_analytic_intervals(case, cam):
+    tree, tree_eval = case
+    leaves, _ = tree.program()
+    res = renderer().render(Scene(cam, LIGHTS, [tree]), contours=8)
+    fronts, backs, dists = sphere_intervals(cam, leaves)
+    leaf, is_front, depth = _visible_from_intervals(fronts, backs, tree_eval)
+    # Leave out pixels near a silhouette or where two surfaces are nearly at the same depth.
+    clear = np.all([np.abs(d - 1) > SIL for d in dists], axis=0)
+    ev = np.stack([np.where(np.isfinite(x), x, np.nan) for x in fronts + backs])
+    srt = np.sort(ev, axis=0)
+    with np.errstate(invalid="ignore"):
+        close = np.nanmin(np.where(np.isnan(np.diff(srt, axis=0)), np.inf, np.diff(srt, axis=0)), axis=0) < 0.05
+    clear &= ~close
+    assert clear.mean() > 0.7
+    np.testing.assert_array_equal(res.primitive_index[clear], leaf[clear])
+    shown = clear & (leaf >= 0)
+    assert shown.sum() > 150
+    np.testing.assert_array_equal((res.image[shown] > 0), is_front[shown])
+    np.testing.assert_allclose(res.depth[shown], depth[shown], rtol=0.02)
+    if tree_eval is CSG_CASES["difference"][1]:
+        assert (shown & ~is_front).sum() > 50  # the inside of the cut is really seen
+
+
+def test_empty_difference_renders_background_only():
+    scene = Scene(CAM, LIGHTS, [Sphere((0, 0, 0), 0.5) - Sphere((0, 0, 0), 1.0)])
+    res = renderer().render(scene, contours=4)
+    assert np.all(np.isnan(res.image))
+    assert np.all(res.object_index == -1) and np.all(res.primitive_index == -1)
+    assert np.all(np.isinf(res.depth))
+
+
+@pytest.mark.parametrize("cam", CAMS.values(), ids=CAMS.keys())
+def test_several_objects_nearest_wins(cam):
+    a = Sphere((-0.3, 0.8, 0.0), 1.0)
+    b = Sphere((0.5, -0.6, 0.2), 0.7)
+    c = Sphere((0.0, 0.0, 0.0), 0.9) - Sphere((0.0, -0.7, 0.0), 0.5)
+    spheres = [a, b] + c.program()[0]
+    scene = Scene(cam, LIGHTS, [SceneObject(a), SceneObject(b, Material(kd=0.5)), SceneObject(c)])
+    res = renderer().render(scene, contours=4)
+    fronts, backs, dists = sphere_intervals(cam, spheres)
+    # Visible depth of the CSG object from its analytic intervals.
+    cl, cf, cd = _visible_from_intervals(fronts[2:], backs[2:], lambda s: s[0] and not s[1])
+    cand = np.stack([np.where(np.isfinite(fronts[0]) & (fronts[0] > 0), fronts[0], np.inf),
+                     np.where(np.isfinite(fronts[1]) & (fronts[1] > 0), fronts[1], np.inf), cd])
+    nearest = np.where(np.isinf(cand.min(axis=0)), -1, cand.argmin(axis=0))
+    srt = np.sort(cand, axis=0)
+    with np.errstate(invalid="ignore"):
+        clear = np.all([np.abs(d - 1) > SIL for d in dists], axis=0) & ~(srt[1] - srt[0] < 0.05)
+    assert len(np.unique(nearest[clear])) == 4  # background and all three objects
+    np.testing.assert_array_equal(res.object_index[clear], nearest[clear])
+
+
+def test_progress_reports_every_primitive():
+    calls = []
+    scene = Scene(CAM, LIGHTS, [Sphere((0, 0, 0), 1), Union(Sphere((2, 0, 0), 1), Sphere((2, 0, 1), 1))])
+    renderer().render(scene, contours=4, progress=lambda d, t: calls.append((d, t)))
+    assert calls[-1] == (3, 3)
+    assert [d for d, _ in calls] == sorted(d for d, _ in calls)
+
+
+def test_bands_are_reused_from_a_new_viewpoint():
+    """The builder caches view-independent bands; a new camera only fills again."""
+    built = []
+
+    @functools.lru_cache(maxsize=None)
+    def cached(primitive, lights, material, contours):
+        built.append(primitive)
+        return mesh_bands(primitive, lights, material, contours, eye=(0.0, 0.0, 0.0))
+
+    def build(primitive, lights, material, contours, *, eye):
+        return cached(primitive, lights, material, contours)
+
+    r = Renderer(build_laminae=build)
+    scene = Scene(CAM, LIGHTS, [Sphere((0, 0, 0), 1) | Sphere((1, 0, 0), 1), Sphere((0, 2, 0), 0.5)])
+    first = r.render(scene, contours=16)
+    assert len(built) == 3
+    second = r.render(scene, camera=CAM.with_view((3.0, -4.0, 2.0)), contours=16)
+    assert len(built) == 3
+    assert np.isfinite(second.image).sum() > 100
+    assert not np.array_equal(np.isfinite(first.image), np.isfinite(second.image))
+    r.render(scene, contours=17)
+    assert len(built) == 6
+
+
+@pytest.mark.parametrize(
+    ("kwargs", "message"),
+    [({"contours": 0}, "contours"), ({"camera": "cam"}, "camera must be a Camera, got str")],
+    ids=["contours", "camera"],
+)
+def test_bad_arguments_raise(kwargs, message):
+    with pytest.raises(InvalidParameterError, match=message):
+        renderer().render(Scene(CAM, LIGHTS, [Sphere((0, 0, 0), 1)]), **kwargs)
+
+
+def test_not_a_scene_raises():
+    with pytest.raises(InvalidParameterError, match="scene must be a Scene, got list"):
+        renderer().render([Sphere((0, 0, 0), 1)])
