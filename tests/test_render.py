@@ -29,6 +29,7 @@ from isocsg import (
 )
 from isocsg.laminae.model import BandMesh
 from isocsg.render import Renderer
+from isocsg.render import image as imagemod
 from isocsg.render.painter import resolve_csg
 
 RES = 48  # segments of the inscribed test meshes
@@ -315,3 +316,63 @@ def test_bad_arguments_raise(kwargs, message):
 def test_not_a_scene_raises():
     with pytest.raises(InvalidParameterError, match="scene must be a Scene, got list"):
         renderer().render([Sphere((0, 0, 0), 1)])
+
+
+# ------------------------------------------------------------------- images
+def test_to_uint8_follows_the_conventions():
+    from isocsg.render.image import to_uint8
+
+    img = np.array([[np.nan, -0.5, 0.0, 0.2], [0.5, 0.999, 1.0, 3.0]], np.float32)
+    expected = [[0, 0, 0, round(0.2 * 255)], [round(0.5 * 255), round(0.999 * 255), 255, 255]]
+    assert to_uint8(img).dtype == np.uint8
+    np.testing.assert_array_equal(to_uint8(img), expected)
+
+
+def test_png_and_npy_round_trip(tmp_path):
+    from PIL import Image
+
+    from isocsg.render.image import save_npy, save_png, to_uint8
+
+    res = renderer().render(Scene(CAM, LIGHTS, [Sphere((0, 0, 0), 1)]), contours=8)
+    save_png(tmp_path / "a.png", res.image)
+    save_npy(tmp_path / "a.npy", res.image)
+    png = np.asarray(Image.open(tmp_path / "a.png"))
+    assert png.shape == (CAM.height, CAM.width) and png.dtype == np.uint8
+    np.testing.assert_array_equal(png, to_uint8(res.image))
+    back = np.load(tmp_path / "a.npy")
+    assert back.dtype == np.float32
+    np.testing.assert_array_equal(np.isnan(back), np.isnan(res.image))
+    np.testing.assert_array_equal(back[~np.isnan(back)], res.image[~np.isnan(res.image)])
+
+
+def test_svg_keeps_order_colour_and_fixed_decimals(tmp_path):
+    import xml.etree.ElementTree as ET
+
+    from isocsg.render.image import save_svg
+
+    polys = [[(0, 0), (10, 0), (10, 10)], [(1.23456, 2), (5, 5), (2, 7.5), (0, 3)]]
+    save_svg(tmp_path / "a.svg", polys, [0.0, 1.0], width=10, height=10, decimals=3)
+    root = ET.parse(tmp_path / "a.svg").getroot()
+    ns = "{http://www.w3.org/2000/svg}"
+    got = root.findall(f"{ns}polygon")
+    assert [g.get("fill") for g in got] == ["#000000", "#ffffff"]
+    assert got[1].get("points") == "1.235,2.000 5.000,5.000 2.000,7.500 0.000,3.000"
+    assert root.get("viewBox") == "0 0 10 10"
+
+
+@pytest.mark.parametrize(
+    ("call", "message"),
+    [
+        (lambda p: imagemod.save_png(p, np.zeros(3)), "image must have shape (H, W), got (3,)"),
+        (lambda p: imagemod.save_svg(p, [[(0, 0), (1, 1)]], [0.5], width=2, height=2),
+         "polygons[0] must have shape (k, 2) with k >= 3, got (2, 2)"),
+        (lambda p: imagemod.save_svg(p, [], [0.5], width=2, height=2),
+         "values must have one entry per polygon (0), got 1"),
+    ],
+    ids=["png-shape", "svg-polygon", "svg-values"],
+)
+def test_image_writers_reject_bad_input(tmp_path, call, message):
+    import re
+
+    with pytest.raises(InvalidParameterError, match=re.escape(message)):
+        call(tmp_path / "x")

@@ -1,0 +1,160 @@
+"""Image writers: 8-bit conversion, PNG, NPY and SVG.
+
+Float images follow the conventions: float32 intensity arrays of shape (H, W)
+with NaN where no object is hit. 8-bit images map [0, 1] to [0, 255]
+(clipped) and 0 for the background.
+"""
+
+from __future__ import annotations
+
+import os
+import xml.etree.ElementTree as ET
+from collections.abc import Sequence
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from ..errors import InvalidParameterError
+
+__all__ = ["to_uint8", "save_png", "save_npy", "save_svg"]
+
+
+def _image(name: str, image: ArrayLike) -> NDArray[np.float32]:
+    try:
+        a = np.asarray(image, dtype=np.float32)
+    except (TypeError, ValueError):
+        raise InvalidParameterError(f"{name} must be a numeric array of shape (H, W), got {type(image).__name__}") from None
+    if a.ndim != 2 or a.shape[0] < 1 or a.shape[1] < 1:
+        raise InvalidParameterError(f"{name} must have shape (H, W), got {a.shape}")
+    return a
+
+
+def to_uint8(image: ArrayLike) -> NDArray[np.uint8]:
+    """Map intensities [0, 1] to [0, 255] (clipped, rounded); NaN background to 0.
+
+    Parameters
+    ----------
+    image : array_like, shape (H, W)
+
+    Returns
+    -------
+    ndarray, shape (H, W), uint8
+
+    Raises
+    ------
+    InvalidParameterError
+        If ``image`` is not a 2-D numeric array.
+
+    Examples
+    --------
+    >>> to_uint8([[0.0, 0.5, 1.2], [np.nan, -1.0, 1.0]]).tolist()
+    [[0, 128, 255], [0, 0, 255]]
+    """
+    a = _image("image", image)
+    out = np.rint(np.clip(np.nan_to_num(a, nan=0.0), 0.0, 1.0) * 255.0)
+    return out.astype(np.uint8)
+
+
+def save_png(path: str | os.PathLike[str], image: ArrayLike) -> None:
+    """Write an 8-bit grey PNG (see :func:`to_uint8`) with Pillow.
+
+    Parameters
+    ----------
+    path : str or path-like
+    image : array_like, shape (H, W)
+
+    Raises
+    ------
+    InvalidParameterError
+        If ``image`` is not a 2-D numeric array.
+
+    Examples
+    --------
+    >>> import os, tempfile
+    >>> from PIL import Image
+    >>> p = os.path.join(tempfile.mkdtemp(), "a.png")
+    >>> save_png(p, [[0.0, 1.0]])
+    >>> np.asarray(Image.open(p)).tolist()
+    [[0, 255]]
+    """
+    from PIL import Image
+
+    Image.fromarray(to_uint8(image), mode="L").save(os.fspath(path), format="PNG")
+
+
+def save_npy(path: str | os.PathLike[str], image: ArrayLike) -> None:
+    """Write the float32 image (NaN background kept) as ``.npy``.
+
+    Examples
+    --------
+    >>> import os, tempfile
+    >>> p = os.path.join(tempfile.mkdtemp(), "a.npy")
+    >>> save_npy(p, [[0.25, np.nan]])
+    >>> np.load(p).dtype, np.load(p).tolist()
+    (dtype('float32'), [[0.25, nan]])
+    """
+    np.save(os.fspath(path), _image("image", image), allow_pickle=False)
+
+
+def save_svg(
+    path: str | os.PathLike[str],
+    polygons: Sequence[ArrayLike],
+    values: ArrayLike,
+    *,
+    width: int,
+    height: int,
+    decimals: int = 2,
+) -> None:
+    """Write filled polygons, in the given (back-to-front) order, as SVG.
+
+    Parameters
+    ----------
+    path : str or path-like
+    polygons : sequence of array_like, each shape (k, 2), k >= 3
+        Vertices in pixel coordinates ``(col, row)``; drawn first to last,
+        so pass them back to front.
+    values : array_like, shape (n,)
+        Intensity of each polygon, shown as grey ``to_uint8(value)``.
+    width, height : int
+        Image size in pixels (the SVG view box).
+    decimals : int, default 2
+        Coordinates are written at this fixed precision so files are stable.
+
+    Raises
+    ------
+    InvalidParameterError
+        On a polygon with fewer than 3 vertices or not of shape (k, 2), or a
+        ``values`` length that differs from the number of polygons.
+
+    Examples
+    --------
+    >>> import os, tempfile
+    >>> p = os.path.join(tempfile.mkdtemp(), "a.svg")
+    >>> save_svg(p, [[(0, 0), (4, 0), (0, 3)]], [0.5], width=4, height=3)
+    >>> print(open(p).read().splitlines()[1])
+      <polygon points="0.00,0.00 4.00,0.00 0.00,3.00" fill="#808080" />
+    """
+    vals = np.asarray(values, dtype=np.float64).reshape(-1)
+    if len(vals) != len(polygons):
+        raise InvalidParameterError(f"values must have one entry per polygon ({len(polygons)}), got {len(vals)}")
+    grey = to_uint8(vals.reshape(1, -1))[0] if len(vals) else np.zeros(0, np.uint8)
+    root = ET.Element(
+        "svg",
+        {
+            "xmlns": "http://www.w3.org/2000/svg",
+            "width": str(int(width)),
+            "height": str(int(height)),
+            "viewBox": f"0 0 {int(width)} {int(height)}",
+            "shape-rendering": "crispEdges",
+        },
+    )
+    fmt = f"{{:.{int(decimals)}f}}"
+    for i, poly in enumerate(polygons):
+        p = np.asarray(poly, dtype=np.float64)
+        if p.ndim != 2 or p.shape[1] != 2 or len(p) < 3:
+            raise InvalidParameterError(f"polygons[{i}] must have shape (k, 2) with k >= 3, got {p.shape}")
+        pts = " ".join(f"{fmt.format(x)},{fmt.format(y)}" for x, y in p)
+        g = int(grey[i])
+        ET.SubElement(root, "polygon", {"points": pts, "fill": f"#{g:02x}{g:02x}{g:02x}"})
+    ET.indent(root)
+    ET.ElementTree(root).write(os.fspath(path), encoding="unicode")
