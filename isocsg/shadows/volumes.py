@@ -395,6 +395,35 @@ def _scale_tol(*arrays: NDArray[np.float64], tol: float | None) -> tuple[float, 
     return scale, (REL_TOL * scale if tol is None else float(tol))
 
 
+def _edge_faces(piece: Any, tol: float) -> NDArray[np.int64]:
+    """The two faces (indices into ``piece.normals``) that meet at each edge, shape (e, 2)."""
+    v = piece.vertices
+    on = np.abs(v @ piece.normals.T - piece.offsets[None, :]) <= tol * 10  # (v, f)
+    both = on[piece.edges[:, 0]] & on[piece.edges[:, 1]]  # (e, f)
+    out = np.full((len(piece.edges), 2), -1, dtype=np.int64)
+    for k in range(len(piece.edges)):
+        f = np.nonzero(both[k])[0]
+        if len(f) >= 2:
+            out[k] = f[:2]
+    return out
+
+
+def _silhouette_planes(
+    q: NDArray[np.float64], piece: Any, edge_faces: NDArray[np.int64], scale: float, tol: float
+) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+    """Planes through ``q`` and the contour-line edges of ``piece`` seen from ``q``, ``piece`` on their negative side."""
+    front = piece.normals @ q - piece.offsets > tol
+    ok_adj = np.all(edge_faces >= 0, axis=1)
+    sil = ok_adj & (front[np.maximum(edge_faces[:, 0], 0)] != front[np.maximum(edge_faces[:, 1], 0)])
+    # edges whose faces could not be found (never for hull faces) are tested like any other
+    cand = sil | ~ok_adj
+    e = piece.edges[cand]
+    a = piece.vertices[e[:, 0]]
+    b = piece.vertices[e[:, 1]]
+    n, d, ok = _planes_through(q[None, :], a, b, scale)
+    return _supporting(n, d, ok, piece.vertices, tol)
+
+
 def vertex_shadow_volume(vertex: ArrayLike, occluder: Any, *, tol: float | None = None) -> ConvexVolume:
     """The shadow volume ``U_l`` of a convex occluder seen from one source vertex.
 
@@ -432,10 +461,7 @@ def vertex_shadow_volume(vertex: ArrayLike, occluder: Any, *, tol: float | None 
     fq = piece.normals @ q - piece.offsets
     if np.all(fq <= tol):
         raise InvalidGeometryError(f"vertex {tuple(q.tolist())} lies inside the occluder: its shadow volume is undefined")
-    a = piece.vertices[piece.edges[:, 0]]
-    b = piece.vertices[piece.edges[:, 1]]
-    n, d, ok = _planes_through(q, a, b, scale)
-    sn, sd = _supporting(n, d, ok, piece.vertices, tol)
+    sn, sd = _silhouette_planes(q, piece, _edge_faces(piece, tol), scale, tol)
     front = fq > tol
     return ConvexVolume(np.vstack([sn, piece.normals[front]]), np.concatenate([sd, piece.offsets[front]]), tol)
 
@@ -547,11 +573,14 @@ def shadow_volumes(light: Any, occluder: Any, *, tol: float | None = None, umbra
         extra_d.append(-de)
     Q = src.vertices
     V = piece.vertices
-    # S^: every source vertex with every edge of V; the supporting ones are the contour planes.
-    a = V[piece.edges[:, 0]][None, :, :]
-    b = V[piece.edges[:, 1]][None, :, :]
-    n1, d1, ok1 = _planes_through(Q[:, None, :], a, b, scale)
-    s_hat_n, s_hat_d = _supporting(n1, d1, ok1, V, tol)
+    # S^: each source vertex with the contour-line edges of V seen from it.
+    edge_faces = _edge_faces(piece, tol)
+    for q in Q:
+        if np.all(piece.normals @ q - piece.offsets <= tol):
+            raise InvalidGeometryError(f"source vertex {tuple(q.tolist())} lies inside the occluder")
+    sil = [_silhouette_planes(q, piece, edge_faces, scale, tol) for q in Q]
+    s_hat_n = np.vstack([x[0] for x in sil])
+    s_hat_d = np.concatenate([x[1] for x in sil])
     h_hat = H_planes(s_hat_n, s_hat_d, Q, tol=tol)
     # S~: every vertex of V with every source edge.
     qa = Q[src.edges[:, 0]][None, :, :]
@@ -566,7 +595,11 @@ def shadow_volumes(light: Any, occluder: Any, *, tol: float | None = None, umbra
     pen_d = [s_hat_d[h_hat == 1], s_til_d[h_til == 1], piece.offsets[h_face == 1], np.asarray(extra_d)]
     penumbra = ConvexVolume(np.vstack(pen_n), np.concatenate(pen_d), tol)
 
-    vertex_volumes = tuple(vertex_shadow_volume(q, piece, tol=tol) for q in Q)
+    vertex_volumes = tuple(
+        ConvexVolume(np.vstack([sn, piece.normals[piece.normals @ q - piece.offsets > tol]]),
+                     np.concatenate([sd, piece.offsets[piece.normals @ q - piece.offsets > tol]]), tol)
+        for q, (sn, sd) in zip(Q, sil)
+    )
     if umbra_rule == "intersection":
         umb_n = [u.normals for u in vertex_volumes]
         umb_d = [u.offsets for u in vertex_volumes]
