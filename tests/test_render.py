@@ -376,3 +376,22 @@ def test_image_writers_reject_bad_input(tmp_path, call, message):
 
     with pytest.raises(InvalidParameterError, match=re.escape(message)):
         call(tmp_path / "x")
+
+
+def test_results_kept_by_the_caller_are_never_overwritten():
+    """Buffers are recycled only once no result refers to them."""
+    r = renderer()
+    scene = Scene(CAM, LIGHTS, [Sphere((0, 0, 0), 1) - Sphere((0.5, -0.5, 0.5), 0.6)])
+    first = r.render(scene, contours=8)
+    snapshot = (first.image.copy(), first.object_index.copy(), first.primitive_index.copy())
+    first_depth = first.depth.copy()
+    views = [r.render(scene, camera=CAM.with_view(eye), contours=8) for eye in [(3, -4, 2), (-3, -4, 1), (0, -6, -2)]]
+    np.testing.assert_array_equal(first.image, snapshot[0])
+    np.testing.assert_array_equal(first.object_index, snapshot[1])
+    np.testing.assert_array_equal(first.primitive_index, snapshot[2])
+    np.testing.assert_array_equal(first.depth, first_depth)
+    assert len({id(v.image) for v in views} | {id(first.image)}) == 4
+    # Dropped results give their buffers back: a fresh render from the first view is identical.
+    del views
+    again = r.render(scene, contours=8)
+    np.testing.assert_array_equal(again.image, snapshot[0])

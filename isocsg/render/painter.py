@@ -20,10 +20,12 @@ Several objects: the nearest visible point wins.
 from __future__ import annotations
 
 import math
+import sys
+import threading
 import time
 from collections import OrderedDict
 from collections.abc import Callable, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
@@ -74,24 +76,46 @@ class RenderResult:
     ----------
     image : ndarray, shape (H, W), float32
         Intensity; NaN where no object is visible.
-    depth : ndarray, shape (H, W), float64
-        Camera depth (along the view direction) of the visible point; ``inf``
-        on the background.
-    object_index : ndarray, shape (H, W), int32
-        Index into ``scene.objects`` of the visible object, -1 on the background.
-    primitive_index : ndarray, shape (H, W), int32
-        Index of the visible leaf in the object's ``CSGNode.program()`` leaves
-        (0 for an object that is a single primitive), -1 on the background.
     timings : RenderTimings
     camera : Camera
+        The camera the image was rendered with.
+
+    The per-pixel indices and the depth are computed when first read (the
+    fill itself only keeps one label per pixel).
     """
 
     image: NDArray[np.float32]
-    depth: NDArray[np.float64]
-    object_index: NDArray[np.int32]
-    primitive_index: NDArray[np.int32]
     timings: RenderTimings
     camera: Camera
+    _label: NDArray[np.int32] = field(repr=False)
+    _key: NDArray[np.float64] = field(repr=False)
+    _object_of: NDArray[np.int32] = field(repr=False)
+    _leaf_of: NDArray[np.int32] = field(repr=False)
+    _lazy: dict[str, NDArray[Any]] = field(default_factory=dict, repr=False)
+
+    @property
+    def object_index(self) -> NDArray[np.int32]:
+        """Index into ``scene.objects`` of the visible object per pixel, -1 on the background (int32)."""
+        if "object" not in self._lazy:
+            self._lazy["object"] = self._object_of[self._label + 1]
+        return self._lazy["object"]
+
+    @property
+    def primitive_index(self) -> NDArray[np.int32]:
+        """Index of the visible leaf in its object's ``CSGNode.program()`` leaves (0 for a
+        primitive object), -1 on the background (int32)."""
+        if "leaf" not in self._lazy:
+            self._lazy["leaf"] = self._leaf_of[self._label + 1]
+        return self._lazy["leaf"]
+
+    @property
+    def depth(self) -> NDArray[np.float64]:
+        """Camera depth (along the view direction) of the visible point; ``inf`` on the background."""
+        if "depth" not in self._lazy:
+            d = np.empty(self._key.shape)
+            key_to_depth(np.where(self._label >= 0, self._key, np.inf), not self.camera.orthographic, d)
+            self._lazy["depth"] = d
+        return self._lazy["depth"]
 
 
 # --------------------------------------------------------------------- kernels
@@ -210,25 +234,12 @@ def resolve_csg(
 
 
 @njit(cache=True)
-def _finish(
-    zkey: NDArray[np.float64], value: NDArray[np.float32], gid: NDArray[np.int32],
-    obj_of: NDArray[np.int32], leaf_of: NDArray[np.int32], perspective: bool,
-    image: NDArray[np.float32], depth: NDArray[np.float64], obj: NDArray[np.int32], prim: NDArray[np.int32],
-) -> None:
-    h, w = zkey.shape
-    for r in range(h):
-        for c in range(w):
-            g = gid[r, c]
-            if g < 0:
-                image[r, c] = np.nan
-                depth[r, c] = np.inf
-                obj[r, c] = -1
-                prim[r, c] = -1
-            else:
-                image[r, c] = value[r, c]
-                depth[r, c] = -1.0 / zkey[r, c] if perspective else zkey[r, c]
-                obj[r, c] = obj_of[g]
-                prim[r, c] = leaf_of[g]
+def _finish(value: NDArray[np.float32], label: NDArray[np.int32], image: NDArray[np.float32]) -> None:
+    v = value.ravel()
+    g = label.ravel()
+    o = image.ravel()
+    for k in range(o.shape[0]):
+        o[k] = v[k] if g[k] >= 0 else np.nan
 
 
 # ------------------------------------------------------------------- renderer
@@ -264,6 +275,26 @@ class Renderer:
         self._build = build_laminae
         # Arrays converted for the kernels, keyed by the band mesh's identity.
         self._prepared: OrderedDict[int, tuple[BandMesh, _Prepared]] = OrderedDict()
+        # Image-sized buffers reused from one render to the next once no result
+        # refers to them any more: fresh pages cost more than the fill itself.
+        self._pool: OrderedDict[tuple[str, tuple[int, ...], str], list[NDArray[Any]]] = OrderedDict()
+        self._lock = threading.Lock()
+
+    def _buffer(self, name: str, shape: tuple[int, ...], dtype: Any) -> NDArray[Any]:
+        key = (name, shape, np.dtype(dtype).str)
+        pool = self._pool.setdefault(key, [])
+        self._pool.move_to_end(key)
+        for a in pool:
+            # Held only by the pool, this loop and getrefcount's argument: free to reuse.
+            if sys.getrefcount(a) <= 3:
+                return a
+        a = np.empty(shape, dtype)
+        pool.append(a)
+        if len(pool) > 3:
+            pool.pop(0)
+        while len(self._pool) > 24:
+            self._pool.popitem(last=False)
+        return a
 
     def _builder(self) -> BandBuilder:
         if self._build is None:
@@ -326,6 +357,12 @@ class Renderer:
         InvalidParameterError
             On a non-scene argument, a bad camera or contour count.
         """
+        with self._lock:
+            return self._render(scene, camera, contours, progress)
+
+    def _render(
+        self, scene: Scene, camera: Camera | None, contours: int | None, progress: Callable[[int, int], None] | None,
+    ) -> RenderResult:
         if not isinstance(scene, Scene):
             raise InvalidParameterError(f"scene must be a Scene, got {type(scene).__name__}")
         cam = scene.camera if camera is None else camera
@@ -352,9 +389,11 @@ class Renderer:
         projected = [[homogeneous(cam, p.vertices) for p in preps] for _, _, _, preps in objects]
         far = max((float(np.max(np.abs(h[3]))) for hs in projected for h in hs if h.shape[1]), default=1.0)
         near = NEAR_RELATIVE * max(far, 1e-300)
-        zkey = np.full((H, W), np.inf)
-        value = np.empty((H, W), np.float32)
-        gid = np.full((H, W), -1, np.int32)
+        zkey = self._buffer("key", (H, W), np.float64)
+        zkey.fill(np.inf)
+        value = self._buffer("value", (H, W), np.float32)
+        gid = self._buffer("label", (H, W), np.int32)
+        gid.fill(-1)
         obj_of: list[int] = []
         leaf_of: list[int] = []
         total = sum(len(o[1]) for o in objects)
@@ -376,19 +415,16 @@ class Renderer:
             done += len(leaves)
             if progress is not None:
                 progress(done, total)
-        image = np.empty((H, W), np.float32)
-        depth = np.empty((H, W))
-        obj_idx = np.empty((H, W), np.int32)
-        prim_idx = np.empty((H, W), np.int32)
-        _finish(
-            zkey, value, gid, np.asarray(obj_of, np.int32), np.asarray(leaf_of, np.int32), persp,
-            image, depth, obj_idx, prim_idx,
-        )
+        image = self._buffer("image", (H, W), np.float32)
+        _finish(value, gid, image)
         t2 = time.perf_counter()
-        return RenderResult(image, depth, obj_idx, prim_idx, RenderTimings(t1 - t0, t2 - t1), cam)
+        # Label -1 (background) maps to -1 through the leading entry of each table.
+        object_of = np.asarray([-1] + obj_of, np.int32)
+        leaf_of_arr = np.asarray([-1] + leaf_of, np.int32)
+        return RenderResult(image, RenderTimings(t1 - t0, t2 - t1), cam, gid, zkey, object_of, leaf_of_arr)
 
-    @staticmethod
     def _fill_csg(
+        self,
         preps: list[_Prepared], hs: list[NDArray[np.float64]], program: NDArray[np.int64], near: float,
         persp: bool, base: int, W: int, H: int,
         zkey: NDArray[np.float64], value: NDArray[np.float32], gid: NDArray[np.int32],
@@ -407,11 +443,13 @@ class Renderer:
         if w <= 0 or h <= 0:
             return
         n = len(preps)
-        kf = np.full((n, h, w), np.inf)
-        kb = np.full((n, h, w), -np.inf)
-        vf = np.empty((n, h, w), np.float32)
-        vb = np.empty((n, h, w), np.float32)
-        scratch = np.empty((h, w), np.int32)
+        kf = self._buffer("csg-front", (n, h, w), np.float64)
+        kf.fill(np.inf)
+        kb = self._buffer("csg-back", (n, h, w), np.float64)
+        kb.fill(-np.inf)
+        vf = self._buffer("csg-front-value", (n, h, w), np.float32)
+        vb = self._buffer("csg-back-value", (n, h, w), np.float32)
+        scratch = self._buffer("csg-label", (h, w), np.int32)
         for i, (p, hv) in enumerate(zip(preps, hs)):
             fill_kernel(
                 hv[0], hv[1], hv[2], hv[3], p.triangles, p.value_out, p.value_in, near, persp, True, True,

@@ -181,7 +181,26 @@ def _fill_triangle(
                 q += gx
 
 
-@njit(cache=True)
+@njit(cache=True, nogil=True)
+def project_vertices(
+    hx: NDArray[np.float64], hy: NDArray[np.float64], hw: NDArray[np.float64], hd: NDArray[np.float64],
+    near: float, perspective: bool,
+) -> tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.float64]]:
+    """Screen column, row and depth key of the vertices in front of the near plane."""
+    nv = hx.shape[0]
+    sx = np.empty(nv)
+    sy = np.empty(nv)
+    sk = np.empty(nv)
+    for v in range(nv):
+        if hd[v] >= near:
+            inv = 1.0 / hw[v]
+            sx[v] = hx[v] * inv
+            sy[v] = hy[v] * inv
+            sk[v] = -inv if perspective else hd[v]
+    return sx, sy, sk
+
+
+@njit(cache=True, nogil=True)
 def fill_kernel(
     hx: NDArray[np.float64], hy: NDArray[np.float64], hw: NDArray[np.float64], hd: NDArray[np.float64],
     tris: NDArray[np.int32], vout: NDArray[np.float32], vin: NDArray[np.float32],
@@ -196,18 +215,22 @@ def fill_kernel(
     one (see :func:`key_to_depth`). ``zf`` starts at +inf, ``zb`` at -inf;
     buffers cover the viewport whose top-left pixel is ``(oy, ox)``. With
     ``cull`` false every triangle goes to the front buffers (and, with
-    ``do_back``, to the back ones too).
+    ``do_back``, to the back ones too). ``tf`` receives ``tag`` wherever the
+    front buffers are written.
     """
-    nv = hx.shape[0]
-    sx = np.empty(nv)
-    sy = np.empty(nv)
-    sk = np.empty(nv)
-    for v in range(nv):
-        if hd[v] >= near:
-            inv = 1.0 / hw[v]
-            sx[v] = hx[v] * inv
-            sy[v] = hy[v] * inv
-            sk[v] = -inv if perspective else hd[v]
+    sx, sy, sk = project_vertices(hx, hy, hw, hd, near, perspective)
+    _fill_all(hx, hy, hw, hd, sx, sy, sk, tris, vout, vin, near, perspective, cull, do_back, tag, ox, oy, zf, vf, tf, zb, vb)
+
+
+@njit(cache=True, nogil=True)
+def _fill_all(
+    hx: NDArray[np.float64], hy: NDArray[np.float64], hw: NDArray[np.float64], hd: NDArray[np.float64],
+    sx: NDArray[np.float64], sy: NDArray[np.float64], sk: NDArray[np.float64],
+    tris: NDArray[np.int32], vout: NDArray[np.float32], vin: NDArray[np.float32],
+    near: float, perspective: bool, cull: bool, do_back: bool, tag: int, ox: int, oy: int,
+    zf: NDArray[np.float64], vf: NDArray[np.float32], tf: NDArray[np.int32],
+    zb: NDArray[np.float64], vb: NDArray[np.float32],
+) -> None:
     px = np.empty(4)
     py = np.empty(4)
     pk = np.empty(4)
