@@ -149,7 +149,7 @@ def _evaluate(program: NDArray[np.int64], inside: NDArray[np.bool_], stack: NDAr
     return stack[0]
 
 
-@njit(cache=True)
+@njit(cache=True, nogil=True)
 def resolve_csg(
     kf: NDArray[np.float64], vf: NDArray[np.float32], kb: NDArray[np.float64], vb: NDArray[np.float32],
     program: NDArray[np.int64], gid_base: int, ox: int, oy: int,
@@ -160,77 +160,80 @@ def resolve_csg(
     ``kf``/``kb`` (n, h, w) are the depth keys of each leaf's front (``+inf``
     where none) and back (``-inf`` where none) over the viewport at
     ``(oy, ox)``; a back without a front means the eye is inside that leaf.
-    Events at the same depth are applied together (regularised operations:
-    touching or coincident surfaces do not show).
+    The leaves' surfaces are visited nearest first; all events at the same
+    depth are applied together (regularised operations: touching or
+    coincident surfaces do not show), and the first depth where the program
+    turns from outside to inside is the visible point. If a leaf enters there,
+    the pixel shows that leaf's front value, otherwise the back value of a leaf
+    that leaves.
     """
     n, h, w = kf.shape
-    ev_key = np.empty(2 * n)
-    ev_leaf = np.empty(2 * n, np.int64)
-    ev_enter = np.empty(2 * n, np.bool_)
+    nxt = np.empty(n)
+    phase = np.empty(n, np.int8)  # 0 before the front, 1 inside, 2 past the back
     inside = np.zeros(n, np.bool_)
     stack = np.zeros(max(len(program), 1), np.bool_)
     for r in range(h):
         for c in range(w):
-            m = 0
+            rr = r + oy
+            cc = c + ox
+            covered = False
             for i in range(n):
                 f = kf[i, r, c]
                 b = kb[i, r, c]
-                inside[i] = False
-                if b == -np.inf:
-                    continue  # no interval (a front without a back is a zero-width sliver)
-                if f == np.inf:
-                    inside[i] = True  # entered behind the near plane
+                if b == -np.inf:  # no interval (a front without a back is a zero-width sliver)
+                    inside[i] = False
+                    phase[i] = 2
+                    nxt[i] = np.inf
+                elif f == np.inf:  # entered behind the near plane
+                    inside[i] = True
+                    phase[i] = 1
+                    nxt[i] = b
+                    covered = True
                 else:
-                    # insertion sort by key; entries before exits at equal keys are
-                    # harmless because equal keys are applied as one group
-                    j = m
-                    while j > 0 and ev_key[j - 1] > f:
-                        ev_key[j] = ev_key[j - 1]
-                        ev_leaf[j] = ev_leaf[j - 1]
-                        ev_enter[j] = ev_enter[j - 1]
-                        j -= 1
-                    ev_key[j] = f
-                    ev_leaf[j] = i
-                    ev_enter[j] = True
-                    m += 1
-                j = m
-                while j > 0 and ev_key[j - 1] > b:
-                    ev_key[j] = ev_key[j - 1]
-                    ev_leaf[j] = ev_leaf[j - 1]
-                    ev_enter[j] = ev_enter[j - 1]
-                    j -= 1
-                ev_key[j] = b
-                ev_leaf[j] = i
-                ev_enter[j] = False
-                m += 1
-            if m == 0:
+                    inside[i] = False
+                    phase[i] = 0
+                    nxt[i] = f
+                    covered = True
+            if not covered:
                 continue
             state = _evaluate(program, inside, stack)
-            k = 0
-            while k < m:
-                key = ev_key[k]
-                g = k
-                while g < m and ev_key[g] == key:
-                    inside[ev_leaf[g]] = ev_enter[g]
-                    g += 1
+            limit = zkey[rr, cc]
+            while True:
+                key = np.inf
+                for i in range(n):
+                    if nxt[i] < key:
+                        key = nxt[i]
+                if key == np.inf or key >= limit:
+                    break  # no more surfaces, or something nearer is already drawn
+                shown = -1
+                shown_front = False
+                for i in range(n):
+                    if nxt[i] != key:
+                        continue
+                    if phase[i] == 0:
+                        inside[i] = True
+                        phase[i] = 1
+                        nxt[i] = kb[i, r, c]
+                        if nxt[i] == key:  # zero width: in and out at once
+                            inside[i] = False
+                            phase[i] = 2
+                            nxt[i] = np.inf
+                        if not shown_front:
+                            shown = i
+                            shown_front = True
+                    else:
+                        inside[i] = False
+                        phase[i] = 2
+                        nxt[i] = np.inf
+                        if shown < 0:
+                            shown = i
                 now = _evaluate(program, inside, stack)
                 if now and not state:
-                    # The surface that starts the solid: an entry if there is one.
-                    e = k
-                    for q in range(k, g):
-                        if ev_enter[q]:
-                            e = q
-                            break
-                    leaf = ev_leaf[e]
-                    rr = r + oy
-                    cc = c + ox
-                    if key < zkey[rr, cc]:
-                        zkey[rr, cc] = key
-                        value[rr, cc] = vf[leaf, r, c] if ev_enter[e] else vb[leaf, r, c]
-                        gid[rr, cc] = gid_base + leaf
+                    zkey[rr, cc] = key
+                    value[rr, cc] = vf[shown, r, c] if shown_front else vb[shown, r, c]
+                    gid[rr, cc] = gid_base + shown
                     break
                 state = now
-                k = g
 
 
 @njit(cache=True)
@@ -443,13 +446,20 @@ class Renderer:
         if w <= 0 or h <= 0:
             return
         n = len(preps)
-        kf = self._buffer("csg-front", (n, h, w), np.float64)
+        # Contiguous views into image-sized pooled buffers, so that the object's
+        # rectangle can change from view to view without fresh allocations.
+        cap = n * H * W
+
+        def view(name: str, dtype: Any, shape: tuple[int, ...]) -> NDArray[Any]:
+            return self._buffer(name, (max(cap, 1),), dtype)[: math.prod(shape)].reshape(shape)
+
+        kf = view("csg-front", np.float64, (n, h, w))
         kf.fill(np.inf)
-        kb = self._buffer("csg-back", (n, h, w), np.float64)
+        kb = view("csg-back", np.float64, (n, h, w))
         kb.fill(-np.inf)
-        vf = self._buffer("csg-front-value", (n, h, w), np.float32)
-        vb = self._buffer("csg-back-value", (n, h, w), np.float32)
-        scratch = self._buffer("csg-label", (h, w), np.int32)
+        vf = view("csg-front-value", np.float32, (n, h, w))
+        vb = view("csg-back-value", np.float32, (n, h, w))
+        scratch = view("csg-label", np.int32, (h, w))
         for i, (p, hv) in enumerate(zip(preps, hs)):
             fill_kernel(
                 hv[0], hv[1], hv[2], hv[3], p.triangles, p.value_out, p.value_in, near, persp, True, True,
