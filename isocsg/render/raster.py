@@ -6,8 +6,10 @@ point: ``col = X / W``, ``row = Y / W`` and ``D`` is the camera depth (distance
 along the forward axis). For the pinhole camera ``W = D``; for the orthographic
 camera ``W = 1``. Because all four are affine, triangles are clipped against the
 near plane ``D >= near`` *before* the division (nothing is dropped, nothing
-wraps around behind the eye), and ``D / W`` and ``1 / W`` interpolate linearly
-in screen space, which gives perspective-correct depth.
+wraps around behind the eye). The depth buffers hold a *depth key* that is
+linear in screen space and grows with depth, ``-1 / D`` for the pinhole camera
+and ``D`` for the orthographic one, so interpolating it across a triangle
+gives the perspective-correct depth.
 
 Coverage follows the top-left rule of scanline fill (a pixel centre belongs
 to a triangle when ``y_top <= row < y_bottom`` and ``x_left <= col < x_right``
