@@ -467,3 +467,12 @@ def test_real_bands_are_not_rebuilt_for_a_new_viewpoint():
     assert len(seen) == 4
     # The very same band meshes come back: nothing was rebuilt for the second view.
     assert seen[2] is seen[0] and seen[3] is seen[1]
+
+
+def test_malformed_band_mesh_is_reported():
+    def bad(primitive, lights, material, contours, *, eye):
+        m = mesh_bands(primitive, lights, material, contours, eye=eye)
+        return BandMesh(m.vertices, m.triangles + 1, m.value_out, m.value_in, m.band)
+
+    with pytest.raises(InvalidParameterError, match="band mesh of .* is malformed"):
+        Renderer(build_laminae=bad).render(Scene(CAM, LIGHTS, [Sphere((0, 0, 0), 1)]), contours=4)

@@ -308,13 +308,21 @@ class Renderer:
 
     def bands(self, primitive: Primitive, lights: Sequence[Any], material: Any, contours: int, eye: Any) -> BandMesh:
         """The band mesh of one primitive (from the builder and its cache)."""
+        return self._bands(primitive, lights, material, contours, eye)[0]
+
+    def _bands(
+        self, primitive: Primitive, lights: Sequence[Any], material: Any, contours: int, eye: Any
+    ) -> tuple[BandMesh, bool]:
         out = self._builder()(primitive, tuple(lights), material, contours, eye=eye)
         bands = getattr(out, "bands", out)
         if not isinstance(bands, BandMesh):
             raise InvalidParameterError(f"build_laminae must return a LaminaSet or BandMesh, got {type(out).__name__}")
-        return bands
+        return bands, bool(getattr(out, "view_dependent", False))
 
-    def _prepare(self, bands: BandMesh) -> _Prepared:
+    def _prepare(self, bands: BandMesh, view_dependent: bool) -> _Prepared:
+        # View-independent meshes come back from the builder's cache as the same
+        # objects: keep their converted arrays too. View-dependent ones are new
+        # every time and are not kept.
         key = id(bands)
         hit = self._prepared.get(key)
         if hit is not None and hit[0] is bands:
@@ -326,9 +334,20 @@ class Renderer:
             np.ascontiguousarray(bands.value_out, dtype=np.float32),
             np.ascontiguousarray(bands.value_in, dtype=np.float32),
         )
-        self._prepared[key] = (bands, prep)
-        while len(self._prepared) > 256:
-            self._prepared.popitem(last=False)
+        nt, nv = len(prep.triangles), len(prep.vertices)
+        if (
+            prep.vertices.ndim != 2 or prep.vertices.shape[1] != 3 or prep.triangles.ndim != 2
+            or prep.triangles.shape[1] != 3 or prep.value_out.shape != (nt,) or prep.value_in.shape != (nt,)
+            or (nt and (prep.triangles.min() < 0 or prep.triangles.max() >= nv))
+        ):
+            raise InvalidParameterError(
+                f"band mesh of {nv} vertices and {nt} triangles is malformed: vertices {prep.vertices.shape}, "
+                f"triangles {prep.triangles.shape}, value_out {prep.value_out.shape}, value_in {prep.value_in.shape}"
+            )
+        if not view_dependent:
+            self._prepared[key] = (bands, prep)
+            while len(self._prepared) > 256:
+                self._prepared.popitem(last=False)
         return prep
 
     def render(
@@ -382,7 +401,7 @@ class Renderer:
             else:
                 leaves, program = [obj.shape], None
             preps = [
-                self._prepare(self.bands(p, scene.lights, obj.material, n_contours, cam.eye)) for p in leaves
+                self._prepare(*self._bands(p, scene.lights, obj.material, n_contours, cam.eye)) for p in leaves
             ]
             objects.append((k, leaves, program, preps))
         t1 = time.perf_counter()
