@@ -202,6 +202,11 @@ def main(argv: list[str] | None = None) -> int:
     reason = pyvista_reason()
     if reason:
         print(f"Gouraud columns skipped: {reason}\n")
+    try:
+        from isocsg.laminae import build_laminae  # noqa: F401
+    except ImportError as exc:
+        print(f"isocsg columns impossible: the laminae builder is unavailable ({exc})")
+        return 1
     # Compile the numba kernels (cached on disk) outside the timings.
     from isocsg.render import Renderer
 
