@@ -50,10 +50,19 @@ from isocsg.csg.mesh import to_manifold  # noqa: E402
 
 from _raycast_csg import raycast  # noqa: E402
 
-try:  # shared timing helpers, when present
-    from _common import median_time as _common_median_time  # type: ignore[import-not-found]  # noqa: E402
-except Exception:  # pragma: no cover - optional
-    _common_median_time = None
+try:  # the benchmarks' shared timing helper
+    from _common import median_time  # type: ignore[import-not-found]  # noqa: E402
+except ImportError:  # pragma: no cover - standalone copy of this script
+
+    def median_time(fn: Callable[[], object], repeats: int) -> tuple[float, object]:
+        """Median wall time of ``fn()`` over ``repeats`` calls, and the last result."""
+        times, out = [], None
+        for _ in range(repeats):
+            t0 = time.perf_counter()
+            out = fn()
+            times.append(time.perf_counter() - t0)
+        return statistics.median(times), out
+
 
 SCENES = {
     "sphere minus cylinder": Sphere((0, 0, 0), 1.0) - Cylinder((0, 0, 0), (0.0, 0.0, 3.0), 0.45),
@@ -67,16 +76,6 @@ MATERIAL = Material()
 EYE_1 = (3.0, -3.6, 2.4)
 EYE_2 = (-3.4, -2.9, 2.0)
 FOV = 36.0
-
-
-def median_time(fn: Callable[[], object], repeats: int) -> tuple[float, object]:
-    """Median wall time of ``fn()`` over ``repeats`` calls, and the last result."""
-    times, out = [], None
-    for _ in range(repeats):
-        t0 = time.perf_counter()
-        out = fn()
-        times.append(time.perf_counter() - t0)
-    return statistics.median(times), out
 
 
 def errors(img: np.ndarray, ref: np.ndarray) -> tuple[float, float]:
