@@ -268,10 +268,23 @@ class Renderer:
 
     Examples
     --------
-    >>> from isocsg import Camera, PointLight, Scene, Sphere
-    >>> scene = Scene(Camera((0, -5, 0), (0, 0, 0), width=32, height=32),
-    ...               [PointLight((3, -5, 4))], [Sphere((0, 0, 0), 1)])
-    >>> result = Renderer().render(scene, contours=16)  # doctest: +SKIP
+    Any builder with the same call signature works, e.g. one face value per
+    box face (the box's own triangles, outward and counter-clockwise):
+
+    >>> from isocsg import Box, Camera, PointLight, Scene
+    >>> from isocsg.laminae.model import BandMesh
+    >>> def faces(primitive, lights, material, contours, *, eye):
+    ...     poly = primitive.to_polyhedron()
+    ...     t = np.asarray(poly.triangles, dtype=np.int32)
+    ...     level = np.arange(len(t)) // 2 / 10.0  # two triangles per face
+    ...     return BandMesh(poly.hull_vertices, t, level, level, np.zeros(len(t), np.int32))
+    >>> cam = Camera((0, -5, 0), (0, 0, 0), width=32, height=32)
+    >>> scene = Scene(cam, [PointLight((3, -5, 4))], [Box((0, 0, 0), (1, 1, 1))])
+    >>> result = Renderer(build_laminae=faces).render(scene)
+    >>> result.image.shape, int(np.isfinite(result.image).sum()) > 0
+    ((32, 32), True)
+    >>> int(result.object_index.max()), int(result.primitive_index.min())
+    (0, -1)
     """
 
     def __init__(self, build_laminae: BandBuilder | None = None) -> None:
