@@ -29,8 +29,6 @@ ProgressCallback = Callable[[int, int], None]
 
 #: Largest accepted number of nodes along one side of a grid.
 MAX_NODES = 4096
-# Receivers move this fraction of the grid size off the plane (not self-occluded by a floor).
-NUDGE = 1e-10
 
 
 @dataclass(frozen=True, slots=True)
@@ -198,13 +196,13 @@ def illuminance_map(
     if not isinstance(grid, LuxGrid):
         raise InvalidParameterError(f"grid must be a LuxGrid, got {type(grid).__name__}")
     pts = grid.points()
-    size = float(max(np.linalg.norm(grid.u), np.linalg.norm(grid.v), np.max(np.abs(pts))))
     n = grid.normal
     E = np.empty((grid.ny, grid.nx))
     step = max(1, 4096 // grid.nx)
     for j0 in range(0, grid.ny, step):
         j1 = min(grid.ny, j0 + step)
-        p = pts[j0:j1].reshape(-1, 3) + NUDGE * size * n
+        # a solid whose face holds the grid lies behind the receiving plane: it casts nothing on it
+        p = pts[j0:j1].reshape(-1, 3)
         E[j0:j1] = illuminance(p, n, lights, occluders, resolution=resolution).reshape(j1 - j0, grid.nx)
         if progress is not None:
             progress(j1, grid.ny)

@@ -1,0 +1,161 @@
+"""``isocsg illuminance SCENE -o MAP.png``: an illuminance map with isolux lines.
+
+The grid lies on a plane given on the command line (``--origin``, ``--u``,
+``--v``), or in the scene file's optional ``[illuminance]`` table::
+
+    [illuminance]
+    origin = [-3.0, -3.0, 0.0]     # corner of the grid
+    u = [6.0, 0.0, 0.0]            # edge vectors; receivers face normalize(u x v)
+    v = [0.0, 6.0, 0.0]
+    nx = 96                        # optional, nodes along u (default 64)
+    ny = 96                        # optional, nodes along v (default 64)
+    levels = 8                     # optional: how many isolux lines, or a list of values
+
+or, by default, the scene's floor: the top face of the box with the largest
+horizontal footprint (else the bottom of the scene's bounding box).
+Only the scene's area and polyhedron lights count; its objects occlude.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import tomllib
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from ..errors import InvalidLightError, InvalidParameterError, SceneFileError
+from ..geometry.primitives import Box
+from ..scene.io import scene_from_dict
+from ..scene.model import Scene
+from ..shadows.lights import AreaLight, PolyhedronLight
+from ..shadows.luxmap import LuxGrid, illuminance_map, save_luxmap_png
+
+__all__ = ["register", "run", "load_scene_and_grid", "floor_grid"]
+
+DESCRIPTION = """\
+Compute the illuminance E on a grid over a plane (exact soft shadows from the
+scene's area and polyhedron lights, the objects occluding) and write a PNG map
+with isolux lines, and optionally the float64 array E (ny, nx) as .npy.
+Default plane: the scene's [illuminance] table, else the top of its floor.
+"""
+
+_TABLE_FIELDS = {"origin", "u", "v", "nx", "ny", "levels"}
+
+
+def register(subparsers: Any) -> argparse.ArgumentParser:
+    """Add the ``illuminance`` sub-command."""
+    p = subparsers.add_parser("illuminance", help="illuminance map with isolux lines", description=DESCRIPTION)
+    p.add_argument("scene", metavar="SCENE", help="scene file, .toml or .json")
+    p.add_argument("-o", "--output", required=True, metavar="MAP.png", help="PNG map to write")
+    p.add_argument("--npy", metavar="E.npy", help="also write E (ny, nx) as .npy")
+    p.add_argument("--grid", nargs=2, type=int, metavar=("NX", "NY"), help="grid nodes along u and v (default 64 64)")
+    p.add_argument("--origin", nargs=3, type=float, metavar=("X", "Y", "Z"), help="corner of the grid")
+    p.add_argument("--u", nargs=3, type=float, metavar=("UX", "UY", "UZ"), help="first edge vector of the grid")
+    p.add_argument("--v", nargs=3, type=float, metavar=("VX", "VY", "VZ"), help="second edge vector of the grid")
+    p.add_argument("--levels", type=int, metavar="N", help="number of isolux lines (default 8)")
+    p.add_argument("--resolution", type=int, default=32, metavar="R", help="tessellation of curved occluders (default 32)")
+    p.add_argument("--no-progress", action="store_true", help="do not show the progress bar on stderr")
+    p.set_defaults(func=run)
+    return p
+
+
+def floor_grid(scene: Scene, nx: int = 64, ny: int = 64) -> LuxGrid:
+    """The default grid: the top face of the box with the largest horizontal footprint.
+
+    Without boxes, the bottom face of the objects' bounding box.
+
+    Examples
+    --------
+    >>> from isocsg import Box, Camera, Scene
+    >>> s = Scene(Camera((0, -5, 2), (0, 0, 0)), [], [Box((0, 0, -0.05), (4, 2, 0.1)), Box((0, 0, 1), (1, 1, 1))])
+    >>> g = floor_grid(s, 3, 3)
+    >>> g.origin, g.u, g.v
+    ((-2.0, -1.0, 0.0), (4.0, 0.0, 0.0), (0.0, 2.0, 0.0))
+    """
+    boxes = [o.shape for o in scene.objects if isinstance(o.shape, Box)]
+    if boxes:
+        b = max(boxes, key=lambda x: x.size[0] * x.size[1])
+        lo, hi = b.bounds
+        return LuxGrid.from_bounds(lo[0], lo[1], hi[0], hi[1], hi[2], nx, ny)
+    bs = np.array([o.shape.bounds for o in scene.objects])
+    lo, hi = bs[:, 0].min(axis=0), bs[:, 1].max(axis=0)
+    return LuxGrid.from_bounds(lo[0], lo[1], hi[0], hi[1], lo[2], nx, ny)
+
+
+def load_scene_and_grid(path: str | Path) -> tuple[Scene, dict[str, Any] | None]:
+    """Read a scene file and its optional ``[illuminance]`` table (raw mapping).
+
+    Raises
+    ------
+    SceneFileError
+        On unreadable files or a malformed ``[illuminance]`` table.
+    """
+    p = Path(path)
+    try:
+        text = p.read_text(encoding="utf-8")
+    except OSError as exc:
+        raise SceneFileError(f"{p}: cannot read the file: {exc.strerror or exc}") from None
+    try:
+        doc = json.loads(text) if p.suffix.lower() == ".json" else tomllib.loads(text)
+    except (tomllib.TOMLDecodeError, json.JSONDecodeError) as exc:
+        raise SceneFileError(f"{p}: not valid {'JSON' if p.suffix.lower() == '.json' else 'TOML'}: {exc}") from None
+    table = None
+    if isinstance(doc, dict) and "illuminance" in doc:
+        table = doc.pop("illuminance")
+        if not isinstance(table, dict):
+            raise SceneFileError(f"{p}: illuminance: must be a table, got {type(table).__name__}")
+        unknown = sorted(set(table) - _TABLE_FIELDS)
+        if unknown:
+            raise SceneFileError(f"{p}: illuminance.{unknown[0]}: unknown field (expected {', '.join(sorted(_TABLE_FIELDS))})")
+        missing = [k for k in ("origin", "u", "v") if k not in table]
+        if missing:
+            raise SceneFileError(f"{p}: illuminance.{missing[0]}: missing")
+    return scene_from_dict(doc, source=p.name), table
+
+
+def _grid_from_table(path: str, table: dict[str, Any], nx: int | None, ny: int | None) -> LuxGrid:
+    try:
+        return LuxGrid(table["origin"], table["u"], table["v"], nx or table.get("nx", 64), ny or table.get("ny", 64))
+    except InvalidParameterError as exc:
+        raise SceneFileError(f"{Path(path).name}: illuminance: {str(exc).replace('grid.', '')}") from None
+
+
+def run(args: argparse.Namespace) -> int:
+    """Load, compute, write; prints the files written and the range of E."""
+    from ._common import progress_bar
+
+    out = Path(args.output)
+    if out.suffix.lower() != ".png":
+        raise InvalidParameterError(f"output file {str(out)!r} must end in .png")
+    if args.npy is not None and Path(args.npy).suffix.lower() != ".npy":
+        raise InvalidParameterError(f"output file {args.npy!r} must end in .npy")
+    given = [args.origin is not None, args.u is not None, args.v is not None]
+    if any(given) and not all(given):
+        raise InvalidParameterError("--origin, --u and --v must be given together")
+    nx, ny = args.grid if args.grid else (None, None)
+    scene, table = load_scene_and_grid(args.scene)
+    lights = [li for li in scene.lights if isinstance(li, (AreaLight, PolyhedronLight))]
+    if not lights:
+        raise InvalidLightError(f"{Path(args.scene).name} has no area or polyhedron light")
+    if all(given):
+        grid = LuxGrid(args.origin, args.u, args.v, nx or 64, ny or 64)
+    elif table is not None:
+        grid = _grid_from_table(args.scene, table, nx, ny)
+    else:
+        grid = floor_grid(scene, nx or 64, ny or 64)
+    levels: Any = args.levels if args.levels is not None else (table or {}).get("levels", 8)
+    with progress_bar("illuminance", enabled=not args.no_progress) as progress:
+        m = illuminance_map(grid, lights, [o.shape for o in scene.objects], resolution=args.resolution, progress=progress)
+    out.parent.mkdir(parents=True, exist_ok=True)
+    save_luxmap_png(out, m, levels=levels)
+    print(f"wrote {out}")
+    if args.npy is not None:
+        npy = Path(args.npy)
+        npy.parent.mkdir(parents=True, exist_ok=True)
+        np.save(npy, m.E, allow_pickle=False)
+        print(f"wrote {npy}")
+    print(f"E min {m.E.min():.6g}  mean {m.E.mean():.6g}  max {m.E.max():.6g}")
+    return 0
