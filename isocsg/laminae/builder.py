@@ -1,0 +1,303 @@
+"""Building (and caching) the isoluminance representation of a primitive.
+
+:func:`build_laminae` returns a :class:`~isocsg.laminae.model.LaminaSet`:
+
+- ``laminae``: the seed's polygons, per light: sphere circles, truncus quads
+  ``phi_i`` and ends, polyhedron faces; with a specular material also the
+  laminae of the seed's *virtual light source* (the half-way direction
+  between the light and the eye, seen from the primitive's centre), whose
+  diffuse contours approximate the highlight's.
+- ``bands``: what the renderer fills. The primitive's base surface mesh
+  (vertices on the surface with exact normals, the first light's contour
+  lines already on edges) is cut along the level lines of every contour
+  family (one diffuse family per light, two Phong families per light with a
+  specular material). Several lights give the seed's *composite contours*:
+  the pieces where every family's band is constant. Each piece is filled
+  with ``ambient + sum of its bands' values``, for the outward normal
+  (``value_out``) and for the reversed normal (``value_in``, the inside of a
+  CSG cut). A piece whose field is constant (a polyhedron face or a truncus
+  end under a directional light) takes its exact value, as a single lamina.
+
+Diffuse sets do not depend on the eye and are cached: rendering the same
+scene from another viewpoint reuses them. Specular sets depend on the eye and
+are built for each one.
+"""
+
+from __future__ import annotations
+
+import threading
+from collections import OrderedDict
+from collections.abc import Sequence
+from typing import Any
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from .._validation import integer, vector3
+from ..errors import InvalidLightError, InvalidParameterError
+from ..geometry.primitives import Box, ConvexPolyhedron, Primitive, Sphere, Truncus
+from ..lighting.lights import DirectionalLight, PointLight
+from ..lighting.shading import Material
+from .families import FieldFamily, diffuse_family, diffuse_levels, incidence, specular_families
+from .model import BandMesh, ContourFamily, Lamina, LaminaSet
+from .polyhedron import face_laminae, polyhedron_surface
+from .sphere import contour_heights, light_axis, sphere_laminae, sphere_surface
+from .split import split_by_levels
+from .surface import Surface
+from .truncus import light_frame, paper_levels, truncus_laminae, truncus_surface
+
+__all__ = ["build_laminae", "clear_cache", "cache_info", "MAX_CONTOURS"]
+
+#: Largest number of contours per family.
+MAX_CONTOURS = 4096
+
+Light = PointLight | DirectionalLight
+
+_CACHE: OrderedDict[tuple[Any, ...], LaminaSet] = OrderedDict()
+_CACHE_SIZE = 128
+_LOCK = threading.Lock()
+_STATS = {"hits": 0, "misses": 0}
+
+
+def clear_cache() -> None:
+    """Forget every cached lamina set."""
+    with _LOCK:
+        _CACHE.clear()
+        _STATS.update(hits=0, misses=0)
+
+
+def cache_info() -> dict[str, int]:
+    """Cache statistics: ``hits``, ``misses`` and ``size``.
+
+    Examples
+    --------
+    >>> clear_cache(); cache_info()
+    {'hits': 0, 'misses': 0, 'size': 0}
+    """
+    with _LOCK:
+        return {**_STATS, "size": len(_CACHE)}
+
+
+def _check_lights(lights: Sequence[Any]) -> tuple[Light, ...]:
+    if isinstance(lights, (PointLight, DirectionalLight)):
+        lights = (lights,)
+    try:
+        out = tuple(lights)
+    except TypeError:
+        raise InvalidLightError(f"lights must be a sequence of lights, got {type(lights).__name__}") from None
+    for i, light in enumerate(out):
+        if not isinstance(light, (PointLight, DirectionalLight)):
+            raise InvalidLightError(
+                f"lights[{i}]: isoluminance contours need PointLight or DirectionalLight, got {type(light).__name__}"
+            )
+    return out
+
+
+def build_laminae(
+    primitive: Primitive,
+    lights: Sequence[Light],
+    material: Material | None = None,
+    contours: int = 64,
+    *,
+    eye: ArrayLike | None = None,
+) -> LaminaSet:
+    """The isoluminance laminae and band mesh of one primitive.
+
+    Parameters
+    ----------
+    primitive : Sphere, Truncus (Cylinder, Cone), Box or ConvexPolyhedron
+    lights : sequence of PointLight or DirectionalLight
+        Each light adds a contour family (composite contours for several).
+    material : Material, optional
+        Defaults to ``Material()``. With ``ks > 0`` the set depends on ``eye``.
+    contours : int, default 64
+        N, the contours per family (1 .. 4096).
+    eye : array_like, shape (3,), optional
+        The viewpoint; needed only for a specular material.
+
+    Returns
+    -------
+    LaminaSet
+        Cached for diffuse materials: the same object is returned for the same
+        primitive, lights, material and N, whatever the eye.
+
+    Raises
+    ------
+    InvalidParameterError
+        On a bad ``contours``, ``material`` or ``eye`` (or a missing eye with ``ks > 0``),
+        or when ``primitive`` is not a primitive.
+    InvalidLightError
+        When a light is not a point or directional light.
+
+    Notes
+    -----
+    A point light inside a primitive is not an error: the primitive's outer
+    surface faces away from it everywhere and is unlit (ambient only), while
+    its reversed normals (``value_in``) are lit.
+
+    Examples
+    --------
+    >>> from isocsg import PointLight, Sphere
+    >>> ls = build_laminae(Sphere((0, 0, 0), 1.0), [PointLight((0, 0, 5))], contours=8)
+    >>> len(ls.laminae), ls.laminae[0].kind
+    (8, 'contour')
+    >>> ls is build_laminae(Sphere((0, 0, 0), 1.0), [PointLight((0, 0, 5))], contours=8, eye=(9, 9, 9))
+    True
+    >>> float(ls.bands.value_out.min()), round(float(ls.bands.value_out.max()), 3)
+    (0.1, 0.875)
+    """
+    if not isinstance(primitive, (Sphere, Truncus, Box, ConvexPolyhedron)):
+        raise InvalidParameterError(f"primitive must be a Sphere, Truncus, Box or ConvexPolyhedron, got {type(primitive).__name__}")
+    lights_t = _check_lights(lights)
+    mat = Material() if material is None else material
+    if not isinstance(mat, Material):
+        raise InvalidParameterError(f"material must be a Material, got {type(mat).__name__}")
+    n = integer("contours", contours, low=1, high=MAX_CONTOURS, error=InvalidParameterError)
+    specular = mat.ks > 0 and len(lights_t) > 0
+    eye_t: tuple[float, ...] | None = None
+    if specular:
+        if eye is None:
+            raise InvalidParameterError("eye is needed for a specular material (ks > 0)")
+        eye_t = tuple(vector3("eye", eye, error=InvalidParameterError))
+    key = (primitive, lights_t, mat, n, eye_t)
+    with _LOCK:
+        hit = _CACHE.get(key)
+        if hit is not None:
+            _CACHE.move_to_end(key)
+            _STATS["hits"] += 1
+            return hit
+        _STATS["misses"] += 1
+    out = _build(primitive, lights_t, mat, n, None if eye_t is None else np.asarray(eye_t))
+    with _LOCK:
+        _CACHE[key] = out
+        while len(_CACHE) > _CACHE_SIZE:
+            _CACHE.popitem(last=False)
+    return out
+
+
+# ----------------------------------------------------------------------------- per primitive
+
+
+def _core_levels(primitive: Primitive, light: Light, n: int) -> NDArray[np.float64]:
+    """The primitive's own contour cosines for one light (before mirroring and the grid)."""
+    if isinstance(primitive, Truncus):
+        return paper_levels(primitive, light, n)
+    return np.arange(n + 1) / n  # sphere circles and face subdivisions: the cosine distribution
+
+
+def _surface(primitive: Primitive, lights: tuple[Light, ...], first_levels: NDArray[np.float64]) -> Surface:
+    if isinstance(primitive, Sphere):
+        return sphere_surface(primitive, lights[0] if lights else None, first_levels)
+    if isinstance(primitive, Truncus):
+        return truncus_surface(primitive, list(lights), first_levels)
+    return polyhedron_surface(primitive, list(lights))
+
+
+def _paper_laminae(primitive: Primitive, light: Light, n: int) -> list[tuple[NDArray[np.float64], NDArray[np.float64], float, str]]:
+    if isinstance(primitive, Sphere):
+        return [(v, nrm, c, "contour") for v, nrm, c in sphere_laminae(primitive, light, n)]
+    if isinstance(primitive, Truncus):
+        return truncus_laminae(primitive, light, n)
+    return [(v, nrm, c, "face") for v, nrm, c in face_laminae(primitive, light)]
+
+
+def _family_description(primitive: Primitive, light: Light, index: int, n: int, mat: Material) -> ContourFamily:
+    """The inspectable contour family of one light (plane normal and offsets of the laminae)."""
+    cos_k = np.arange(n + 1) / n
+    if isinstance(primitive, Sphere):
+        c = primitive.center_array
+        w = light_axis(c, light)
+        t = contour_heights(primitive, light, cos_k)
+        offsets = float(w @ c) + primitive.radius * t
+        levels = cos_k
+    elif isinstance(primitive, Truncus):
+        ct = primitive.center_array
+        ln = light.unit_direction if isinstance(light, DirectionalLight) else light_axis(ct, light)
+        w, _ = light_frame(primitive.unit_axis, ln)
+        r = max(primitive.r1, primitive.r2)
+        offsets = float(w @ ct) + np.cos(np.pi * np.arange(n + 1) / n) * r
+        levels = paper_levels(primitive, light, n)
+    else:
+        w = np.zeros(3)
+        offsets = np.zeros(0)
+        levels = np.zeros(0)
+    lv = np.asarray(levels, dtype=np.float64)
+    values = mat.ambient + mat.kd * light.intensity * np.maximum(0.5 * (lv[:-1] + lv[1:]), 0.0) if len(lv) > 1 else np.zeros(0)
+    return ContourFamily(w, np.asarray(offsets, dtype=np.float64), lv, values, index)
+
+
+def _virtual_light(primitive: Primitive, light: Light, eye: NDArray[np.float64]) -> DirectionalLight | None:
+    """The seed's virtual light source: half-way between the light and the eye, from the centre."""
+    lo, hi = primitive.bounds
+    c = getattr(primitive, "center_array", 0.5 * (lo + hi))
+    ln = light_axis(c, light) if isinstance(light, PointLight) else light.unit_direction
+    v = eye - c
+    nv = float(np.linalg.norm(v))
+    if nv == 0:
+        return None
+    h = ln + v / nv
+    if float(np.linalg.norm(h)) < 1e-12:
+        return None
+    return DirectionalLight(tuple(h / np.linalg.norm(h)), light.intensity)
+
+
+def _build(primitive: Primitive, lights: tuple[Light, ...], mat: Material, n: int, eye: NDArray[np.float64] | None) -> LaminaSet:
+    levels = [diffuse_levels(_core_levels(primitive, light, n), n) for light in lights]
+    surf = _surface(primitive, lights, levels[0] if lights else np.zeros(0))
+    fams: list[FieldFamily] = []
+    for j, light in enumerate(lights):
+        fams.append(diffuse_family(j, light, mat, incidence(light, surf.vertices, surf.normals), levels[j]))
+        if eye is not None:
+            fams.extend(specular_families(j, light, mat, surf.vertices, surf.normals, eye, n))
+    bands = _cut(surf, fams, mat)
+
+    laminae: list[Lamina] = []
+    for j, light in enumerate(lights):
+        w = light.intensity
+        for verts, nrm, cos, kind in _paper_laminae(primitive, light, n):
+            value = mat.ambient + mat.kd * w * max(cos, 0.0)
+            laminae.append(Lamina(verts, nrm, float(value), float(nrm @ verts[0]), kind, j if kind == "contour" else -1))
+        if eye is not None:
+            virtual = _virtual_light(primitive, light, eye)
+            if virtual is not None:
+                for verts, nrm, cos, kind in _paper_laminae(primitive, virtual, n):
+                    value = mat.ks * w * max(cos, 0.0) ** mat.shininess
+                    laminae.append(Lamina(verts, nrm, float(value), float(nrm @ verts[0]), "specular", j))
+    if not lights:
+        for verts, nrm, _cos, kind in _paper_laminae(primitive, DirectionalLight((0.0, 0.0, 1.0), 0.0), n):
+            laminae.append(Lamina(verts, nrm, float(mat.ambient), float(nrm @ verts[0]), kind, -1))
+    families = tuple(_family_description(primitive, light, j, n, mat) for j, light in enumerate(lights))
+    return LaminaSet(primitive, tuple(laminae), families, bands, view_dependent=eye is not None)
+
+
+def _cut(surf: Surface, fams: list[FieldFamily], mat: Material) -> BandMesh:
+    """Cut the surface along every family's levels and give each piece its value."""
+    vertices, triangles = surf.vertices, surf.triangles
+    if not fams:
+        t = len(triangles)
+        amb = np.full(t, mat.ambient)
+        return BandMesh(vertices, triangles.astype(np.int32), amb, amb.copy(), np.zeros(t, np.int32))
+    values = np.stack([f.field for f in fams], axis=1)
+    band = np.zeros((len(triangles), len(fams)), np.int64)
+    for i, fam in enumerate(fams):
+        out = split_by_levels(vertices, triangles, values, i, fam.levels)
+        vertices, values, triangles = out.vertices, out.values, out.triangles
+        band = band[out.parent]
+        band[:, i] = out.band
+    # Drop triangles of zero area (a cone's apex, cuts through a vertex): they cover no pixel.
+    a, b, c = vertices[triangles[:, 0]], vertices[triangles[:, 1]], vertices[triangles[:, 2]]
+    area2 = np.linalg.norm(np.cross(b - a, c - a), axis=1)
+    scale = float(np.max(np.abs(vertices))) if len(vertices) else 1.0
+    keep = area2 > 1e-24 * max(scale, 1.0) ** 2
+    triangles, band = triangles[keep], band[keep]
+    v_out = np.full(len(triangles), mat.ambient)
+    v_in = np.full(len(triangles), mat.ambient)
+    for i, fam in enumerate(fams):
+        f = values[triangles, i]  # (T, 3)
+        flat = np.ptp(f, axis=1) <= 1e-12
+        o, n_ = fam.table_out[band[:, i]], fam.table_in[band[:, i]]
+        eo, ei = fam.exact(f[:, 0])
+        v_out += np.where(flat, eo, o)
+        v_in += np.where(flat, ei, n_)
+    composite = band[:, 0] if band.shape[1] == 1 else np.unique(band, axis=0, return_inverse=True)[1].reshape(-1)
+    return BandMesh(vertices, triangles.astype(np.int32), v_out, v_in, composite.astype(np.int32))

@@ -1,0 +1,92 @@
+"""Isoluminance laminae of boxes and convex polyhedra: one lamina per face.
+
+Under a directional light every face is one isoluminance contour with the
+exact intensity of its normal. A point light's incidence varies across a
+face; the band mesh then subdivides each face (more finely for nearer
+lights) so that the face is cut along its exact level lines.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from numpy.typing import NDArray
+
+from ..geometry.primitives import Box, ConvexPolyhedron
+from ..lighting.lights import DirectionalLight, PointLight
+from .surface import Surface, light_reference_distance, orient_outward, refinement
+
+__all__ = ["face_laminae", "polyhedron_surface"]
+
+Light = PointLight | DirectionalLight
+
+
+def _faces(poly: Box | ConvexPolyhedron) -> list[tuple[NDArray[np.float64], NDArray[np.float64]]]:
+    out = []
+    for f in poly.face_polygons():
+        f = np.asarray(f, dtype=np.float64)
+        # Newell's normal of the counter-clockwise (outward) face.
+        n = np.sum(np.cross(f, np.roll(f, -1, axis=0)), axis=0)
+        out.append((f, n / np.linalg.norm(n)))
+    return out
+
+
+def face_laminae(poly: Box | ConvexPolyhedron, light: Light) -> list[tuple[NDArray[np.float64], NDArray[np.float64], float]]:
+    """One lamina per face: (vertices, outward normal, incidence cosine at the face centroid)."""
+    out = []
+    for f, n in _faces(poly):
+        centroid = f.mean(axis=0)
+        if isinstance(light, DirectionalLight):
+            ln = light.unit_direction
+        else:
+            d = np.asarray(light.position) - centroid
+            ln = d / max(float(np.linalg.norm(d)), 1e-300)
+        out.append((f, n, float(n @ ln)))
+    return out
+
+
+def _subdivided_triangle(a: NDArray[np.float64], b: NDArray[np.float64], c: NDArray[np.float64], s: int) -> tuple[NDArray[np.float64], NDArray[np.int64]]:
+    """Barycentric grid of ``s * s`` triangles; points on an edge depend on that edge's ends only."""
+    idx = {}
+    pts = []
+    for i in range(s + 1):
+        for j in range(s + 1 - i):
+            k = s - i - j
+            idx[i, j] = len(pts)
+            pts.append((i / s) * a + (j / s) * b + (k / s) * c)
+    tris = []
+    for i in range(s):
+        for j in range(s - i):
+            tris.append((idx[i, j], idx[i + 1, j], idx[i, j + 1]))
+            if j + i + 1 < s:
+                tris.append((idx[i + 1, j], idx[i + 1, j + 1], idx[i, j + 1]))
+    return np.array(pts), np.array(tris, dtype=np.int64)
+
+
+def polyhedron_surface(poly: Box | ConvexPolyhedron, lights: list[Light]) -> Surface:
+    """Faces as fans of triangles, subdivided for point lights."""
+    lo, hi = poly.bounds
+    size = 0.5 * float(np.linalg.norm(hi - lo))
+    dist = light_reference_distance(lights, 0.5 * (lo + hi), size)
+    verts, norms, tris = [], [], []
+    count = 0
+    for f, n in _faces(poly):
+        diam = float(np.max(np.linalg.norm(f - f.mean(axis=0), axis=1))) * 2.0
+        s = refinement(diam, dist, cap=16)
+        if s == 1:
+            fv = f
+            ft = np.stack([np.zeros(len(f) - 2, np.int64), np.arange(1, len(f) - 1), np.arange(2, len(f))], axis=1)
+        else:
+            pieces = [_subdivided_triangle(f[0], f[i], f[i + 1], s) for i in range(1, len(f) - 1)]
+            allp = np.vstack([p for p, _ in pieces])
+            offs = np.cumsum([0] + [len(p) for p, _ in pieces[:-1]])
+            allt = np.vstack([t + o for (_, t), o in zip(pieces, offs)])
+            # Points shared by neighbouring fan triangles are bitwise equal: merge them.
+            fv, inv = np.unique(allp, axis=0, return_inverse=True)
+            ft = inv.reshape(-1)[allt]
+        verts.append(fv)
+        norms.append(np.tile(n, (len(fv), 1)))
+        tris.append(ft + count)
+        count += len(fv)
+    vertices = np.vstack(verts)
+    normals = np.vstack(norms)
+    return Surface(vertices, normals, orient_outward(vertices, normals, np.vstack(tris).astype(np.int64)))

@@ -1,0 +1,152 @@
+"""Isoluminance contours of a sphere (the seed's "lines of latitude").
+
+For a point light P at distance D > R from the centre, the incidence cosine
+at a surface point depends only on the polar angle phi from the centre-light
+axis (rotational symmetry): with ``t = cos(phi)``,
+
+    cos_i(t) = (D t - R) / sqrt(D**2 + R**2 - 2 D R t),
+
+so every isoluminance contour is a circle about that axis, exactly, for any
+D > R (the lit cap ends at ``t = R / D``, not at the equator). Solving
+``cos_i(t) = c`` gives the contour heights in closed form,
+
+    t(c) = (R (1 - c**2) + c sqrt(D**2 - R**2 (1 - c**2))) / D,
+
+and for a directional light ``t(c) = c`` (the seed's cosine distribution).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from numpy.typing import NDArray
+
+from ..geometry.primitives import Sphere
+from ..lighting.lights import DirectionalLight, PointLight
+from .surface import Surface, orient_outward
+
+__all__ = ["light_axis", "contour_heights", "sphere_surface", "sphere_laminae", "LONGITUDES", "LATITUDES"]
+
+#: Vertices per circle of latitude of the band mesh (chord sag 3e-4 R).
+LONGITUDES = 128
+#: Uniform polar subdivisions added to the contour circles (for the silhouette).
+LATITUDES = 64
+
+Light = PointLight | DirectionalLight
+
+
+def light_axis(center: NDArray[np.float64], light: Light | None) -> NDArray[np.float64]:
+    """Unit axis from the centre towards the light (+z without a light or for a light at the centre)."""
+    if light is None:
+        return np.array([0.0, 0.0, 1.0])
+    if isinstance(light, DirectionalLight):
+        return light.unit_direction
+    d = np.asarray(light.position, dtype=np.float64) - center
+    n = float(np.linalg.norm(d))
+    return d / n if n > 0 else np.array([0.0, 0.0, 1.0])
+
+
+def contour_heights(sphere: Sphere, light: Light, cosines: NDArray[np.float64]) -> NDArray[np.float64]:
+    """Polar cosines ``t`` of the circles where the incidence cosine equals ``cosines``.
+
+    Parameters
+    ----------
+    sphere : Sphere
+    light : PointLight or DirectionalLight
+    cosines : array_like
+        Incidence cosines in [-1, 1] (negative values: the reversed normal's
+        contours, seen inside a CSG cut).
+
+    Returns
+    -------
+    ndarray
+        ``t`` in [-1, 1]; NaN for every value when a point light is inside or on the sphere.
+
+    Examples
+    --------
+    >>> from isocsg import PointLight, Sphere
+    >>> contour_heights(Sphere((0, 0, 0), 1.0), PointLight((0, 0, 4)), [0.0, 1.0]).tolist()
+    [0.25, 1.0]
+    """
+    c = np.clip(np.asarray(cosines, dtype=np.float64), -1.0, 1.0)
+    if isinstance(light, DirectionalLight):
+        return c.copy()
+    r = sphere.radius
+    d = float(np.linalg.norm(np.asarray(light.position) - sphere.center_array))
+    if d <= r:
+        return np.full(c.shape, np.nan)
+    s = 1.0 - c * c
+    return np.clip((r * s + c * np.sqrt(d * d - r * r * s)) / d, -1.0, 1.0)
+
+
+def _frame(w: NDArray[np.float64]) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+    helper = np.array([1.0, 0.0, 0.0]) if abs(w[0]) < 0.9 else np.array([0.0, 1.0, 0.0])
+    e1 = np.cross(w, helper)
+    e1 /= np.linalg.norm(e1)
+    return e1, np.cross(w, e1)
+
+
+def sphere_surface(sphere: Sphere, light: Light | None, levels: NDArray[np.float64]) -> Surface:
+    """Latitude-longitude mesh about the axis of ``light`` with circles at the contour ``levels``.
+
+    The circles of the first light's contours are mesh edges, so its family
+    cuts nothing; other lights cut the mesh along their own level lines.
+    """
+    c, r = sphere.center_array, sphere.radius
+    w = light_axis(c, light)
+    e1, e2 = _frame(w)
+    t = np.cos(np.pi * np.arange(1, LATITUDES) / LATITUDES)
+    if light is not None:
+        th = contour_heights(sphere, light, levels)
+        t = np.concatenate([t, th[np.isfinite(th)]])
+    t = np.sort(t[np.abs(t) < 1.0 - 1e-12])[::-1]
+    t = t[np.concatenate([[True], np.diff(t) < -1e-12])]
+    s = np.sqrt(1.0 - t * t)
+    phi = 2.0 * np.pi * np.arange(LONGITUDES) / LONGITUDES
+    ring = np.cos(phi)[:, None] * e1 + np.sin(phi)[:, None] * e2  # (M, 3)
+    dirs = (t[:, None, None] * w + s[:, None, None] * ring[None]).reshape(-1, 3)
+    normals = np.vstack([w, dirs, -w])
+    vertices = c + r * normals
+    m, n_rings = LONGITUDES, len(t)
+    j = np.arange(m)
+    jn = (j + 1) % m
+    tris = [np.stack([np.zeros(m, np.int64), 1 + j, 1 + jn], axis=1)]
+    for k in range(n_rings - 1):
+        a, b = 1 + k * m, 1 + (k + 1) * m
+        tris.append(np.stack([a + j, b + j, b + jn], axis=1))
+        tris.append(np.stack([a + j, b + jn, a + jn], axis=1))
+    south = len(vertices) - 1
+    last = 1 + (n_rings - 1) * m
+    tris.append(np.stack([np.full(m, south), last + jn, last + j], axis=1))
+    triangles = np.vstack(tris).astype(np.int64)
+    return Surface(vertices, normals, orient_outward(vertices, normals, triangles))
+
+
+def sphere_laminae(
+    sphere: Sphere, light: Light, contours: int
+) -> list[tuple[NDArray[np.float64], NDArray[np.float64], float]]:
+    """The seed's contour laminae of one light: circles at cosines ``k / N``, k = 0 .. N-1.
+
+    Returns
+    -------
+    list of (vertices, normal, cosine)
+        Each circle as a polygon (more vertices for larger circles, as in the
+        seed) with the unit axis as normal and the cosine of the band it
+        bounds towards the light (the middle of ``k / N`` and ``(k + 1) / N``).
+        Empty when a point light is inside the sphere (its outside is unlit).
+    """
+    c, r = sphere.center_array, sphere.radius
+    w = light_axis(c, light)
+    e1, e2 = _frame(w)
+    k = np.arange(contours)
+    cos_k = k / contours
+    t = contour_heights(sphere, light, cos_k)
+    out = []
+    for tk, ck in zip(t, cos_k):
+        if not np.isfinite(tk):
+            continue
+        rho = np.sqrt(max(1.0 - tk * tk, 0.0))
+        nv = max(8, int(np.ceil(LONGITUDES * rho)))
+        phi = 2.0 * np.pi * np.arange(nv) / nv
+        poly = c + r * (tk * w + rho * (np.cos(phi)[:, None] * e1 + np.sin(phi)[:, None] * e2))
+        out.append((poly, w.copy(), float(ck + 0.5 / contours)))
+    return out

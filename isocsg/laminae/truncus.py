@@ -1,0 +1,244 @@
+"""Isoluminance laminae of a generalised truncus (the seed's appendix).
+
+With ``a`` the axis (end E1 of radius R1 at ``ct + a/2``, E2 of radius R2 at
+``ct - a/2``) and ``L_n`` the direction to the light:
+
+- ``L_E = L_n - (a . L_n) a / |a|^2``, normalised to ``L_En``; when the light
+  lies on the axis, any unit vector perpendicular to ``a``;
+- ``gamma_ei = c_e + cos(i pi / N) R_e L_En`` and
+  ``delta_ei = R_e sin(i pi / N) (L_En x a / |a|)`` on each end plane;
+- the quadrilateral lamina ``phi_i = {gamma_1i - delta_1i, gamma_1i + delta_1i,
+  gamma_2i + delta_2i, gamma_2i - delta_2i}``, ``0 <= i < N``;
+- the normal ``N_i = p14 - (ct - h a / |a|)`` with ``p14`` the middle of
+  ``p1 p4`` and ``h = (R2^2 - R1^2) / (2 |a|)``. It is the exact outward
+  normal of the generator through ``p1`` and ``p4`` (the normal line through
+  the generator's midpoint meets the axis at ``ct - h a/|a|``);
+- two end laminae, M-sided polygons with normals ``+-a / |a|``.
+
+These laminae are isoluminance only when ``|l - ct| >> size``. For a nearer
+point light the truncus is split along its axis into slices, each with its
+own ``L_En`` from its own centre (:func:`truncus_laminae`); the band mesh
+(:func:`truncus_surface`) carries the exact incidence cosine at every vertex
+and is cut along its exact level lines, near light or not.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from numpy.typing import NDArray
+
+from ..geometry.primitives import Truncus
+from ..lighting.lights import DirectionalLight, PointLight
+from .surface import Surface, light_reference_distance, orient_outward, refinement
+
+__all__ = [
+    "light_frame", "side_cosine_coefficients", "paper_levels", "appendix_normal",
+    "truncus_laminae", "truncus_surface", "GENERATORS",
+]
+
+#: Uniform generators around the axis added to the contour generators (for the silhouette).
+GENERATORS = 128
+
+Light = PointLight | DirectionalLight
+
+
+def _to_light(light: Light, point: NDArray[np.float64]) -> NDArray[np.float64]:
+    if isinstance(light, DirectionalLight):
+        return light.unit_direction
+    d = np.asarray(light.position, dtype=np.float64) - point
+    n = float(np.linalg.norm(d))
+    return d / n if n > 0 else np.zeros(3)
+
+
+def light_frame(axis: NDArray[np.float64], ln: NDArray[np.float64]) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+    """``L_En`` and ``L_En x a/|a|`` for a unit ``axis`` and a light direction ``ln``."""
+    le = ln - (axis @ ln) * axis
+    n = float(np.linalg.norm(le))
+    if n < 1e-12:  # the light on the axis: any perpendicular will do
+        helper = np.array([1.0, 0.0, 0.0]) if abs(axis[0]) < 0.9 else np.array([0.0, 1.0, 0.0])
+        le = np.cross(axis, helper)
+        n = float(np.linalg.norm(le))
+    len_ = le / n
+    return len_, np.cross(len_, axis)
+
+
+def side_cosine_coefficients(truncus: Truncus, ln: NDArray[np.float64]) -> tuple[float, float]:
+    """``(A, B)`` with ``n(theta) . ln = B + A cos(theta)`` on the lateral surface.
+
+    ``theta`` is the angle about the axis from ``L_En``; ``ln`` a unit direction.
+    """
+    a = truncus.unit_axis
+    k = truncus.slope
+    ca, sa = 1.0 / np.hypot(1.0, k), -k / np.hypot(1.0, k)
+    le = ln - (a @ ln) * a
+    return float(ca * np.linalg.norm(le)), float(sa * (a @ ln))
+
+
+def paper_levels(truncus: Truncus, light: Light, contours: int) -> NDArray[np.float64]:
+    """Incidence cosines of the generators through the laminae ``phi_i`` (``theta = i pi / N``).
+
+    Taken with the light direction from the centre ``ct``; these are the
+    levels the band mesh's lateral surface is cut at.
+    """
+    A, B = side_cosine_coefficients(truncus, _to_light(light, truncus.center_array))
+    return B + A * np.cos(np.pi * np.arange(contours + 1) / contours)
+
+
+def appendix_normal(truncus: Truncus, p1: NDArray[np.float64], p4: NDArray[np.float64]) -> NDArray[np.float64]:
+    """The seed's ``N_i = p14 - (ct - h a/|a|)``, normalised."""
+    a = truncus.unit_axis
+    h = (truncus.r2**2 - truncus.r1**2) / (2.0 * truncus.height)
+    n = 0.5 * (p1 + p4) - (truncus.center_array - h * a)
+    return n / np.linalg.norm(n)
+
+
+def _slices(truncus: Truncus, light: Light) -> list[Truncus]:
+    d = light_reference_distance([light], truncus.center_array, 0.5 * float(np.linalg.norm(truncus.bounds[1] - truncus.bounds[0])))
+    k = refinement(truncus.height, d, per_distance=4.0, cap=32)
+    if k == 1:
+        return [truncus]
+    a = np.asarray(truncus.axis, dtype=np.float64)
+    zs = np.linspace(0.5, -0.5, k + 1)
+    out = []
+    for z0, z1 in zip(zs[:-1], zs[1:]):
+        r0 = max(float(truncus.radius_at(z0 * truncus.height)), 0.0)
+        r1 = max(float(truncus.radius_at(z1 * truncus.height)), 0.0)
+        out.append(Truncus(truncus.center_array + 0.5 * (z0 + z1) * a, a * (z0 - z1), r0, r1))
+    return out
+
+
+def truncus_laminae(
+    truncus: Truncus, light: Light, contours: int, *, slices: bool = True
+) -> list[tuple[NDArray[np.float64], NDArray[np.float64], float, str]]:
+    """The appendix laminae of one light: quads ``phi_i`` (i = 1 .. N-1) and the two ends.
+
+    Parameters
+    ----------
+    truncus : Truncus
+    light : PointLight or DirectionalLight
+    contours : int
+        N.
+    slices : bool, default True
+        Split along the axis for a near point light (each slice gets its own
+        ``L_En``); False gives the seed's single-piece construction.
+
+    Returns
+    -------
+    list of (vertices, normal, cosine, kind)
+        ``normal`` is the lamina plane's unit normal; ``cosine`` the incidence
+        cosine of the surface it stands for (``N_i . L_n``, ends: ``+-a . L_n``),
+        ``kind`` ``"contour"`` or ``"end"``. Zero-area quads (a zero radius end
+        and ``i = 0``) are omitted.
+    """
+    out = []
+    pieces = _slices(truncus, light) if slices else [truncus]
+    for piece in pieces:
+        ct = piece.center_array
+        a = piece.unit_axis
+        ln = _to_light(light, ct)
+        len_, side = light_frame(a, ln)
+        c1, c2 = piece.end_centers
+        for i in range(1, contours):
+            ci, si = np.cos(i * np.pi / contours), np.sin(i * np.pi / contours)
+            g1, g2 = c1 + ci * piece.r1 * len_, c2 + ci * piece.r2 * len_
+            d1, d2 = piece.r1 * si * side, piece.r2 * si * side
+            quad = np.array([g1 - d1, g1 + d1, g2 + d2, g2 - d2])
+            normal = np.cross(quad[1] - quad[0], quad[3] - quad[0])
+            if np.linalg.norm(normal) == 0:
+                normal = np.cross(quad[2] - quad[3], quad[0] - quad[3])
+            if np.linalg.norm(normal) == 0:
+                continue
+            ni = appendix_normal(piece, quad[0], quad[3])
+            out.append((quad, normal / np.linalg.norm(normal), float(ni @ ln), "contour"))
+    # The two end laminae of the whole truncus (M = 2N sides), cosines at their centres.
+    a = truncus.unit_axis
+    c1, c2 = truncus.end_centers
+    len_, side = light_frame(a, _to_light(light, truncus.center_array))
+    m = 2 * max(contours, 4)
+    ang = 2.0 * np.pi * np.arange(m) / m
+    ring = np.cos(ang)[:, None] * len_ + np.sin(ang)[:, None] * side
+    for centre, r, n in ((c1, truncus.r1, a), (c2, truncus.r2, -a)):
+        if r > 0:
+            poly = centre + r * (ring if n is a else ring[::-1])
+            out.append((poly, n.copy(), float(n @ _to_light(light, centre)), "end"))
+    return out
+
+
+def _generator_angles(truncus: Truncus, light: Light | None, levels: NDArray[np.float64]) -> NDArray[np.float64]:
+    th = 2.0 * np.pi * np.arange(GENERATORS) / GENERATORS
+    if light is not None:
+        A, B = side_cosine_coefficients(truncus, _to_light(light, truncus.center_array))
+        if A > 1e-12:
+            x = (levels - B) / A
+            x = x[np.abs(x) <= 1.0]
+            t = np.arccos(x)
+            th = np.concatenate([th, t, 2.0 * np.pi - t])
+    th = np.sort(np.mod(th, 2.0 * np.pi))
+    keep = np.concatenate([[True], np.diff(th) > 1e-9])
+    th = th[keep]
+    if 2.0 * np.pi - th[-1] <= 1e-9:
+        th = th[:-1]
+    return th
+
+
+def truncus_surface(truncus: Truncus, lights: list[Light], levels: NDArray[np.float64]) -> Surface:
+    """Band mesh base of a truncus: generators at the first light's contour angles.
+
+    Rings along the axis and on the ends are added for near point lights,
+    whose level lines are not straight generators.
+    """
+    first = lights[0] if lights else None
+    a = truncus.unit_axis
+    ct = truncus.center_array
+    h = truncus.height
+    ln = _to_light(first, ct) if first is not None else np.array([1.0, 0.0, 0.0])
+    e1, e2 = light_frame(a, ln)
+    e2 = -e2  # right-handed (e1, e2, a): angles grow counter-clockwise about a
+    th = _generator_angles(truncus, first, levels)
+    m = len(th)
+    radial = np.cos(th)[:, None] * e1 + np.sin(th)[:, None] * e2  # (m, 3)
+    size = 0.5 * float(np.linalg.norm(truncus.bounds[1] - truncus.bounds[0]))
+    dist = light_reference_distance(lights, ct, size)
+    n_ax = refinement(h, dist)
+    k = truncus.slope
+    side_normal = (radial - k * a) / np.hypot(1.0, k)
+
+    def ring(z: float, r: float) -> NDArray[np.float64]:
+        return ct + z * a + r * radial
+
+    verts, norms, tris = [], [], []
+    count = 0
+    # Lateral surface: rings from E1 (z = +h/2) to E2 (z = -h/2).
+    zs = [0.5 * h - j * h / n_ax for j in range(n_ax + 1)]
+    zs[-1] = -0.5 * h
+    jj = np.arange(m)
+    jn = (jj + 1) % m
+    for j, z in enumerate(zs):
+        r = truncus.r1 if j == 0 else truncus.r2 if j == n_ax else float(truncus.radius_at(z))
+        verts.append(ring(z, r))
+        norms.append(side_normal)
+    for j in range(n_ax):
+        p, q = count + j * m, count + (j + 1) * m
+        tris.append(np.stack([p + jj, q + jj, q + jn], axis=1))
+        tris.append(np.stack([p + jj, q + jn, p + jn], axis=1))
+    count += (n_ax + 1) * m
+    # Ends: centre and concentric rings; the outer ring repeats the rim positions exactly.
+    for z, r, n in ((0.5 * h, truncus.r1, a), (-0.5 * h, truncus.r2, -a)):
+        if r <= 0:
+            continue
+        n_rad = refinement(r, dist)
+        centre = ct + z * a
+        verts.append(centre[None, :])
+        rings = [ring(z, r * i / n_rad) if i < n_rad else ring(z, r) for i in range(1, n_rad + 1)]
+        verts.extend(rings)
+        norms.append(np.tile(n, (1 + n_rad * m, 1)))
+        tris.append(np.stack([np.full(m, count), count + 1 + jj, count + 1 + jn], axis=1))
+        for i in range(n_rad - 1):
+            p, q = count + 1 + i * m, count + 1 + (i + 1) * m
+            tris.append(np.stack([p + jj, q + jj, q + jn], axis=1))
+            tris.append(np.stack([p + jj, q + jn, p + jn], axis=1))
+        count += 1 + n_rad * m
+    vertices = np.vstack(verts)
+    normals = np.vstack(norms)
+    triangles = np.vstack(tris).astype(np.int64)
+    return Surface(vertices, normals, orient_outward(vertices, normals, triangles))
