@@ -18,6 +18,16 @@ from .geometry import Box, Cone, ConvexPolyhedron, Cylinder, Primitive, RayHits,
 from .lighting import DirectionalLight, Material, PointLight, shade
 from .scene import RenderSettings, Scene, SceneObject
 from .csg import CSGNode, Difference, Intersection, Union, difference, intersection, union, union_all
+from .csg.section import section
+from .csg.volume import volume
+from .csg.mesh import to_manifold, to_trimesh
+from .csg.clip import clip_laminae
+from .laminae import BandMesh, Lamina, LaminaSet, build_laminae
+from .render import Renderer, RenderResult, render
+from .render.image import save_npy, save_png
+from .scene import load_scene, save_scene
+from .shadows import AreaLight, PolyhedronLight, illuminance, illuminance_and_state, shadow_state
+from .view import show
 
 __version__ = "0.1.0"
 
@@ -30,4 +40,9 @@ __all__ = [
     "PointLight", "DirectionalLight", "Material", "shade",
     "Scene", "SceneObject", "RenderSettings",
     "CSGNode", "Union", "Intersection", "Difference", "union", "intersection", "difference", "union_all",
+    "section", "volume", "to_manifold", "to_trimesh", "clip_laminae",
+    "build_laminae", "Lamina", "LaminaSet", "BandMesh",
+    "render", "Renderer", "RenderResult", "save_png", "save_npy", "show",
+    "load_scene", "save_scene",
+    "AreaLight", "PolyhedronLight", "illuminance", "shadow_state", "illuminance_and_state",
 ]

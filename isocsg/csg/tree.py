@@ -94,6 +94,24 @@ class CSGNode(Solid):
         """The primitives of the tree, depth first, left to right (repeats kept)."""
         return leaves(self)
 
+    def to_manifold(self, resolution: int = 64) -> "manifold3d.Manifold":  # type: ignore[name-defined]  # noqa: F821
+        """The solid as a manifold3d ``Manifold`` (leaves tessellated with ``resolution`` segments).
+
+        See :func:`isocsg.csg.mesh.to_manifold`.
+        """
+        from .mesh import to_manifold
+
+        return to_manifold(self, resolution)
+
+    def to_trimesh(self, resolution: int = 64) -> "trimesh.Trimesh":  # type: ignore[name-defined]  # noqa: F821
+        """The solid as a watertight ``trimesh.Trimesh`` through manifold3d's Booleans.
+
+        See :func:`isocsg.csg.mesh.to_trimesh`.
+        """
+        from .mesh import to_trimesh
+
+        return to_trimesh(self, resolution)
+
     def program(self) -> tuple[list[Primitive], NDArray[np.int64]]:
         """Flatten into (leaves, postfix program); see the module docstring."""
         prims: list[Primitive] = []

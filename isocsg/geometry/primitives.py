@@ -114,6 +114,12 @@ class Primitive(Solid):
         """Intersect rays with the solid; see :class:`RayHits`."""
         raise NotImplementedError
 
+    def to_manifold(self, resolution: int = DEFAULT_RESOLUTION) -> "manifold3d.Manifold":  # type: ignore[name-defined]  # noqa: F821
+        """The primitive as a manifold3d ``Manifold`` (see :func:`isocsg.csg.mesh.to_manifold`)."""
+        from ..csg.mesh import to_manifold
+
+        return to_manifold(self, resolution)
+
     def to_trimesh(self, resolution: int = DEFAULT_RESOLUTION) -> "trimesh.Trimesh":
         """A closed triangle mesh of the solid (vertices on the true surface)."""
         import trimesh
