@@ -20,11 +20,13 @@ Several objects: the nearest visible point wins.
 from __future__ import annotations
 
 import math
+import os
 import sys
 import threading
 import time
 from collections import OrderedDict
 from collections.abc import Callable, Sequence
+from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -433,18 +435,12 @@ class Renderer:
         leaf_of: list[int] = []
         total = sum(len(o[1]) for o in objects)
         done = 0
-        dummy_k = np.full((1, 1), -np.inf)
-        dummy_v = np.empty((1, 1), np.float32)
         for (k, leaves, program, preps), hs in zip(objects, projected):
             base = len(obj_of)
             obj_of.extend([k] * len(leaves))
             leaf_of.extend(range(len(leaves)))
             if program is None:
-                p, h = preps[0], hs[0]
-                fill_kernel(
-                    h[0], h[1], h[2], h[3], p.triangles, p.value_out, p.value_in, near, persp, True, False,
-                    base, 0, 0, zkey, value, gid, dummy_k, dummy_v,
-                )
+                self._fill_plain(preps[0], hs[0], near, persp, base, zkey, value, gid)
             else:
                 self._fill_csg(preps, hs, program, near, persp, base, W, H, zkey, value, gid, progress, done, total)
             done += len(leaves)
@@ -457,6 +453,36 @@ class Renderer:
         object_of = np.asarray([-1] + obj_of, np.int32)
         leaf_of_arr = np.asarray([-1] + leaf_of, np.int32)
         return RenderResult(image, RenderTimings(t1 - t0, t2 - t1), cam, gid, zkey, object_of, leaf_of_arr)
+
+    def _fill_plain(
+        self, p: _Prepared, h: NDArray[np.float64], near: float, persp: bool, base: int,
+        zkey: NDArray[np.float64], value: NDArray[np.float32], gid: NDArray[np.int32],
+    ) -> None:
+        """Front faces of one convex primitive, straight into the image buffers.
+
+        Large images are split into horizontal stripes filled concurrently (the
+        kernel releases the GIL): thin band triangles cost mostly per row, and
+        each stripe only walks its own rows.
+        """
+        H = zkey.shape[0]
+        dummy_k = np.full((1, 1), -np.inf)
+        dummy_v = np.empty((1, 1), np.float32)
+
+        def stripe(r0: int, r1: int) -> None:
+            fill_kernel(
+                h[0], h[1], h[2], h[3], p.triangles, p.value_out, p.value_in, near, persp, True, False,
+                base, 0, r0, zkey[r0:r1], value[r0:r1], gid[r0:r1], dummy_k, dummy_v,
+            )
+
+        n = _STRIPES if zkey.size >= _STRIPE_MIN_PIXELS and H >= 2 * _STRIPES else 1
+        if n == 1:
+            stripe(0, H)
+            return
+        cuts = [H * k // n for k in range(n + 1)]
+        futures = [_pool().submit(stripe, a, b) for a, b in zip(cuts[1:-1], cuts[2:])]
+        stripe(cuts[0], cuts[1])
+        for f in futures:
+            f.result()
 
     def _fill_csg(
         self,
@@ -503,6 +529,18 @@ class Renderer:
 
 
 _DEFAULT: Renderer | None = None
+
+#: Stripes filled concurrently for one primitive on images of at least ``_STRIPE_MIN_PIXELS``.
+_STRIPES = max(1, min(4, os.cpu_count() or 1))
+_STRIPE_MIN_PIXELS = 512 * 512
+_POOL: ThreadPoolExecutor | None = None
+
+
+def _pool() -> ThreadPoolExecutor:
+    global _POOL
+    if _POOL is None:
+        _POOL = ThreadPoolExecutor(max_workers=max(_STRIPES - 1, 1), thread_name_prefix="isocsg-fill")
+    return _POOL
 
 
 def default_renderer() -> Renderer:
