@@ -15,6 +15,7 @@ import numpy as np
 import pytest
 
 from isocsg import (
+    Box,
     Camera,
     Difference,
     Intersection,
@@ -476,3 +477,22 @@ def test_malformed_band_mesh_is_reported():
 
     with pytest.raises(InvalidParameterError, match="band mesh of .* is malformed"):
         Renderer(build_laminae=bad).render(Scene(CAM, LIGHTS, [Sphere((0, 0, 0), 1)]), contours=4)
+
+
+def test_striped_fill_of_large_images_equals_the_single_pass(monkeypatch):
+    # Large images of plain primitives are filled in concurrent row stripes;
+    # every pixel must come out exactly as from one pass over the whole image.
+    from isocsg.render import painter
+
+    scene = Scene(
+        Camera((0.4, -5, 1.2), (0, 0, 0), width=640, height=520),
+        [PointLight((3, -4, 5))],
+        [Sphere((0, 0, 0), 1.0), Box((0.8, 0.6, -0.2), (1.0, 1.0, 1.0))],
+    )
+    monkeypatch.setattr(painter, "_STRIPES", 3)
+    striped = Renderer().render(scene)
+    monkeypatch.setattr(painter, "_STRIPES", 1)
+    single = Renderer().render(scene)
+    np.testing.assert_array_equal(striped.image, single.image)
+    np.testing.assert_array_equal(striped.object_index, single.object_index)
+    assert np.isfinite(single.image).sum() > 0.1 * single.image.size
