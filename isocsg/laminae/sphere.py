@@ -85,6 +85,25 @@ def _frame(w: NDArray[np.float64]) -> tuple[NDArray[np.float64], NDArray[np.floa
     return e1, np.cross(w, e1)
 
 
+def _rings(t: NDArray[np.float64]) -> NDArray[np.float64]:
+    """Polar cosines of the mesh circles: the contour circles, plus uniformly
+    spaced circles in every polar gap wider than ``pi / LATITUDES`` (near the
+    light's pole the contours are far apart in angle, and the silhouette
+    needs fine steps everywhere)."""
+    polar = np.sort(np.arccos(np.clip(t, -1.0, 1.0)))
+    polar = polar[(polar > 1e-9) & (polar < np.pi - 1e-9)]
+    edges = np.concatenate([[0.0], polar, [np.pi]])
+    step = np.pi / LATITUDES
+    fill = []
+    for a, b in zip(edges[:-1], edges[1:]):
+        k = int(np.ceil((b - a) / step - 1e-9))
+        if k > 1:
+            fill.append(a + (b - a) * np.arange(1, k) / k)
+    polar = np.sort(np.concatenate([polar, *fill]))
+    polar = polar[np.concatenate([[True], np.diff(polar) > 1e-12])]
+    return np.cos(polar)
+
+
 def sphere_surface(sphere: Sphere, light: Light | None, levels: NDArray[np.float64]) -> Surface:
     """Latitude-longitude mesh about the axis of ``light`` with circles at the contour ``levels``.
 
@@ -94,12 +113,8 @@ def sphere_surface(sphere: Sphere, light: Light | None, levels: NDArray[np.float
     c, r = sphere.center_array, sphere.radius
     w = light_axis(c, light)
     e1, e2 = _frame(w)
-    t = np.cos(np.pi * np.arange(1, LATITUDES) / LATITUDES)
-    if light is not None:
-        th = contour_heights(sphere, light, levels)
-        t = np.concatenate([t, th[np.isfinite(th)]])
-    t = np.sort(t[np.abs(t) < 1.0 - 1e-12])[::-1]
-    t = t[np.concatenate([[True], np.diff(t) < -1e-12])]
+    th = contour_heights(sphere, light, levels) if light is not None else np.zeros(0)
+    t = _rings(th[np.isfinite(th)])
     s = np.sqrt(1.0 - t * t)
     phi = 2.0 * np.pi * np.arange(LONGITUDES) / LONGITUDES
     ring = np.cos(phi)[:, None] * e1 + np.sin(phi)[:, None] * e2  # (M, 3)
