@@ -256,6 +256,24 @@ class _Prepared:
     value_in: NDArray[np.float32]
 
 
+def _staggered_empty(shape: tuple[int, ...], dtype: Any, k: int) -> NDArray[Any]:
+    """A zeroed ``(shape, dtype)`` array starting ``64 * (k % 37) + 64`` bytes into a page.
+
+    Large allocations all start at the same offset within a 4 KiB page; a loop
+    that reads one such buffer and writes another at the same index then
+    stalls on every store (4K aliasing: the processor cannot tell the
+    addresses apart by their low 12 bits). Staggering the starts avoids it.
+    """
+    dt = np.dtype(dtype)
+    nbytes = math.prod(shape) * dt.itemsize
+    raw = np.empty(nbytes + 8192, np.uint8)
+    # Touch every page now: reading pages that were never written (the value
+    # buffer outside the objects) page-faults on every pass on some kernels.
+    raw.fill(0)
+    start = (-raw.ctypes.data) % 4096 + 64 * (k % 37) + 64
+    return raw[start : start + nbytes].view(dt).reshape(shape)
+
+
 class Renderer:
     """Renders scenes with the isoluminance method, reusing band meshes.
 
@@ -306,7 +324,7 @@ class Renderer:
             # Held only by the pool, this loop and getrefcount's argument: free to reuse.
             if sys.getrefcount(a) <= 3:
                 return a
-        a = np.empty(shape, dtype)
+        a = _staggered_empty(shape, dtype, sum(len(p) for p in self._pool.values()))
         pool.append(a)
         if len(pool) > 3:
             pool.pop(0)
