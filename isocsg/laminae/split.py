@@ -20,7 +20,13 @@ import numpy as np
 from numba import njit
 from numpy.typing import NDArray
 
-__all__ = ["SplitMesh", "split_by_levels", "mesh_edges"]
+from ..errors import InvalidParameterError
+
+__all__ = ["SplitMesh", "split_by_levels", "mesh_edges", "MAX_PIECES"]
+
+#: Upper bound on the triangles one cut may produce (about 300 MB of indices):
+#: beyond it the request (many contours times several lights) is refused, not attempted.
+MAX_PIECES = 12_000_000
 
 
 @dataclass(frozen=True, slots=True, eq=False)
@@ -157,6 +163,11 @@ def split_by_levels(
     -------
     SplitMesh
 
+    Raises
+    ------
+    InvalidParameterError
+        When the cut could produce more than :data:`MAX_PIECES` triangles.
+
     Examples
     --------
     A triangle whose field (here x) goes from 0 to 2, cut at level 1: the
@@ -202,6 +213,11 @@ def split_by_levels(
     kmin = np.searchsorted(lv, ft.min(axis=1), side="right")
     kmax = np.searchsorted(lv, ft.max(axis=1), side="left")
     cap = int(np.sum(3 * (np.maximum(kmax - kmin, 0) + 1)))
+    if cap > MAX_PIECES:
+        raise InvalidParameterError(
+            f"contours: cutting {len(t)} triangles at {len(lv)} levels could give {cap} band triangles "
+            f"(more than {MAX_PIECES}); use fewer contours or fewer lights"
+        )
     out_tri = np.empty((cap, 3), np.int64)
     out_parent = np.empty(cap, np.int64)
     out_band = np.empty(cap, np.int64)
