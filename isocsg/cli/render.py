@@ -5,6 +5,7 @@ from __future__ import annotations
 import argparse
 from typing import Any
 
+from ..errors import InvalidParameterError
 from ..scene.io import load_scene
 from ._common import (
     add_common_render_options,
@@ -18,7 +19,7 @@ from ._common import (
 __all__ = ["register", "run"]
 
 DESCRIPTION = """\
-Render a scene file (.toml or .json) to a PNG image. The scene's render.mode
+Render a scene file (.toml or .json) to a PNG image (and optionally .npy and .svg). The scene's render.mode
 chooses the method: "isoluminance" (contour bands, point and directional lights)
 or "halftone" (exact illuminance and soft shadows from area and polyhedron lights).
 """
@@ -30,6 +31,10 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
     p.add_argument("scene", metavar="SCENE", help="scene file, .toml or .json")
     p.add_argument("-o", "--output", required=True, metavar="OUT.png", help="PNG file to write")
     p.add_argument("--npy", metavar="OUT.npy", help="also write the float32 image (NaN background) as .npy")
+    p.add_argument(
+        "--svg", metavar="OUT.svg",
+        help="also write the visible bands as SVG polygons, back to front (isoluminance scenes of primitives)",
+    )
     add_common_render_options(p)
     p.set_defaults(func=run)
     return p
@@ -38,9 +43,18 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
 def run(args: argparse.Namespace) -> int:
     """Load, render, write; prints the files written."""
     check_outputs(args.output, args.npy)
+    if args.svg is not None and not str(args.svg).lower().endswith(".svg"):
+        raise InvalidParameterError(f"--svg must name a .svg file, got {args.svg!r}")
     scene = apply_overrides(load_scene(args.scene), size=args.size, contours=args.contours)
+    if args.svg is not None and scene.render.mode != "isoluminance":
+        raise InvalidParameterError("--svg needs render.mode = \"isoluminance\"")
     with progress_bar(f"render {scene.render.mode}", enabled=not args.no_progress) as progress:
         result = render_scene(scene, progress=progress)
     for path in write_outputs(result.image, args.output, args.npy):
         print(f"wrote {path}")
+    if args.svg is not None:
+        from ..render.svg import save_scene_svg
+
+        save_scene_svg(args.svg, scene)
+        print(f"wrote {args.svg}")
     return 0

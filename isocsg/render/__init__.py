@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from .painter import Renderer, RenderResult, RenderTimings, default_renderer, render
 from .raster import Raster, homogeneous, rasterize
+from .svg import save_scene_svg, scene_polygons
 
 __all__ = [
     "render",
@@ -14,4 +15,6 @@ __all__ = [
     "rasterize",
     "Raster",
     "homogeneous",
+    "save_scene_svg",
+    "scene_polygons",
 ]
