@@ -45,7 +45,7 @@ def run(args: argparse.Namespace) -> int:
     output = args.output or f"isocsg-{name}.png"
     check_outputs(output)
     scene = apply_overrides(load_scene(source), size=args.size, contours=args.contours)
-    with progress_bar(f"demo {name}", enabled=not args.no_progress) as progress:
+    with progress_bar(f"render {scene.render.mode}", enabled=not args.no_progress) as progress:
         result = render_scene(scene, progress=progress)
     (path,) = write_outputs(result.image, output)
     w, h = scene.camera.width, scene.camera.height

@@ -3,9 +3,11 @@
 from __future__ import annotations
 
 import argparse
+from pathlib import Path
 from typing import Any
 
 from ..errors import InvalidParameterError
+from ..geometry.primitives import Primitive
 from ..scene.io import load_scene
 from ._common import (
     add_common_render_options,
@@ -46,8 +48,12 @@ def run(args: argparse.Namespace) -> int:
     if args.svg is not None and not str(args.svg).lower().endswith(".svg"):
         raise InvalidParameterError(f"--svg must name a .svg file, got {args.svg!r}")
     scene = apply_overrides(load_scene(args.scene), size=args.size, contours=args.contours)
-    if args.svg is not None and scene.render.mode != "isoluminance":
-        raise InvalidParameterError("--svg needs render.mode = \"isoluminance\"")
+    if args.svg is not None:
+        if scene.render.mode != "isoluminance":
+            raise InvalidParameterError("--svg needs render.mode = \"isoluminance\"")
+        for k, obj in enumerate(scene.objects):
+            if not isinstance(obj.shape, Primitive):
+                raise InvalidParameterError(f"--svg: objects[{k}] is a CSG tree; SVG output takes single primitives only")
     with progress_bar(f"render {scene.render.mode}", enabled=not args.no_progress) as progress:
         result = render_scene(scene, progress=progress)
     for path in write_outputs(result.image, args.output, args.npy):
@@ -55,6 +61,7 @@ def run(args: argparse.Namespace) -> int:
     if args.svg is not None:
         from ..render.svg import save_scene_svg
 
+        Path(args.svg).parent.mkdir(parents=True, exist_ok=True)
         save_scene_svg(args.svg, scene)
         print(f"wrote {args.svg}")
     return 0
