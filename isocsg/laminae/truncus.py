@@ -126,7 +126,8 @@ def truncus_laminae(
     -------
     list of (vertices, normal, cosine, kind)
         ``normal`` is the lamina plane's unit normal; ``cosine`` the incidence
-        cosine of the surface it stands for (``N_i . L_n``, ends: ``+-a . L_n``),
+        cosine of the surface it stands for (``N_i . L_n`` with ``L_n`` taken
+        from the generator's midpoint ``p14``, ends: ``+-a . L_n`` from their centres),
         ``kind`` ``"contour"`` or ``"end"``. Zero-area quads (a zero radius end
         and ``i = 0``) are omitted.
     """
@@ -149,7 +150,10 @@ def truncus_laminae(
             if np.linalg.norm(normal) == 0:
                 continue
             ni = appendix_normal(piece, quad[0], quad[3])
-            out.append((quad, normal / np.linalg.norm(normal), float(ni @ ln), "contour"))
+            # The light direction from the generator's midpoint p14: the seed's L_n for a
+            # distant light, and exact at p14 for a near one.
+            l14 = _to_light(light, 0.5 * (quad[0] + quad[3]))
+            out.append((quad, normal / np.linalg.norm(normal), float(ni @ l14), "contour"))
     # The two end laminae of the whole truncus (M = 2N sides), cosines at their centres.
     a = truncus.unit_axis
     c1, c2 = truncus.end_centers
@@ -159,7 +163,8 @@ def truncus_laminae(
     ring = np.cos(ang)[:, None] * len_ + np.sin(ang)[:, None] * side
     for centre, r, n in ((c1, truncus.r1, a), (c2, truncus.r2, -a)):
         if r > 0:
-            poly = centre + r * (ring if n is a else ring[::-1])
+            # (L_En, L_En x a) turns clockwise about a: reverse it for the outward E1.
+            poly = centre + r * (ring[::-1] if n is a else ring)
             out.append((poly, n.copy(), float(n @ _to_light(light, centre)), "end"))
     return out
 

@@ -1,0 +1,377 @@
+"""The isoluminance laminae against the seed's formulas and exact shading.
+
+Every expected value here is computed in the test from the geometry and the
+conventions (incidence cosines from positions and normals, the appendix's
+gamma / delta / phi_i retyped from the seed, frustum normals from the cone's
+geometry), never with the library's own helpers.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from isocsg import (
+    AreaLight,
+    Box,
+    Cone,
+    ConvexPolyhedron,
+    Cylinder,
+    DirectionalLight,
+    InvalidLightError,
+    InvalidParameterError,
+    Material,
+    PointLight,
+    Sphere,
+    Truncus,
+    build_laminae,
+)
+from isocsg.laminae import cache_info, clear_cache
+from isocsg.laminae.truncus import truncus_laminae
+
+N = 16
+AMB, KD = 0.1, 0.8
+
+
+def unit(v):
+    v = np.asarray(v, dtype=float)
+    return v / np.linalg.norm(v, axis=-1, keepdims=True)
+
+
+def to_light(light, p):
+    if isinstance(light, DirectionalLight):
+        return np.broadcast_to(unit(light.direction), np.shape(p))
+    return unit(np.asarray(light.position) - p)
+
+
+def exact_value(p, n, lights, mat=Material(), eye=None):
+    """The conventions' intensity at points p (k, 3) with unit normals n."""
+    out = np.full(len(p), mat.ambient)
+    for light in lights:
+        l = to_light(light, p)
+        ndl = np.sum(n * l, axis=1)
+        term = mat.kd * np.maximum(ndl, 0)
+        if mat.ks > 0:
+            rf = 2 * ndl[:, None] * n - l
+            v = unit(np.asarray(eye) - p)
+            term = term + np.where(ndl > 0, mat.ks * np.maximum(np.sum(rf * v, axis=1), 0) ** mat.shininess, 0)
+        out += light.intensity * term
+    return out
+
+
+# ----------------------------------------------------------------------------- sphere
+
+SPHERE = Sphere((0.3, -0.2, 0.5), 1.3)
+SPHERE_LIGHTS = {
+    "directional": DirectionalLight((1, -2, 2)),
+    "far_point": PointLight((6, -5, 9)),
+    "near_point": PointLight(tuple(np.array(SPHERE.center) + 1.5 * 1.3 * unit([1, 1, 1]))),
+}
+
+
+@pytest.mark.parametrize("kind", list(SPHERE_LIGHTS), ids=str)
+def test_sphere_contours_are_circles_at_the_cosine_levels(kind):
+    light = SPHERE_LIGHTS[kind]
+    ls = build_laminae(SPHERE, [light], contours=N)
+    c, r = np.array(SPHERE.center), SPHERE.radius
+    axis = unit(light.direction) if isinstance(light, DirectionalLight) else unit(np.array(light.position) - c)
+    circles = [lam for lam in ls.laminae if lam.kind == "contour"]
+    assert len(circles) == N
+    levels = []
+    for lam in circles:
+        v = lam.vertices
+        np.testing.assert_allclose(np.linalg.norm(v - c, axis=1), r, rtol=1e-12)  # on the sphere
+        np.testing.assert_allclose(np.abs(lam.normal @ axis), 1.0, atol=1e-12)  # plane perpendicular to the axis
+        np.testing.assert_allclose(v @ axis, (v @ axis)[0], atol=1e-10)
+        cos_i = np.sum(unit(v - c) * to_light(light, v), axis=1)
+        np.testing.assert_allclose(cos_i, cos_i[0], atol=1e-10)  # one incidence on the whole circle
+        levels.append(cos_i[0])
+    np.testing.assert_allclose(sorted(levels), np.arange(N) / N, atol=1e-10)
+
+
+def test_near_light_terminator_is_at_R_over_D():
+    light = SPHERE_LIGHTS["near_point"]
+    c, r = np.array(SPHERE.center), SPHERE.radius
+    d = np.linalg.norm(np.array(light.position) - c)
+    ls = build_laminae(SPHERE, [light], contours=N)
+    axis = unit(np.array(light.position) - c)
+    heights = sorted(float((lam.vertices[0] - c) @ axis) / r for lam in ls.laminae)
+    assert heights[0] == pytest.approx(r / d, abs=1e-12)
+
+
+def test_light_inside_sphere_leaves_the_outside_unlit_and_lights_the_inside():
+    light = PointLight((0.5, -0.1, 0.6))
+    ls = build_laminae(SPHERE, [light], contours=N)
+    assert ls.laminae == ()
+    np.testing.assert_allclose(ls.bands.value_out, AMB)
+    assert ls.bands.value_in.max() > AMB + 0.5 * KD
+
+
+# ----------------------------------------------------------------------------- truncus
+
+TRUNCI = {
+    "cylinder": Cylinder((0.2, 0.1, 0.0), (0.3, -0.2, 2.0), 0.7),
+    "cone": Cone((0, 0, 0), (0, 0.5, -2.0), 0.9),
+    "frustum": Truncus((0.1, 0, 0.2), (0.6, 0, 1.6), 0.5, 1.0),
+    "disc": Truncus((0, 0, 0), (0.0, 0.05, 0.1), 1.2, 1.2),
+    "rod": Truncus((0, 0, 0), (2.5, 1.0, 0.4), 0.08, 0.06),
+}
+FAR = DirectionalLight((2, -1, 1.5))
+
+
+def appendix_quads(t: Truncus, ln: np.ndarray, n: int) -> list[np.ndarray]:
+    """phi_i for 0 < i < N, retyped from the seed's appendix."""
+    a = np.asarray(t.axis, dtype=float)
+    ct = np.asarray(t.center, dtype=float)
+    le = ln - (a @ ln) * a / (a @ a)
+    if np.linalg.norm(le) < 1e-12:
+        le = np.cross(a, [1.0, 0, 0]) if abs(a[0]) < 0.9 * np.linalg.norm(a) else np.cross(a, [0, 1.0, 0])
+    len_ = unit(le)
+    out = []
+    for i in range(1, n):
+        g1 = ct + 0.5 * a + np.cos(i * np.pi / n) * t.r1 * len_
+        g2 = ct - 0.5 * a + np.cos(i * np.pi / n) * t.r2 * len_
+        d1 = t.r1 * np.sin(i * np.pi / n) * np.cross(len_, a / np.linalg.norm(a))
+        d2 = t.r2 * np.sin(i * np.pi / n) * np.cross(len_, a / np.linalg.norm(a))
+        out.append(np.array([g1 - d1, g1 + d1, g2 + d2, g2 - d2]))
+    return out
+
+
+def exact_side_normal(t: Truncus, p: np.ndarray) -> np.ndarray:
+    """Outward normal of the lateral surface at p: radial direction tilted by the cone's slope."""
+    a = unit(t.axis)
+    ct = np.asarray(t.center, dtype=float)
+    rel = p - ct
+    radial = unit(rel - (rel @ a) * a)
+    k = (t.r1 - t.r2) / np.linalg.norm(t.axis)  # d(radius)/d(axial), E1 at +a/2
+    return unit(radial - k * a)
+
+
+@pytest.mark.parametrize("name", list(TRUNCI), ids=str)
+def test_truncus_quads_follow_the_appendix(name):
+    t = TRUNCI[name]
+    ln = unit(FAR.direction)
+    got = [lam for lam in build_laminae(t, [FAR], contours=N).laminae if lam.kind == "contour"]
+    want = [q for q in appendix_quads(t, ln, N) if np.linalg.norm(np.cross(q[1] - q[0], q[3] - q[0])) > 0
+            or np.linalg.norm(np.cross(q[2] - q[3], q[0] - q[3])) > 0]
+    assert len(got) == len(want)
+    for lam, q in zip(got, want):
+        np.testing.assert_allclose(lam.vertices, q, atol=1e-12)
+        # The seed's N_i is the exact normal of the generator through p1 and p4.
+        n_exact = exact_side_normal(t, 0.5 * (q[0] + q[3]))
+        cos_exact = float(n_exact @ ln)
+        assert lam.intensity == pytest.approx(AMB + KD * max(cos_exact, 0.0), abs=1e-12)
+
+
+@pytest.mark.parametrize("name", list(TRUNCI), ids=str)
+def test_truncus_end_laminae(name):
+    t = TRUNCI[name]
+    ends = [lam for lam in build_laminae(t, [FAR], contours=N).laminae if lam.kind == "end"]
+    a = unit(t.axis)
+    ct = np.asarray(t.center, dtype=float)
+    radii = [r for r in (t.r1, t.r2) if r > 0]
+    assert len(ends) == len(radii)
+    for lam in ends:
+        sign = np.sign(lam.normal @ a)
+        np.testing.assert_allclose(lam.normal, sign * a, atol=1e-12)
+        centre = ct + sign * 0.5 * np.asarray(t.axis)
+        r = t.r1 if sign > 0 else t.r2
+        np.testing.assert_allclose(np.linalg.norm(lam.vertices - centre, axis=1), r, rtol=1e-12)
+        np.testing.assert_allclose((lam.vertices - centre) @ a, 0, atol=1e-12)  # planar, in the end's plane
+        # counter-clockwise about the outward normal
+        v = lam.vertices - centre
+        assert np.sum(np.cross(v, np.roll(v, -1, axis=0)) @ lam.normal) > 0
+        assert lam.intensity == pytest.approx(AMB + KD * max(sign * a @ unit(FAR.direction), 0), abs=1e-12)
+
+
+def test_light_on_the_axis_uses_any_perpendicular():
+    t = TRUNCI["cylinder"]
+    light = PointLight(tuple(np.asarray(t.center) + 3.0 * np.asarray(t.axis)))
+    ls = build_laminae(t, [light], contours=N)
+    quads = [lam for lam in ls.laminae if lam.kind == "contour"]
+    assert quads
+    # Every side generator is perpendicular to... nothing: the light is on the axis, so all quads
+    # stand for side normals at the same angle to it (same intensity within each axial slice).
+    top = [q.intensity for q in quads[: N - 1]]
+    np.testing.assert_allclose(top, top[0], atol=1e-12)
+
+
+def max_quad_error(t: Truncus, light: PointLight, slices: bool) -> float:
+    """Largest |lamina cosine - exact cosine| along the generators of the quads' edges."""
+    worst = 0.0
+    for verts, _normal, cos, kind in truncus_laminae(t, light, N, slices=slices):
+        if kind != "contour":
+            continue
+        s = np.linspace(0, 1, 21)[:, None]
+        gen = verts[0] + s * (verts[3] - verts[0])  # the generator p1 -> p4
+        n = np.array([exact_side_normal(t, p) for p in gen])
+        exact = np.sum(n * unit(np.asarray(light.position) - gen), axis=1)
+        worst = max(worst, float(np.max(np.abs(exact - cos))))
+    return worst
+
+
+def test_near_light_axial_slices_reduce_the_laminae_error():
+    t = Cylinder((0, 0, 0), (0, 0, 2.0), 0.5)
+    light = PointLight((1.2, 0.3, 0.8))  # 0.7 from the side, closer than the height
+    single = max_quad_error(t, light, slices=False)
+    sliced = max_quad_error(t, light, slices=True)
+    assert sliced < 0.25 * single, f"near light: max cosine error {single:.3f} unsliced, {sliced:.3f} sliced"
+    assert sliced < 0.1, f"sliced laminae error {sliced:.3f}"
+
+
+# ----------------------------------------------------------------------------- polyhedra
+
+POLY = ConvexPolyhedron([(1, 0, 0), (-1, 0.1, 0), (0, 1.2, 0.1), (0.1, -1, 0), (0, 0, 1.1), (0.2, 0.1, -0.9)])
+
+
+@pytest.mark.parametrize("prim", [Box((0, 0, 0), (1, 2, 0.5)), POLY], ids=["box", "polyhedron"])
+def test_one_lamina_per_face_with_exact_intensity(prim):
+    ls = build_laminae(prim, [FAR], contours=N)
+    faces = prim.face_polygons()
+    assert len(ls.laminae) == len(faces)
+    for lam, f in zip(ls.laminae, faces):
+        n = unit(np.sum(np.cross(f, np.roll(f, -1, axis=0)), axis=0))
+        np.testing.assert_allclose(lam.normal, n, atol=1e-12)
+        assert lam.intensity == pytest.approx(AMB + KD * max(n @ unit(FAR.direction), 0), abs=1e-12)
+    # Under a directional light every band triangle carries its face's exact value.
+    b = ls.bands
+    tri = b.vertices[b.triangles]
+    tn = unit(np.cross(tri[:, 1] - tri[:, 0], tri[:, 2] - tri[:, 0]))
+    np.testing.assert_allclose(b.value_out, AMB + KD * np.maximum(tn @ unit(FAR.direction), 0), atol=1e-12)
+
+
+# ----------------------------------------------------------------------------- bands
+
+
+def surface_points_and_normals(prim, pts):
+    """Project points (near the surface) onto it, with the exact outward normal there."""
+    if isinstance(prim, Sphere):
+        c = np.asarray(prim.center)
+        n = unit(pts - c)
+        return c + prim.radius * n, n
+    if isinstance(prim, Truncus):
+        a = unit(prim.axis)
+        ct = np.asarray(prim.center, dtype=float)
+        rel = pts - ct
+        z = rel @ a
+        radial = rel - z[:, None] * a
+        rho = np.linalg.norm(radial, axis=1)
+        h = np.linalg.norm(prim.axis)
+        r_at = prim.r2 + (prim.r1 - prim.r2) * (z / h + 0.5)
+        on_end = np.abs(np.abs(z) - h / 2) < 1e-9 * max(h, 1)
+        side_n = np.array([exact_side_normal(prim, p) for p in pts])
+        p_side = ct + z[:, None] * a + (r_at / np.maximum(rho, 1e-300))[:, None] * radial
+        n = np.where(on_end[:, None], np.sign(z)[:, None] * a, side_n)
+        p = np.where(on_end[:, None], pts, p_side)
+        return p, n
+    raise AssertionError
+
+
+BAND_CASES = {
+    "sphere_point": (SPHERE, [SPHERE_LIGHTS["near_point"]], Material()),
+    "sphere_two_lights": (SPHERE, [SPHERE_LIGHTS["far_point"], PointLight((-5, -2, 1), 0.6)], Material()),
+    "sphere_specular": (SPHERE, [SPHERE_LIGHTS["far_point"]], Material(kd=0.6, ks=0.5, shininess=10)),
+    "frustum_near": (TRUNCI["frustum"], [PointLight((1.8, -1.0, 1.2))], Material()),
+    "cylinder_two_lights": (TRUNCI["cylinder"], [FAR, PointLight((-3, -3, 2), 0.5)], Material()),
+}
+EYE = (0.5, -6.0, 2.0)
+
+
+@pytest.mark.parametrize("name", list(BAND_CASES), ids=str)
+def test_band_values_are_within_half_a_band_of_the_exact_shading(name):
+    prim, lights, mat = BAND_CASES[name]
+    n_contours = 48
+    ls = build_laminae(prim, lights, mat, contours=n_contours, eye=EYE)
+    b = ls.bands
+    tri = b.vertices[b.triangles]
+    area = 0.5 * np.linalg.norm(np.cross(tri[:, 1] - tri[:, 0], tri[:, 2] - tri[:, 0]), axis=1)
+    p, n = surface_points_and_normals(prim, tri.mean(axis=1))
+    # Each light contributes at most half a band step (diffuse steps are <= pi/N in cosine
+    # for a truncus, 1/N otherwise; specular steps 1/N of ks); the centroid of a triangle
+    # lies between its vertices' band edges up to the mesh's curvature (a small margin).
+    step = sum(light.intensity * (mat.kd * np.pi + mat.ks) / n_contours for light in lights)
+    tol = 0.5 * step + 0.02
+    err_out = np.abs(b.value_out - exact_value(p, n, lights, mat, EYE))
+    err_in = np.abs(b.value_in - exact_value(p, -n, lights, mat, EYE))
+    big = area > np.median(area) * 1e-3  # slivers along cut lines carry no area
+    assert err_out[big].max() <= tol, f"{name}: max outward error {err_out[big].max():.4f} > {tol:.4f}"
+    if mat.ks == 0:
+        assert err_in[big].max() <= tol, f"{name}: max reversed-normal error {err_in[big].max():.4f} > {tol:.4f}"
+    # area-weighted mean error is far below the bound
+    assert np.average(err_out, weights=area) < 0.5 * tol
+
+
+@pytest.mark.parametrize("light", [FAR, SPHERE_LIGHTS["near_point"]], ids=["directional", "near_point"])
+def test_sphere_bands_form_a_closed_outward_surface(light):
+    b = build_laminae(SPHERE, [light], contours=32).bands
+    tri = b.vertices[b.triangles]
+    g = np.cross(tri[:, 1] - tri[:, 0], tri[:, 2] - tri[:, 0])
+    outward = np.sum(g * (tri.mean(axis=1) - np.asarray(SPHERE.center)), axis=1)
+    assert np.all(outward > 0)
+    # Closed: the signed volume of the mesh is the inscribed polyhedron's, and every edge is shared.
+    vol = np.sum(np.einsum("ij,ij->i", tri[:, 0], np.cross(tri[:, 1], tri[:, 2]))) / 6.0
+    exact = 4.0 / 3.0 * np.pi * SPHERE.radius**3
+    assert exact * (1 - 2e-3) < vol < exact
+    e = np.sort(np.concatenate([b.triangles[:, [0, 1]], b.triangles[:, [1, 2]], b.triangles[:, [2, 0]]]), axis=1)
+    _, counts = np.unique(e, axis=0, return_counts=True)
+    assert np.all(counts == 2)
+    area = 0.5 * np.linalg.norm(g, axis=1).sum()
+    assert 4 * np.pi * SPHERE.radius**2 * (1 - 2e-3) < area < 4 * np.pi * SPHERE.radius**2
+
+
+# ----------------------------------------------------------------------------- specular, cache
+
+
+def test_specular_laminae_come_from_the_virtual_light_source():
+    light = SPHERE_LIGHTS["far_point"]
+    mat = Material(kd=0.6, ks=0.5, shininess=10)
+    ls = build_laminae(SPHERE, [light], mat, contours=N, eye=EYE)
+    spec = [lam for lam in ls.laminae if lam.kind == "specular"]
+    assert len(spec) == N
+    c = np.asarray(SPHERE.center)
+    h = unit(unit(np.asarray(light.position) - c) + unit(np.asarray(EYE) - c))  # half-way direction
+    for lam in spec:
+        np.testing.assert_allclose(np.abs(lam.normal @ h), 1.0, atol=1e-12)
+        cos_h = float(unit(lam.vertices[0] - c) @ h)
+        mid = cos_h + 0.5 / N  # the band above the contour, as for diffuse laminae
+        assert lam.intensity == pytest.approx(mat.ks * mid**mat.shininess, rel=1e-9)
+    assert ls.view_dependent
+
+
+def test_diffuse_sets_are_cached_across_viewpoints_and_specular_ones_are_not():
+    clear_cache()
+    prim, lights = Sphere((0, 0, 0), 1.0), [PointLight((3, -4, 5))]
+    a = build_laminae(prim, lights, contours=12, eye=(0, -5, 0))
+    b = build_laminae(prim, lights, contours=12, eye=(5, 0, 1))
+    assert a is b and not a.view_dependent
+    assert cache_info() == {"hits": 1, "misses": 1, "size": 1}
+    shiny = Material(ks=0.4)
+    c = build_laminae(prim, lights, shiny, contours=12, eye=(0, -5, 0))
+    d = build_laminae(prim, lights, shiny, contours=12, eye=(5, 0, 1))
+    assert c is not d and c.view_dependent
+    assert not np.array_equal(c.bands.value_out[:100], d.bands.value_out[:100]) or c.bands.n_triangles != d.bands.n_triangles
+
+
+# ----------------------------------------------------------------------------- bad input
+
+
+@pytest.mark.parametrize(
+    "kwargs, error, field",
+    [
+        ({"contours": 0}, InvalidParameterError, "contours"),
+        ({"contours": 5000}, InvalidParameterError, "contours"),
+        ({"contours": 2.5}, InvalidParameterError, "contours"),
+        ({"primitive": "sphere"}, InvalidParameterError, "primitive"),
+        ({"lights": [PointLight((0, 0, 5)), AreaLight([(0, 0, 3), (0, 1, 3), (1, 0, 3)])]}, InvalidLightError, r"lights\[1\]"),
+        ({"material": Material(ks=0.5), "eye": None}, InvalidParameterError, "eye"),
+        ({"material": Material(ks=0.5), "eye": (0, float("nan"), 1)}, InvalidParameterError, "eye"),
+        ({"material": "shiny"}, InvalidParameterError, "material"),
+    ],
+    ids=["zero", "huge", "fractional", "not-primitive", "area-light", "no-eye", "nan-eye", "not-material"],
+)
+def test_bad_input_is_reported(kwargs, error, field):
+    args = {"primitive": Sphere((0, 0, 0), 1.0), "lights": [PointLight((0, 0, 5))], "material": None,
+            "contours": 8, "eye": (0, -5, 0)}
+    args.update(kwargs)
+    with pytest.raises(error, match=field):
+        build_laminae(args["primitive"], args["lights"], args["material"], args["contours"], eye=args["eye"])
