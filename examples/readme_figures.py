@@ -1,8 +1,8 @@
 """The figures of the top-level README, drawn by isocsg itself.
 
-Writes ``demo.png`` (the built-in demo scene), ``primitives.png`` (every
-primitive with 10 contours), ``csg_contours.png`` (a CSG part with 4 and with
-32 contours) and ``halftone.png`` (the built-in soft-shadow scene).
+Writes ``demo.png`` (the built-in demo scene), ``iso_primitives.png`` (every
+primitive with 10 contours) and ``iso_csg_contours.png`` (a CSG part with 4
+and with 32 contours).
 
 Run ``python examples/readme_figures.py`` from the repository root to refresh
 ``docs/images/``.
@@ -64,20 +64,15 @@ def run(output_dir: str | Path | None = None) -> list[Path]:
     paths.append(out / "demo.png")
     save_png(paths[-1], render(demo).image)
 
-    paths.append(out / "primitives.png")
+    paths.append(out / "iso_primitives.png")
     save_png(paths[-1], primitives_sheet())
 
     part = builtin_scene("demo").objects[0]
     camera = Camera((6.0, -8.0, 5.5), (0, 0, 0.4), fov=34, width=240, height=180)
     scene = Scene(camera, [PointLight((6.0, -4.0, 9.0))], [part])
-    paths.append(out / "csg_contours.png")
+    paths.append(out / "iso_csg_contours.png")
     save_png(paths[-1], tile([render(scene, contours=n).image for n in (4, 32)], columns=2))
 
-    from isocsg.shadows.halftone import render_halftone
-
-    halftone = builtin_scene("halftone")
-    paths.append(out / "halftone.png")
-    save_png(paths[-1], render_halftone(halftone).image)
     return paths
 
 
