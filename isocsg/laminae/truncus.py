@@ -85,11 +85,11 @@ def paper_levels(truncus: Truncus, light: Light, contours: int) -> NDArray[np.fl
 
 
 def appendix_normal(truncus: Truncus, p1: NDArray[np.float64], p4: NDArray[np.float64]) -> NDArray[np.float64]:
-    """The seed's ``N_i = p14 - (ct - h a/|a|)``, normalised."""
+    """The seed's ``N_i = p14 - (ct - h a/|a|)``, normalised (``p1``, ``p4`` of shape (..., 3))."""
     a = truncus.unit_axis
     h = (truncus.r2**2 - truncus.r1**2) / (2.0 * truncus.height)
-    n = 0.5 * (p1 + p4) - (truncus.center_array - h * a)
-    return n / np.linalg.norm(n)
+    n = 0.5 * (np.asarray(p1) + np.asarray(p4)) - (truncus.center_array - h * a)
+    return n / np.linalg.norm(n, axis=-1, keepdims=True)
 
 
 def _slices(truncus: Truncus, light: Light) -> list[Truncus]:
@@ -133,27 +133,34 @@ def truncus_laminae(
     """
     out = []
     pieces = _slices(truncus, light) if slices else [truncus]
+    i = np.arange(1, contours)
+    ci, si = np.cos(i * np.pi / contours)[:, None], np.sin(i * np.pi / contours)[:, None]
     for piece in pieces:
         ct = piece.center_array
-        a = piece.unit_axis
         ln = _to_light(light, ct)
-        len_, side = light_frame(a, ln)
+        len_, side = light_frame(piece.unit_axis, ln)
         c1, c2 = piece.end_centers
-        for i in range(1, contours):
-            ci, si = np.cos(i * np.pi / contours), np.sin(i * np.pi / contours)
-            g1, g2 = c1 + ci * piece.r1 * len_, c2 + ci * piece.r2 * len_
-            d1, d2 = piece.r1 * si * side, piece.r2 * si * side
-            quad = np.array([g1 - d1, g1 + d1, g2 + d2, g2 - d2])
-            normal = np.cross(quad[1] - quad[0], quad[3] - quad[0])
-            if np.linalg.norm(normal) == 0:
-                normal = np.cross(quad[2] - quad[3], quad[0] - quad[3])
-            if np.linalg.norm(normal) == 0:
-                continue
-            ni = appendix_normal(piece, quad[0], quad[3])
-            # The light direction from the generator's midpoint p14: the seed's L_n for a
-            # distant light, and exact at p14 for a near one.
-            l14 = _to_light(light, 0.5 * (quad[0] + quad[3]))
-            out.append((quad, normal / np.linalg.norm(normal), float(ni @ l14), "contour"))
+        g1, g2 = c1 + ci * piece.r1 * len_, c2 + ci * piece.r2 * len_
+        d1, d2 = piece.r1 * si * side, piece.r2 * si * side
+        quads = np.stack([g1 - d1, g1 + d1, g2 + d2, g2 - d2], axis=1)  # (N-1, 4, 3)
+        # Plane normal from the longer pair of sides (one end may be a point).
+        normal = np.cross(quads[:, 1] - quads[:, 0], quads[:, 3] - quads[:, 0])
+        alt = np.cross(quads[:, 2] - quads[:, 3], quads[:, 0] - quads[:, 3])
+        normal = np.where((np.linalg.norm(normal, axis=1) < np.linalg.norm(alt, axis=1))[:, None], alt, normal)
+        size = np.linalg.norm(normal, axis=1)
+        # The seed's N_i, and the light direction from the generator's midpoint p14:
+        # its L_n for a distant light, exact at p14 for a near one.
+        p14 = 0.5 * (quads[:, 0] + quads[:, 3])
+        ni = appendix_normal(piece, quads[:, 0], quads[:, 3])
+        if isinstance(light, DirectionalLight):
+            l14 = np.broadcast_to(light.unit_direction, p14.shape)
+        else:
+            l14 = np.asarray(light.position, dtype=np.float64) - p14
+            l14 = l14 / np.maximum(np.linalg.norm(l14, axis=1, keepdims=True), 1e-300)
+        cos = np.einsum("ij,ij->i", ni, l14)
+        for q, nrm, sz, c in zip(quads, normal, size, cos):
+            if sz > 0:
+                out.append((q, nrm / sz, float(c), "contour"))
     # The two end laminae of the whole truncus (M = 2N sides), cosines at their centres.
     a = truncus.unit_axis
     c1, c2 = truncus.end_centers
