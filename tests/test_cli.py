@@ -113,10 +113,11 @@ def test_usage_errors_exit_2_with_one_line(
         ({"objects": [{"shape": {"sphere": {"center": [0, 0, 0], "radius": -1}}}]}, [],
          "isocsg render: error: scene.json: objects[0].shape.sphere.radius: must be > 0, got -1"),
         ({}, ["--contours", "0"], "isocsg render: error: render.contours must be between 1 and 4096, got 0"),
+        ({}, ["--contours", "100000"], "isocsg render: error: render.contours must be between 1 and 4096, got 100000"),
         ({}, ["--size", "0x10"], "isocsg render: error: camera.width must be between 1 and 16384, got 0"),
         ({}, ["--size", "99999x10"], "isocsg render: error: camera.width must be between 1 and 16384, got 99999"),
     ],
-    ids=["bad-scene", "contours-zero", "size-zero", "size-absurd"],
+    ids=["bad-scene", "contours-zero", "contours-absurd", "size-zero", "size-absurd"],
 )
 def test_isocsg_errors_exit_2_with_one_line(
     tmp_path: Path, monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture[str], edit: dict, argv_extra: list[str], message: str

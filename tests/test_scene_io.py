@@ -363,6 +363,30 @@ def test_toml_errors_carry_the_same_paths(tmp_path: Path, monkeypatch: pytest.Mo
 
 
 @pytest.mark.parametrize(
+    "old, new, message",
+    [
+        ("center = [1, 1, 1], radius = 0.8", "center = [nan, 1, 1], radius = 0.8",
+         "objects[0].shape.difference[1].sphere.center: must be finite, got (nan, 1.0, 1.0)"),
+        ("radius = 0.8", "radius = 0", "objects[0].shape.difference[1].sphere.radius: must be > 0, got 0"),
+        ("r1 = 0.5, r2 = 0.25", "r1 = 0, r2 = 0.0", "objects[1].shape.intersection[0].truncus: r1 and r2 must not both be 0"),
+        ("axis = [0, 1, 1], r1", "axis = [0, 0, 0], r1", "objects[1].shape.intersection[0].truncus.axis: must be a non-zero vector, got (0.0, 0.0, 0.0)"),
+        ("contours = 16", "contours = 0", "render.contours: must be between 1 and 4096, got 0"),
+        ("contours = 16", "contours = 10_000_000", "render.contours: must be between 1 and 4096, got 10000000"),
+        ("radius = 0.8", "radius = 0.8, colour = 3", "objects[0].shape.difference[1].sphere: unknown key 'colour'"),
+        ("[render]", "[render]\nshadows = true", "render: unknown key 'shadows'"),
+    ],
+    ids=["nan-center", "zero-radius", "truncus-radii-zero", "zero-axis", "contours-zero", "contours-absurd",
+         "unknown-shape-key", "unknown-render-key"],
+)
+def test_toml_bad_values_name_file_and_field(tmp_path: Path, monkeypatch: pytest.MonkeyPatch, old: str, new: str, message: str) -> None:
+    monkeypatch.chdir(tmp_path)
+    assert old in TOML_TEXT
+    Path("scene.toml").write_text(TOML_TEXT.replace(old, new, 1))
+    with pytest.raises(SceneFileError, match="^" + re.escape(f"scene.toml: {message}")):
+        load_scene("scene.toml")
+
+
+@pytest.mark.parametrize(
     "name, text, message",
     [
         ("scene.toml", "[camera\neye = [0, 0, 0]\n", "scene.toml: invalid TOML: "),
