@@ -1,93 +1,179 @@
-"""Cutting meshes along level lines: bands, areas and watertightness."""
+"""Cutting meshes along level lines: bands, area, watertightness, interpolation.
+
+The expected properties are checked with plain numpy on random closed meshes
+(convex hulls of random points) and random open grids, not with the cutter's
+own edge tables.
+"""
 
 from __future__ import annotations
 
 import numpy as np
 import pytest
+from scipy.spatial import ConvexHull
 
-from isocsg import InvalidParameterError
+from isocsg.errors import InvalidParameterError
 from isocsg.laminae import split
+from isocsg.laminae.split import split_by_levels
 
 
-def grid_mesh(n: int, rng: np.random.Generator) -> tuple[np.ndarray, np.ndarray]:
-    """A jittered n x n grid of a bumpy surface, two triangles per cell."""
-    u, v = np.meshgrid(np.linspace(0, 1, n + 1), np.linspace(0, 1, n + 1))
-    u = u + rng.uniform(-0.2, 0.2, u.shape) / n * (0 < u) * (u < 1)
-    v = v + rng.uniform(-0.2, 0.2, v.shape) / n * (0 < v) * (v < 1)
-    w = 0.2 * np.sin(3 * u) * np.cos(2 * v)
-    verts = np.stack([u.ravel(), v.ravel(), w.ravel()], axis=1)
-    k = np.arange(n * (n + 1)).reshape(n, n + 1)[:, :n].ravel()
-    tris = np.concatenate([np.stack([k, k + 1, k + n + 2], 1), np.stack([k, k + n + 2, k + n + 1], 1)])
-    return verts, tris
+def closed_mesh(rng: np.random.Generator, n: int = 60) -> tuple[np.ndarray, np.ndarray]:
+    """Convex hull of points on an ellipsoid: a closed, consistently oriented triangle mesh."""
+    p = rng.normal(size=(n, 3))
+    p = p / np.linalg.norm(p, axis=1, keepdims=True) * (1.0, 0.7, 1.3)
+    hull = ConvexHull(p)
+    tri = hull.simplices.copy()
+    # Outward winding (ConvexHull does not orient its simplices).
+    g = np.cross(p[tri[:, 1]] - p[tri[:, 0]], p[tri[:, 2]] - p[tri[:, 0]])
+    flip = np.einsum("ij,ij->i", g, p[tri].mean(axis=1)) < 0
+    tri[flip] = tri[flip][:, ::-1]
+    return p, tri
 
 
-def areas(v: np.ndarray, t: np.ndarray) -> np.ndarray:
-    p = v[t]
-    return 0.5 * np.linalg.norm(np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0]), axis=1)
+def open_grid(rng: np.random.Generator, k: int = 9) -> tuple[np.ndarray, np.ndarray]:
+    """A k x k grid over the unit square, jittered inside, lifted to a random height field."""
+    x, y = np.meshgrid(np.linspace(0, 1, k), np.linspace(0, 1, k), indexing="ij")
+    inner = (x > 0) & (x < 1) & (y > 0) & (y < 1)
+    x = x + np.where(inner, rng.uniform(-0.3, 0.3, x.shape) / k, 0)
+    y = y + np.where(inner, rng.uniform(-0.3, 0.3, y.shape) / k, 0)
+    z = 0.2 * rng.normal(size=x.shape)
+    v = np.stack([x.ravel(), y.ravel(), z.ravel()], axis=1)
+    idx = np.arange(k * k).reshape(k, k)
+    a, b, c, d = idx[:-1, :-1].ravel(), idx[1:, :-1].ravel(), idx[1:, 1:].ravel(), idx[:-1, 1:].ravel()
+    tri = np.concatenate([np.stack([a, b, c], 1), np.stack([a, c, d], 1)])
+    return v, tri
 
 
-def boundary_edges(t: np.ndarray) -> set[tuple[int, int]]:
+def tri_areas(v: np.ndarray, t: np.ndarray) -> np.ndarray:
+    return 0.5 * np.linalg.norm(np.cross(v[t[:, 1]] - v[t[:, 0]], v[t[:, 2]] - v[t[:, 0]]), axis=1)
+
+
+def edge_counts(t: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     e = np.sort(np.concatenate([t[:, [0, 1]], t[:, [1, 2]], t[:, [2, 0]]]), axis=1)
-    uniq, counts = np.unique(e, axis=0, return_counts=True)
+    return np.unique(e, axis=0, return_counts=True)
+
+
+def fields(kind: str, v: np.ndarray, rng: np.random.Generator) -> np.ndarray:
+    """Column 0: the field that is cut; column 1: a linear function carried along."""
+    lin = v @ np.array([0.3, -1.1, 0.7]) + 0.25
+    if kind == "random":
+        f = rng.uniform(-1, 1, len(v))
+    elif kind == "smooth":
+        f = np.sin(2.0 * v[:, 0]) + v[:, 1] * v[:, 2]
+    else:  # "on_levels": many vertices exactly on a level, the rest near one
+        f = np.round(rng.uniform(-1, 1, len(v)) * 4) / 4
+        f[::3] += rng.choice([-1e-13, 0.0, 1e-13], size=len(f[::3]))
+    return np.stack([f, lin], axis=1)
+
+
+def levels_for(kind: str, rng: np.random.Generator) -> np.ndarray:
+    if kind == "on_levels":
+        return np.arange(-4, 5) / 4.0
+    return np.sort(rng.uniform(-1.2, 1.2, 13))
+
+
+CASES = [(mesh, kind, seed) for mesh in ("closed", "open") for kind in ("random", "smooth", "on_levels") for seed in (0, 1)]
+
+
+@pytest.mark.parametrize("mesh, kind, seed", CASES, ids=[f"{m}-{k}-{s}" for m, k, s in CASES])
+def test_split_invariants(mesh, kind, seed):
+    rng = np.random.default_rng(100 + seed)
+    v, t = closed_mesh(rng) if mesh == "closed" else open_grid(rng)
+    vals = fields(kind, v, rng)
+    lv = levels_for(kind, rng)
+    out = split_by_levels(v, t, vals, 0, lv)
+    ov, ot, f = out.vertices, out.triangles, out.values[:, 0]
+    assert len(ot) > len(t)  # the levels do cut
+
+    # Input vertices come first, unchanged.
+    np.testing.assert_array_equal(ov[: len(v)], v)
+
+    # Each output triangle's field values lie in its band: levels[b-1] <= f <= levels[b].
+    lo = np.concatenate([[-np.inf], lv])[out.band]
+    hi = np.concatenate([lv, [np.inf]])[out.band]
+    ft = f[ot]
+    tol = 1e-11 * max(1.0, np.abs(lv).max())  # values within rounding of a level are snapped onto it
+    assert np.all(ft >= lo[:, None] - tol) and np.all(ft <= hi[:, None] + tol)
+    # ... and not all three on one level (no empty band triangles).
+    assert np.all(np.ptp(ft, axis=1) > 0) or kind == "on_levels"
+
+    # Cut points lie on the input edges where the linear field reaches the level, and
+    # the carried linear column equals the linear function at every output vertex.
+    lin = ov @ np.array([0.3, -1.1, 0.7]) + 0.25
+    np.testing.assert_allclose(out.values[:, 1], lin, atol=1e-12)
+
+    # Area preserved, per parent triangle and in total; winding of the parent kept.
+    a_in, a_out = tri_areas(v, t), tri_areas(ov, ot)
+    np.testing.assert_allclose(np.bincount(out.parent, a_out, minlength=len(t)), a_in, rtol=1e-10, atol=1e-14)
+    assert a_out.sum() == pytest.approx(a_in.sum(), rel=1e-12)
+    gp = np.cross(v[t[:, 1]] - v[t[:, 0]], v[t[:, 2]] - v[t[:, 0]])[out.parent]
+    g = np.cross(ov[ot[:, 1]] - ov[ot[:, 0]], ov[ot[:, 2]] - ov[ot[:, 0]])
+    big = a_out > 1e-12 * a_out.max()
+    assert np.all(np.einsum("ij,ij->i", g, gp)[big] > 0)
+    # Every output triangle lies in its parent's plane.
+    nrm = gp / np.linalg.norm(gp, axis=1, keepdims=True)
+    for j in range(3):
+        d = np.einsum("ij,ij->i", ov[ot[:, j]] - v[t[out.parent, 0]], nrm)
+        np.testing.assert_allclose(d, 0, atol=1e-12)
+
+    # No T-junctions: every output edge inside the input surface is shared by exactly two triangles.
+    edges, counts = edge_counts(ot)
     assert counts.max() <= 2
-    return {tuple(x) for x in uniq[counts == 1]}
+    once = edges[counts == 1]
+    if mesh == "closed":
+        assert len(once) == 0
+    else:
+        # Edges used once lie on the boundary of the unit square (both ends on the same side).
+        p, q = ov[once[:, 0]], ov[once[:, 1]]
+        on_side = np.zeros(len(once), bool)
+        for axis in (0, 1):
+            for side in (0.0, 1.0):
+                on_side |= (np.abs(p[:, axis] - side) < 1e-12) & (np.abs(q[:, axis] - side) < 1e-12)
+        assert np.all(on_side)
+        # and together they measure the square's perimeter (boundary vertices are not jittered).
+        assert np.linalg.norm(q - p, axis=1).sum() == pytest.approx(4.0, rel=1e-12)
 
 
-@pytest.mark.parametrize("seed", range(4))
-def test_cut_mesh_keeps_area_bands_and_watertightness(seed: int) -> None:
-    rng = np.random.default_rng(seed)
-    v, t = grid_mesh(12, rng)
-    field = np.sin(4 * v[:, 0] + 3 * v[:, 1]) + 0.3 * rng.standard_normal(len(v))
-    other = rng.standard_normal(len(v))
-    levels = np.sort(rng.uniform(-1.2, 1.2, 9))
-    levels = np.concatenate([levels, [field[3]]])  # a level through a vertex
-    levels.sort()
-    out = split.split_by_levels(v, t, np.stack([field, other], 1), 0, levels)
-
-    # Area is preserved, and each piece lies inside its parent triangle's area budget.
-    np.testing.assert_allclose(areas(out.vertices, out.triangles).sum(), areas(v, t).sum(), rtol=1e-12)
-    per_parent = np.bincount(out.parent, weights=areas(out.vertices, out.triangles), minlength=len(t))
-    np.testing.assert_allclose(per_parent, areas(v, t), rtol=1e-9, atol=1e-15)
-
-    # Every piece lies within one band: its vertex values between the band's levels.
-    f = out.values[out.triangles, 0]
-    lo = np.concatenate([[-np.inf], levels])[out.band]
-    hi = np.concatenate([levels, [np.inf]])[out.band]
-    assert np.all(f >= lo[:, None] - 1e-12) and np.all(f <= hi[:, None] + 1e-12)
-
-    # Cut points carry exactly their level; the other column is interpolated with the
-    # same parameter, so it lies between the edge's end values (checked via its range).
-    new = np.arange(len(v), len(out.vertices))
-    assert len(new) > 0
-    assert np.all(np.isin(out.values[new, 0], levels))
-    assert other.min() - 1e-12 <= out.values[new, 1].min() and out.values[new, 1].max() <= other.max() + 1e-12
-
-    # No T-junctions: the only unshared edges are pieces of the grid's outer boundary.
-    border = boundary_edges(out.triangles)
-    pts = out.vertices
-    for a, b in border:
-        mid = 0.5 * (pts[a] + pts[b])
-        on_border = min(mid[0], mid[1], 1 - mid[0], 1 - mid[1]) < 1e-9
-        assert on_border, f"edge {a}-{b} at {mid} is used once inside the mesh"
-
-    # Winding is kept: every piece has the orientation of its parent.
-    def normal(vv, tt):
-        p = vv[tt]
-        return np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0])
-
-    big = areas(out.vertices, out.triangles) > 1e-14
-    dots = np.sum(normal(out.vertices, out.triangles)[big] * normal(v, t)[out.parent[big]], axis=1)
-    assert np.all(dots > 0)
+def test_band_index_counts_the_levels_below():
+    v = np.array([[0.0, 0, 0], [3, 0, 0], [0, 3, 0]])
+    out = split_by_levels(v, np.array([[0, 1, 2]]), v[:, :1], 0, np.array([0.5, 1.0, 2.5]))
+    # Bands by the x of each triangle's centroid, counted independently.
+    cx = out.vertices[out.triangles].mean(axis=1)[:, 0]
+    np.testing.assert_array_equal(out.band, np.searchsorted([0.5, 1.0, 2.5], cx))
+    assert sorted(set(out.band.tolist())) == [0, 1, 2, 3]
+    # Areas of the strips: the triangle below x is the part x' <= x, area (9 - (3 - x)^2) / 2.
+    area = tri_areas(out.vertices, out.triangles)
+    below = [0.5 * (9 - (3 - x) ** 2) for x in (0.0, 0.5, 1.0, 2.5, 3.0)]
+    np.testing.assert_allclose(np.bincount(out.band, area), np.diff(below), rtol=1e-12)
 
 
-def test_no_level_inside_leaves_the_mesh_alone() -> None:
-    v = np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0.0]])
-    out = split.split_by_levels(v, np.array([[0, 1, 2]]), np.array([[0.1], [0.2], [0.3]]), 0, np.array([-1.0, 5.0]))
-    assert out.triangles.tolist() == [[0, 1, 2]] and out.band.tolist() == [1]
+def test_no_levels_and_levels_outside_leave_the_mesh_whole():
+    rng = np.random.default_rng(7)
+    v, t = closed_mesh(rng, 20)
+    f = rng.uniform(0, 1, (len(v), 1))
+    for lv, band in ((np.zeros(0), 0), (np.array([-3.0, -2.0]), 2), (np.array([5.0]), 0)):
+        out = split_by_levels(v, t, f, 0, lv)
+        np.testing.assert_array_equal(out.triangles, t)
+        np.testing.assert_array_equal(out.band, band)
+        assert len(out.vertices) == len(v)
 
 
-def test_refuses_too_many_pieces(monkeypatch: pytest.MonkeyPatch) -> None:
+def test_shared_cut_points_are_one_vertex():
+    # Two triangles sharing the edge 1-2, listed in opposite directions: one cut point per level.
+    v = np.array([[0.0, 0, 0], [1, 0, 0], [0, 1, 0], [1, 1, 0]])
+    t = np.array([[0, 1, 2], [2, 1, 3]])
+    f = (v[:, 0] + 2 * v[:, 1])[:, None]
+    out = split_by_levels(v, t, f, 0, np.array([0.5, 1.5, 2.5]))
+    _, counts = edge_counts(out.triangles)
+    assert counts.max() == 2
+    np.testing.assert_allclose(np.unique(np.round(out.vertices, 12), axis=0).shape[0], len(out.vertices))
+
+
+def test_too_many_pieces_is_refused(monkeypatch):
+    # Lower the limit rather than build a mesh of 12 million pieces.
     monkeypatch.setattr(split, "MAX_PIECES", 100)
-    v, t = grid_mesh(6, np.random.default_rng(0))
+    v, t = open_grid(np.random.default_rng(3), 6)
     with pytest.raises(InvalidParameterError, match="contours"):
         split.split_by_levels(v, t, v[:, :1], 0, np.linspace(0.01, 0.99, 50))
+    # Under the limit the same call is fine.
+    monkeypatch.setattr(split, "MAX_PIECES", 10**6)
+    assert len(split.split_by_levels(v, t, v[:, :1], 0, np.linspace(0.01, 0.99, 50)).triangles) > 100
