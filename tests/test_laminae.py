@@ -147,19 +147,37 @@ def exact_side_normal(t: Truncus, p: np.ndarray) -> np.ndarray:
     return unit(radial - k * a)
 
 
+def appendix_ni(t: Truncus, p1: np.ndarray, p4: np.ndarray) -> np.ndarray:
+    """The seed's N_i = p14 - (ct - h a/|a|), h = (R2^2 - R1^2) / (2 |a|), normalised."""
+    a = np.asarray(t.axis, dtype=float)
+    h = (t.r2**2 - t.r1**2) / (2 * np.linalg.norm(a))
+    n = 0.5 * (p1 + p4) - (np.asarray(t.center, dtype=float) - h * a / np.linalg.norm(a))
+    return unit(n)
+
+
+QUAD_LIGHTS = {"directional": FAR, "far_point": PointLight((40.0, -25.0, 30.0))}
+
+
+@pytest.mark.parametrize("lkind", list(QUAD_LIGHTS), ids=str)
 @pytest.mark.parametrize("name", list(TRUNCI), ids=str)
-def test_truncus_quads_follow_the_appendix(name):
-    t = TRUNCI[name]
-    ln = unit(FAR.direction)
-    got = [lam for lam in build_laminae(t, [FAR], contours=N).laminae if lam.kind == "contour"]
+def test_truncus_quads_follow_the_appendix(name, lkind):
+    t, light = TRUNCI[name], QUAD_LIGHTS[lkind]
+    ct = np.asarray(t.center, dtype=float)
+    ln = to_light(light, ct[None])[0]  # the seed's L_n, from the centre
+    got = [lam for lam in build_laminae(t, [light], contours=N).laminae if lam.kind == "contour"]
     want = [q for q in appendix_quads(t, ln, N) if np.linalg.norm(np.cross(q[1] - q[0], q[3] - q[0])) > 0
             or np.linalg.norm(np.cross(q[2] - q[3], q[0] - q[3])) > 0]
     assert len(got) == len(want)
     for lam, q in zip(got, want):
         np.testing.assert_allclose(lam.vertices, q, atol=1e-12)
-        # The seed's N_i is the exact normal of the generator through p1 and p4.
-        n_exact = exact_side_normal(t, 0.5 * (q[0] + q[3]))
-        cos_exact = float(n_exact @ ln)
+        # Planar, with the lamina's normal.
+        np.testing.assert_allclose((q - q[0]) @ lam.normal, 0, atol=1e-12)
+        # The seed's N_i is the exact normal of the generator through p1 and p4 ...
+        p14 = 0.5 * (q[0] + q[3])
+        n_exact = exact_side_normal(t, p14)
+        np.testing.assert_allclose(appendix_ni(t, q[0], q[3]), n_exact, atol=1e-12)
+        # ... and the lamina carries the exact shading there.
+        cos_exact = float(n_exact @ to_light(light, p14[None])[0])
         assert lam.intensity == pytest.approx(AMB + KD * max(cos_exact, 0.0), abs=1e-12)
 
 
@@ -181,42 +199,78 @@ def test_truncus_end_laminae(name):
         # counter-clockwise about the outward normal
         v = lam.vertices - centre
         assert np.sum(np.cross(v, np.roll(v, -1, axis=0)) @ lam.normal) > 0
+        # a regular M-gon (the appendix's gamma +- delta at equal angles), at least as fine as the quads
+        m = len(v)
+        assert m % 2 == 0 and m >= 2 * N
+        np.testing.assert_allclose(np.linalg.norm(v - np.roll(v, -1, axis=0), axis=1), 2 * r * np.sin(np.pi / m), rtol=1e-12)
         assert lam.intensity == pytest.approx(AMB + KD * max(sign * a @ unit(FAR.direction), 0), abs=1e-12)
 
 
-def test_light_on_the_axis_uses_any_perpendicular():
-    t = TRUNCI["cylinder"]
-    light = PointLight(tuple(np.asarray(t.center) + 3.0 * np.asarray(t.axis)))
-    ls = build_laminae(t, [light], contours=N)
-    quads = [lam for lam in ls.laminae if lam.kind == "contour"]
-    assert quads
-    # Every side generator is perpendicular to... nothing: the light is on the axis, so all quads
-    # stand for side normals at the same angle to it (same intensity within each axial slice).
-    top = [q.intensity for q in quads[: N - 1]]
-    np.testing.assert_allclose(top, top[0], atol=1e-12)
+@pytest.mark.parametrize("name", ["cylinder", "frustum", "cone"], ids=str)
+def test_light_on_the_axis_uses_any_perpendicular(name):
+    # L_E = 0: the appendix takes any unit L_En perpendicular to a; the quads are still
+    # generators' chords on the rims, each with the exact shading of its generator.
+    t = TRUNCI[name]
+    ct, a = np.asarray(t.center, dtype=float), np.asarray(t.axis, dtype=float)
+    light = PointLight(tuple(ct + 3.0 * a))
+    quads = [lam for lam in build_laminae(t, [light], contours=N).laminae if lam.kind == "contour"]
+    assert len(quads) >= N - 1
+    ua = unit(a)
+    for lam in quads:
+        q = lam.vertices
+        z = (q - ct) @ ua
+        rho = np.linalg.norm((q - ct) - z[:, None] * ua, axis=1)
+        # p1, p2 on one end circle and p3, p4 on the other (a slice's rims for a near light)
+        assert abs(z[0] - z[1]) < 1e-12 and abs(z[2] - z[3]) < 1e-12 and z[0] > z[3]
+        r_top, r_bot = (t.radius_at(z[0]), t.radius_at(z[3]))
+        np.testing.assert_allclose(rho, [r_top, r_top, r_bot, r_bot], atol=1e-12)
+        np.testing.assert_allclose((q - q[0]) @ lam.normal, 0, atol=1e-12)
+        p14 = 0.5 * (q[0] + q[3])
+        want = AMB + KD * max(float(exact_side_normal(t, p14) @ unit(np.asarray(light.position) - p14)), 0.0)
+        assert lam.intensity == pytest.approx(want, abs=1e-12)
 
 
-def max_quad_error(t: Truncus, light: PointLight, slices: bool) -> float:
-    """Largest |lamina cosine - exact cosine| along the generators of the quads' edges."""
-    worst = 0.0
+def quad_errors(t: Truncus, light: PointLight, slices: bool) -> tuple[float, float]:
+    """Largest |lamina intensity - exact intensity| along the quads' generators p1 -> p4,
+    and the largest excess over the per-quad Lipschitz bound (see the test)."""
+    worst, excess = 0.0, -np.inf
+    lpos = np.asarray(light.position, dtype=float)
     for verts, _normal, cos, kind in truncus_laminae(t, light, N, slices=slices):
         if kind != "contour":
             continue
-        s = np.linspace(0, 1, 21)[:, None]
-        gen = verts[0] + s * (verts[3] - verts[0])  # the generator p1 -> p4
+        s = np.linspace(0, 1, 41)[:, None]
+        gen = verts[0] + s * (verts[3] - verts[0])
         n = np.array([exact_side_normal(t, p) for p in gen])
-        exact = np.sum(n * unit(np.asarray(light.position) - gen), axis=1)
-        worst = max(worst, float(np.max(np.abs(exact - cos))))
-    return worst
+        exact = AMB + KD * np.maximum(np.sum(n * unit(lpos - gen), axis=1), 0)
+        err = float(np.max(np.abs(exact - (AMB + KD * max(cos, 0.0)))))
+        # Along a generator the normal is constant and the light direction turns by at most
+        # |p - p14| / rho (rho: the generator's least distance to the light), so a lamina exact
+        # at its generator's midpoint is off by at most kd * (length / 2) / rho.
+        rho = float(np.min(np.linalg.norm(lpos - gen, axis=1)))
+        bound = KD * 0.5 * float(np.linalg.norm(verts[3] - verts[0])) / rho
+        worst, excess = max(worst, err), max(excess, err - bound)
+    return worst, excess
 
 
-def test_near_light_axial_slices_reduce_the_laminae_error():
+NEAR_LIGHTS = {
+    "side_0.7": (1.2, 0.3, 0.8),
+    "below_rim": (0.3, 0.9, -1.4),
+    "side_2.5": (3.0, 0.0, 1.0),
+}
+
+
+@pytest.mark.parametrize("where", list(NEAR_LIGHTS), ids=str)
+def test_near_light_axial_slices_reduce_the_laminae_error(where):
     t = Cylinder((0, 0, 0), (0, 0, 2.0), 0.5)
-    light = PointLight((1.2, 0.3, 0.8))  # 0.7 from the side, closer than the height
-    single = max_quad_error(t, light, slices=False)
-    sliced = max_quad_error(t, light, slices=True)
-    assert sliced < 0.25 * single, f"near light: max cosine error {single:.3f} unsliced, {sliced:.3f} sliced"
-    assert sliced < 0.1, f"sliced laminae error {sliced:.3f}"
+    light = PointLight(NEAR_LIGHTS[where])
+    single, ex_single = quad_errors(t, light, slices=False)
+    sliced, ex_sliced = quad_errors(t, light, slices=True)
+    report = f"light {light.position}: max lamina intensity error {single:.4f} unsliced, {sliced:.4f} sliced (kd = {KD})"
+    assert ex_single <= 1e-12 and ex_sliced <= 1e-12, report
+    # Slices are at most a quarter of the light's distance to the bounding sphere tall, so the
+    # half-generator is at most 1/8 of rho and the bound above gives kd / 8.
+    assert sliced < single, report
+    assert sliced <= KD / 8, report
 
 
 # ----------------------------------------------------------------------------- polyhedra
