@@ -99,12 +99,9 @@ def test_near_light_terminator_is_at_R_over_D():
     assert heights[0] == pytest.approx(r / d, abs=1e-12)
 
 
-def test_light_inside_sphere_leaves_the_outside_unlit_and_lights_the_inside():
-    light = PointLight((0.5, -0.1, 0.6))
-    ls = build_laminae(SPHERE, [light], contours=N)
+def test_light_inside_sphere_gives_no_lit_laminae():
+    ls = build_laminae(SPHERE, [PointLight((0.5, -0.1, 0.6))], contours=N)
     assert ls.laminae == ()
-    np.testing.assert_allclose(ls.bands.value_out, AMB)
-    assert ls.bands.value_in.max() > AMB + 0.5 * KD
 
 
 # ----------------------------------------------------------------------------- truncus
@@ -297,80 +294,217 @@ def test_one_lamina_per_face_with_exact_intensity(prim):
 # ----------------------------------------------------------------------------- bands
 
 
-def surface_points_and_normals(prim, pts):
-    """Project points (near the surface) onto it, with the exact outward normal there."""
+def end_sign(prim, tri: np.ndarray) -> np.ndarray:
+    """+1 / -1 for triangles on a truncus end E1 / E2, 0 on the lateral surface (and for spheres)."""
+    if not isinstance(prim, Truncus):
+        return np.zeros(len(tri))
+    z = (tri - np.asarray(prim.center)) @ unit(prim.axis)
+    h = np.linalg.norm(prim.axis)
+    top, bottom = np.all(np.abs(z - h / 2) < 1e-9, axis=1), np.all(np.abs(z + h / 2) < 1e-9, axis=1)
+    return np.where(top, 1.0, np.where(bottom, -1.0, 0.0))
+
+
+def project(prim, pts: np.ndarray, ends: np.ndarray, ref: np.ndarray | None = None) -> tuple[np.ndarray, np.ndarray]:
+    """Project points (near the surface) onto it, with the exact outward normal there.
+
+    ``ends`` (from :func:`end_sign`) says which truncus face a point belongs to; at a cone's
+    apex the normal is the limit along the generator towards ``ref`` (the triangle's centroid).
+    """
     if isinstance(prim, Sphere):
         c = np.asarray(prim.center)
         n = unit(pts - c)
         return c + prim.radius * n, n
-    if isinstance(prim, Truncus):
-        a = unit(prim.axis)
-        ct = np.asarray(prim.center, dtype=float)
-        rel = pts - ct
-        z = rel @ a
-        radial = rel - z[:, None] * a
+    a = unit(prim.axis)
+    ct = np.asarray(prim.center, dtype=float)
+    rel = pts - ct
+    z = rel @ a
+    radial = rel - z[:, None] * a
+    rho = np.linalg.norm(radial, axis=1)
+    if ref is not None:
+        apex = rho < 1e-9
+        rr = ref - ct
+        radial[apex] = (rr - (rr @ a)[:, None] * a)[apex] * 1e-300
         rho = np.linalg.norm(radial, axis=1)
-        h = np.linalg.norm(prim.axis)
-        r_at = prim.r2 + (prim.r1 - prim.r2) * (z / h + 0.5)
-        on_end = np.abs(np.abs(z) - h / 2) < 1e-9 * max(h, 1)
-        side_n = np.array([exact_side_normal(prim, p) for p in pts])
-        p_side = ct + z[:, None] * a + (r_at / np.maximum(rho, 1e-300))[:, None] * radial
-        n = np.where(on_end[:, None], np.sign(z)[:, None] * a, side_n)
-        p = np.where(on_end[:, None], pts, p_side)
-        return p, n
-    raise AssertionError
+    rho = np.maximum(rho, 1e-300)
+    h = np.linalg.norm(prim.axis)
+    k = (prim.r1 - prim.r2) / h
+    r_at = prim.r2 + (prim.r1 - prim.r2) * (z / h + 0.5)
+    side_n = unit(radial / rho[:, None] - k * a)
+    side_p = ct + z[:, None] * a + (r_at / rho)[:, None] * radial
+    on_end = ends != 0
+    n = np.where(on_end[:, None], ends[:, None] * a, side_n)
+    p = np.where(on_end[:, None], pts - (z - ends * h / 2)[:, None] * a, side_p)
+    return p, n
+
+
+def shading_terms(p, n, lights, mat, eye):
+    """Each light's diffuse (and Phong) term of the conventions' intensity, one row per term."""
+    out = []
+    for light in lights:
+        l = to_light(light, p)
+        ndl = np.sum(n * l, axis=1)
+        out.append(light.intensity * mat.kd * np.maximum(ndl, 0))
+        if mat.ks > 0:
+            rf = 2 * ndl[:, None] * n - l
+            v = unit(np.asarray(eye) - p)
+            out.append(np.where(ndl > 0, light.intensity * mat.ks * np.maximum(np.sum(rf * v, axis=1), 0) ** mat.shininess, 0))
+    return np.array(out)
 
 
 BAND_CASES = {
     "sphere_point": (SPHERE, [SPHERE_LIGHTS["near_point"]], Material()),
     "sphere_two_lights": (SPHERE, [SPHERE_LIGHTS["far_point"], PointLight((-5, -2, 1), 0.6)], Material()),
     "sphere_specular": (SPHERE, [SPHERE_LIGHTS["far_point"]], Material(kd=0.6, ks=0.5, shininess=10)),
+    "sphere_light_inside": (SPHERE, [PointLight((0.5, -0.1, 0.6))], Material()),
     "frustum_near": (TRUNCI["frustum"], [PointLight((1.8, -1.0, 1.2))], Material()),
     "cylinder_two_lights": (TRUNCI["cylinder"], [FAR, PointLight((-3, -3, 2), 0.5)], Material()),
+    "cone_specular": (TRUNCI["cone"], [PointLight((3, -2, 1))], Material(kd=0.6, ks=0.5, shininess=10)),
+    "cone_specular_far": (TRUNCI["cone"], [FAR], Material(kd=0.6, ks=0.5, shininess=10)),
+    "cone_two_lights": (TRUNCI["cone"], [FAR, DirectionalLight((-3, 2, -1), 0.7)], Material()),
 }
 EYE = (0.5, -6.0, 2.0)
+
+
+def near_apex(prim, pts: np.ndarray) -> np.ndarray:
+    """Points within 1 % of a generator's length of a cone's apex.
+
+    There the normal turns all the way round within any triangle, and no linear interpolant on
+    a mesh follows the shading (isocsg grades its rings down to 1 % of the radius; the cap left
+    is 1e-4 of the lateral area). Needles of ~1e-19 area at the apex are excluded likewise.
+    """
+    if not isinstance(prim, Truncus) or min(prim.r1, prim.r2) > 0:
+        return np.zeros(len(pts), bool)
+    half = 0.5 * np.asarray(prim.axis)
+    apex = np.asarray(prim.center) + (half if prim.r1 == 0 else -half)
+    slant = np.hypot(np.linalg.norm(prim.axis), max(prim.r1, prim.r2))
+    return np.linalg.norm(pts - apex, axis=1) < 0.01 * slant
 
 
 @pytest.mark.parametrize("name", list(BAND_CASES), ids=str)
 def test_band_values_are_within_half_a_band_of_the_exact_shading(name):
     prim, lights, mat = BAND_CASES[name]
     n_contours = 48
-    ls = build_laminae(prim, lights, mat, contours=n_contours, eye=EYE)
-    b = ls.bands
+    b = build_laminae(prim, lights, mat, contours=n_contours, eye=EYE).bands
     tri = b.vertices[b.triangles]
     area = 0.5 * np.linalg.norm(np.cross(tri[:, 1] - tri[:, 0], tri[:, 2] - tri[:, 0]), axis=1)
-    p, n = surface_points_and_normals(prim, tri.mean(axis=1))
-    # Each light contributes at most half a band step (diffuse steps are <= pi/N in cosine
-    # for a truncus, 1/N otherwise; specular steps 1/N of ks); the centroid of a triangle
-    # lies between its vertices' band edges up to the mesh's curvature (a small margin).
-    step = sum(light.intensity * (mat.kd * np.pi + mat.ks) / n_contours for light in lights)
-    tol = 0.5 * step + 0.02
-    err_out = np.abs(b.value_out - exact_value(p, n, lights, mat, EYE))
-    err_in = np.abs(b.value_in - exact_value(p, -n, lights, mat, EYE))
-    big = area > np.median(area) * 1e-3  # slivers along cut lines carry no area
-    assert err_out[big].max() <= tol, f"{name}: max outward error {err_out[big].max():.4f} > {tol:.4f}"
-    if mat.ks == 0:
-        assert err_in[big].max() <= tol, f"{name}: max reversed-normal error {err_in[big].max():.4f} > {tol:.4f}"
-    # area-weighted mean error is far below the bound
-    assert np.average(err_out, weights=area) < 0.5 * tol
+    ends = end_sign(prim, tri)
+    # The band step of each term: a sphere's diffuse levels are 1/N apart in cosine; a truncus's
+    # are the cosines B + A cos(i pi / N) of its quads' generators, at most A pi / N <= pi / N
+    # apart; the Phong levels split ks * (rf . v)^n into steps of ks / N.
+    d_step = 1.0 if isinstance(prim, Sphere) else np.pi
+    half = 0.5 * sum(light.intensity * (mat.kd * d_step + mat.ks) / n_contours for light in lights)
+    for side, value in ((1.0, b.value_out), (-1.0, b.value_in)):
+        pc, nc = project(prim, tri.mean(axis=1), ends)
+        exact = shading_terms(pc, side * nc, lights, mat, EYE)
+        # A band holds the piecewise-linear interpolant of the field on the inscribed mesh, not the
+        # field itself. Their gap is second order; measure it on this mesh as the exact terms at the
+        # projected centroid minus the mean of those at the projected corners, and allow it twice
+        # (at the centroid, and at the cut points on the chords).
+        corners = [project(prim, tri[:, j], ends, tri.mean(axis=1)) for j in range(3)]
+        at_corners = np.mean([shading_terms(q, side * m, lights, mat, EYE) for q, m in corners], axis=0)
+        seen = (area > 1e-12 * area.sum()) & ~near_apex(prim, tri.mean(axis=1))
+        lin = float(np.max(np.sum(np.abs(exact - at_corners), axis=0)[seen]))
+        # The mesh must follow the field well within a band (the contours, not the mesh, limit the
+        # accuracy): without this a coarse mesh would widen its own tolerance.
+        assert lin <= 0.5 * half, f"{name}: linearisation gap {lin:.5f} against half a band step {half:.5f}"
+        tol = half + 2 * lin + 1e-9
+        err = np.abs(value - (mat.ambient + exact.sum(axis=0)))
+        msg = (f"{name} ({'outward' if side > 0 else 'reversed'}): max error {err[seen].max():.5f}, "
+               f"half step {half:.5f}, linearisation {lin:.5f}")
+        assert err[seen].max() <= tol, msg
+        # Errors spread over the band: the area-weighted mean stays well below the bound.
+        assert np.average(err, weights=area) < 0.6 * tol, msg
+
+
+def tri_normals(b):
+    tri = b.vertices[b.triangles]
+    return np.cross(tri[:, 1] - tri[:, 0], tri[:, 2] - tri[:, 0]), tri
+
+
+def test_light_inside_sphere_bands_are_lit_inside_only():
+    b = build_laminae(SPHERE, [PointLight((0.5, -0.1, 0.6))], contours=N).bands
+    np.testing.assert_allclose(b.value_out, AMB)
+    g, tri = tri_normals(b)
+    pc, nc = project(SPHERE, tri.mean(axis=1), np.zeros(len(tri)))
+    exact_in = AMB + KD * np.maximum(np.sum(-nc * unit(np.array([0.5, -0.1, 0.6]) - pc), axis=1), 0)
+    np.testing.assert_allclose(b.value_in, exact_in, atol=0.5 * KD / N + 1e-3)
+    assert b.value_in.min() > AMB  # the whole inside faces the light
 
 
 @pytest.mark.parametrize("light", [FAR, SPHERE_LIGHTS["near_point"]], ids=["directional", "near_point"])
 def test_sphere_bands_form_a_closed_outward_surface(light):
     b = build_laminae(SPHERE, [light], contours=32).bands
-    tri = b.vertices[b.triangles]
-    g = np.cross(tri[:, 1] - tri[:, 0], tri[:, 2] - tri[:, 0])
-    outward = np.sum(g * (tri.mean(axis=1) - np.asarray(SPHERE.center)), axis=1)
+    g, tri = tri_normals(b)
+    c, r = np.asarray(SPHERE.center), SPHERE.radius
+    outward = np.sum(g * (tri.mean(axis=1) - c), axis=1)
     assert np.all(outward > 0)
-    # Closed: the signed volume of the mesh is the inscribed polyhedron's, and every edge is shared.
-    vol = np.sum(np.einsum("ij,ij->i", tri[:, 0], np.cross(tri[:, 1], tri[:, 2]))) / 6.0
-    exact = 4.0 / 3.0 * np.pi * SPHERE.radius**3
-    assert exact * (1 - 2e-3) < vol < exact
+    # Closed: every edge is used by exactly two triangles.
     e = np.sort(np.concatenate([b.triangles[:, [0, 1]], b.triangles[:, [1, 2]], b.triangles[:, [2, 0]]]), axis=1)
     _, counts = np.unique(e, axis=0, return_counts=True)
     assert np.all(counts == 2)
+    # Vertices on the sphere; the mesh bounds a convex polyhedron inscribed in it, which contains
+    # the ball of radius r_in (the least distance from the centre to a triangle's plane). Area and
+    # volume are monotone on nested convex bodies: 4 pi r_in^2 <= area <= 4 pi r^2, likewise volume.
+    np.testing.assert_allclose(np.linalg.norm(b.vertices - c, axis=1), r, rtol=1e-12)
+    r_in = float(np.min(np.sum(unit(g) * (tri[:, 0] - c), axis=1)))
     area = 0.5 * np.linalg.norm(g, axis=1).sum()
-    assert 4 * np.pi * SPHERE.radius**2 * (1 - 2e-3) < area < 4 * np.pi * SPHERE.radius**2
+    vol = np.sum(np.einsum("ij,ij->i", tri[:, 0] - c, np.cross(tri[:, 1] - c, tri[:, 2] - c))) / 6.0
+    assert 4 * np.pi * r_in**2 <= area <= 4 * np.pi * r**2
+    assert 4 / 3 * np.pi * r_in**3 <= vol <= 4 / 3 * np.pi * r**3
+    assert 1 - r_in / r < 1e-3  # the chord sag of the mesh
+
+
+def frustum_area(r1, r2, h):
+    return np.pi * (r1**2 + r2**2) + np.pi * (r1 + r2) * np.hypot(h, r1 - r2)
+
+
+@pytest.mark.parametrize("name", list(TRUNCI), ids=str)
+@pytest.mark.parametrize("lkind", ["directional", "near_point"], ids=str)
+def test_truncus_bands_outward_and_area(name, lkind):
+    t = TRUNCI[name]
+    ct, a, h = np.asarray(t.center, dtype=float), unit(t.axis), float(np.linalg.norm(t.axis))
+    light = FAR if lkind == "directional" else PointLight(tuple(ct + 2.0 * unit([1, -1, 0.5])))
+    b = build_laminae(t, [light], contours=24).bands
+    g, tri = tri_normals(b)
+    ends = end_sign(t, tri)
+    _, n_exact = project(t, tri.mean(axis=1), ends)
+    big = np.linalg.norm(g, axis=1) > 1e-9 * np.median(np.linalg.norm(g, axis=1))
+    assert np.all(np.sum(g * n_exact, axis=1)[big] > 0)  # counter-clockwise seen from outside
+    # Inscribed in the truncus K (convex): area <= area(K). It contains the truncus whose end
+    # radii are shrunk by cos(gap / 2), gap the widest angle between the mesh's rim vertices.
+    rel = b.vertices - ct
+    z = rel @ a
+    radial = rel - z[:, None] * a
+    e1 = unit(radial[np.argmax(np.linalg.norm(radial, axis=1))])
+    e2 = np.cross(a, e1)
+    shrink = []
+    for zz, r in ((h / 2, t.r1), (-h / 2, t.r2)):
+        if r == 0:
+            shrink.append(0.0)
+            continue
+        rim = (np.abs(z - zz) < 1e-9) & (np.abs(np.linalg.norm(radial, axis=1) - r) < 1e-9 * max(r, 1))
+        ang = np.sort(np.arctan2(radial[rim] @ e2, radial[rim] @ e1))
+        gap = np.max(np.diff(np.concatenate([ang, [ang[0] + 2 * np.pi]])))
+        shrink.append(r * np.cos(gap / 2))
+    area = 0.5 * np.linalg.norm(g, axis=1).sum()
+    lo, hi = frustum_area(shrink[0], shrink[1], h), frustum_area(t.r1, t.r2, h)
+    assert lo <= area <= hi * (1 + 1e-12), f"{name}: area {area} not in [{lo}, {hi}]"
+    assert (hi - lo) / hi < 2e-3  # the bounds are tight: the chord sag is small
+
+
+@pytest.mark.parametrize("lkind", ["directional", "near_point"], ids=str)
+def test_polyhedron_bands_cover_the_faces_outward(lkind):
+    light = FAR if lkind == "directional" else PointLight((1.5, -1.2, 0.8))
+    for prim in (Box((0.2, 0.1, -0.3), (1, 2, 0.5)), POLY):
+        b = build_laminae(prim, [light], contours=24).bands
+        g, tri = tri_normals(b)
+        faces = prim.face_polygons()
+        f_area = sum(0.5 * np.linalg.norm(np.sum(np.cross(f, np.roll(f, -1, axis=0)), axis=0)) for f in faces)
+        assert 0.5 * np.linalg.norm(g, axis=1).sum() == pytest.approx(f_area, rel=1e-10)
+        # Each triangle is counter-clockwise about the outward normal of the face it lies in.
+        inside = np.mean(b.vertices, axis=0)
+        big = np.linalg.norm(g, axis=1) > 1e-12
+        assert np.all(np.sum(g * (tri.mean(axis=1) - inside), axis=1)[big] > 0)
 
 
 # ----------------------------------------------------------------------------- specular, cache

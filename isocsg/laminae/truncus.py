@@ -38,6 +38,10 @@ __all__ = [
 
 #: Uniform generators around the axis added to the contour generators (for the silhouette).
 GENERATORS = 128
+#: Least ratio of consecutive ring radii towards a truncus's small end (see ``_graded_rings``).
+RING_RATIO = 0.6
+#: Smallest graded ring radius next to a cone's apex, as a fraction of the larger end radius.
+APEX_FLOOR = 1e-2
 
 Light = PointLight | DirectionalLight
 
@@ -193,11 +197,48 @@ def _generator_angles(truncus: Truncus, light: Light | None, levels: NDArray[np.
     return th
 
 
-def truncus_surface(truncus: Truncus, lights: list[Light], levels: NDArray[np.float64]) -> Surface:
+def _graded_rings(zs: list[float], truncus: Truncus) -> list[float]:
+    """Axial ring positions (descending, ends exact) refined towards a small end.
+
+    Near a cone's apex every field is a function of the angle about the axis only,
+    and a triangle spanning two generators of very different lengths (a wedge) is
+    a poor linear interpolant of it: off by up to the field's change from one
+    generator to the next. Rings whose radii shrink by at most ``RING_RATIO`` keep
+    each trapezoid close to a parallelogram, down to ``APEX_FLOOR`` of the larger
+    radius (the wedge left at a zero-radius end is below a pixel).
+    """
+    h = truncus.height
+    zs = list(zs)
+    zs[0], zs[-1] = 0.5 * h, -0.5 * h
+    r_max = max(truncus.r1, truncus.r2)
+    if r_max <= 0 or truncus.r1 == truncus.r2:
+        return zs
+    out = [zs[0]]
+    for za, zb in zip(zs[:-1], zs[1:]):
+        ra, rb = float(truncus.radius_at(za)), float(truncus.radius_at(zb))
+        lo, hi = min(ra, rb), max(ra, rb)
+        floor = max(lo, APEX_FLOOR * r_max)
+        if hi > 0 and floor < RING_RATIO * hi:
+            k = int(np.ceil(np.log(floor / hi) / np.log(RING_RATIO)))
+            radii = hi * (floor / hi) ** (np.arange(1, k) / k)  # geometric, hi -> floor
+            if lo < floor:
+                radii = np.append(radii, floor)
+            zr = zb + (radii - rb) * (za - zb) / (ra - rb)  # radius is linear in z
+            zr = np.sort(zr[(zr < za) & (zr > zb)])[::-1]
+            out.extend(float(z) for z in zr)
+        out.append(zb)
+    return out
+
+
+def truncus_surface(
+    truncus: Truncus, lights: list[Light], levels: NDArray[np.float64], *, specular: bool = False
+) -> Surface:
     """Band mesh base of a truncus: generators at the first light's contour angles.
 
     Rings along the axis and on the ends are added for near point lights,
-    whose level lines are not straight generators.
+    whose level lines are not straight generators. Towards a small end the
+    rings are graded (``_graded_rings``) whenever some field is not constant
+    along the generators: several lights, a point light or ``specular``.
     """
     first = lights[0] if lights else None
     a = truncus.unit_axis
@@ -223,6 +264,9 @@ def truncus_surface(truncus: Truncus, lights: list[Light], levels: NDArray[np.fl
     # Lateral surface: rings from E1 (z = +h/2) to E2 (z = -h/2).
     zs = [0.5 * h - j * h / n_ax for j in range(n_ax + 1)]
     zs[-1] = -0.5 * h
+    if specular or len(lights) > 1 or any(isinstance(light, PointLight) for light in lights):
+        zs = _graded_rings(zs, truncus)
+        n_ax = len(zs) - 1
     jj = np.arange(m)
     jn = (jj + 1) % m
     for j, z in enumerate(zs):
