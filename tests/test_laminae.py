@@ -536,7 +536,10 @@ def test_diffuse_sets_are_cached_across_viewpoints_and_specular_ones_are_not():
     shiny = Material(ks=0.4)
     c = build_laminae(prim, lights, shiny, contours=12, eye=(0, -5, 0))
     d = build_laminae(prim, lights, shiny, contours=12, eye=(5, 0, 1))
-    assert c is not d and c.view_dependent
+    assert c is not d and c.view_dependent and d.view_dependent
+    assert cache_info() == {"hits": 1, "misses": 3, "size": 3}
+    assert build_laminae(prim, lights, shiny, contours=12, eye=(5, 0, 1)) is d  # same eye: cached
+    assert cache_info()["hits"] == 2
     assert not np.array_equal(c.bands.value_out[:100], d.bands.value_out[:100]) or c.bands.n_triangles != d.bands.n_triangles
 
 
