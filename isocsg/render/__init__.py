@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from .painter import Renderer, RenderResult, RenderTimings, default_renderer, render
 from .raster import Raster, homogeneous, rasterize
-from .svg import save_scene_svg, scene_polygons
+from .svg import ScenePolygons, save_scene_svg, scene_polygons
 
 __all__ = [
     "render",
@@ -17,4 +17,5 @@ __all__ = [
     "homogeneous",
     "save_scene_svg",
     "scene_polygons",
+    "ScenePolygons",
 ]
