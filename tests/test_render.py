@@ -496,3 +496,20 @@ def test_striped_fill_of_large_images_equals_the_single_pass(monkeypatch):
     np.testing.assert_array_equal(striped.image, single.image)
     np.testing.assert_array_equal(striped.object_index, single.object_index)
     assert np.isfinite(single.image).sum() > 0.1 * single.image.size
+
+
+def test_concurrent_csg_fill_and_resolve_equal_the_serial_ones(monkeypatch):
+    # Large CSG objects fill their leaves and resolve row stripes concurrently;
+    # the image must be the serial one, pixel for pixel.
+    from isocsg import Box, Cylinder
+    from isocsg.render import painter
+
+    part = (Box((0, 0, 0), (1.6, 1.6, 1.6)) - Cylinder((0, 0, 0), (2.4, 0, 0), 0.45)) & Sphere((0, 0, 0), 1.05)
+    scene = Scene(Camera((3, -4, 3), (0, 0, 0), width=420, height=380), [PointLight((4, -3, 5))], [part])
+    monkeypatch.setattr(painter, "_STRIPES", 3)
+    threaded = Renderer().render(scene)
+    monkeypatch.setattr(painter, "_STRIPES", 1)
+    serial = Renderer().render(scene)
+    np.testing.assert_array_equal(threaded.image, serial.image)
+    np.testing.assert_array_equal(threaded.primitive_index, serial.primitive_index)
+    assert np.isfinite(serial.image).sum() > 0.1 * serial.image.size

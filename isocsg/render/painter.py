@@ -535,15 +535,37 @@ class Renderer:
         kb.fill(-np.inf)
         vf = view("csg-front-value", np.float32, (n, h, w))
         vb = view("csg-back-value", np.float32, (n, h, w))
-        scratch = view("csg-label", np.int32, (h, w))
-        for i, (p, hv) in enumerate(zip(preps, hs)):
+        scratch = view("csg-label", np.int32, (n, h, w))
+
+        def leaf(i: int) -> None:
+            p, hv = preps[i], hs[i]
             fill_kernel(
                 hv[0], hv[1], hv[2], hv[3], p.triangles, p.value_out, p.value_in, near, persp, True, True,
-                0, ox, oy, kf[i], vf[i], scratch, kb[i], vb[i],
+                0, ox, oy, kf[i], vf[i], scratch[i], kb[i], vb[i],
             )
-            if progress is not None and i < n - 1:
-                progress(done + i + 1, total)
-        resolve_csg(kf, vf, kb, vb, program, base, ox, oy, zkey, value, gid)
+
+        def stripe(r0: int, r1: int) -> None:
+            resolve_csg(kf[:, r0:r1], vf[:, r0:r1], kb[:, r0:r1], vb[:, r0:r1], program, base, ox, oy + r0,
+                        zkey, value, gid)
+
+        # Leaves fill their own buffers, and row stripes resolve disjoint pixels:
+        # both run concurrently (the kernels release the GIL).
+        parallel = _STRIPES > 1 and w * h >= _STRIPE_MIN_PIXELS // 4
+        if parallel:
+            futures = [_pool().submit(leaf, i) for i in range(1, n)]
+            leaf(0)
+            for k, f in enumerate(futures):
+                f.result()
+        else:
+            for i in range(n):
+                leaf(i)
+        if progress is not None and n > 1:
+            progress(done + n - 1, total)
+        cuts = [h * k // _STRIPES for k in range(_STRIPES + 1)] if parallel and h >= 2 * _STRIPES else [0, h]
+        futures = [_pool().submit(stripe, a, b) for a, b in zip(cuts[1:-1], cuts[2:])]
+        stripe(cuts[0], cuts[1])
+        for f in futures:
+            f.result()
 
 
 _DEFAULT: Renderer | None = None
