@@ -30,7 +30,7 @@ from isocsg import (
     Truncus,
 )
 
-__all__ = ["SIZE", "CORE_SCENES", "CSG_SCENES", "ALL_SCENES", "make_scene", "with_contours"]
+__all__ = ["SIZE", "CORE_SCENES", "CSG_SCENES", "ALL_SCENES", "make_scene", "with_contours", "render_image"]
 
 #: Image side in pixels.
 SIZE = 160
@@ -50,6 +50,18 @@ def make_scene(eye, objects, lights, *, target=(0.0, 0.0, 0.0), size: int = SIZE
 def with_contours(scene: Scene, contours: int) -> Scene:
     """The same scene rendered with another number of contours."""
     return dataclasses.replace(scene, render=dataclasses.replace(scene.render, contours=contours))
+
+
+def render_image(scene: Scene):
+    """The library's float32 image of a scene (the thing the accuracy tests judge)."""
+    import numpy as np
+
+    from isocsg.render import render
+
+    image = render(scene).image
+    assert image.dtype == np.float32
+    assert image.shape == (scene.camera.height, scene.camera.width)
+    return image
 
 
 def _polyhedron() -> ConvexPolyhedron:

@@ -21,22 +21,12 @@ import pytest
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
 from reference import compare, comparison_mask, raycast_scene  # noqa: E402
-from scenes import CORE_SCENES, with_contours  # noqa: E402
+from scenes import CORE_SCENES, render_image, with_contours  # noqa: E402
 
 MIN_IOU = 0.99
 MIN_FRACTION = 0.98
 CONTOURS = 64
 CONVERGENCE = ["sphere_near_light", "cylinder_eye_in_quad_plane", "cone_near_light", "frustum_specular"]
-
-
-def render_image(scene) -> np.ndarray:
-    """The library's float image of a scene."""
-    from isocsg.render import render
-
-    image = render(scene).image
-    assert image.dtype == np.float32
-    assert image.shape == (scene.camera.height, scene.camera.width)
-    return image
 
 
 @pytest.mark.parametrize("name", list(CORE_SCENES), ids=str)

@@ -23,22 +23,12 @@ from isocsg import Box, Cone, Cylinder, Material, PointLight, Sphere, Truncus
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
 from reference import compare, compare_images, comparison_mask, raycast_scene  # noqa: E402
-from scenes import CSG_SCENES, make_scene, with_contours  # noqa: E402
+from scenes import CSG_SCENES, make_scene, render_image, with_contours  # noqa: E402
 
 MIN_IOU = 0.99
 MIN_FRACTION = 0.98
 CONTOURS = 64
 CONVERGENCE = ["sphere_minus_cylinder", "nested_box_cylinders_sphere", "dent_faces_light"]
-
-
-def render_image(scene) -> np.ndarray:
-    """The library's float image of a scene."""
-    from isocsg.render import render
-
-    image = render(scene).image
-    assert image.dtype == np.float32
-    assert image.shape == (scene.camera.height, scene.camera.width)
-    return image
 
 
 @pytest.mark.parametrize("name", list(CSG_SCENES), ids=str)

@@ -157,20 +157,12 @@ def scene_polygons(
 
     Examples
     --------
-    A stand-in builder with the box's own faces (the real one is
-    :func:`isocsg.laminae.build_laminae`):
+    A box under a directional light has one lamina per face:
 
-    >>> from isocsg import Box, Camera, PointLight, Scene
-    >>> from isocsg.laminae.model import BandMesh
-    >>> from isocsg.render import Renderer
-    >>> def faces(primitive, lights, material, contours, *, eye):
-    ...     poly = primitive.to_polyhedron()
-    ...     t = np.asarray(poly.triangles, dtype=np.int32)
-    ...     level = np.full(len(t), 0.5)
-    ...     return BandMesh(poly.hull_vertices, t, level, level, np.zeros(len(t), np.int32))
+    >>> from isocsg import Box, Camera, DirectionalLight, Scene
     >>> scene = Scene(Camera((2, -5, 3), (0, 0, 0), width=40, height=30),
-    ...               [PointLight((3, -5, 4))], [Box((0, 0, 0), (1, 1, 1))])
-    >>> out = scene_polygons(scene, renderer=Renderer(build_laminae=faces))
+    ...               [DirectionalLight((3, -5, 4))], [Box((0, 0, 0), (1, 1, 1))])
+    >>> out = scene_polygons(scene)
     >>> len(out), out.polygons.shape  # three faces seen, two triangles each
     (6, (6, 3, 2))
     """
@@ -249,18 +241,11 @@ def save_scene_svg(
     Examples
     --------
     >>> import os, tempfile
-    >>> from isocsg import Box, Camera, PointLight, Scene
-    >>> from isocsg.laminae.model import BandMesh
-    >>> from isocsg.render import Renderer
-    >>> def faces(primitive, lights, material, contours, *, eye):
-    ...     poly = primitive.to_polyhedron()
-    ...     t = np.asarray(poly.triangles, dtype=np.int32)
-    ...     level = np.full(len(t), 0.5)
-    ...     return BandMesh(poly.hull_vertices, t, level, level, np.zeros(len(t), np.int32))
+    >>> from isocsg import Box, Camera, DirectionalLight, Scene
     >>> scene = Scene(Camera((2, -5, 3), (0, 0, 0), width=40, height=30),
-    ...               [PointLight((3, -5, 4))], [Box((0, 0, 0), (1, 1, 1))])
+    ...               [DirectionalLight((3, -5, 4))], [Box((0, 0, 0), (1, 1, 1))])
     >>> p = os.path.join(tempfile.mkdtemp(), "box.svg")
-    >>> written = save_scene_svg(p, scene, renderer=Renderer(build_laminae=faces))
+    >>> written = save_scene_svg(p, scene)
     >>> open(p).read().count("<polygon"), len(written)
     (6, 6)
     """
