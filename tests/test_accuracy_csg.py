@@ -109,3 +109,15 @@ def test_inside_of_cut_uses_reversed_normal() -> None:
     err = np.abs(image[cut] - ref.image[cut])
     tol = 0.05 * (np.nanmax(ref.image) - np.nanmin(ref.image))
     assert np.mean(err <= tol) >= MIN_FRACTION, f"inside of the cut: mean |err| {err.mean():.4f}"
+
+
+def test_cutter_face_coincident_with_the_solid_face():
+    # The cutter (box & sphere) shares the plane x = 2 with the solid's face: the
+    # disc it removes from that face must show the pocket behind it on every
+    # pixel, although the two faces are different triangles (keys equal only to rounding).
+    solid = Box((0, 0, 0), (4, 3, 0.8)) - (Box((1.4, 1.0, 0.4), (1.2, 1.2, 1.2)) & Sphere((1.4, 1.0, 0.4), 0.75))
+    scene = make_scene((6, -1.0, 1.2), [solid], [PointLight((6, -4, 9))], target=(1.6, 0.8, 0.2), fov=30)
+    ref = raycast_scene(scene)
+    result = compare(render_image(scene), ref)
+    assert result.iou >= MIN_IOU, result.summary()
+    assert result.fraction >= MIN_FRACTION, result.summary()

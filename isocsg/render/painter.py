@@ -151,6 +151,10 @@ def _evaluate(program: NDArray[np.int64], inside: NDArray[np.bool_], stack: NDAr
     return stack[0]
 
 
+#: Relative depth-key difference below which surfaces of different leaves coincide.
+_COINCIDENT = 1e-9
+
+
 @njit(cache=True, nogil=True)
 def resolve_csg(
     kf: NDArray[np.float64], vf: NDArray[np.float32], kb: NDArray[np.float64], vb: NDArray[np.float32],
@@ -163,8 +167,9 @@ def resolve_csg(
     where none) and back (``-inf`` where none) over the viewport at
     ``(oy, ox)``; a back without a front means the eye is inside that leaf.
     The leaves' surfaces are visited nearest first; all events at the same
-    depth are applied together (regularised operations: touching or
-    coincident surfaces do not show), and the first depth where the program
+    depth (within a relative ``1e-9``: coincident faces of different leaves
+    are different triangles) are applied together (regularised operations:
+    touching or coincident surfaces do not show), and the first depth where the program
     turns from outside to inside is the visible point. If a leaf enters there,
     the pixel shows that leaf's front value, otherwise the back value of a leaf
     that leaves.
@@ -207,16 +212,20 @@ def resolve_csg(
                         key = nxt[i]
                 if key == np.inf or key >= limit:
                     break  # no more surfaces, or something nearer is already drawn
+                # Coincident surfaces of different leaves (a cutter's face on the
+                # solid's face) come from different triangles: their keys agree only
+                # to rounding, so events this close are one event.
+                group = key + _COINCIDENT * abs(key)
                 shown = -1
                 shown_front = False
                 for i in range(n):
-                    if nxt[i] != key:
+                    if nxt[i] > group:
                         continue
                     if phase[i] == 0:
                         inside[i] = True
                         phase[i] = 1
                         nxt[i] = kb[i, r, c]
-                        if nxt[i] == key:  # zero width: in and out at once
+                        if nxt[i] <= group:  # zero width: in and out at once
                             inside[i] = False
                             phase[i] = 2
                             nxt[i] = np.inf
