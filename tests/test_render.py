@@ -479,37 +479,32 @@ def test_malformed_band_mesh_is_reported():
         Renderer(build_laminae=bad).render(Scene(CAM, LIGHTS, [Sphere((0, 0, 0), 1)]), contours=4)
 
 
-def test_striped_fill_of_large_images_equals_the_single_pass(monkeypatch):
-    # Large images of plain primitives are filled in concurrent row stripes;
-    # every pixel must come out exactly as from one pass over the whole image.
-    from isocsg.render import painter
+def _concurrency_scenes():
+    from isocsg import Cylinder
 
-    scene = Scene(
+    plain = Scene(
         Camera((0.4, -5, 1.2), (0, 0, 0), width=640, height=520),
         [PointLight((3, -4, 5))],
         [Sphere((0, 0, 0), 1.0), Box((0.8, 0.6, -0.2), (1.0, 1.0, 1.0))],
     )
-    monkeypatch.setattr(painter, "_STRIPES", 3)
-    striped = Renderer().render(scene)
-    monkeypatch.setattr(painter, "_STRIPES", 1)
-    single = Renderer().render(scene)
-    np.testing.assert_array_equal(striped.image, single.image)
-    np.testing.assert_array_equal(striped.object_index, single.object_index)
-    assert np.isfinite(single.image).sum() > 0.1 * single.image.size
+    part = (Box((0, 0, 0), (1.6, 1.6, 1.6)) - Cylinder((0, 0, 0), (2.4, 0, 0), 0.45)) & Sphere((0, 0, 0), 1.05)
+    csg = Scene(Camera((3, -4, 3), (0, 0, 0), width=420, height=380), [PointLight((4, -3, 5))], [part])
+    return {"plain-stripes": plain, "csg-leaves-and-stripes": csg}
 
 
-def test_concurrent_csg_fill_and_resolve_equal_the_serial_ones(monkeypatch):
-    # Large CSG objects fill their leaves and resolve row stripes concurrently;
-    # the image must be the serial one, pixel for pixel.
-    from isocsg import Box, Cylinder
+@pytest.mark.parametrize("name", ["plain-stripes", "csg-leaves-and-stripes"], ids=str)
+def test_concurrent_fill_equals_the_serial_one(name, monkeypatch):
+    # Large images of plain primitives are filled in concurrent row stripes; CSG
+    # objects fill their leaves and resolve row stripes concurrently. Every pixel
+    # must come out exactly as from one serial pass.
     from isocsg.render import painter
 
-    part = (Box((0, 0, 0), (1.6, 1.6, 1.6)) - Cylinder((0, 0, 0), (2.4, 0, 0), 0.45)) & Sphere((0, 0, 0), 1.05)
-    scene = Scene(Camera((3, -4, 3), (0, 0, 0), width=420, height=380), [PointLight((4, -3, 5))], [part])
+    scene = _concurrency_scenes()[name]
     monkeypatch.setattr(painter, "_STRIPES", 3)
     threaded = Renderer().render(scene)
     monkeypatch.setattr(painter, "_STRIPES", 1)
     serial = Renderer().render(scene)
     np.testing.assert_array_equal(threaded.image, serial.image)
+    np.testing.assert_array_equal(threaded.object_index, serial.object_index)
     np.testing.assert_array_equal(threaded.primitive_index, serial.primitive_index)
     assert np.isfinite(serial.image).sum() > 0.1 * serial.image.size
