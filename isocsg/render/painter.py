@@ -247,15 +247,6 @@ def resolve_csg(
                 state = now
 
 
-@njit(cache=True)
-def _finish(value: NDArray[np.float32], label: NDArray[np.int32], image: NDArray[np.float32]) -> None:
-    v = value.ravel()
-    g = label.ravel()
-    o = image.ravel()
-    for k in range(o.shape[0]):
-        o[k] = v[k] if g[k] >= 0 else np.nan
-
-
 # ------------------------------------------------------------------- renderer
 @dataclass(frozen=True, slots=True, eq=False)
 class _Prepared:
@@ -455,7 +446,9 @@ class Renderer:
         near = NEAR_RELATIVE * max(far, 1e-300)
         zkey = self._buffer("key", (H, W), np.float64)
         zkey.fill(np.inf)
-        value = self._buffer("value", (H, W), np.float32)
+        # The fills write each visible value straight into the image (NaN background).
+        value = self._buffer("image", (H, W), np.float32)
+        value.fill(np.nan)
         gid = self._buffer("label", (H, W), np.int32)
         gid.fill(-1)
         obj_of: list[int] = []
@@ -473,8 +466,7 @@ class Renderer:
             done += len(leaves)
             if progress is not None:
                 progress(done, total)
-        image = self._buffer("image", (H, W), np.float32)
-        _finish(value, gid, image)
+        image = value
         t2 = time.perf_counter()
         # Label -1 (background) maps to -1 through the leading entry of each table.
         object_of = np.asarray([-1] + obj_of, np.int32)
