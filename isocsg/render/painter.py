@@ -41,7 +41,7 @@ from ..errors import InvalidParameterError
 from ..geometry.primitives import Primitive
 from ..laminae.model import BandMesh
 from ..scene.model import MAX_CONTOURS, Scene
-from .raster import NEAR_RELATIVE, fill_kernel, homogeneous, key_to_depth
+from .raster import NEAR_RELATIVE, camera_affine, fill_front_kernel, fill_kernel, key_to_depth, pair_quads, project_kernel
 
 __all__ = ["RenderResult", "RenderTimings", "Renderer", "render", "default_renderer"]
 
@@ -254,6 +254,9 @@ class _Prepared:
     triangles: NDArray[np.int32]
     value_out: NDArray[np.float32]
     value_in: NDArray[np.float32]
+    quads: NDArray[np.int32]  # pair_quads of the triangles (front fill of plain primitives)
+    quad_value: NDArray[np.float32]
+    proj: NDArray[np.float64]  # (7, V) scratch for project_kernel, reused from render to render
 
 
 def _staggered_empty(shape: tuple[int, ...], dtype: Any, k: int) -> NDArray[Any]:
@@ -315,6 +318,8 @@ class Renderer:
         # refers to them any more: fresh pages cost more than the fill itself.
         self._pool: OrderedDict[tuple[str, tuple[int, ...], str], list[NDArray[Any]]] = OrderedDict()
         self._lock = threading.Lock()
+        # id of a pooled buffer -> (row0, row1, col0, col1) that may differ from its background.
+        self._dirty: dict[int, tuple[int, int, int, int]] = {}
 
     def _buffer(self, name: str, shape: tuple[int, ...], dtype: Any) -> NDArray[Any]:
         key = (name, shape, np.dtype(dtype).str)
@@ -327,9 +332,20 @@ class Renderer:
         a = _staggered_empty(shape, dtype, sum(len(p) for p in self._pool.values()))
         pool.append(a)
         if len(pool) > 3:
-            pool.pop(0)
+            self._dirty.pop(id(pool.pop(0)), None)
         while len(self._pool) > 24:
-            self._pool.popitem(last=False)
+            for old in self._pool.popitem(last=False)[1]:
+                self._dirty.pop(id(old), None)
+        return a
+
+    def _cleared(self, name: str, shape: tuple[int, int], dtype: Any, background: float) -> NDArray[Any]:
+        """A pooled private buffer set to ``background`` (only where its last render wrote)."""
+        a = self._buffer(name, shape, dtype)
+        r0, r1, c0, c1 = self._dirty.pop(id(a), (0, shape[0], 0, shape[1]))
+        if r0 < r1 and c0 < c1:
+            a[r0:r1, c0:c1] = background
+        # Until the render records what it wrote, assume everything.
+        self._dirty[id(a)] = (0, shape[0], 0, shape[1])
         return a
 
     def _builder(self) -> BandBuilder:
@@ -361,22 +377,25 @@ class Renderer:
         if hit is not None and hit[0] is bands:
             self._prepared.move_to_end(key)
             return hit[1]
-        prep = _Prepared(
-            np.ascontiguousarray(bands.vertices, dtype=np.float64),
-            np.ascontiguousarray(bands.triangles, dtype=np.int32),
-            np.ascontiguousarray(bands.value_out, dtype=np.float32),
-            np.ascontiguousarray(bands.value_in, dtype=np.float32),
-        )
-        nt, nv = len(prep.triangles), len(prep.vertices)
+        vertices = np.ascontiguousarray(bands.vertices, dtype=np.float64)
+        triangles = np.ascontiguousarray(bands.triangles, dtype=np.int32)
+        value_out = np.ascontiguousarray(bands.value_out, dtype=np.float32)
+        value_in = np.ascontiguousarray(bands.value_in, dtype=np.float32)
+        nt, nv = len(triangles), len(vertices)
         if (
-            prep.vertices.ndim != 2 or prep.vertices.shape[1] != 3 or prep.triangles.ndim != 2
-            or prep.triangles.shape[1] != 3 or prep.value_out.shape != (nt,) or prep.value_in.shape != (nt,)
-            or (nt and (prep.triangles.min() < 0 or prep.triangles.max() >= nv))
+            vertices.ndim != 2 or vertices.shape[1] != 3 or triangles.ndim != 2
+            or triangles.shape[1] != 3 or value_out.shape != (nt,) or value_in.shape != (nt,)
+            or (nt and (triangles.min() < 0 or triangles.max() >= nv))
         ):
             raise InvalidParameterError(
-                f"band mesh of {nv} vertices and {nt} triangles is malformed: vertices {prep.vertices.shape}, "
-                f"triangles {prep.triangles.shape}, value_out {prep.value_out.shape}, value_in {prep.value_in.shape}"
+                f"band mesh of {nv} vertices and {nt} triangles is malformed: vertices {vertices.shape}, "
+                f"triangles {triangles.shape}, value_out {value_out.shape}, value_in {value_in.shape}"
             )
+        quads, source = pair_quads(vertices, triangles, value_out, value_in)
+        prep = _Prepared(
+            vertices, triangles, value_out, value_in, np.ascontiguousarray(quads),
+            np.ascontiguousarray(value_out[source]), np.empty((7, nv)),
+        )
         if not view_dependent:
             self._prepared[key] = (bands, prep)
             while len(self._prepared) > 256:
@@ -441,16 +460,23 @@ class Renderer:
 
         H, W = cam.height, cam.width
         persp = not cam.orthographic
-        projected = [[homogeneous(cam, p.vertices) for p in preps] for _, _, _, preps in objects]
-        far = max((float(np.max(np.abs(h[3]))) for hs in projected for h in hs if h.shape[1]), default=1.0)
-        near = NEAR_RELATIVE * max(far, 1e-300)
-        zkey = self._buffer("key", (H, W), np.float64)
-        zkey.fill(np.inf)
-        # The fills write each visible value straight into the image (NaN background).
+        a, b = camera_affine(cam)
+        eye = cam.eye_array
+        far = 0.0
+        projected = []
+        for _, _, _, preps in objects:
+            projected.append([p.proj for p in preps])
+            for p in preps:
+                far = max(far, project_kernel(p.vertices, eye, a, b, persp, p.proj))
+        near = NEAR_RELATIVE * max(far if far > 0 else 1.0, 1e-300)
+        # Depth keys and labels are private: only the rectangle the previous
+        # render wrote needs resetting. The image is the caller's, so all of it
+        # is reset (the fills write each visible value straight into it).
+        zkey = self._cleared("key", (H, W), np.float64, np.inf)
+        gid = self._cleared("label", (H, W), np.int32, -1)
         value = self._buffer("image", (H, W), np.float32)
         value.fill(np.nan)
-        gid = self._buffer("label", (H, W), np.int32)
-        gid.fill(-1)
+        dirty = [H, 0, W, 0]  # rows [dirty[0], dirty[1]), columns [dirty[2], dirty[3])
         obj_of: list[int] = []
         leaf_of: list[int] = []
         total = sum(len(o[1]) for o in objects)
@@ -460,48 +486,62 @@ class Renderer:
             obj_of.extend([k] * len(leaves))
             leaf_of.extend(range(len(leaves)))
             if program is None:
-                self._fill_plain(preps[0], hs[0], near, persp, base, zkey, value, gid)
+                rect = self._fill_plain(preps[0], hs[0], near, persp, base, zkey, value, gid)
             else:
-                self._fill_csg(preps, hs, program, near, persp, base, W, H, zkey, value, gid, progress, done, total)
+                rect = self._fill_csg(preps, hs, program, near, persp, base, W, H, zkey, value, gid, progress, done, total)
+            if rect[0] < rect[1] and rect[2] < rect[3]:
+                dirty = [min(dirty[0], rect[0]), max(dirty[1], rect[1]), min(dirty[2], rect[2]), max(dirty[3], rect[3])]
             done += len(leaves)
             if progress is not None:
                 progress(done, total)
-        image = value
+        self._dirty[id(zkey)] = self._dirty[id(gid)] = tuple(dirty)
         t2 = time.perf_counter()
         # Label -1 (background) maps to -1 through the leading entry of each table.
         object_of = np.asarray([-1] + obj_of, np.int32)
         leaf_of_arr = np.asarray([-1] + leaf_of, np.int32)
-        return RenderResult(image, RenderTimings(t1 - t0, t2 - t1), cam, gid, zkey, object_of, leaf_of_arr)
+        # Read-only views: the pooled buffers must keep their background outside the dirty rectangle.
+        key_view, label_view = zkey.view(), gid.view()
+        key_view.flags.writeable = False
+        label_view.flags.writeable = False
+        return RenderResult(value, RenderTimings(t1 - t0, t2 - t1), cam, label_view, key_view, object_of, leaf_of_arr)
 
     def _fill_plain(
-        self, p: _Prepared, h: NDArray[np.float64], near: float, persp: bool, base: int,
+        self, p: _Prepared, proj: NDArray[np.float64], near: float, persp: bool, base: int,
         zkey: NDArray[np.float64], value: NDArray[np.float32], gid: NDArray[np.int32],
-    ) -> None:
+    ) -> tuple[int, int, int, int]:
         """Front faces of one convex primitive, straight into the image buffers.
 
-        Large images are split into horizontal stripes filled concurrently (the
-        kernel releases the GIL): thin band triangles cost mostly per row, and
-        each stripe only walks its own rows.
+        Large images are split into horizontal stripes of the primitive's rows,
+        filled concurrently (the kernel releases the GIL): thin band polygons
+        cost mostly per row, and each stripe only walks its own rows. Returns
+        the rectangle written (rows, then columns, half-open).
         """
         H = zkey.shape[0]
-        dummy_k = np.full((1, 1), -np.inf)
-        dummy_v = np.empty((1, 1), np.float32)
+        n = _STRIPES if zkey.size >= _STRIPE_MIN_PIXELS and H >= 2 * _STRIPES else 1
+        bounds = np.empty((n, 4), np.int64)
+        bounds[:] = (H, 0, zkey.shape[1], 0)
 
-        def stripe(r0: int, r1: int) -> None:
-            fill_kernel(
-                h[0], h[1], h[2], h[3], p.triangles, p.value_out, p.value_in, near, persp, True, False,
-                base, 0, r0, zkey[r0:r1], value[r0:r1], gid[r0:r1], dummy_k, dummy_v,
+        def stripe(k: int, r0: int, r1: int) -> None:
+            fill_front_kernel(
+                proj, p.quads, p.quad_value, near, persp, base, r0, zkey[r0:r1], value[r0:r1], gid[r0:r1], bounds[k],
             )
 
-        n = _STRIPES if zkey.size >= _STRIPE_MIN_PIXELS and H >= 2 * _STRIPES else 1
         if n == 1:
-            stripe(0, H)
-            return
-        cuts = [H * k // n for k in range(n + 1)]
-        futures = [_pool().submit(stripe, a, b) for a, b in zip(cuts[1:-1], cuts[2:])]
-        stripe(cuts[0], cuts[1])
-        for f in futures:
-            f.result()
+            stripe(0, 0, H)
+        else:
+            # Split the primitive's own rows evenly (all of them if it crosses the near plane).
+            r_top, r_bot = 0, H
+            front = proj[3] >= near
+            if front.all() and len(front):
+                r_top = min(max(int(math.floor(float(proj[5].min()))), 0), H)
+                r_bot = min(max(int(math.ceil(float(proj[5].max()))) + 1, r_top), H)
+            cuts = [r_top + (r_bot - r_top) * k // n for k in range(n + 1)]
+            cuts[0], cuts[-1] = 0, H
+            futures = [_pool().submit(stripe, k, a, b) for k, (a, b) in enumerate(zip(cuts[1:-1], cuts[2:]), 1)]
+            stripe(0, cuts[0], cuts[1])
+            for f in futures:
+                f.result()
+        return (int(bounds[:, 0].min()), int(bounds[:, 1].max()), int(bounds[:, 2].min()), int(bounds[:, 3].max()))
 
     def _fill_csg(
         self,
@@ -509,19 +549,19 @@ class Renderer:
         persp: bool, base: int, W: int, H: int,
         zkey: NDArray[np.float64], value: NDArray[np.float32], gid: NDArray[np.int32],
         progress: Callable[[int, int], None] | None, done: int, total: int,
-    ) -> None:
+    ) -> tuple[int, int, int, int]:
         # The object's screen rectangle (the whole image if anything crosses the near plane).
         ox, oy, x1, y1 = 0, 0, W, H
-        allh = np.hstack(hs) if hs else np.zeros((4, 0))
+        allh = np.hstack(hs) if hs else np.zeros((7, 0))
         if allh.shape[1] and np.all(allh[3] >= near):
-            cols, rows = allh[0] / allh[2], allh[1] / allh[2]
+            cols, rows = allh[4], allh[5]
             ox = min(max(int(math.floor(cols.min())) - 1, 0), W)
             oy = min(max(int(math.floor(rows.min())) - 1, 0), H)
             x1 = min(max(int(math.ceil(cols.max())) + 1, 0), W)
             y1 = min(max(int(math.ceil(rows.max())) + 1, 0), H)
         w, h = x1 - ox, y1 - oy
         if w <= 0 or h <= 0:
-            return
+            return (0, 0, 0, 0)
         n = len(preps)
         # Contiguous views into image-sized pooled buffers, so that the object's
         # rectangle can change from view to view without fresh allocations.
@@ -567,6 +607,7 @@ class Renderer:
         stripe(cuts[0], cuts[1])
         for f in futures:
             f.result()
+        return (oy, y1, ox, x1)
 
 
 _DEFAULT: Renderer | None = None

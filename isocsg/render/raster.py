@@ -38,7 +38,7 @@ from numpy.typing import ArrayLike, NDArray
 from ..camera import Camera
 from ..errors import InvalidGeometryError, InvalidParameterError
 
-__all__ = ["Raster", "rasterize", "homogeneous", "near_distance"]
+__all__ = ["Raster", "rasterize", "homogeneous", "near_distance", "camera_affine", "pair_quads"]
 
 # Relative near-plane distance: surfaces closer to the eye than this fraction of
 # the scene's depth range are clipped away (the ray caster's ``t > 0``).
@@ -237,61 +237,73 @@ def _fill_all(
     py = np.empty(4)
     pk = np.empty(4)
     for t in range(tris.shape[0]):
-        a = tris[t, 0]
-        b = tris[t, 1]
-        c = tris[t, 2]
-        ina = hd[a] >= near
-        inb = hd[b] >= near
-        inc = hd[c] >= near
-        if ina and inb and inc:
-            n = 3
-            px[0], py[0], pk[0] = sx[a], sy[a], sk[a]
-            px[1], py[1], pk[1] = sx[b], sy[b], sk[b]
-            px[2], py[2], pk[2] = sx[c], sy[c], sk[c]
-        elif not (ina or inb or inc):
-            continue
-        else:
-            # Sutherland-Hodgman against D >= near, in homogeneous space.
-            n = 0
-            for k in range(3):
-                if k == 0:
-                    p, q = a, b
-                elif k == 1:
-                    p, q = b, c
-                else:
-                    p, q = c, a
-                if hd[p] >= near:
-                    px[n], py[n], pk[n] = sx[p], sy[p], sk[p]
-                    n += 1
-                if (hd[p] >= near) != (hd[q] >= near):
-                    # Canonical order: the neighbour sharing this edge gets the same point.
-                    s0, s1 = (p, q) if p < q else (q, p)
-                    s = (near - hd[s0]) / (hd[s1] - hd[s0])
-                    inv = 1.0 / (hw[s0] + s * (hw[s1] - hw[s0]))
-                    px[n] = (hx[s0] + s * (hx[s1] - hx[s0])) * inv
-                    py[n] = (hy[s0] + s * (hy[s1] - hy[s0])) * inv
-                    pk[n] = -inv if perspective else near
-                    n += 1
-        # Facing: screen rows grow downwards, so a triangle counter-clockwise
-        # seen from the eye has a negative signed area in (col, row).
-        s2 = 0.0
-        for k in range(n):
-            k1 = (k + 1) % n
-            s2 += px[k] * py[k1] - px[k1] * py[k]
-        is_front = s2 < 0.0
-        to_front = is_front or not cull
-        to_back = do_back and (not is_front or not cull)
-        for k in range(1, n - 1):
-            if to_front:
-                _fill_triangle(
-                    px[0], py[0], px[k], py[k], px[k + 1], py[k + 1], pk[0], pk[k], pk[k + 1],
-                    vout[t], tag, True, ox, oy, zf, vf, tf,
-                )
-            if to_back:
-                _fill_triangle(
-                    px[0], py[0], px[k], py[k], px[k + 1], py[k + 1], pk[0], pk[k], pk[k + 1],
-                    vin[t], tag, False, ox, oy, zb, vb, tf,
-                )
+        _fill_one(hx, hy, hw, hd, sx, sy, sk, tris[t, 0], tris[t, 1], tris[t, 2], near, perspective, cull, do_back,
+                  vout[t], vin[t], tag, ox, oy, zf, vf, tf, zb, vb, px, py, pk)
+
+
+@njit(cache=True, nogil=True)
+def _fill_one(
+    hx: NDArray[np.float64], hy: NDArray[np.float64], hw: NDArray[np.float64], hd: NDArray[np.float64],
+    sx: NDArray[np.float64], sy: NDArray[np.float64], sk: NDArray[np.float64],
+    a: int, b: int, c: int, near: float, perspective: bool, cull: bool, do_back: bool,
+    value_out: float, value_in: float, tag: int, ox: int, oy: int,
+    zf: NDArray[np.float64], vf: NDArray[np.float32], tf: NDArray[np.int32],
+    zb: NDArray[np.float64], vb: NDArray[np.float32],
+    px: NDArray[np.float64], py: NDArray[np.float64], pk: NDArray[np.float64],
+) -> None:
+    """Clip one triangle against the near plane, decide its facing and fill it."""
+    ina = hd[a] >= near
+    inb = hd[b] >= near
+    inc = hd[c] >= near
+    if ina and inb and inc:
+        n = 3
+        px[0], py[0], pk[0] = sx[a], sy[a], sk[a]
+        px[1], py[1], pk[1] = sx[b], sy[b], sk[b]
+        px[2], py[2], pk[2] = sx[c], sy[c], sk[c]
+    elif not (ina or inb or inc):
+        return
+    else:
+        # Sutherland-Hodgman against D >= near, in homogeneous space.
+        n = 0
+        for k in range(3):
+            if k == 0:
+                p, q = a, b
+            elif k == 1:
+                p, q = b, c
+            else:
+                p, q = c, a
+            if hd[p] >= near:
+                px[n], py[n], pk[n] = sx[p], sy[p], sk[p]
+                n += 1
+            if (hd[p] >= near) != (hd[q] >= near):
+                # Canonical order: the neighbour sharing this edge gets the same point.
+                s0, s1 = (p, q) if p < q else (q, p)
+                s = (near - hd[s0]) / (hd[s1] - hd[s0])
+                inv = 1.0 / (hw[s0] + s * (hw[s1] - hw[s0]))
+                px[n] = (hx[s0] + s * (hx[s1] - hx[s0])) * inv
+                py[n] = (hy[s0] + s * (hy[s1] - hy[s0])) * inv
+                pk[n] = -inv if perspective else near
+                n += 1
+    # Facing: screen rows grow downwards, so a triangle counter-clockwise
+    # seen from the eye has a negative signed area in (col, row).
+    s2 = 0.0
+    for k in range(n):
+        k1 = (k + 1) % n
+        s2 += px[k] * py[k1] - px[k1] * py[k]
+    is_front = s2 < 0.0
+    to_front = is_front or not cull
+    to_back = do_back and (not is_front or not cull)
+    for k in range(1, n - 1):
+        if to_front:
+            _fill_triangle(
+                px[0], py[0], px[k], py[k], px[k + 1], py[k + 1], pk[0], pk[k], pk[k + 1],
+                value_out, tag, True, ox, oy, zf, vf, tf,
+            )
+        if to_back:
+            _fill_triangle(
+                px[0], py[0], px[k], py[k], px[k + 1], py[k + 1], pk[0], pk[k], pk[k + 1],
+                value_in, tag, False, ox, oy, zb, vb, tf,
+            )
 
 
 @njit(cache=True)
@@ -307,6 +319,364 @@ def key_to_depth(key: NDArray[np.float64], perspective: bool, out: NDArray[np.fl
             o[k] = -1.0 / q
         else:
             o[k] = q
+
+
+# ------------------------------------------------- front-surface polygon fill
+def camera_affine(camera: Camera) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+    """The affine map of :func:`homogeneous` as a matrix and an offset.
+
+    Parameters
+    ----------
+    camera : Camera
+
+    Returns
+    -------
+    a : ndarray, shape (4, 3)
+    b : ndarray, shape (4,)
+        ``(X, Y, W, D) = a @ (p - camera.eye) + b`` for a world point ``p``.
+
+    Examples
+    --------
+    >>> cam = Camera((0, -5, 0), (0, 0, 0), width=4, height=4)
+    >>> a, b = camera_affine(cam)
+    >>> (a @ (np.array([0.0, 0.0, 0.0]) - cam.eye_array) + b).round(12).tolist()
+    [10.0, 10.0, 5.0, 5.0]
+    """
+    f, r, u = camera.frame
+    w2, h2 = camera.width / 2.0, camera.height / 2.0
+    a = np.zeros((4, 3))
+    b = np.zeros(4)
+    if camera.orthographic:
+        half_h = camera.height_m / 2
+        a[0] = r * (w2 / (half_h * camera.aspect))
+        a[1] = -u * (h2 / half_h)
+        b[:3] = w2, h2, 1.0
+    else:
+        t = camera.tan_half_fov
+        a[0] = r * (w2 / (t * camera.aspect)) + f * w2
+        a[1] = f * h2 - u * (h2 / t)
+        a[2] = f
+    a[3] = f
+    return a, b
+
+
+@njit(cache=True, nogil=True)
+def project_kernel(
+    vertices: NDArray[np.float64], eye: NDArray[np.float64], a: NDArray[np.float64], b: NDArray[np.float64],
+    perspective: bool, out: NDArray[np.float64],
+) -> float:
+    """Rows ``X, Y, W, D, col, row, key`` of ``out`` (7, V) for the vertices; returns ``max |D|``.
+
+    ``col``, ``row`` and the depth key are meaningful only for vertices in
+    front of the near plane (the fills never read the others).
+    """
+    far = 0.0
+    for v in range(vertices.shape[0]):
+        dx = vertices[v, 0] - eye[0]
+        dy = vertices[v, 1] - eye[1]
+        dz = vertices[v, 2] - eye[2]
+        x = a[0, 0] * dx + a[0, 1] * dy + a[0, 2] * dz + b[0]
+        y = a[1, 0] * dx + a[1, 1] * dy + a[1, 2] * dz + b[1]
+        w = a[2, 0] * dx + a[2, 1] * dy + a[2, 2] * dz + b[2]
+        d = a[3, 0] * dx + a[3, 1] * dy + a[3, 2] * dz + b[3]
+        out[0, v] = x
+        out[1, v] = y
+        out[2, v] = w
+        out[3, v] = d
+        inv = 1.0 / w if w != 0.0 else 0.0
+        out[4, v] = x * inv
+        out[5, v] = y * inv
+        out[6, v] = -inv if perspective else d
+        if abs(d) > far:
+            far = abs(d)
+    return far
+
+
+#: Relative distance from the plane of a quad's first triangle within which its
+#: fourth vertex counts as coplanar (the quad then shares one depth-key plane).
+COPLANAR_RELATIVE = 1e-10
+
+
+@njit(cache=True)
+def _match(t1: NDArray[np.int64], t2: NDArray[np.int64], n_tri: int) -> NDArray[np.int64]:
+    partner = np.full(n_tri, -1, np.int64)
+    for k in range(t1.shape[0]):
+        a, b = t1[k], t2[k]
+        if partner[a] < 0 and partner[b] < 0:
+            partner[a] = b
+            partner[b] = a
+    return partner
+
+
+def pair_quads(
+    vertices: ArrayLike, triangles: ArrayLike, value_out: ArrayLike, value_in: ArrayLike | None = None,
+) -> tuple[NDArray[np.int32], NDArray[np.int32]]:
+    """Pair triangles into planar convex quads for the one-span-per-row fill.
+
+    Two triangles are paired when they share an edge (in opposite directions,
+    as in a consistently oriented mesh), carry the same values, lie in one
+    plane (within ``COPLANAR_RELATIVE`` of their size) and form a strictly
+    convex quad. Band meshes are mostly such quads.
+
+    Parameters
+    ----------
+    vertices : array_like, shape (V, 3)
+    triangles : array_like of int, shape (T, 3)
+    value_out : array_like, shape (T,)
+    value_in : array_like, shape (T,), optional
+
+    Returns
+    -------
+    quads : ndarray of int32, shape (P, 4)
+        Counter-clockwise like the triangles; a quad ``(a, b, c, d)`` is the
+        triangles ``(a, b, c)`` and ``(a, c, d)``; an unpaired triangle has
+        ``d = -1``.
+    source : ndarray of int32, shape (P,)
+        A triangle of each quad (for its values).
+
+    Examples
+    --------
+    >>> square = [(0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 1, 0)]
+    >>> quads, source = pair_quads(square, [(0, 1, 2), (0, 2, 3)], [0.5, 0.5])
+    >>> quads.tolist(), source.tolist()
+    ([[2, 3, 0, 1]], [0])
+    """
+    v = np.asarray(vertices, dtype=np.float64).reshape(-1, 3)
+    t = np.asarray(triangles, dtype=np.int64).reshape(-1, 3)
+    vo = np.asarray(value_out, dtype=np.float64).reshape(-1)
+    vi = vo if value_in is None else np.asarray(value_in, dtype=np.float64).reshape(-1)
+    n_tri = len(t)
+    partner = np.full(n_tri, -1, np.int64)
+    quad_at = np.zeros(0, np.int64)
+    quad_rows = np.zeros((0, 4), np.int64)
+    if n_tri >= 2 and len(v):
+        u = t.ravel()
+        w = t[:, [1, 2, 0]].ravel()
+        key = np.minimum(u, w) * len(v) + np.maximum(u, w)
+        order = np.argsort(key, kind="stable")
+        ks = key[order]
+        same = ks[1:] == ks[:-1]
+        # Edges with exactly two half-edges.
+        single = same.copy()
+        single[1:] &= ~same[:-1]
+        single[:-1] &= ~same[1:]
+        i = np.flatnonzero(single)
+        h1, h2 = order[i], order[i + 1]
+        ta, tb = h1 // 3, h2 // 3
+        ok = (u[h1] == w[h2]) & (w[h1] == u[h2]) & (ta != tb) & (vo[ta] == vo[tb]) & (vi[ta] == vi[tb])
+        h1, h2, ta, tb = h1[ok], h2[ok], ta[ok], tb[ok]
+        # Quad (p, r2, q, r1): edge p -> q of triangle ta with r1 opposite, r2 opposite in tb.
+        idx = np.stack([u[h1], t[tb, (h2 % 3 + 2) % 3], w[h1], t[ta, (h1 % 3 + 2) % 3]], axis=1)
+        corners = v[idx]
+        p, r2, q, r1 = (corners[:, k] for k in range(4))
+        nrm = np.cross(q - p, r1 - p)
+        size = np.maximum.reduce([np.linalg.norm(x - p, axis=1) for x in (q, r1, r2)])
+        nlen = np.linalg.norm(nrm, axis=1)
+        off = np.abs(np.einsum("ij,ij->i", nrm, r2 - p))
+        ok = (nlen > 0) & (off <= COPLANAR_RELATIVE * size * nlen)
+        for k in range(4):
+            e0 = corners[:, (k + 1) % 4] - corners[:, k]
+            e1 = corners[:, (k + 2) % 4] - corners[:, (k + 1) % 4]
+            ok &= np.einsum("ij,ij->i", np.cross(e0, e1), nrm) > 0
+        sel = np.flatnonzero(ok)
+        partner = _match(ta[sel], tb[sel], n_tri)
+        kept = sel[partner[ta[sel]] == tb[sel]]
+        kept = kept[np.unique(ta[kept], return_index=True)[1]]  # one candidate per pair
+        quad_at = np.minimum(ta[kept], tb[kept])
+        quad_rows = idx[kept]
+    lone = np.flatnonzero(partner < 0)
+    rows = np.vstack([quad_rows, np.column_stack([t[lone], np.full(len(lone), -1)])])
+    at = np.concatenate([quad_at, lone])
+    order = np.argsort(at, kind="stable")  # the mesh's own order (locality)
+    return rows[order].astype(np.int32), at[order].astype(np.int32)
+
+
+@njit(cache=True, nogil=True)
+def _fill_convex(
+    px: NDArray[np.float64], py: NDArray[np.float64], pk: NDArray[np.float64], n: int,
+    value: float, tag: int, oy: int, clamp: bool,
+    zbuf: NDArray[np.float64], vbuf: NDArray[np.float32], tbuf: NDArray[np.int32], bounds: NDArray[np.int64],
+) -> None:
+    """Front fill of a strictly convex polygon (3 or 4 vertices, negative signed area).
+
+    One span per row between the polygon's left and right chains. Each edge's
+    crossing of a row is computed exactly as in :func:`_fill_triangle` (from
+    its upper end, with its own slope), so the result is the union of the
+    fan triangles pixel for pixel, and neighbours sharing an edge split rows
+    identically. ``clamp`` false promises that all columns lie in
+    ``[0, width]`` (no clamping needed). ``bounds`` (row min, row max + 1,
+    column min, column max + 1) grows to cover every pixel written.
+    """
+    h, w = zbuf.shape
+    top = 0
+    bot = 0
+    for k in range(1, n):
+        if py[k] < py[top] or (py[k] == py[top] and px[k] < px[top]):
+            top = k
+        if py[k] > py[bot] or (py[k] == py[bot] and px[k] > px[bot]):
+            bot = k
+    lo = max(float(oy) - 1.0, py[top] - 0.5)
+    hi = min(float(oy + h), py[bot] - 0.5)
+    i_start = max(oy, int(math.ceil(lo)))
+    i_end = min(oy + h, int(math.ceil(hi)))
+    if i_start >= i_end:
+        return
+    # Depth-key plane through vertices 0, 1, 2, anchored at the farthest of them.
+    area = (px[1] - px[0]) * (py[2] - py[0]) - (py[1] - py[0]) * (px[2] - px[0])
+    gx = ((pk[1] - pk[0]) * (py[2] - py[0]) - (pk[2] - pk[0]) * (py[1] - py[0])) / area
+    gy = ((pk[2] - pk[0]) * (px[1] - px[0]) - (pk[1] - pk[0]) * (px[2] - px[0])) / area
+    an = 0
+    if pk[1] > pk[an]:
+        an = 1
+    if pk[2] > pk[an]:
+        an = 2
+    ka, xa, ya = pk[an], px[an], py[an]
+    # Left chain: increasing index from the top (negative area); right chain: decreasing.
+    li = top
+    ri = top
+    ln = (li + 1) % n
+    rn = (ri - 1 + n) % n
+    l_thr = int(math.ceil(min(max(lo, py[ln] - 0.5), hi)))  # first row on the next left edge's successor
+    r_thr = int(math.ceil(min(max(lo, py[rn] - 0.5), hi)))
+    cmin = -1.0
+    cmax = float(w)
+    i = i_start
+    while i < i_end:
+        while i >= l_thr:
+            li = ln
+            ln = (li + 1) % n
+            l_thr = int(math.ceil(min(max(lo, py[ln] - 0.5), hi))) if li != bot else i_end
+        while i >= r_thr:
+            ri = rn
+            rn = (ri - 1 + n) % n
+            r_thr = int(math.ceil(min(max(lo, py[rn] - 0.5), hi))) if ri != bot else i_end
+        seg_end = min(i_end, l_thr, r_thr)
+        lx, ly = px[li], py[li]
+        rx, ry = px[ri], py[ri]
+        ls = (px[ln] - lx) / (py[ln] - ly)
+        rs = (px[rn] - rx) / (py[rn] - ry)
+        for ii in range(i, seg_end):
+            pyc = ii + 0.5
+            xl = lx + (pyc - ly) * ls
+            xr = rx + (pyc - ry) * rs
+            if clamp:
+                xl = min(max(xl, cmin), cmax)
+                xr = min(max(xr, cmin), cmax)
+                j0 = max(0, int(math.ceil(xl - 0.5)))
+                j1 = min(w, int(math.ceil(xr - 0.5)))
+            else:
+                j0 = int(math.ceil(xl - 0.5))
+                j1 = int(math.ceil(xr - 0.5))
+            if j0 >= j1:
+                continue
+            row = ii - oy
+            if ii < bounds[0]:
+                bounds[0] = ii
+            if ii >= bounds[1]:
+                bounds[1] = ii + 1
+            if j0 < bounds[2]:
+                bounds[2] = j0
+            if j1 > bounds[3]:
+                bounds[3] = j1
+            q = ka + gx * (j0 + 0.5 - xa) + gy * (pyc - ya)
+            for j in range(j0, j1):
+                if q < zbuf[row, j]:
+                    zbuf[row, j] = q
+                    vbuf[row, j] = value
+                    tbuf[row, j] = tag
+                q += gx
+        i = seg_end
+
+
+@njit(cache=True, nogil=True)
+def fill_front_kernel(
+    proj: NDArray[np.float64], polys: NDArray[np.int32], values: NDArray[np.float32],
+    near: float, perspective: bool, tag: int, oy: int,
+    zf: NDArray[np.float64], vf: NDArray[np.float32], tf: NDArray[np.int32], bounds: NDArray[np.int64],
+) -> None:
+    """Front faces of convex polygons into rows ``oy ..`` of the image buffers (depth-tested).
+
+    ``proj`` is the output of :func:`project_kernel`; ``polys`` (P, 4) are
+    the quads of :func:`pair_quads` (the last index -1 for a triangle). The
+    buffers are full-width rows ``oy .. oy + zf.shape[0]`` of the image. A
+    quad that projects strictly convex and front-facing is filled with one
+    span per row; any other quad as its two triangles; a polygon crossing
+    the near plane is clipped first (as :func:`fill_kernel`). ``bounds``
+    grows to cover every row and column written.
+    """
+    hx, hy, hw, hd = proj[0], proj[1], proj[2], proj[3]
+    sx, sy, sk = proj[4], proj[5], proj[6]
+    nrow, w = zf.shape
+    r_lo = float(oy)
+    r_hi = float(oy + nrow)
+    px = np.empty(4)
+    py = np.empty(4)
+    pk = np.empty(4)
+    dummy_k = np.empty((1, 1))
+    dummy_v = np.empty((1, 1), np.float32)
+    for p in range(polys.shape[0]):
+        a = polys[p, 0]
+        b = polys[p, 1]
+        c = polys[p, 2]
+        d = polys[p, 3]
+        n = 3 if d < 0 else 4
+        front_all = hd[a] >= near and hd[b] >= near and hd[c] >= near and (n == 3 or hd[d] >= near)
+        if not front_all:
+            _fill_one(hx, hy, hw, hd, sx, sy, sk, a, b, c, near, perspective, True, False, values[p], values[p],
+                      tag, 0, oy, zf, vf, tf, dummy_k, dummy_v, px, py, pk)
+            if n == 4:
+                _fill_one(hx, hy, hw, hd, sx, sy, sk, a, c, d, near, perspective, True, False, values[p], values[p],
+                          tag, 0, oy, zf, vf, tf, dummy_k, dummy_v, px, py, pk)
+            bounds[0] = min(bounds[0], oy)
+            bounds[1] = max(bounds[1], oy + nrow)
+            bounds[2] = 0
+            bounds[3] = w
+            continue
+        ymin = min(sy[a], sy[b], sy[c])
+        ymax = max(sy[a], sy[b], sy[c])
+        if n == 4:
+            ymin = min(ymin, sy[d])
+            ymax = max(ymax, sy[d])
+        if ymax <= r_lo or ymin >= r_hi + 0.5:
+            continue  # no pixel centre of this stripe
+        px[0], py[0], pk[0] = sx[a], sy[a], sk[a]
+        px[1], py[1], pk[1] = sx[b], sy[b], sk[b]
+        px[2], py[2], pk[2] = sx[c], sy[c], sk[c]
+        xmin = min(px[0], px[1], px[2])
+        xmax = max(px[0], px[1], px[2])
+        if n == 4:
+            px[3], py[3], pk[3] = sx[d], sy[d], sk[d]
+            xmin = min(xmin, px[3])
+            xmax = max(xmax, px[3])
+            if xmax <= 0.0 or xmin >= w + 0.5:
+                continue
+            clamp = not (xmin >= 0.0 and xmax <= w)
+            # Strictly convex and front-facing: every corner turns the same way.
+            convex = True
+            for k in range(4):
+                k1 = (k + 1) % 4
+                k2 = (k + 2) % 4
+                crs = (px[k1] - px[k]) * (py[k2] - py[k1]) - (py[k1] - py[k]) * (px[k2] - px[k1])
+                if not crs < 0.0:
+                    convex = False
+            if convex:
+                _fill_convex(px, py, pk, 4, values[p], tag, oy, clamp, zf, vf, tf, bounds)
+                continue
+            # Otherwise its two triangles (a, b, c) and (a, c, d), each with its own facing.
+            for k in range(2):
+                if k == 1:
+                    px[1], py[1], pk[1] = px[2], py[2], pk[2]
+                    px[2], py[2], pk[2] = px[3], py[3], pk[3]
+                s2 = px[0] * py[1] - px[1] * py[0] + px[1] * py[2] - px[2] * py[1] + px[2] * py[0] - px[0] * py[2]
+                if s2 < 0.0:
+                    _fill_convex(px, py, pk, 3, values[p], tag, oy, clamp, zf, vf, tf, bounds)
+            continue
+        if xmax <= 0.0 or xmin >= w + 0.5:
+            continue
+        clamp = not (xmin >= 0.0 and xmax <= w)
+        s2 = px[0] * py[1] - px[1] * py[0] + px[1] * py[2] - px[2] * py[1] + px[2] * py[0] - px[0] * py[2]
+        if s2 < 0.0:
+            _fill_convex(px, py, pk, 3, values[p], tag, oy, clamp, zf, vf, tf, bounds)
 
 
 # ------------------------------------------------------------------ Python API
