@@ -41,7 +41,9 @@ from ..errors import InvalidParameterError
 from ..geometry.primitives import Primitive
 from ..laminae.model import BandMesh
 from ..scene.model import MAX_CONTOURS, Scene
-from .raster import NEAR_RELATIVE, camera_affine, fill_front_kernel, fill_kernel, key_to_depth, pair_quads, project_kernel
+from .raster import (
+    NEAR_RELATIVE, camera_affine, fill_front_kernel, fill_kernel, fill_rect, key_to_depth, pair_quads, project_kernel,
+)
 
 __all__ = ["RenderResult", "RenderTimings", "Renderer", "render", "default_renderer"]
 
@@ -259,6 +261,9 @@ class _Prepared:
     proj: NDArray[np.float64]  # (7, V) scratch for project_kernel, reused from render to render
 
 
+_HUGE_PAGE = 2 << 20
+
+
 def _staggered_empty(shape: tuple[int, ...], dtype: Any, k: int) -> NDArray[Any]:
     """A zeroed ``(shape, dtype)`` array starting ``64 * (k % 37) + 64`` bytes into a page.
 
@@ -269,11 +274,15 @@ def _staggered_empty(shape: tuple[int, ...], dtype: Any, k: int) -> NDArray[Any]
     """
     dt = np.dtype(dtype)
     nbytes = math.prod(shape) * dt.itemsize
-    raw = np.empty(nbytes + 8192, np.uint8)
+    # Large buffers start on a 2 MiB boundary (plus the stagger), so that the
+    # kernel can back them with huge pages: a fill walks down many rows at
+    # once, and with 4 KiB pages every row is another TLB entry.
+    align = _HUGE_PAGE if nbytes >= 2 * _HUGE_PAGE else 4096
+    raw = np.empty(nbytes + align + 4096, np.uint8)
     # Touch every page now: reading pages that were never written (the value
     # buffer outside the objects) page-faults on every pass on some kernels.
     raw.fill(0)
-    start = (-raw.ctypes.data) % 4096 + 64 * (k % 37) + 64
+    start = (-raw.ctypes.data) % align + 64 * (k % 37) + 64
     return raw[start : start + nbytes].view(dt).reshape(shape)
 
 
@@ -338,15 +347,14 @@ class Renderer:
                 self._dirty.pop(id(old), None)
         return a
 
-    def _cleared(self, name: str, shape: tuple[int, int], dtype: Any, background: float) -> NDArray[Any]:
-        """A pooled private buffer set to ``background`` (only where its last render wrote)."""
+    def _stale(self, name: str, shape: tuple[int, int], dtype: Any) -> tuple[NDArray[Any], tuple[int, int, int, int]]:
+        """A pooled private buffer and the rectangle that must be reset to its background
+        (what its last render wrote; all of it for a fresh buffer)."""
         a = self._buffer(name, shape, dtype)
-        r0, r1, c0, c1 = self._dirty.pop(id(a), (0, shape[0], 0, shape[1]))
-        if r0 < r1 and c0 < c1:
-            a[r0:r1, c0:c1] = background
+        rect = self._dirty.pop(id(a), (0, shape[0], 0, shape[1]))
         # Until the render records what it wrote, assume everything.
         self._dirty[id(a)] = (0, shape[0], 0, shape[1])
-        return a
+        return a, rect
 
     def _builder(self) -> BandBuilder:
         if self._build is None:
@@ -462,20 +470,31 @@ class Renderer:
         persp = not cam.orthographic
         a, b = camera_affine(cam)
         eye = cam.eye_array
-        far = 0.0
-        projected = []
-        for _, _, _, preps in objects:
-            projected.append([p.proj for p in preps])
-            for p in preps:
-                far = max(far, project_kernel(p.vertices, eye, a, b, persp, p.proj))
-        near = NEAR_RELATIVE * max(far if far > 0 else 1.0, 1e-300)
+        projected = [[p.proj for p in preps] for _, _, _, preps in objects]
+        unique = list({id(p): p for _, _, _, preps in objects for p in preps}.values())
         # Depth keys and labels are private: only the rectangle the previous
         # render wrote needs resetting. The image is the caller's, so all of it
         # is reset (the fills write each visible value straight into it).
-        zkey = self._cleared("key", (H, W), np.float64, np.inf)
-        gid = self._cleared("label", (H, W), np.int32, -1)
+        zkey, key_rect = self._stale("key", (H, W), np.float64)
+        gid, gid_rect = self._stale("label", (H, W), np.int32)
         value = self._buffer("image", (H, W), np.float32)
-        value.fill(np.nan)
+
+        def setup(k: int, n: int) -> float:
+            # Share k of n of the projection and of the buffer resets (kernels without the GIL).
+            far = 0.0
+            for p in unique:
+                nv = len(p.vertices)
+                far = max(far, project_kernel(p.vertices, eye, a, b, persp, p.proj, nv * k // n, nv * (k + 1) // n))
+            fill_rect(value, H * k // n, H * (k + 1) // n, 0, W, np.float32(np.nan))
+            for buf, (r0, r1, c0, c1), bg in ((zkey, key_rect, np.inf), (gid, gid_rect, np.int32(-1))):
+                if r0 < r1 and c0 < c1:
+                    fill_rect(buf, r0 + (r1 - r0) * k // n, r0 + (r1 - r0) * (k + 1) // n, c0, c1, bg)
+            return far
+
+        n_setup = _STRIPES if H * W >= _STRIPE_MIN_PIXELS else 1
+        futures = [_pool().submit(setup, k, n_setup) for k in range(1, n_setup)]
+        far = max([setup(0, n_setup)] + [f.result() for f in futures])
+        near = NEAR_RELATIVE * max(far if far > 0 else 1.0, 1e-300)
         dirty = [H, 0, W, 0]  # rows [dirty[0], dirty[1]), columns [dirty[2], dirty[3])
         obj_of: list[int] = []
         leaf_of: list[int] = []

@@ -30,6 +30,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 from numba import njit
@@ -342,7 +343,19 @@ def camera_affine(camera: Camera) -> tuple[NDArray[np.float64], NDArray[np.float
     >>> (a @ (np.array([0.0, 0.0, 0.0]) - cam.eye_array) + b).round(12).tolist()
     [10.0, 10.0, 5.0, 5.0]
     """
-    f, r, u = camera.frame
+    # camera.frame in plain floats (numpy's cross on 3-vectors costs more than the projection).
+    ex, ey, ez = (float(c) for c in camera.eye)
+    tx, ty, tz = (float(c) for c in camera.target)
+    ux, uy, uz = (float(c) for c in camera.up)
+    fx, fy, fz = tx - ex, ty - ey, tz - ez
+    n = math.sqrt(fx * fx + fy * fy + fz * fz)
+    fx, fy, fz = fx / n, fy / n, fz / n
+    rx, ry, rz = fy * uz - fz * uy, fz * ux - fx * uz, fx * uy - fy * ux
+    n = math.sqrt(rx * rx + ry * ry + rz * rz)
+    rx, ry, rz = rx / n, ry / n, rz / n
+    f = np.array([fx, fy, fz])
+    r = np.array([rx, ry, rz])
+    u = np.array([ry * fz - rz * fy, rz * fx - rx * fz, rx * fy - ry * fx])
     w2, h2 = camera.width / 2.0, camera.height / 2.0
     a = np.zeros((4, 3))
     b = np.zeros(4)
@@ -363,15 +376,15 @@ def camera_affine(camera: Camera) -> tuple[NDArray[np.float64], NDArray[np.float
 @njit(cache=True, nogil=True)
 def project_kernel(
     vertices: NDArray[np.float64], eye: NDArray[np.float64], a: NDArray[np.float64], b: NDArray[np.float64],
-    perspective: bool, out: NDArray[np.float64],
+    perspective: bool, out: NDArray[np.float64], v0: int, v1: int,
 ) -> float:
-    """Rows ``X, Y, W, D, col, row, key`` of ``out`` (7, V) for the vertices; returns ``max |D|``.
+    """Rows ``X, Y, W, D, col, row, key`` of ``out`` (7, V) for vertices ``v0 .. v1 - 1``; returns their ``max |D|``.
 
     ``col``, ``row`` and the depth key are meaningful only for vertices in
     front of the near plane (the fills never read the others).
     """
     far = 0.0
-    for v in range(vertices.shape[0]):
+    for v in range(v0, v1):
         dx = vertices[v, 0] - eye[0]
         dy = vertices[v, 1] - eye[1]
         dz = vertices[v, 2] - eye[2]
@@ -492,6 +505,15 @@ def pair_quads(
 
 
 @njit(cache=True, nogil=True)
+def fill_rect(a: NDArray[Any], r0: int, r1: int, c0: int, c1: int, value: float) -> None:
+    """``a[r0:r1, c0:c1] = value`` without the GIL (``a`` C-contiguous)."""
+    flat = a.reshape(-1)  # contiguous row pieces: filled with wide stores
+    w = a.shape[1]
+    for i in range(r0, r1):
+        flat[i * w + c0 : i * w + c1] = value
+
+
+@njit(cache=True, nogil=True, error_model="numpy")
 def _fill_convex(
     px: NDArray[np.float64], py: NDArray[np.float64], pk: NDArray[np.float64], n: int,
     value: float, tag: int, oy: int, clamp: bool,
@@ -534,21 +556,22 @@ def _fill_convex(
     # Left chain: increasing index from the top (negative area); right chain: decreasing.
     li = top
     ri = top
-    ln = (li + 1) % n
-    rn = (ri - 1 + n) % n
+    ln = li + 1 if li + 1 < n else 0
+    rn = ri - 1 if ri > 0 else n - 1
     l_thr = int(math.ceil(min(max(lo, py[ln] - 0.5), hi)))  # first row on the next left edge's successor
     r_thr = int(math.ceil(min(max(lo, py[rn] - 0.5), hi)))
     cmin = -1.0
     cmax = float(w)
+    b0, b1, b2, b3 = bounds[0], bounds[1], bounds[2], bounds[3]
     i = i_start
     while i < i_end:
         while i >= l_thr:
             li = ln
-            ln = (li + 1) % n
+            ln = li + 1 if li + 1 < n else 0
             l_thr = int(math.ceil(min(max(lo, py[ln] - 0.5), hi))) if li != bot else i_end
         while i >= r_thr:
             ri = rn
-            rn = (ri - 1 + n) % n
+            rn = ri - 1 if ri > 0 else n - 1
             r_thr = int(math.ceil(min(max(lo, py[rn] - 0.5), hi))) if ri != bot else i_end
         seg_end = min(i_end, l_thr, r_thr)
         lx, ly = px[li], py[li]
@@ -570,14 +593,10 @@ def _fill_convex(
             if j0 >= j1:
                 continue
             row = ii - oy
-            if ii < bounds[0]:
-                bounds[0] = ii
-            if ii >= bounds[1]:
-                bounds[1] = ii + 1
-            if j0 < bounds[2]:
-                bounds[2] = j0
-            if j1 > bounds[3]:
-                bounds[3] = j1
+            b0 = min(b0, ii)
+            b1 = max(b1, ii + 1)
+            b2 = min(b2, j0)
+            b3 = max(b3, j1)
             q = ka + gx * (j0 + 0.5 - xa) + gy * (pyc - ya)
             for j in range(j0, j1):
                 if q < zbuf[row, j]:
@@ -586,6 +605,7 @@ def _fill_convex(
                     tbuf[row, j] = tag
                 q += gx
         i = seg_end
+    bounds[0], bounds[1], bounds[2], bounds[3] = b0, b1, b2, b3
 
 
 @njit(cache=True, nogil=True)
