@@ -258,7 +258,14 @@ class _Prepared:
     value_in: NDArray[np.float32]
     quads: NDArray[np.int32]  # pair_quads of the triangles (front fill of plain primitives)
     quad_value: NDArray[np.float32]
-    proj: NDArray[np.float64]  # (7, V) scratch for project_kernel, reused from render to render
+    projs: list[NDArray[np.float64]]  # (7, V) scratch of project_kernel per fill thread, reused
+    centre: NDArray[np.float64]  # bounding sphere (for the near plane)
+    radius: float
+
+    def proj(self, k: int = 0) -> NDArray[np.float64]:
+        while len(self.projs) <= k:
+            self.projs.append(np.empty((7, len(self.vertices))))
+        return self.projs[k]
 
 
 _HUGE_PAGE = 2 << 20
@@ -400,9 +407,11 @@ class Renderer:
                 f"triangles {triangles.shape}, value_out {value_out.shape}, value_in {value_in.shape}"
             )
         quads, source = pair_quads(vertices, triangles, value_out, value_in)
+        centre = (vertices.min(axis=0) + vertices.max(axis=0)) / 2 if nv else np.zeros(3)
+        radius = float(np.sqrt(((vertices - centre) ** 2).sum(axis=1).max())) if nv else 0.0
         prep = _Prepared(
             vertices, triangles, value_out, value_in, np.ascontiguousarray(quads),
-            np.ascontiguousarray(value_out[source]), np.empty((7, nv)),
+            np.ascontiguousarray(value_out[source]), [], centre, radius,
         )
         if not view_dependent:
             self._prepared[key] = (bands, prep)
@@ -470,49 +479,60 @@ class Renderer:
         persp = not cam.orthographic
         a, b = camera_affine(cam)
         eye = cam.eye_array
-        projected = [[p.proj for p in preps] for _, _, _, preps in objects]
         unique = list({id(p): p for _, _, _, preps in objects for p in preps}.values())
+        # Near plane at a tiny fraction of the scene's depth (bounded by the meshes' bounding spheres).
+        far = max((abs(float(a[3] @ (p.centre - eye))) + p.radius for p in unique if len(p.vertices)), default=1.0)
+        near = NEAR_RELATIVE * max(far if far > 0 else 1.0, 1e-300)
         # Depth keys and labels are private: only the rectangle the previous
         # render wrote needs resetting. The image is the caller's, so all of it
         # is reset (the fills write each visible value straight into it).
         zkey, key_rect = self._stale("key", (H, W), np.float64)
         gid, gid_rect = self._stale("label", (H, W), np.int32)
         value = self._buffer("image", (H, W), np.float32)
-
-        def setup(k: int, n: int) -> float:
-            # Share k of n of the projection and of the buffer resets (kernels without the GIL).
-            far = 0.0
-            for p in unique:
-                nv = len(p.vertices)
-                far = max(far, project_kernel(p.vertices, eye, a, b, persp, p.proj, nv * k // n, nv * (k + 1) // n))
-            fill_rect(value, H * k // n, H * (k + 1) // n, 0, W, np.float32(np.nan))
-            for buf, (r0, r1, c0, c1), bg in ((zkey, key_rect, np.inf), (gid, gid_rect, np.int32(-1))):
-                if r0 < r1 and c0 < c1:
-                    fill_rect(buf, r0 + (r1 - r0) * k // n, r0 + (r1 - r0) * (k + 1) // n, c0, c1, bg)
-            return far
-
-        n_setup = _STRIPES if H * W >= _STRIPE_MIN_PIXELS else 1
-        futures = [_pool().submit(setup, k, n_setup) for k in range(1, n_setup)]
-        far = max([setup(0, n_setup)] + [f.result() for f in futures])
-        near = NEAR_RELATIVE * max(far if far > 0 else 1.0, 1e-300)
-        dirty = [H, 0, W, 0]  # rows [dirty[0], dirty[1]), columns [dirty[2], dirty[3])
+        resets = ((value, (0, H, 0, W), np.float32(np.nan)), (zkey, key_rect, np.inf), (gid, gid_rect, np.int32(-1)))
         obj_of: list[int] = []
         leaf_of: list[int] = []
-        total = sum(len(o[1]) for o in objects)
-        done = 0
-        for (k, leaves, program, preps), hs in zip(objects, projected):
-            base = len(obj_of)
+        bases = []
+        for k, leaves, _, _ in objects:
+            bases.append(len(obj_of))
             obj_of.extend([k] * len(leaves))
             leaf_of.extend(range(len(leaves)))
-            if program is None:
-                rect = self._fill_plain(preps[0], hs[0], near, persp, base, zkey, value, gid)
-            else:
-                rect = self._fill_csg(preps, hs, program, near, persp, base, W, H, zkey, value, gid, progress, done, total)
-            if rect[0] < rect[1] and rect[2] < rect[3]:
-                dirty = [min(dirty[0], rect[0]), max(dirty[1], rect[1]), min(dirty[2], rect[2]), max(dirty[3], rect[3])]
-            done += len(leaves)
+        total = len(obj_of)
+        n = _STRIPES if H * W >= _STRIPE_MIN_PIXELS and H >= 2 * _STRIPES else 1
+        for p in unique:
+            p.proj(n - 1)  # scratch for every thread, allocated here (not in the threads)
+        if all(program is None for _, _, program, _ in objects):
+            dirty = self._fill_primitives(objects, bases, resets, key_rect, a, b, eye, persp, near, n, zkey, value, gid)
             if progress is not None:
-                progress(done, total)
+                for done in range(1, total + 1):
+                    progress(done, total)
+        else:
+            def setup(k: int) -> None:
+                # Share k of n of the projection and of the buffer resets (kernels without the GIL).
+                for p in unique:
+                    nv = len(p.vertices)
+                    project_kernel(p.vertices, eye, a, b, persp, p.proj(), nv * k // n, nv * (k + 1) // n)
+                for buf, (r0, r1, c0, c1), bg in resets:
+                    if r0 < r1 and c0 < c1:
+                        fill_rect(buf, r0 + (r1 - r0) * k // n, r0 + (r1 - r0) * (k + 1) // n, c0, c1, bg)
+
+            futures = [_pool().submit(setup, k) for k in range(1, n)]
+            setup(0)
+            for f in futures:
+                f.result()
+            dirty = [H, 0, W, 0]  # rows [dirty[0], dirty[1]), columns [dirty[2], dirty[3])
+            done = 0
+            for (k, leaves, program, preps), base in zip(objects, bases):
+                hs = [p.proj() for p in preps]
+                if program is None:
+                    rect = self._fill_plain(preps[0], hs[0], near, persp, base, zkey, value, gid)
+                else:
+                    rect = self._fill_csg(preps, hs, program, near, persp, base, W, H, zkey, value, gid, progress, done, total)
+                if rect[0] < rect[1] and rect[2] < rect[3]:
+                    dirty = [min(dirty[0], rect[0]), max(dirty[1], rect[1]), min(dirty[2], rect[2]), max(dirty[3], rect[3])]
+                done += len(leaves)
+                if progress is not None:
+                    progress(done, total)
         self._dirty[id(zkey)] = self._dirty[id(gid)] = tuple(dirty)
         t2 = time.perf_counter()
         # Label -1 (background) maps to -1 through the leading entry of each table.
@@ -523,6 +543,43 @@ class Renderer:
         key_view.flags.writeable = False
         label_view.flags.writeable = False
         return RenderResult(value, RenderTimings(t1 - t0, t2 - t1), cam, label_view, key_view, object_of, leaf_of_arr)
+
+    def _fill_primitives(
+        self, objects: list[Any], bases: list[int], resets: Any, key_rect: tuple[int, int, int, int],
+        a: NDArray[np.float64], b: NDArray[np.float64], eye: NDArray[np.float64], persp: bool, near: float, n: int,
+        zkey: NDArray[np.float64], value: NDArray[np.float32], gid: NDArray[np.int32],
+    ) -> list[int]:
+        """Scenes of plain primitives in one pass of ``n`` concurrent row stripes.
+
+        Each stripe resets its rows of the buffers, projects the band meshes
+        itself (cheaper than waiting for a shared projection) and fills the
+        front faces of every object in order. Returns the rectangle written.
+        """
+        H, W = zkey.shape
+        bounds = np.empty((n, 4), np.int64)
+        bounds[:] = (H, 0, W, 0)
+
+        def stripe(k: int, r0: int, r1: int) -> None:
+            for buf, (q0, q1, c0, c1), bg in resets:
+                if max(q0, r0) < min(q1, r1) and c0 < c1:
+                    fill_rect(buf, max(q0, r0), min(q1, r1), c0, c1, bg)
+            for (_, _, _, preps), base in zip(objects, bases):
+                p = preps[0]
+                proj = p.proj(k)
+                project_kernel(p.vertices, eye, a, b, persp, proj, 0, len(p.vertices))
+                fill_front_kernel(
+                    proj, p.quads, p.quad_value, near, persp, base, r0, zkey[r0:r1], value[r0:r1], gid[r0:r1], bounds[k],
+                )
+
+        # Balance the stripes over the rows written last time (a re-render from a nearby view).
+        r_top, r_bot = (key_rect[0], key_rect[1]) if key_rect[0] < key_rect[1] else (0, H)
+        cuts = [r_top + (r_bot - r_top) * k // n for k in range(n + 1)]
+        cuts[0], cuts[-1] = 0, H
+        futures = [_pool().submit(stripe, k, r0, r1) for k, (r0, r1) in enumerate(zip(cuts[1:-1], cuts[2:]), 1)]
+        stripe(0, cuts[0], cuts[1])
+        for f in futures:
+            f.result()
+        return [int(bounds[:, 0].min()), int(bounds[:, 1].max()), int(bounds[:, 2].min()), int(bounds[:, 3].max())]
 
     def _fill_plain(
         self, p: _Prepared, proj: NDArray[np.float64], near: float, persp: bool, base: int,
