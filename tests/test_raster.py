@@ -15,7 +15,7 @@ import numpy as np
 import pytest
 
 from isocsg import Camera, InvalidGeometryError, InvalidParameterError, Sphere
-from isocsg.render.raster import homogeneous, rasterize
+from isocsg.render.raster import fill_front_kernel, homogeneous, key_to_depth, near_distance, pair_quads, rasterize
 
 EDGE_MARGIN = 1e-7  # barycentric margin that separates "clearly inside" from "on the edge"
 
@@ -213,3 +213,131 @@ def test_bad_input_names_the_field(kwargs, error, message):
     args = {"vertices": np.eye(3), "triangles": [(0, 1, 2)], "value_out": [1.0]} | kwargs
     with pytest.raises(error, match=re.escape(message)):
         rasterize(CAMERAS["perspective"], **args)
+
+
+# ------------------------------------------------ quads: one span per row
+def _planar_patch(rng: np.random.Generator, nx: int, ny: int, centre, normal_towards, size: float):
+    """A jittered planar grid (convex cells), each cell split along a random diagonal.
+
+    Both triangles of most cells carry one value (they pair into a quad); some
+    cells get two values (two lone triangles)."""
+    n = np.asarray(normal_towards, float)
+    n /= np.linalg.norm(n)
+    e1 = np.cross(n, rng.normal(size=3))
+    e1 /= np.linalg.norm(e1)
+    e2 = np.cross(n, e1)
+    gx, gy = np.meshgrid(np.arange(nx + 1, dtype=float), np.arange(ny + 1, dtype=float), indexing="ij")
+    gx += rng.uniform(-0.25, 0.25, gx.shape)
+    gy += rng.uniform(-0.25, 0.25, gy.shape)
+    pts = np.asarray(centre) + size * ((gx.ravel() - nx / 2)[:, None] * e1 + (gy.ravel() - ny / 2)[:, None] * e2) / max(nx, ny)
+    idx = np.arange((nx + 1) * (ny + 1)).reshape(nx + 1, ny + 1)
+    tris, vals = [], []
+    for i in range(nx):
+        for j in range(ny):
+            a, b, c, d = idx[i, j], idx[i + 1, j], idx[i + 1, j + 1], idx[i, j + 1]  # counter-clockwise about n
+            v = rng.uniform(0, 1)
+            w = v if rng.uniform() < 0.85 else rng.uniform(0, 1)
+            if rng.uniform() < 0.5:
+                tris += [(a, b, c), (a, c, d)]
+            else:
+                tris += [(a, b, d), (b, c, d)]
+            vals += [v, w]
+    return pts, np.array(tris), np.array(vals)
+
+
+def _scene_mesh(seed: int):
+    """Several planar patches facing the camera or away from it, and a sphere: one mesh."""
+    rng = np.random.default_rng(seed)
+    parts = [_planar_patch(rng, 7, 5, rng.uniform(-1, 1, 3), rng.normal(size=3) + (0, -2, 0), 2.5) for _ in range(4)]
+    s = Sphere((0.3, 0.2, -0.1), 0.9).to_trimesh(10)
+    parts.append((np.asarray(s.vertices), np.asarray(s.faces), rng.uniform(0, 1, len(s.faces))))
+    verts, tris, vals, off = [], [], [], 0
+    for v, t, x in parts:
+        verts.append(v)
+        tris.append(t + off)
+        vals.append(x)
+        off += len(v)
+    return np.vstack(verts), np.vstack(tris), np.concatenate(vals)
+
+
+def _front_fill(cam: Camera, verts, quads, values, cuts=None):
+    """fill_front_kernel on the projection of :func:`homogeneous` (as rasterize), in row stripes."""
+    h = homogeneous(cam, verts)
+    inv = 1.0 / h[2]
+    proj = np.vstack([h, h[0] * inv, h[1] * inv, -inv if not cam.orthographic else h[3]])
+    H, W = cam.height, cam.width
+    z = np.full((H, W), np.inf)
+    v = np.full((H, W), np.nan, np.float32)
+    g = np.full((H, W), -1, np.int32)
+    bounds = np.array([H, 0, W, 0], np.int64)
+    cuts = [0, H] if cuts is None else cuts
+    for r0, r1 in zip(cuts[:-1], cuts[1:]):
+        fill_front_kernel(proj, quads, np.asarray(values, np.float32), near_distance(h[3]), not cam.orthographic, 7, r0,
+                          z[r0:r1], v[r0:r1], g[r0:r1], bounds)
+    return z, v, g, bounds
+
+
+QUAD_CAMERAS = CAMERAS | {
+    "near-crossing": Camera((0.2, -1.2, 0.3), (0, 0, 0), fov=100, width=44, height=36),
+}
+
+
+def test_pair_quads_keeps_every_triangle_once():
+    verts, tris, vals = _scene_mesh(3)
+    quads, source = pair_quads(verts, tris, vals)
+    assert (quads[:, 3] >= 0).sum() > 60  # the patches pair up
+    # The quads decompose into exactly the input triangles (as oriented cycles).
+    def canon(t):
+        k = int(np.argmin(t))
+        return tuple(t[k:]) + tuple(t[:k])
+    got = []
+    for a, b, c, d in quads:
+        got += [canon((a, b, c))] + ([canon((a, c, d))] if d >= 0 else [])
+    assert sorted(got) == sorted(canon(tuple(t)) for t in tris)
+    # Paired triangles carry one value, and the values follow the source triangle.
+    lookup = {canon(tuple(t)): x for t, x in zip(tris, vals)}
+    for (a, b, c, d), s in zip(quads, source):
+        assert lookup[canon((a, b, c))] == vals[s]
+        if d >= 0:
+            assert lookup[canon((a, c, d))] == vals[s]
+
+
+@pytest.mark.parametrize("cam", QUAD_CAMERAS.values(), ids=QUAD_CAMERAS.keys())
+@pytest.mark.parametrize("seed", [0, 1, 2], ids=lambda s: f"seed{s}")
+def test_quad_fill_equals_triangle_fill_pixel_for_pixel(cam, seed):
+    verts, tris, vals = _scene_mesh(seed)
+    quads, source = pair_quads(verts, tris, vals)
+    ref = rasterize(cam, verts, tris, vals)  # triangles, culled: the front buffers
+    H = cam.height
+    z, v, g, bounds = _front_fill(cam, verts, quads, vals[source], cuts=[0, H // 3, H // 3 + 1, H])
+    cov = np.isfinite(z)
+    assert ref.covered.sum() > 100
+    np.testing.assert_array_equal(cov, ref.covered)
+    np.testing.assert_array_equal(v, ref.front_value)  # NaN where nothing, in both
+    np.testing.assert_array_equal(g[cov], 7)
+    assert np.all(g[~cov] == -1)
+    d = np.empty_like(z)
+    key_to_depth(z, not cam.orthographic, d)
+    np.testing.assert_allclose(d[cov], ref.front_depth[cov], rtol=1e-12)
+    rows, cols = np.nonzero(cov)
+    assert bounds[0] <= rows.min() and bounds[1] > rows.max() and bounds[2] <= cols.min() and bounds[3] > cols.max()
+
+
+@pytest.mark.parametrize("cam", CAMERAS.values(), ids=CAMERAS.keys())
+def test_quads_of_a_patch_cover_it_once(cam):
+    """Each quad filled on its own: shared edges give no holes and no pixel twice;
+    pixel centres clearly inside the patch (per the ray cast) are all covered."""
+    rng = np.random.default_rng(11)
+    verts, tris, vals = _planar_patch(rng, 9, 7, (0.1, 0.0, 0.2), cam.eye_array - (0.1, 0.0, 0.2), 4.0)
+    vals = np.zeros(len(tris))  # one value: every cell pairs
+    quads, source = pair_quads(verts, tris, vals)
+    assert np.all(quads[:, 3] >= 0)
+    counts = np.zeros((cam.height, cam.width), int)
+    for q in quads:
+        counts += np.isfinite(_front_fill(cam, verts, q[None], [1.0])[0])
+    assert counts.max() == 1
+    depth, amb = ray_cast(cam, verts, tris)
+    hit = np.isfinite(depth).any(axis=2)
+    clear = ~amb.any(axis=2)
+    assert hit.sum() > 200
+    np.testing.assert_array_equal(counts[clear], hit[clear].astype(int))

@@ -508,3 +508,24 @@ def test_concurrent_fill_equals_the_serial_one(name, monkeypatch):
     np.testing.assert_array_equal(threaded.object_index, serial.object_index)
     np.testing.assert_array_equal(threaded.primitive_index, serial.primitive_index)
     assert np.isfinite(serial.image).sum() > 0.1 * serial.image.size
+
+
+def test_reused_buffers_render_like_fresh_ones():
+    # The private depth and label buffers are reset only where the previous
+    # render wrote: a sequence of views (near, far, plain and CSG objects,
+    # results dropped so that buffers are reused) must match fresh renderers.
+    scenes = _concurrency_scenes()
+    plain, csg = scenes["plain-stripes"], scenes["csg-leaves-and-stripes"]
+    mixed = Scene(plain.camera, plain.lights, [*plain.objects, *csg.objects])
+    near = Camera((0.3, -2.2, 0.6), (0, 0, 0), width=640, height=520)
+    far = Camera((2.0, -14, 3.0), (0, 0, 0), width=640, height=520)
+    steps = [(plain, near), (plain, far), (mixed, near), (plain, far), (mixed, far), (plain, near)]
+    reused = Renderer()
+    for scene, cam in steps:
+        got = reused.render(scene, camera=cam)
+        want = Renderer().render(scene, camera=cam)
+        np.testing.assert_array_equal(got.image, want.image)
+        np.testing.assert_array_equal(got.object_index, want.object_index)
+        np.testing.assert_array_equal(got.primitive_index, want.primitive_index)
+        np.testing.assert_array_equal(got.depth, want.depth)
+        del got, want
