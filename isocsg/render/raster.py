@@ -384,14 +384,20 @@ def project_kernel(
     front of the near plane (the fills never read the others).
     """
     far = 0.0
+    # Locals: the stores to ``out`` might alias the matrix, which would be reloaded per vertex.
+    ex, ey, ez = eye[0], eye[1], eye[2]
+    a00, a01, a02, b0 = a[0, 0], a[0, 1], a[0, 2], b[0]
+    a10, a11, a12, b1 = a[1, 0], a[1, 1], a[1, 2], b[1]
+    a20, a21, a22, b2 = a[2, 0], a[2, 1], a[2, 2], b[2]
+    a30, a31, a32, b3 = a[3, 0], a[3, 1], a[3, 2], b[3]
     for v in range(v0, v1):
-        dx = vertices[v, 0] - eye[0]
-        dy = vertices[v, 1] - eye[1]
-        dz = vertices[v, 2] - eye[2]
-        x = a[0, 0] * dx + a[0, 1] * dy + a[0, 2] * dz + b[0]
-        y = a[1, 0] * dx + a[1, 1] * dy + a[1, 2] * dz + b[1]
-        w = a[2, 0] * dx + a[2, 1] * dy + a[2, 2] * dz + b[2]
-        d = a[3, 0] * dx + a[3, 1] * dy + a[3, 2] * dz + b[3]
+        dx = vertices[v, 0] - ex
+        dy = vertices[v, 1] - ey
+        dz = vertices[v, 2] - ez
+        x = a00 * dx + a01 * dy + a02 * dz + b0
+        y = a10 * dx + a11 * dy + a12 * dz + b1
+        w = a20 * dx + a21 * dy + a22 * dz + b2
+        d = a30 * dx + a31 * dy + a32 * dz + b3
         out[0, v] = x
         out[1, v] = y
         out[2, v] = w
