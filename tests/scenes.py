@@ -52,13 +52,17 @@ def with_contours(scene: Scene, contours: int) -> Scene:
     return dataclasses.replace(scene, render=dataclasses.replace(scene.render, contours=contours))
 
 
-def render_image(scene: Scene):
-    """The library's float32 image of a scene (the thing the accuracy tests judge)."""
+def render_image(scene: Scene, csg: str | None = None):
+    """The library's float32 image of a scene (the thing the accuracy tests judge).
+
+    ``csg`` picks the renderer's CSG method ("pixel" or "surface"); by
+    default the module-wide renderer ("auto").
+    """
     import numpy as np
 
-    from isocsg.render import render
+    from isocsg.render import Renderer, render
 
-    image = render(scene).image
+    image = render(scene).image if csg is None else Renderer(csg=csg).render(scene).image
     assert image.dtype == np.float32
     assert image.shape == (scene.camera.height, scene.camera.width)
     return image

@@ -31,14 +31,15 @@ CONTOURS = 64
 CONVERGENCE = ["sphere_minus_cylinder", "nested_box_cylinders_sphere", "dent_faces_light"]
 
 
+@pytest.mark.parametrize("method", ["pixel", "surface"], ids=str)
 @pytest.mark.parametrize("name", list(CSG_SCENES), ids=str)
-def test_csg_scene_matches_reference(name: str) -> None:
+def test_csg_scene_matches_reference(name: str, method: str) -> None:
     scene = with_contours(CSG_SCENES[name], CONTOURS)
     ref = raycast_scene(scene)
-    image = render_image(scene)
+    image = render_image(scene, csg=method)
     result = compare(image, ref)
-    assert result.iou >= MIN_IOU, f"{name}: {result.summary()}"
-    assert result.fraction >= MIN_FRACTION, f"{name}: {result.summary()}"
+    assert result.iou >= MIN_IOU, f"{name} ({method}): {result.summary()}"
+    assert result.fraction >= MIN_FRACTION, f"{name} ({method}): {result.summary()}"
 
 
 @pytest.mark.parametrize("name", CONVERGENCE, ids=str)

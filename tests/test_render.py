@@ -492,25 +492,28 @@ def _concurrency_scenes():
     return {"plain-stripes": plain, "csg-leaves-and-stripes": csg}
 
 
+@pytest.mark.parametrize("csg", ["pixel", "surface"], ids=str)
 @pytest.mark.parametrize("name", ["plain-stripes", "csg-leaves-and-stripes"], ids=str)
-def test_concurrent_fill_equals_the_serial_one(name, monkeypatch):
+def test_concurrent_fill_equals_the_serial_one(name, csg, monkeypatch):
     # Large images of plain primitives are filled in concurrent row stripes; CSG
-    # objects fill their leaves and resolve row stripes concurrently. Every pixel
-    # must come out exactly as from one serial pass.
+    # objects fill their leaves and resolve row stripes concurrently (per pixel)
+    # or fill their surface's parts in stripes. Every pixel must come out
+    # exactly as from one serial pass.
     from isocsg.render import painter
 
     scene = _concurrency_scenes()[name]
     monkeypatch.setattr(painter, "_STRIPES", 3)
-    threaded = Renderer().render(scene)
+    threaded = Renderer(csg=csg).render(scene)
     monkeypatch.setattr(painter, "_STRIPES", 1)
-    serial = Renderer().render(scene)
+    serial = Renderer(csg=csg).render(scene)
     np.testing.assert_array_equal(threaded.image, serial.image)
     np.testing.assert_array_equal(threaded.object_index, serial.object_index)
     np.testing.assert_array_equal(threaded.primitive_index, serial.primitive_index)
     assert np.isfinite(serial.image).sum() > 0.1 * serial.image.size
 
 
-def test_reused_buffers_render_like_fresh_ones():
+@pytest.mark.parametrize("method", ["pixel", "surface"], ids=str)
+def test_reused_buffers_render_like_fresh_ones(method):
     # The private depth and label buffers are reset only where the previous
     # render wrote: a sequence of views (near, far, plain and CSG objects,
     # results dropped so that buffers are reused) must match fresh renderers.
@@ -520,10 +523,10 @@ def test_reused_buffers_render_like_fresh_ones():
     near = Camera((0.3, -2.2, 0.6), (0, 0, 0), width=640, height=520)
     far = Camera((2.0, -14, 3.0), (0, 0, 0), width=640, height=520)
     steps = [(plain, near), (plain, far), (mixed, near), (plain, far), (mixed, far), (plain, near)]
-    reused = Renderer()
+    reused = Renderer(csg=method)
     for scene, cam in steps:
         got = reused.render(scene, camera=cam)
-        want = Renderer().render(scene, camera=cam)
+        want = Renderer(csg=method).render(scene, camera=cam)
         np.testing.assert_array_equal(got.image, want.image)
         np.testing.assert_array_equal(got.object_index, want.object_index)
         np.testing.assert_array_equal(got.primitive_index, want.primitive_index)

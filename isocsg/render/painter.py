@@ -36,6 +36,7 @@ from numpy.typing import NDArray
 
 from .._validation import integer
 from ..camera import Camera
+from ..csg.surface import surface_from_bands
 from ..csg.tree import CSGNode
 from ..errors import InvalidParameterError
 from ..geometry.primitives import Primitive
@@ -46,6 +47,9 @@ from .raster import (
 )
 
 __all__ = ["RenderResult", "RenderTimings", "Renderer", "render", "default_renderer"]
+
+#: The ways a :class:`Renderer` resolves CSG objects (see its ``csg`` parameter).
+CSG_METHODS = ("auto", "surface", "pixel")
 
 #: ``build(primitive, lights, material, contours, eye=...) -> LaminaSet`` (or a BandMesh).
 BandBuilder = Callable[..., Any]
@@ -304,6 +308,15 @@ class Renderer:
         :class:`~isocsg.laminae.model.BandMesh`). Defaults to
         :func:`isocsg.laminae.build_laminae`, which caches the
         view-independent bands, so rendering from a new viewpoint only fills.
+    csg : {"auto", "surface", "pixel"}, default "auto"
+        How CSG objects are resolved. ``"pixel"``: per pixel on the leaves'
+        depth intervals (exact, nothing to build). ``"surface"``: the leaves'
+        bands clipped once in 3D (:func:`isocsg.csg.surface.surface_from_bands`,
+        manifold3d Booleans) and cached, so that every later view is a plain
+        fill. ``"auto"``: per pixel the first time an object is rendered; from
+        its second render on (a new viewpoint of the same bands), the surface,
+        built then and cached. Objects with view-dependent (specular) bands
+        use ``"pixel"`` under ``"auto"``.
 
     Examples
     --------
@@ -326,8 +339,17 @@ class Renderer:
     (0, -1)
     """
 
-    def __init__(self, build_laminae: BandBuilder | None = None) -> None:
+    def __init__(self, build_laminae: BandBuilder | None = None, *, csg: str = "auto") -> None:
+        if csg not in CSG_METHODS:
+            raise InvalidParameterError(f"csg must be one of {', '.join(CSG_METHODS)}, got {csg!r}")
         self._build = build_laminae
+        self.csg = csg
+        # CSG surfaces (leaf band meshes clipped in 3D), keyed by the leaves' band
+        # meshes and the program: (band meshes kept alive, leaf parts or None if
+        # only seen once so far).
+        self._surfaces: OrderedDict[tuple[Any, ...], tuple[tuple[BandMesh, ...], list[tuple[int, _Prepared]] | None]] = (
+            OrderedDict()
+        )
         # Arrays converted for the kernels, keyed by the band mesh's identity.
         self._prepared: OrderedDict[int, tuple[BandMesh, _Prepared]] = OrderedDict()
         # Image-sized buffers reused from one render to the next once no result
@@ -382,6 +404,44 @@ class Renderer:
         if not isinstance(bands, BandMesh):
             raise InvalidParameterError(f"build_laminae must return a LaminaSet or BandMesh, got {type(out).__name__}")
         return bands, bool(getattr(out, "view_dependent", False))
+
+    def _surface(
+        self, program: NDArray[np.int64], built: list[tuple[BandMesh, bool]]
+    ) -> list[tuple[int, _Prepared]] | None:
+        """The leaf parts of a CSG object's clipped surface, or None to resolve it per pixel.
+
+        Under ``csg="auto"`` the surface is built on the second render of the
+        same view-independent bands (a first render costs no Boolean), then
+        kept; ``"surface"`` builds it at once (for specular bands: every time).
+        """
+        if self.csg == "pixel":
+            return None
+        bands = tuple(b for b, _ in built)
+        view_dependent = any(v for _, v in built)
+        if view_dependent and self.csg == "auto":
+            return None
+        key = (tuple(id(b) for b in bands), program.tobytes())
+        hit = self._surfaces.get(key)
+        if hit is not None and all(x is y for x, y in zip(hit[0], bands)):
+            self._surfaces.move_to_end(key)
+            if hit[1] is not None:
+                return hit[1]
+        elif self.csg == "auto" and not view_dependent:
+            self._surfaces[key] = (bands, None)  # seen once: per pixel this time
+            self._trim_surfaces()
+            return None
+        surface = surface_from_bands(program, bands)
+        parts = [
+            (i, self._prepare(surface.leaf_bands(i), True)) for i in range(len(bands)) if np.any(surface.leaf == i)
+        ]
+        if not view_dependent:
+            self._surfaces[key] = (bands, parts)
+            self._trim_surfaces()
+        return parts
+
+    def _trim_surfaces(self) -> None:
+        while len(self._surfaces) > 64:
+            self._surfaces.popitem(last=False)
 
     def _prepare(self, bands: BandMesh, view_dependent: bool) -> _Prepared:
         # View-independent meshes come back from the builder's cache as the same
@@ -463,23 +523,35 @@ class Renderer:
         n_contours = integer("contours", n_contours, low=1, high=MAX_CONTOURS, error=InvalidParameterError)
 
         t0 = time.perf_counter()
-        objects: list[tuple[int, list[Primitive], NDArray[np.int64] | None, list[_Prepared]]] = []
+        # Labels: one per (object, leaf); a pixel's label maps to both.
+        obj_of: list[int] = []
+        leaf_of: list[int] = []
+        plain: list[tuple[_Prepared, int]] = []  # front fills: (mesh, label)
+        per_pixel: list[tuple[list[_Prepared], NDArray[np.int64], int]] = []  # (leaf meshes, program, first label)
         for k, obj in enumerate(scene.objects):
+            base = len(obj_of)
             if isinstance(obj.shape, CSGNode):
                 leaves, program = obj.shape.program()
             else:
                 leaves, program = [obj.shape], None
-            preps = [
-                self._prepare(*self._bands(p, scene.lights, obj.material, n_contours, cam.eye)) for p in leaves
-            ]
-            objects.append((k, leaves, program, preps))
+            obj_of.extend([k] * len(leaves))
+            leaf_of.extend(range(len(leaves)))
+            built = [self._bands(p, scene.lights, obj.material, n_contours, cam.eye) for p in leaves]
+            if program is None:
+                plain.append((self._prepare(*built[0]), base))
+                continue
+            parts = self._surface(program, built)
+            if parts is None:
+                per_pixel.append(([self._prepare(*b) for b in built], program, base))
+            else:
+                plain.extend((prep, base + i) for i, prep in parts)
         t1 = time.perf_counter()
 
         H, W = cam.height, cam.width
         persp = not cam.orthographic
         a, b = camera_affine(cam)
         eye = cam.eye_array
-        unique = list({id(p): p for _, _, _, preps in objects for p in preps}.values())
+        unique = list({id(p): p for p in [q for q, _ in plain] + [q for preps, _, _ in per_pixel for q in preps]}.values())
         # Near plane at a tiny fraction of the scene's depth (bounded by the meshes' bounding spheres).
         far = max((abs(float(a[3] @ (p.centre - eye))) + p.radius for p in unique if len(p.vertices)), default=1.0)
         near = NEAR_RELATIVE * max(far if far > 0 else 1.0, 1e-300)
@@ -490,19 +562,12 @@ class Renderer:
         gid, gid_rect = self._stale("label", (H, W), np.int32)
         value = self._buffer("image", (H, W), np.float32)
         resets = ((value, (0, H, 0, W), np.float32(np.nan)), (zkey, key_rect, np.inf), (gid, gid_rect, np.int32(-1)))
-        obj_of: list[int] = []
-        leaf_of: list[int] = []
-        bases = []
-        for k, leaves, _, _ in objects:
-            bases.append(len(obj_of))
-            obj_of.extend([k] * len(leaves))
-            leaf_of.extend(range(len(leaves)))
         total = len(obj_of)
         n = _STRIPES if H * W >= _STRIPE_MIN_PIXELS and H >= 2 * _STRIPES else 1
         for p in unique:
             p.proj(n - 1)  # scratch for every thread, allocated here (not in the threads)
-        if all(program is None for _, _, program, _ in objects):
-            dirty = self._fill_primitives(objects, bases, resets, key_rect, a, b, eye, persp, near, n, zkey, value, gid)
+        if not per_pixel:
+            dirty = self._fill_primitives(plain, resets, key_rect, a, b, eye, persp, near, n, zkey, value, gid)
             if progress is not None:
                 for done in range(1, total + 1):
                     progress(done, total)
@@ -521,18 +586,21 @@ class Renderer:
             for f in futures:
                 f.result()
             dirty = [H, 0, W, 0]  # rows [dirty[0], dirty[1]), columns [dirty[2], dirty[3])
-            done = 0
-            for (k, leaves, program, preps), base in zip(objects, bases):
-                hs = [p.proj() for p in preps]
-                if program is None:
-                    rect = self._fill_plain(preps[0], hs[0], near, persp, base, zkey, value, gid)
-                else:
-                    rect = self._fill_csg(preps, hs, program, near, persp, base, W, H, zkey, value, gid, progress, done, total)
+            rects = [self._fill_plain(prep, prep.proj(), near, persp, label, zkey, value, gid) for prep, label in plain]
+            done = len(plain)
+            if progress is not None and plain:
+                progress(min(done, total), total)
+            for preps, program, base in per_pixel:
+                rects.append(self._fill_csg(
+                    preps, [p.proj() for p in preps], program, near, persp, base, W, H, zkey, value, gid,
+                    progress, done, total,
+                ))
+                done += len(preps)
+                if progress is not None:
+                    progress(min(done, total), total)
+            for rect in rects:
                 if rect[0] < rect[1] and rect[2] < rect[3]:
                     dirty = [min(dirty[0], rect[0]), max(dirty[1], rect[1]), min(dirty[2], rect[2]), max(dirty[3], rect[3])]
-                done += len(leaves)
-                if progress is not None:
-                    progress(done, total)
         self._dirty[id(zkey)] = self._dirty[id(gid)] = tuple(dirty)
         t2 = time.perf_counter()
         # Label -1 (background) maps to -1 through the leading entry of each table.
@@ -545,15 +613,17 @@ class Renderer:
         return RenderResult(value, RenderTimings(t1 - t0, t2 - t1), cam, label_view, key_view, object_of, leaf_of_arr)
 
     def _fill_primitives(
-        self, objects: list[Any], bases: list[int], resets: Any, key_rect: tuple[int, int, int, int],
+        self, plain: list[tuple[_Prepared, int]], resets: Any, key_rect: tuple[int, int, int, int],
         a: NDArray[np.float64], b: NDArray[np.float64], eye: NDArray[np.float64], persp: bool, near: float, n: int,
         zkey: NDArray[np.float64], value: NDArray[np.float32], gid: NDArray[np.int32],
     ) -> list[int]:
-        """Scenes of plain primitives in one pass of ``n`` concurrent row stripes.
+        """Meshes filled by their front faces, in one pass of ``n`` concurrent row stripes.
 
-        Each stripe resets its rows of the buffers, projects the band meshes
-        itself (cheaper than waiting for a shared projection) and fills the
-        front faces of every object in order. Returns the rectangle written.
+        ``plain`` holds (mesh, label) pairs: plain primitives and the leaf
+        parts of CSG surfaces. Each stripe resets its rows of the buffers,
+        projects the meshes itself (cheaper than waiting for a shared
+        projection) and fills their front faces with the depth test. Returns
+        the rectangle written.
         """
         H, W = zkey.shape
         bounds = np.empty((n, 4), np.int64)
@@ -563,8 +633,7 @@ class Renderer:
             for buf, (q0, q1, c0, c1), bg in resets:
                 if max(q0, r0) < min(q1, r1) and c0 < c1:
                     fill_rect(buf, max(q0, r0), min(q1, r1), c0, c1, bg)
-            for (_, _, _, preps), base in zip(objects, bases):
-                p = preps[0]
+            for p, base in plain:
                 proj = p.proj(k)
                 project_kernel(p.vertices, eye, a, b, persp, proj, 0, len(p.vertices))
                 fill_front_kernel(
