@@ -8,7 +8,10 @@ Run from the repository root::
 For each scene ("sphere minus cylinder" and a nested tree) and image size:
 
 - isocsg: the first render (laminae, band fill and per-pixel CSG, caches
-  cleared) and a re-render from a new viewpoint (view-independent bands cached);
+  cleared), the second render from a new viewpoint (which builds the CSG
+  surface: the leaves' bands clipped in 3D by manifold3d Booleans, see
+  ``Renderer(csg="auto")``) and a re-render from a new viewpoint (bands and
+  surface cached: a plain fill);
 - manifold3d: the Boolean of the same tree meshed at 64 and 256 segments per
   circle, then pyvista's off-screen rendering of that mesh (first render:
   mesh upload, plotter and first frame; re-render: camera moved, new frame).
@@ -183,6 +186,7 @@ def main(argv: list[str] | None = None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--sizes", type=int, nargs="+", default=[512, 1024])
     ap.add_argument("--repeats", type=int, default=3)
+    ap.add_argument("--contours", type=int, nargs="+", default=[64, 256], help="isocsg contour counts")
     ap.add_argument("--quick", action="store_true", help="256 px, 1 repeat")
     args = ap.parse_args(argv)
     sizes, repeats = (args.sizes, args.repeats) if not args.quick else ([256], 1)
@@ -204,9 +208,9 @@ def main(argv: list[str] | None = None) -> int:
             print(f"  ray caster (reference)          {t_ref:8.3f} s")
             rows: dict[str, float] = {}
 
-            if not isinstance(iso, str):
+            for contours in args.contours if not isinstance(iso, str) else []:
                 Renderer, clear = iso
-                scene = Scene(cam1, LIGHTS, (SceneObject(tree, MATERIAL),), RenderSettings(contours=64))
+                scene = Scene(cam1, LIGHTS, (SceneObject(tree, MATERIAL),), RenderSettings(contours=contours))
                 # JIT compilation is a one-off per process: warm up on a tiny image first
                 Renderer().render(scene, camera=cam1.with_size(32, 32))
                 renderers = []
@@ -216,14 +220,29 @@ def main(argv: list[str] | None = None) -> int:
                     renderers.append(Renderer())
                     return renderers[-1].render(scene, camera=cam1)
 
+                def second():
+                    # A fresh renderer's first two views: the second builds the CSG surface.
+                    clear()
+                    r = Renderer()
+                    r.render(scene, camera=cam1)
+                    t0 = time.perf_counter()
+                    r.render(scene, camera=cam2)
+                    return time.perf_counter() - t0
+
                 t_first, r1 = median_time(first, repeats)
+                t_second = statistics.median([second() for _ in range(repeats)])
                 renderer = renderers[-1]
-                t_re, r2 = median_time(lambda: renderer.render(scene, camera=cam2), repeats)
+                renderer.render(scene, camera=cam2)  # the second view: the surface is built
+                views = iter([cam2, cam1] * repeats)
+                t_re, _ = median_time(lambda: renderer.render(scene, camera=next(views)), repeats)
+                r2 = renderer.render(scene, camera=cam2)
                 f1, m1 = errors(_image(r1), ref1)
                 f2, m2 = errors(_image(r2), ref2)
-                rows["iso_first"], rows["iso_re"] = t_first, t_re
-                print(f"  isocsg first render             {t_first:8.3f} s   within {f1:6.2%}  mae {m1:.4f}")
-                print(f"  isocsg re-render (new view)     {t_re:8.3f} s   within {f2:6.2%}  mae {m2:.4f}")
+                rows[f"iso_first{contours}"], rows[f"iso_re{contours}"] = t_first, t_re
+                rows[f"iso_mae_first{contours}"], rows[f"iso_mae_re{contours}"] = m1, m2
+                print(f"  isocsg N={contours:<3d} first render        {t_first:8.3f} s   within {f1:6.2%}  mae {m1:.4f}")
+                print(f"  isocsg N={contours:<3d} 2nd (+ surface)     {t_second:8.3f} s")
+                print(f"  isocsg N={contours:<3d} re-render           {t_re:8.3f} s   within {f2:6.2%}  mae {m2:.4f}")
 
             for seg in (64, 256):
                 t_bool, man = median_time(lambda: to_manifold(tree, seg).to_mesh(), repeats)
@@ -247,13 +266,21 @@ def main(argv: list[str] | None = None) -> int:
                 f1, m1 = errors(img1, ref1)
                 f2, m2 = errors(img2, ref2)
                 rows[f"pv{seg}_first"], rows[f"pv{seg}_re"] = t_pv1, t_pv2
+                rows[f"pv{seg}_mae_first"], rows[f"pv{seg}_mae_re"] = m1, m2
                 print(f"  pyvista first render, {seg:3d} seg   {t_pv1:8.3f} s   within {f1:6.2%}  mae {m1:.4f}")
                 print(f"  pyvista re-render, {seg:3d} seg      {t_pv2:8.3f} s   within {f2:6.2%}  mae {m2:.4f}")
 
-            if "iso_re" in rows and "pv256_re" in rows:
-                print(f"  ratio re-render   pyvista256 / isocsg            {rows['pv256_re'] / rows['iso_re']:6.2f}x (target >= 2)")
-                total = rows["bool256"] + rows["pv256_first"]
-                print(f"  ratio first       (Boolean256 + pyvista) / isocsg {total / rows['iso_first']:6.2f}x (target > 1)")
+            for contours in args.contours:
+                if f"iso_re{contours}" not in rows or "pv256_re" not in rows:
+                    continue
+                re = rows["pv256_re"] / rows[f"iso_re{contours}"]
+                first = (rows["bool256"] + rows["pv256_first"]) / rows[f"iso_first{contours}"]
+                err_first = rows[f"iso_mae_first{contours}"] < rows["pv256_mae_first"]
+                err_re = rows[f"iso_mae_re{contours}"] < rows["pv256_mae_re"]
+                print(f"  N={contours:<3d} re-render  pyvista256 / isocsg          {re:6.2f}x (target >= 2)")
+                print(f"  N={contours:<3d} first (Boolean256 + pyvista) / isocsg {first:6.2f}x (target > 1)")
+                print(f"  N={contours:<3d} mae below pyvista256's: first {'yes' if err_first else 'NO'}, "
+                      f"re-render {'yes' if err_re else 'NO'}")
     return 0
 
 

@@ -31,7 +31,7 @@ from isocsg import (
 from isocsg.laminae.model import BandMesh
 from isocsg.render import Renderer
 from isocsg.render import image as imagemod
-from isocsg.render.painter import resolve_csg
+from isocsg.render.painter import resolve_csg, truth_table
 
 RES = 48  # segments of the inscribed test meshes
 
@@ -112,8 +112,9 @@ def _random_tree(rng, pool, depth):
     return kind(*[_random_tree(rng, pool, depth - 1) for _ in range(k)])
 
 
+@pytest.mark.parametrize("use_table", [True, False], ids=["truth-table", "program"])
 @pytest.mark.parametrize("seed", range(6), ids=lambda s: f"tree{s}")
-def test_csg_resolution_matches_brute_force_on_intervals(seed):
+def test_csg_resolution_matches_brute_force_on_intervals(seed, use_table):
     rng = np.random.default_rng(seed)
     pool = [Sphere((float(i), 0, 0), 1) for i in range(5)]
     tree = _random_tree(rng, pool, 3)
@@ -134,7 +135,8 @@ def test_csg_resolution_matches_brute_force_on_intervals(seed):
     zkey[0, :] = 2.5  # something already nearer in the image on row 0
     value = np.zeros((h, w), np.float32)
     gid = np.full((h, w), -1, np.int32)
-    resolve_csg(f, vf, b, vb, program, 10, 0, 0, zkey, value, gid)
+    table = truth_table(program, n) if use_table else np.zeros(0, np.bool_)
+    resolve_csg(f, vf, b, vb, program, table, 10, 0, 0, zkey, value, gid)
     n_visible = 0
     for r, c in itertools.product(range(h), range(w)):
         # Brute force: membership on each open stretch between consecutive distinct depths,

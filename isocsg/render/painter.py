@@ -157,6 +157,31 @@ def _evaluate(program: NDArray[np.int64], inside: NDArray[np.bool_], stack: NDAr
     return stack[0]
 
 
+#: Objects with at most this many leaves are resolved through a truth table of their program.
+_TABLE_LEAVES = 16
+
+
+@njit(cache=True)
+def truth_table(program: NDArray[np.int64], n: int) -> NDArray[np.bool_]:
+    """The program's value for every inside-mask of ``n`` leaves (bit i: inside leaf i)."""
+    table = np.zeros(1 << n, np.bool_)
+    inside = np.zeros(max(n, 1), np.bool_)
+    stack = np.zeros(max(len(program), 1), np.bool_)
+    for m in range(1 << n):
+        for i in range(n):
+            inside[i] = (m >> i) & 1 == 1
+        table[m] = _evaluate(program, inside, stack)
+    return table
+
+
+@njit(cache=True, inline="always")
+def _state(table: NDArray[np.bool_], program: NDArray[np.int64], inside: NDArray[np.bool_],
+           stack: NDArray[np.bool_], mask: int) -> bool:
+    if len(table):
+        return table[mask]
+    return _evaluate(program, inside, stack)
+
+
 #: Relative depth-key difference below which surfaces of different leaves coincide.
 _COINCIDENT = 1e-9
 
@@ -164,10 +189,13 @@ _COINCIDENT = 1e-9
 @njit(cache=True, nogil=True)
 def resolve_csg(
     kf: NDArray[np.float64], vf: NDArray[np.float32], kb: NDArray[np.float64], vb: NDArray[np.float32],
-    program: NDArray[np.int64], gid_base: int, ox: int, oy: int,
+    program: NDArray[np.int64], table: NDArray[np.bool_], gid_base: int, ox: int, oy: int,
     zkey: NDArray[np.float64], value: NDArray[np.float32], gid: NDArray[np.int32],
 ) -> None:
     """Per-pixel CSG on leaf intervals, depth-tested into the image buffers.
+
+    ``table`` is :func:`truth_table` of the program (or empty: the program
+    is then evaluated on each event).
 
     ``kf``/``kb`` (n, h, w) are the depth keys of each leaf's front (``+inf``
     where none) and back (``-inf`` where none) over the viewport at
@@ -185,11 +213,13 @@ def resolve_csg(
     phase = np.empty(n, np.int8)  # 0 before the front, 1 inside, 2 past the back
     inside = np.zeros(n, np.bool_)
     stack = np.zeros(max(len(program), 1), np.bool_)
+    use_table = len(table) > 0
     for r in range(h):
         for c in range(w):
             rr = r + oy
             cc = c + ox
             covered = False
+            mask = 0
             for i in range(n):
                 f = kf[i, r, c]
                 b = kb[i, r, c]
@@ -199,6 +229,8 @@ def resolve_csg(
                     nxt[i] = np.inf
                 elif f == np.inf:  # entered behind the near plane
                     inside[i] = True
+                    if use_table:
+                        mask |= 1 << i
                     phase[i] = 1
                     nxt[i] = b
                     covered = True
@@ -209,7 +241,7 @@ def resolve_csg(
                     covered = True
             if not covered:
                 continue
-            state = _evaluate(program, inside, stack)
+            state = _state(table, program, inside, stack, mask)
             limit = zkey[rr, cc]
             while True:
                 key = np.inf
@@ -244,7 +276,9 @@ def resolve_csg(
                         nxt[i] = np.inf
                         if shown < 0:
                             shown = i
-                now = _evaluate(program, inside, stack)
+                    if use_table:
+                        mask = (mask | (1 << i)) if inside[i] else (mask & ~(1 << i))
+                now = _state(table, program, inside, stack, mask)
                 if now and not state:
                     zkey[rr, cc] = key
                     value[rr, cc] = vf[shown, r, c] if shown_front else vb[shown, r, c]
@@ -260,11 +294,17 @@ class _Prepared:
     triangles: NDArray[np.int32]
     value_out: NDArray[np.float32]
     value_in: NDArray[np.float32]
-    quads: NDArray[np.int32]  # pair_quads of the triangles (front fill of plain primitives)
-    quad_value: NDArray[np.float32]
     projs: list[NDArray[np.float64]]  # (7, V) scratch of project_kernel per fill thread, reused
     centre: NDArray[np.float64]  # bounding sphere (for the near plane)
     radius: float
+    _quads: list[tuple[NDArray[np.int32], NDArray[np.float32]]] = field(default_factory=list)
+
+    def quads(self) -> tuple[NDArray[np.int32], NDArray[np.float32]]:
+        """pair_quads of the triangles and their values (front fills only: made when first needed)."""
+        if not self._quads:
+            quads, source = pair_quads(self.vertices, self.triangles, self.value_out, self.value_in)
+            self._quads.append((np.ascontiguousarray(quads), np.ascontiguousarray(self.value_out[source])))
+        return self._quads[0]
 
     def proj(self, k: int = 0) -> NDArray[np.float64]:
         while len(self.projs) <= k:
@@ -466,12 +506,10 @@ class Renderer:
                 f"band mesh of {nv} vertices and {nt} triangles is malformed: vertices {vertices.shape}, "
                 f"triangles {triangles.shape}, value_out {value_out.shape}, value_in {value_in.shape}"
             )
-        quads, source = pair_quads(vertices, triangles, value_out, value_in)
         centre = (vertices.min(axis=0) + vertices.max(axis=0)) / 2 if nv else np.zeros(3)
         radius = float(np.sqrt(((vertices - centre) ** 2).sum(axis=1).max())) if nv else 0.0
         prep = _Prepared(
-            vertices, triangles, value_out, value_in, np.ascontiguousarray(quads),
-            np.ascontiguousarray(value_out[source]), [], centre, radius,
+            vertices, triangles, value_out, value_in, [], centre, radius,
         )
         if not view_dependent:
             self._prepared[key] = (bands, prep)
@@ -628,16 +666,17 @@ class Renderer:
         H, W = zkey.shape
         bounds = np.empty((n, 4), np.int64)
         bounds[:] = (H, 0, W, 0)
+        meshes = [(p, base, *p.quads()) for p, base in plain]  # quads made here, not in the threads
 
         def stripe(k: int, r0: int, r1: int) -> None:
             for buf, (q0, q1, c0, c1), bg in resets:
                 if max(q0, r0) < min(q1, r1) and c0 < c1:
                     fill_rect(buf, max(q0, r0), min(q1, r1), c0, c1, bg)
-            for p, base in plain:
+            for p, base, quads, quad_value in meshes:
                 proj = p.proj(k)
                 project_kernel(p.vertices, eye, a, b, persp, proj, 0, len(p.vertices))
                 fill_front_kernel(
-                    proj, p.quads, p.quad_value, near, persp, base, r0, zkey[r0:r1], value[r0:r1], gid[r0:r1], bounds[k],
+                    proj, quads, quad_value, near, persp, base, r0, zkey[r0:r1], value[r0:r1], gid[r0:r1], bounds[k],
                 )
 
         # Balance the stripes over the rows written last time (a re-render from a nearby view).
@@ -665,10 +704,11 @@ class Renderer:
         n = _STRIPES if zkey.size >= _STRIPE_MIN_PIXELS and H >= 2 * _STRIPES else 1
         bounds = np.empty((n, 4), np.int64)
         bounds[:] = (H, 0, zkey.shape[1], 0)
+        quads, quad_value = p.quads()
 
         def stripe(k: int, r0: int, r1: int) -> None:
             fill_front_kernel(
-                proj, p.quads, p.quad_value, near, persp, base, r0, zkey[r0:r1], value[r0:r1], gid[r0:r1], bounds[k],
+                proj, quads, quad_value, near, persp, base, r0, zkey[r0:r1], value[r0:r1], gid[r0:r1], bounds[k],
             )
 
         if n == 1:
@@ -708,6 +748,7 @@ class Renderer:
         if w <= 0 or h <= 0:
             return (0, 0, 0, 0)
         n = len(preps)
+        table = truth_table(program, n) if n <= _TABLE_LEAVES else np.zeros(0, np.bool_)
         # Contiguous views into image-sized pooled buffers, so that the object's
         # rectangle can change from view to view without fresh allocations.
         cap = n * H * W
@@ -731,7 +772,7 @@ class Renderer:
             )
 
         def stripe(r0: int, r1: int) -> None:
-            resolve_csg(kf[:, r0:r1], vf[:, r0:r1], kb[:, r0:r1], vb[:, r0:r1], program, base, ox, oy + r0,
+            resolve_csg(kf[:, r0:r1], vf[:, r0:r1], kb[:, r0:r1], vb[:, r0:r1], program, table, base, ox, oy + r0,
                         zkey, value, gid)
 
         # Leaves fill their own buffers, and row stripes resolve disjoint pixels:
