@@ -1,4 +1,8 @@
-"""CSG trees over the primitives (union, intersection, difference)."""
+"""CSG trees over the primitives (union, intersection, difference).
+
+The clipped band surface of a tree lives in :mod:`isocsg.csg.surface`
+(imported on use: it needs the laminae).
+"""
 
 from .tree import (
     CSGNode,
