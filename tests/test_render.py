@@ -8,6 +8,8 @@ against analytic ray-sphere intervals computed independently below.
 
 from __future__ import annotations
 
+import re
+
 import functools
 import itertools
 
@@ -534,3 +536,28 @@ def test_reused_buffers_render_like_fresh_ones(method):
         np.testing.assert_array_equal(got.primitive_index, want.primitive_index)
         np.testing.assert_array_equal(got.depth, want.depth)
         del got, want
+
+
+def test_auto_builds_the_csg_surface_on_the_second_render_only(monkeypatch):
+    # "auto": the first view of a CSG object is resolved per pixel; the second
+    # view builds the clipped surface once, and later views reuse it.
+    from isocsg.render import painter
+
+    scene = _concurrency_scenes()["csg-leaves-and-stripes"]
+    views = [scene.camera, scene.camera.with_view((-3.0, -4.0, 2.0)), scene.camera]
+    expected = [Renderer(csg=m).render(scene, camera=c).image for m, c in zip(["pixel", "surface", "surface"], views)]
+    calls = []
+    real = painter.surface_from_bands
+    monkeypatch.setattr(painter, "surface_from_bands", lambda program, bands: calls.append(1) or real(program, bands))
+    renderer = Renderer()
+    counts = []
+    for cam, want in zip(views, expected):
+        got = renderer.render(scene, camera=cam)
+        counts.append(len(calls))
+        np.testing.assert_array_equal(got.image, want)
+    assert counts == [0, 1, 1]
+
+
+def test_unknown_csg_method_is_refused():
+    with pytest.raises(InvalidParameterError, match=re.escape("csg must be one of auto, surface, pixel, got 'mesh'")):
+        Renderer(csg="mesh")

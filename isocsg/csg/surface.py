@@ -22,6 +22,7 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import numpy as np
 from numba import njit
@@ -29,6 +30,11 @@ from numpy.typing import NDArray
 
 from ..errors import InvalidGeometryError, InvalidParameterError
 from ..laminae.model import BandMesh
+from .mesh import _manifold3d
+from .tree import CSGNode
+
+if TYPE_CHECKING:  # pragma: no cover
+    from ..lighting.lights import Light, Material
 
 __all__ = ["CSGSurface", "close_mesh", "csg_surface", "surface_from_bands"]
 
@@ -207,12 +213,6 @@ def _points_on_edges(
     return np.array(out_e, np.int64), np.array(out_v, np.int64), np.array(out_s, np.float64)
 
 
-def _manifold3d():  # type: ignore[no-untyped-def]
-    import manifold3d
-
-    return manifold3d
-
-
 def surface_from_bands(program: NDArray[np.int64], bands: Sequence[BandMesh]) -> CSGSurface:
     """Clip the leaves' band meshes against each other along a CSG program.
 
@@ -291,7 +291,9 @@ def _triangle_normals(v: NDArray[np.float64], t: NDArray[np.int64]) -> NDArray[n
     return np.cross(v[t[:, 1]] - v[t[:, 0]], v[t[:, 2]] - v[t[:, 0]])
 
 
-def csg_surface(tree: object, lights: Sequence[object], material: object = None, contours: int = 64) -> CSGSurface:
+def csg_surface(
+    tree: CSGNode, lights: Sequence[Light], material: Material | None = None, contours: int = 64
+) -> CSGSurface:
     """The view-independent band surface of a CSG tree.
 
     Parameters
@@ -314,9 +316,8 @@ def csg_surface(tree: object, lights: Sequence[object], material: object = None,
     >>> sorted(set(surf.leaf.tolist())), bool(surf.reversed[surf.leaf == 1].all())
     ([0, 1], True)
     """
-    from ..laminae import build_laminae
+    from ..laminae import build_laminae  # the laminae import the CSG package: import on use
     from ..lighting.lights import Material
-    from .tree import CSGNode
 
     if not isinstance(tree, CSGNode):
         raise InvalidGeometryError(f"tree must be a CSG node, got {type(tree).__name__}")

@@ -462,18 +462,18 @@ class Renderer:
             return None
         key = (tuple(id(b) for b in bands), program.tobytes())
         hit = self._surfaces.get(key)
-        if hit is not None and all(x is y for x, y in zip(hit[0], bands)):
+        # The ids of band meshes that were dropped may be reused: compare the objects too.
+        seen = hit is not None and all(x is y for x, y in zip(hit[0], bands))
+        if seen:
             self._surfaces.move_to_end(key)
             if hit[1] is not None:
                 return hit[1]
-        elif self.csg == "auto" and not view_dependent:
+        elif self.csg == "auto":
             self._surfaces[key] = (bands, None)  # seen once: per pixel this time
             self._trim_surfaces()
             return None
         surface = surface_from_bands(program, bands)
-        parts = [
-            (i, self._prepare(surface.leaf_bands(i), True)) for i in range(len(bands)) if np.any(surface.leaf == i)
-        ]
+        parts = [(int(i), self._prepare(surface.leaf_bands(int(i)), True)) for i in np.unique(surface.leaf)]
         if not view_dependent:
             self._surfaces[key] = (bands, parts)
             self._trim_surfaces()
@@ -625,9 +625,9 @@ class Renderer:
                 f.result()
             dirty = [H, 0, W, 0]  # rows [dirty[0], dirty[1]), columns [dirty[2], dirty[3])
             rects = [self._fill_plain(prep, prep.proj(), near, persp, label, zkey, value, gid) for prep, label in plain]
-            done = len(plain)
+            done = len(plain)  # at most one mesh per leaf
             if progress is not None and plain:
-                progress(min(done, total), total)
+                progress(done, total)
             for preps, program, base in per_pixel:
                 rects.append(self._fill_csg(
                     preps, [p.proj() for p in preps], program, near, persp, base, W, H, zkey, value, gid,
@@ -635,7 +635,7 @@ class Renderer:
                 ))
                 done += len(preps)
                 if progress is not None:
-                    progress(min(done, total), total)
+                    progress(done, total)
             for rect in rects:
                 if rect[0] < rect[1] and rect[2] < rect[3]:
                     dirty = [min(dirty[0], rect[0]), max(dirty[1], rect[1]), min(dirty[2], rect[2]), max(dirty[3], rect[3])]
