@@ -561,3 +561,72 @@ def test_auto_builds_the_csg_surface_on_the_second_render_only(monkeypatch):
 def test_unknown_csg_method_is_refused():
     with pytest.raises(InvalidParameterError, match=re.escape("csg must be one of auto, surface, pixel, got 'mesh'")):
         Renderer(csg="mesh")
+
+
+# ------------------------------------------------- fills without a depth test
+def _separate_scenes():
+    from isocsg import Cone, ConvexPolyhedron, Cylinder
+
+    light = [PointLight((3, -4, 5))]
+    cam = Camera((0.5, -12, 1.0), (0, 0, 0), fov=32, width=480, height=300)
+    poly = [(0, 0, 1.9), (0.8, 0, 1.9), (0, 0.8, 1.9), (0, 0, 2.7), (0.6, 0.6, 2.4)]
+    return {
+        "one-sphere": Scene(cam, light, [Sphere((0, 0, 0), 1.2)]),
+        # Bounding cubes apart on screen (a ray caster would find no pixel shared either).
+        "apart": Scene(cam, light, [
+            Sphere((-2.7, 0, 0), 0.8), Cone((0.0, 0, -0.2), (0, 0, 1.4), 0.6),
+            Box((2.7, 0, 0), (1.0, 1.0, 1.0)), Cylinder((0, 0, -2.4), (1, 0, 0), 0.3), ConvexPolyhedron(poly),
+        ]),
+        "overlapping": Scene(cam, light, [Sphere((0, 0, 0), 1.0), Sphere((0.6, 2.0, 0.3), 1.0)]),
+        # Outside the sphere, inside its bounding cube: the cube has no screen rectangle.
+        "eye-near-sphere": Scene(Camera((0.85, -0.85, 0.1), (0, 0, 0), fov=110, width=200, height=160), light,
+                                 [Sphere((0, 0, 0), 1.0)]),
+    }
+
+
+def _record_depth_tests(monkeypatch):
+    from isocsg.render import painter
+
+    seen: list[bool] = []
+    real = painter.fill_front_kernel
+
+    def spy(*args):
+        seen.append(bool(args[-1]))
+        return real(*args)
+
+    monkeypatch.setattr(painter, "fill_front_kernel", spy)
+    return seen
+
+
+@pytest.mark.parametrize(
+    "name, tested",
+    [("one-sphere", False), ("apart", False), ("overlapping", True), ("eye-near-sphere", True)],
+)
+def test_depth_test_is_skipped_only_for_a_convex_mesh_that_nothing_else_can_cover(name, tested, monkeypatch):
+    seen = _record_depth_tests(monkeypatch)
+    Renderer().render(_separate_scenes()[name], contours=8)
+    assert seen and set(seen) == {tested}
+
+
+def test_csg_surface_parts_keep_the_depth_test(monkeypatch):
+    # A CSG surface is not convex: its parts overlap on screen.
+    seen = _record_depth_tests(monkeypatch)
+    Renderer(csg="surface").render(_concurrency_scenes()["csg-leaves-and-stripes"], contours=8)
+    assert seen and set(seen) == {True}
+
+
+@pytest.mark.parametrize("name", ["one-sphere", "apart", "overlapping", "eye-near-sphere"])
+def test_fill_without_depth_test_equals_the_depth_tested_one(name, monkeypatch):
+    # The same scene with every mesh forced through the depth test (the path the
+    # ray-caster accuracy tests judge for overlapping objects) must agree pixel
+    # for pixel: image, labels and depth.
+    from isocsg.render import painter
+
+    scene = _separate_scenes()[name]
+    fast = Renderer().render(scene, contours=16)
+    monkeypatch.setattr(painter, "_alone", lambda meshes, *args: [False] * len(meshes))
+    tested = Renderer().render(scene, contours=16)
+    assert np.isfinite(tested.image).sum() > 0.02 * tested.image.size
+    np.testing.assert_array_equal(fast.image, tested.image)
+    np.testing.assert_array_equal(fast.object_index, tested.object_index)
+    np.testing.assert_array_equal(fast.depth, tested.depth)

@@ -519,10 +519,11 @@ def fill_rect(a: NDArray[Any], r0: int, r1: int, c0: int, c1: int, value: float)
         flat[i * w + c0 : i * w + c1] = value
 
 
-@njit(cache=True, nogil=True, error_model="numpy")
+# Inlined into its caller: a call passes seven arrays, each reference-counted.
+@njit(cache=True, nogil=True, error_model="numpy", inline="always")
 def _fill_convex(
     px: NDArray[np.float64], py: NDArray[np.float64], pk: NDArray[np.float64], n: int,
-    value: float, tag: int, oy: int, clamp: bool,
+    value: float, tag: int, oy: int, clamp: bool, depth_test: bool,
     zbuf: NDArray[np.float64], vbuf: NDArray[np.float32], tbuf: NDArray[np.int32], bounds: NDArray[np.int64],
 ) -> None:
     """Front fill of a strictly convex polygon (3 or 4 vertices, negative signed area).
@@ -532,8 +533,10 @@ def _fill_convex(
     its upper end, with its own slope), so the result is the union of the
     fan triangles pixel for pixel, and neighbours sharing an edge split rows
     identically. ``clamp`` false promises that all columns lie in
-    ``[0, width]`` (no clamping needed). ``bounds`` (row min, row max + 1,
-    column min, column max + 1) grows to cover every pixel written.
+    ``[0, width]`` (no clamping needed). ``depth_test`` false writes without
+    reading the depth buffer (the caller knows nothing else covers these
+    pixels). ``bounds`` (row min, row max + 1, column min, column max + 1)
+    grows to cover every pixel written.
     """
     h, w = zbuf.shape
     top = 0
@@ -568,7 +571,18 @@ def _fill_convex(
     r_thr = int(math.ceil(min(max(lo, py[rn] - 0.5), hi)))
     cmin = -1.0
     cmax = float(w)
-    b0, b1, b2, b3 = bounds[0], bounds[1], bounds[2], bounds[3]
+    value32 = np.float32(value)
+    tag32 = np.int32(tag)
+    # The written rectangle grows by the polygon's pixel box (cheaper than per row).
+    xmin = px[0]
+    xmax = px[0]
+    for k in range(1, n):
+        xmin = min(xmin, px[k])
+        xmax = max(xmax, px[k])
+    bounds[0] = min(bounds[0], i_start)
+    bounds[1] = max(bounds[1], i_end)
+    bounds[2] = min(bounds[2], max(0, int(math.ceil(min(max(xmin, cmin), cmax) - 0.5))))
+    bounds[3] = max(bounds[3], min(w, int(math.ceil(min(max(xmax, cmin), cmax) - 0.5))))
     i = i_start
     while i < i_end:
         while i >= l_thr:
@@ -599,19 +613,24 @@ def _fill_convex(
             if j0 >= j1:
                 continue
             row = ii - oy
-            b0 = min(b0, ii)
-            b1 = max(b1, ii + 1)
-            b2 = min(b2, j0)
-            b3 = max(b3, j1)
             q = ka + gx * (j0 + 0.5 - xa) + gy * (pyc - ya)
-            for j in range(j0, j1):
-                if q < zbuf[row, j]:
-                    zbuf[row, j] = q
-                    vbuf[row, j] = value
-                    tbuf[row, j] = tag
-                q += gx
+            zr = zbuf[row]
+            vr = vbuf[row]
+            tr = tbuf[row]
+            if depth_test:
+                for j in range(j0, j1):
+                    if q < zr[j]:
+                        zr[j] = q
+                        vr[j] = value32
+                        tr[j] = tag32
+                    q += gx
+            else:
+                for j in range(j0, j1):
+                    zr[j] = q
+                    vr[j] = value32
+                    tr[j] = tag32
+                    q += gx
         i = seg_end
-    bounds[0], bounds[1], bounds[2], bounds[3] = b0, b1, b2, b3
 
 
 @njit(cache=True, nogil=True)
@@ -619,8 +638,9 @@ def fill_front_kernel(
     proj: NDArray[np.float64], polys: NDArray[np.int32], values: NDArray[np.float32],
     near: float, perspective: bool, tag: int, oy: int,
     zf: NDArray[np.float64], vf: NDArray[np.float32], tf: NDArray[np.int32], bounds: NDArray[np.int64],
+    depth_test: bool = True,
 ) -> None:
-    """Front faces of convex polygons into rows ``oy ..`` of the image buffers (depth-tested).
+    """Front faces of convex polygons into rows ``oy ..`` of the image buffers.
 
     ``proj`` is the output of :func:`project_kernel`; ``polys`` (P, 4) are
     the quads of :func:`pair_quads` (the last index -1 for a triangle). The
@@ -629,6 +649,13 @@ def fill_front_kernel(
     span per row; any other quad as its two triangles; a polygon crossing
     the near plane is clipped first (as :func:`fill_kernel`). ``bounds``
     grows to cover every row and column written.
+
+    With ``depth_test`` (the default) a pixel is written only where the
+    polygon is nearer than what the buffers hold. Without it the spans are
+    plain stores: correct for the front faces of one closed convex mesh
+    (they never overlap on screen) over pixels that no other mesh covers.
+    Polygons that cross the near plane or project non-convex are always
+    depth-tested.
     """
     hx, hy, hw, hd = proj[0], proj[1], proj[2], proj[3]
     sx, sy, sk = proj[4], proj[5], proj[6]
@@ -665,6 +692,14 @@ def fill_front_kernel(
             ymax = max(ymax, sy[d])
         if ymax <= r_lo or ymin >= r_hi + 0.5:
             continue  # no pixel centre of this stripe
+        # Back faces first (about half of a closed mesh): a planar polygon is
+        # back-facing when both its fan triangles are (signed area >= 0).
+        ax, ay = sx[a], sy[a]
+        s_abc = (sx[b] - ax) * (sy[c] - ay) - (sy[b] - ay) * (sx[c] - ax)
+        if n == 3 and not s_abc < 0.0:
+            continue
+        if n == 4 and not s_abc < 0.0 and not (sx[c] - ax) * (sy[d] - ay) - (sy[c] - ay) * (sx[d] - ax) < 0.0:
+            continue
         px[0], py[0], pk[0] = sx[a], sy[a], sk[a]
         px[1], py[1], pk[1] = sx[b], sy[b], sk[b]
         px[2], py[2], pk[2] = sx[c], sy[c], sk[c]
@@ -686,7 +721,7 @@ def fill_front_kernel(
                 if not crs < 0.0:
                     convex = False
             if convex:
-                _fill_convex(px, py, pk, 4, values[p], tag, oy, clamp, zf, vf, tf, bounds)
+                _fill_convex(px, py, pk, 4, values[p], tag, oy, clamp, depth_test, zf, vf, tf, bounds)
                 continue
             # Otherwise its two triangles (a, b, c) and (a, c, d), each with its own facing.
             for k in range(2):
@@ -695,14 +730,14 @@ def fill_front_kernel(
                     px[2], py[2], pk[2] = px[3], py[3], pk[3]
                 s2 = px[0] * py[1] - px[1] * py[0] + px[1] * py[2] - px[2] * py[1] + px[2] * py[0] - px[0] * py[2]
                 if s2 < 0.0:
-                    _fill_convex(px, py, pk, 3, values[p], tag, oy, clamp, zf, vf, tf, bounds)
+                    _fill_convex(px, py, pk, 3, values[p], tag, oy, clamp, depth_test, zf, vf, tf, bounds)
             continue
         if xmax <= 0.0 or xmin >= w + 0.5:
             continue
         clamp = not (xmin >= 0.0 and xmax <= w)
         s2 = px[0] * py[1] - px[1] * py[0] + px[1] * py[2] - px[2] * py[1] + px[2] * py[0] - px[0] * py[2]
         if s2 < 0.0:
-            _fill_convex(px, py, pk, 3, values[p], tag, oy, clamp, zf, vf, tf, bounds)
+            _fill_convex(px, py, pk, 3, values[p], tag, oy, clamp, depth_test, zf, vf, tf, bounds)
 
 
 # ------------------------------------------------------------------ Python API
