@@ -288,40 +288,6 @@ def resolve_csg(
 
 
 # ------------------------------------------------------------------- renderer
-_CUBE = np.array([(x, y, z) for x in (-1.0, 1.0) for y in (-1.0, 1.0) for z in (-1.0, 1.0)])
-
-
-def _alone(
-    meshes: list[_Prepared], convex: set[int], a: NDArray[np.float64], b: NDArray[np.float64],
-    eye: NDArray[np.float64], near: float,
-) -> list[bool]:
-    """Which meshes can be filled without a depth test.
-
-    The front faces of one closed convex mesh never overlap on screen, so a
-    convex primitive's mesh needs no depth test when its screen rectangle
-    meets no other mesh's. Rectangles are those of the bounding spheres'
-    cubes (conservative); a mesh whose cube reaches the near plane has none
-    and is depth-tested, as is everything that overlaps it.
-    """
-    rects: list[tuple[float, float, float, float] | None] = []
-    for p in meshes:
-        h = a @ (p.centre + p.radius * _CUBE - eye).T + b[:, None]
-        if not len(p.vertices) or np.any(h[3] <= near) or np.any(h[2] <= 0):
-            rects.append(None)
-            continue
-        cols, rows = h[0] / h[2], h[1] / h[2]
-        rects.append((float(cols.min()) - 1, float(cols.max()) + 1, float(rows.min()) - 1, float(rows.max()) + 1))
-
-    def meet(r: tuple[float, float, float, float] | None, q: tuple[float, float, float, float] | None) -> bool:
-        return r is None or q is None or (r[0] < q[1] and q[0] < r[1] and r[2] < q[3] and q[2] < r[3])
-
-    return [
-        id(p) in convex and rects[i] is not None
-        and not any(meet(rects[i], rects[j]) for j in range(len(meshes)) if j != i)
-        for i, p in enumerate(meshes)
-    ]
-
-
 @dataclass(frozen=True, slots=True, eq=False)
 class _Prepared:
     vertices: NDArray[np.float64]
@@ -615,7 +581,6 @@ class Renderer:
         obj_of: list[int] = []
         leaf_of: list[int] = []
         plain: list[tuple[_Prepared, int]] = []  # front fills: (mesh, label)
-        convex: set[int] = set()  # ids of the plain meshes that bound one convex primitive
         per_pixel: list[tuple[list[_Prepared], NDArray[np.int64], int]] = []  # (leaf meshes, program, first label)
         for k, obj in enumerate(scene.objects):
             base = len(obj_of)
@@ -628,7 +593,6 @@ class Renderer:
             built = [self._bands(p, scene.lights, obj.material, n_contours, cam.eye) for p in leaves]
             if program is None:
                 plain.append((self._prepare(*built[0]), base))
-                convex.add(id(plain[-1][0]))
                 continue
             parts = self._surface(program, built)
             if parts is None:
@@ -657,8 +621,7 @@ class Renderer:
         for p in unique:
             p.proj(n - 1)  # scratch for every thread, allocated here (not in the threads)
         if not per_pixel:
-            alone = _alone([p for p, _ in plain], convex, a, b, eye, near)
-            dirty = self._fill_primitives(plain, alone, resets, key_rect, a, b, eye, persp, near, n, zkey, value, gid)
+            dirty = self._fill_primitives(plain, resets, key_rect, a, b, eye, persp, near, n, zkey, value, gid)
             if progress is not None:
                 for done in range(1, total + 1):
                     progress(done, total)
@@ -704,7 +667,7 @@ class Renderer:
         return RenderResult(value, RenderTimings(t1 - t0, t2 - t1), cam, label_view, key_view, object_of, leaf_of_arr)
 
     def _fill_primitives(
-        self, plain: list[tuple[_Prepared, int]], alone: list[bool], resets: Any, key_rect: tuple[int, int, int, int],
+        self, plain: list[tuple[_Prepared, int]], resets: Any, key_rect: tuple[int, int, int, int],
         a: NDArray[np.float64], b: NDArray[np.float64], eye: NDArray[np.float64], persp: bool, near: float, n: int,
         zkey: NDArray[np.float64], value: NDArray[np.float32], gid: NDArray[np.int32],
     ) -> list[int]:
@@ -713,26 +676,23 @@ class Renderer:
         ``plain`` holds (mesh, label) pairs: plain primitives and the leaf
         parts of CSG surfaces. Each stripe resets its rows of the buffers,
         projects the meshes itself (cheaper than waiting for a shared
-        projection) and fills their front faces with the depth test, except
-        for the meshes marked ``alone`` (see :func:`_alone`). Returns the
-        rectangle written.
+        projection) and fills their front faces with the depth test. Returns
+        the rectangle written.
         """
         H, W = zkey.shape
         bounds = np.empty((n, 4), np.int64)
         bounds[:] = (H, 0, W, 0)
-        # Quads made here, not in the threads.
-        meshes = [(p, base, *p.quads(), not solo) for (p, base), solo in zip(plain, alone)]
+        meshes = [(p, base, *p.quads()) for p, base in plain]  # quads made here, not in the threads
 
         def stripe(k: int, r0: int, r1: int) -> None:
             for buf, (q0, q1, c0, c1), bg in resets:
                 if max(q0, r0) < min(q1, r1) and c0 < c1:
                     fill_rect(buf, max(q0, r0), min(q1, r1), c0, c1, bg)
-            for p, base, quads, quad_value, depth_test in meshes:
+            for p, base, quads, quad_value in meshes:
                 proj = p.proj(k)
                 project_kernel(p.vertices, eye, a, b, persp, proj, 0, len(p.vertices))
                 fill_front_kernel(
                     proj, quads, quad_value, near, persp, base, r0, zkey[r0:r1], value[r0:r1], gid[r0:r1], bounds[k],
-                    depth_test,
                 )
 
         # Balance the stripes over the rows written last time (a re-render from a nearby view).

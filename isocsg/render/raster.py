@@ -523,7 +523,7 @@ def fill_rect(a: NDArray[Any], r0: int, r1: int, c0: int, c1: int, value: float)
 @njit(cache=True, nogil=True, error_model="numpy", inline="always")
 def _fill_convex(
     px: NDArray[np.float64], py: NDArray[np.float64], pk: NDArray[np.float64], n: int,
-    value: float, tag: int, oy: int, clamp: bool, depth_test: bool,
+    value: float, tag: int, oy: int, clamp: bool,
     zbuf: NDArray[np.float64], vbuf: NDArray[np.float32], tbuf: NDArray[np.int32], bounds: NDArray[np.int64],
 ) -> None:
     """Front fill of a strictly convex polygon (3 or 4 vertices, negative signed area).
@@ -533,10 +533,8 @@ def _fill_convex(
     its upper end, with its own slope), so the result is the union of the
     fan triangles pixel for pixel, and neighbours sharing an edge split rows
     identically. ``clamp`` false promises that all columns lie in
-    ``[0, width]`` (no clamping needed). ``depth_test`` false writes without
-    reading the depth buffer (the caller knows nothing else covers these
-    pixels). ``bounds`` (row min, row max + 1, column min, column max + 1)
-    grows to cover every pixel written.
+    ``[0, width]`` (no clamping needed). ``bounds`` (row min, row max + 1,
+    column min, column max + 1) grows to cover every pixel written.
     """
     h, w = zbuf.shape
     top = 0
@@ -617,19 +615,12 @@ def _fill_convex(
             zr = zbuf[row]
             vr = vbuf[row]
             tr = tbuf[row]
-            if depth_test:
-                for j in range(j0, j1):
-                    if q < zr[j]:
-                        zr[j] = q
-                        vr[j] = value32
-                        tr[j] = tag32
-                    q += gx
-            else:
-                for j in range(j0, j1):
+            for j in range(j0, j1):
+                if q < zr[j]:
                     zr[j] = q
                     vr[j] = value32
                     tr[j] = tag32
-                    q += gx
+                q += gx
         i = seg_end
 
 
@@ -638,9 +629,8 @@ def fill_front_kernel(
     proj: NDArray[np.float64], polys: NDArray[np.int32], values: NDArray[np.float32],
     near: float, perspective: bool, tag: int, oy: int,
     zf: NDArray[np.float64], vf: NDArray[np.float32], tf: NDArray[np.int32], bounds: NDArray[np.int64],
-    depth_test: bool = True,
 ) -> None:
-    """Front faces of convex polygons into rows ``oy ..`` of the image buffers.
+    """Front faces of convex polygons into rows ``oy ..`` of the image buffers (depth-tested).
 
     ``proj`` is the output of :func:`project_kernel`; ``polys`` (P, 4) are
     the quads of :func:`pair_quads` (the last index -1 for a triangle). The
@@ -649,13 +639,6 @@ def fill_front_kernel(
     span per row; any other quad as its two triangles; a polygon crossing
     the near plane is clipped first (as :func:`fill_kernel`). ``bounds``
     grows to cover every row and column written.
-
-    With ``depth_test`` (the default) a pixel is written only where the
-    polygon is nearer than what the buffers hold. Without it the spans are
-    plain stores: correct for the front faces of one closed convex mesh
-    (they never overlap on screen) over pixels that no other mesh covers.
-    Polygons that cross the near plane or project non-convex are always
-    depth-tested.
     """
     hx, hy, hw, hd = proj[0], proj[1], proj[2], proj[3]
     sx, sy, sk = proj[4], proj[5], proj[6]
@@ -721,7 +704,7 @@ def fill_front_kernel(
                 if not crs < 0.0:
                     convex = False
             if convex:
-                _fill_convex(px, py, pk, 4, values[p], tag, oy, clamp, depth_test, zf, vf, tf, bounds)
+                _fill_convex(px, py, pk, 4, values[p], tag, oy, clamp, zf, vf, tf, bounds)
                 continue
             # Otherwise its two triangles (a, b, c) and (a, c, d), each with its own facing.
             for k in range(2):
@@ -730,14 +713,14 @@ def fill_front_kernel(
                     px[2], py[2], pk[2] = px[3], py[3], pk[3]
                 s2 = px[0] * py[1] - px[1] * py[0] + px[1] * py[2] - px[2] * py[1] + px[2] * py[0] - px[0] * py[2]
                 if s2 < 0.0:
-                    _fill_convex(px, py, pk, 3, values[p], tag, oy, clamp, depth_test, zf, vf, tf, bounds)
+                    _fill_convex(px, py, pk, 3, values[p], tag, oy, clamp, zf, vf, tf, bounds)
             continue
         if xmax <= 0.0 or xmin >= w + 0.5:
             continue
         clamp = not (xmin >= 0.0 and xmax <= w)
         s2 = px[0] * py[1] - px[1] * py[0] + px[1] * py[2] - px[2] * py[1] + px[2] * py[0] - px[0] * py[2]
         if s2 < 0.0:
-            _fill_convex(px, py, pk, 3, values[p], tag, oy, clamp, depth_test, zf, vf, tf, bounds)
+            _fill_convex(px, py, pk, 3, values[p], tag, oy, clamp, zf, vf, tf, bounds)
 
 
 # ------------------------------------------------------------------ Python API
