@@ -30,6 +30,7 @@ from numpy.typing import NDArray
 
 from ..errors import InvalidGeometryError, InvalidParameterError
 from ..laminae.model import BandMesh
+from ..laminae.split import mesh_edges
 from .mesh import _manifold3d
 from .tree import CSGNode
 
@@ -130,10 +131,9 @@ def close_mesh(
     t = inverse.reshape(-1)[t]
     tol = _ON_EDGE_RELATIVE * max(float(np.ptp(v, axis=0).max()), 1e-300)
     for _ in range(8):  # each pass splits one open edge per triangle
-        n = len(v)
         u = t.ravel()
         w = t[:, [1, 2, 0]].ravel()
-        open_h = _open_half_edges(u, w, n)
+        open_h = _open_half_edges(t)
         if not len(open_h):
             break
         ends = np.unique(np.concatenate([u[open_h], w[open_h]]))
@@ -168,15 +168,10 @@ def close_mesh(
     return v, t, src
 
 
-def _open_half_edges(u: NDArray[np.int64], w: NDArray[np.int64], n: int) -> NDArray[np.int64]:
-    """Half-edges ``u -> w`` whose undirected edge is not used exactly twice."""
-    key = np.minimum(u, w) * n + np.maximum(u, w)
-    order = np.argsort(key)
-    ks = key[order]
-    start = np.flatnonzero(np.concatenate([[True], ks[1:] != ks[:-1]]))
-    count = np.diff(np.append(start, len(ks)))
-    per = np.repeat(count, count)
-    return np.sort(order[per != 2])
+def _open_half_edges(t: NDArray[np.int64]) -> NDArray[np.int64]:
+    """Half-edges (corner j to j + 1 of each triangle, flattened) whose undirected edge is not used exactly twice."""
+    tri_edge = mesh_edges(t)[1].ravel()
+    return np.flatnonzero(np.bincount(tri_edge)[tri_edge] != 2)
 
 
 @njit(cache=True)
