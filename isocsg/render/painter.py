@@ -215,11 +215,22 @@ def resolve_csg(
     the pixel shows that leaf's front value, otherwise the back value of a leaf
     that leaves.
     """
+    n = kf.shape[0]
+    _resolve_rows(kf, vf, kb, vb, program, table, gid_base, ox, oy, zkey, value, gid,
+                  np.empty(n), np.empty(n, np.int8), np.zeros(n, np.bool_), np.zeros(max(len(program), 1), np.bool_))
+
+
+# Without reference counting (see isocsg.render.raster): the per-pixel loop
+# passes arrays to inlined helpers, two atomic operations each otherwise.
+@njit(cache=True, nogil=True, _nrt=False)
+def _resolve_rows(
+    kf: NDArray[np.float64], vf: NDArray[np.float32], kb: NDArray[np.float64], vb: NDArray[np.float32],
+    program: NDArray[np.int64], table: NDArray[np.bool_], gid_base: int, ox: int, oy: int,
+    zkey: NDArray[np.float64], value: NDArray[np.float32], gid: NDArray[np.int32],
+    nxt: NDArray[np.float64], phase: NDArray[np.int8], inside: NDArray[np.bool_], stack: NDArray[np.bool_],
+) -> None:
+    # phase: 0 before the leaf's front, 1 inside, 2 past its back.
     n, h, w = kf.shape
-    nxt = np.empty(n)
-    phase = np.empty(n, np.int8)  # 0 before the front, 1 inside, 2 past the back
-    inside = np.zeros(n, np.bool_)
-    stack = np.zeros(max(len(program), 1), np.bool_)
     use_table = len(table) > 0
     for r in range(h):
         for c in range(w):

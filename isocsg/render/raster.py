@@ -46,6 +46,14 @@ __all__ = ["Raster", "rasterize", "homogeneous", "near_distance", "camera_affine
 NEAR_RELATIVE = 1e-9
 
 
+# Options of the per-polygon kernels. They are compiled without numba's
+# reference counting (``_nrt=False``): with it, every array handed to a helper
+# or sliced into a row view costs two atomic operations per polygon, which
+# was most of the cost of a small polygon (4x the set-up itself). These
+# kernels allocate nothing; their thin entry points do.
+_RAW = {"cache": True, "nogil": True, "_nrt": False}
+
+
 def homogeneous(camera: Camera, points: ArrayLike) -> NDArray[np.float64]:
     """Homogeneous screen coordinates of world points.
 
@@ -95,7 +103,7 @@ def near_distance(depths: NDArray[np.float64]) -> float:
 
 
 # --------------------------------------------------------------------- kernels
-@njit(cache=True)
+@njit(**_RAW)
 def _fill_triangle(
     x0: float, y0: float, x1: float, y1: float, x2: float, y2: float,
     k0: float, k1: float, k2: float,
@@ -222,27 +230,26 @@ def fill_kernel(
     front buffers are written.
     """
     sx, sy, sk = project_vertices(hx, hy, hw, hd, near, perspective)
-    _fill_all(hx, hy, hw, hd, sx, sy, sk, tris, vout, vin, near, perspective, cull, do_back, tag, ox, oy, zf, vf, tf, zb, vb)
+    _fill_all(hx, hy, hw, hd, sx, sy, sk, tris, vout, vin, near, perspective, cull, do_back, tag, ox, oy, zf, vf, tf, zb, vb,
+              np.empty((3, 4)))
 
 
-@njit(cache=True, nogil=True)
+@njit(**_RAW)
 def _fill_all(
     hx: NDArray[np.float64], hy: NDArray[np.float64], hw: NDArray[np.float64], hd: NDArray[np.float64],
     sx: NDArray[np.float64], sy: NDArray[np.float64], sk: NDArray[np.float64],
     tris: NDArray[np.int32], vout: NDArray[np.float32], vin: NDArray[np.float32],
     near: float, perspective: bool, cull: bool, do_back: bool, tag: int, ox: int, oy: int,
     zf: NDArray[np.float64], vf: NDArray[np.float32], tf: NDArray[np.int32],
-    zb: NDArray[np.float64], vb: NDArray[np.float32],
+    zb: NDArray[np.float64], vb: NDArray[np.float32], scratch: NDArray[np.float64],
 ) -> None:
-    px = np.empty(4)
-    py = np.empty(4)
-    pk = np.empty(4)
+    px, py, pk = scratch[0], scratch[1], scratch[2]  # (3, 4): a clipped triangle has up to 4 corners
     for t in range(tris.shape[0]):
         _fill_one(hx, hy, hw, hd, sx, sy, sk, tris[t, 0], tris[t, 1], tris[t, 2], near, perspective, cull, do_back,
                   vout[t], vin[t], tag, ox, oy, zf, vf, tf, zb, vb, px, py, pk)
 
 
-@njit(cache=True, nogil=True)
+@njit(**_RAW)
 def _fill_one(
     hx: NDArray[np.float64], hy: NDArray[np.float64], hw: NDArray[np.float64], hd: NDArray[np.float64],
     sx: NDArray[np.float64], sy: NDArray[np.float64], sk: NDArray[np.float64],
@@ -373,7 +380,7 @@ def camera_affine(camera: Camera) -> tuple[NDArray[np.float64], NDArray[np.float
     return a, b
 
 
-@njit(cache=True, nogil=True)
+@njit(**_RAW)
 def project_kernel(
     vertices: NDArray[np.float64], eye: NDArray[np.float64], a: NDArray[np.float64], b: NDArray[np.float64],
     perspective: bool, out: NDArray[np.float64], v0: int, v1: int,
@@ -510,7 +517,7 @@ def pair_quads(
     return rows[order].astype(np.int32), at[order].astype(np.int32)
 
 
-@njit(cache=True, nogil=True)
+@njit(**_RAW)
 def fill_rect(a: NDArray[Any], r0: int, r1: int, c0: int, c1: int, value: float) -> None:
     """``a[r0:r1, c0:c1] = value`` without the GIL (``a`` C-contiguous)."""
     flat = a.reshape(-1)  # contiguous row pieces: filled with wide stores
@@ -520,7 +527,7 @@ def fill_rect(a: NDArray[Any], r0: int, r1: int, c0: int, c1: int, value: float)
 
 
 # Inlined into its caller: a call passes seven arrays, each reference-counted.
-@njit(cache=True, nogil=True, error_model="numpy", inline="always")
+@njit(**_RAW, error_model="numpy", inline="always")
 def _fill_convex(
     px: NDArray[np.float64], py: NDArray[np.float64], pk: NDArray[np.float64], n: int,
     value: float, tag: int, oy: int, clamp: bool,
@@ -640,16 +647,23 @@ def fill_front_kernel(
     the near plane is clipped first (as :func:`fill_kernel`). ``bounds``
     grows to cover every row and column written.
     """
+    _fill_front(proj, polys, values, near, perspective, tag, oy, zf, vf, tf, bounds,
+                np.empty((3, 4)), np.empty((1, 1)), np.empty((1, 1), np.float32))
+
+
+@njit(**_RAW)
+def _fill_front(
+    proj: NDArray[np.float64], polys: NDArray[np.int32], values: NDArray[np.float32],
+    near: float, perspective: bool, tag: int, oy: int,
+    zf: NDArray[np.float64], vf: NDArray[np.float32], tf: NDArray[np.int32], bounds: NDArray[np.int64],
+    scratch: NDArray[np.float64], dummy_k: NDArray[np.float64], dummy_v: NDArray[np.float32],
+) -> None:
     hx, hy, hw, hd = proj[0], proj[1], proj[2], proj[3]
     sx, sy, sk = proj[4], proj[5], proj[6]
     nrow, w = zf.shape
     r_lo = float(oy)
     r_hi = float(oy + nrow)
-    px = np.empty(4)
-    py = np.empty(4)
-    pk = np.empty(4)
-    dummy_k = np.empty((1, 1))
-    dummy_v = np.empty((1, 1), np.float32)
+    px, py, pk = scratch[0], scratch[1], scratch[2]
     for p in range(polys.shape[0]):
         a = polys[p, 0]
         b = polys[p, 1]
