@@ -293,10 +293,10 @@ def _cut(surf: Surface, fams: list[FieldFamily], mat: Material) -> BandMesh:
     v_out = np.full(len(triangles), mat.ambient)
     v_in = np.full(len(triangles), mat.ambient)
     for i, fam in enumerate(fams):
-        f = values[triangles, i]  # (T, 3)
-        flat = np.ptp(f, axis=1) <= 1e-12
+        f0, f1, f2 = (values[triangles[:, k], i] for k in range(3))
+        flat = np.maximum(np.maximum(f0, f1), f2) - np.minimum(np.minimum(f0, f1), f2) <= 1e-12
         o, n_ = fam.table_out[band[:, i]], fam.table_in[band[:, i]]
-        eo, ei = fam.exact(f[:, 0])
+        eo, ei = fam.exact(f0)
         v_out += np.where(flat, eo, o)
         v_in += np.where(flat, ei, n_)
     composite = band[:, 0] if band.shape[1] == 1 else np.unique(band, axis=0, return_inverse=True)[1].reshape(-1)

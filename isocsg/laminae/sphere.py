@@ -124,15 +124,16 @@ def sphere_surface(sphere: Sphere, light: Light | None, levels: NDArray[np.float
     m, n_rings = LONGITUDES, len(t)
     j = np.arange(m)
     jn = (j + 1) % m
-    tris = [np.stack([np.zeros(m, np.int64), 1 + j, 1 + jn], axis=1)]
-    for k in range(n_rings - 1):
-        a, b = 1 + k * m, 1 + (k + 1) * m
-        tris.append(np.stack([a + j, b + j, b + jn], axis=1))
-        tris.append(np.stack([a + j, b + jn, a + jn], axis=1))
+    a = 1 + m * np.arange(n_rings - 1)[:, None]  # ring k's first vertex, (rings - 1, 1)
+    b = a + m
+    quads = np.stack([np.stack([a + j, b + j, b + jn], axis=-1), np.stack([a + j, b + jn, a + jn], axis=-1)], axis=1)
     south = len(vertices) - 1
     last = 1 + (n_rings - 1) * m
-    tris.append(np.stack([np.full(m, south), last + jn, last + j], axis=1))
-    triangles = np.vstack(tris).astype(np.int64)
+    triangles = np.vstack([
+        np.stack([np.zeros(m, np.int64), 1 + j, 1 + jn], axis=1),
+        quads.reshape(-1, 3),
+        np.stack([np.full(m, south), last + jn, last + j], axis=1),
+    ]).astype(np.int64)
     return Surface(vertices, normals, orient_outward(vertices, normals, triangles))
 
 

@@ -11,6 +11,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
+from numba import njit
 from numpy.typing import NDArray
 
 from ..lighting.lights import PointLight
@@ -37,14 +38,31 @@ def orient_outward(vertices: NDArray[np.float64], normals: NDArray[np.float64], 
     """Reorder triangle corners so that each is counter-clockwise about its vertex normals.
 
     Degenerate (zero-area) triangles are left as they are.
+
+    Examples
+    --------
+    >>> v = np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0.0]])
+    >>> up = np.tile([0, 0, 1.0], (3, 1))
+    >>> orient_outward(v, up, np.array([[0, 2, 1]])).tolist()
+    [[0, 1, 2]]
     """
-    t = np.asarray(triangles, dtype=np.int64).copy()
-    a, b, c = vertices[t[:, 0]], vertices[t[:, 1]], vertices[t[:, 2]]
-    g = np.cross(b - a, c - a)
-    s = np.einsum("ij,ij->i", g, normals[t[:, 0]] + normals[t[:, 1]] + normals[t[:, 2]])
-    flip = s < 0
-    t[flip, 1], t[flip, 2] = t[flip, 2].copy(), t[flip, 1].copy()
+    t = np.array(triangles, dtype=np.int64).reshape(-1, 3)
+    _orient(np.ascontiguousarray(vertices, dtype=np.float64), np.ascontiguousarray(normals, dtype=np.float64), t)
     return t
+
+
+@njit(cache=True, nogil=True)
+def _orient(v: NDArray[np.float64], nrm: NDArray[np.float64], t: NDArray[np.int64]) -> None:
+    for i in range(t.shape[0]):
+        a, b, c = t[i, 0], t[i, 1], t[i, 2]
+        ux, uy, uz = v[b, 0] - v[a, 0], v[b, 1] - v[a, 1], v[b, 2] - v[a, 2]
+        wx, wy, wz = v[c, 0] - v[a, 0], v[c, 1] - v[a, 1], v[c, 2] - v[a, 2]
+        gx, gy, gz = uy * wz - uz * wy, uz * wx - ux * wz, ux * wy - uy * wx
+        s = 0.0
+        for k in (a, b, c):
+            s += gx * nrm[k, 0] + gy * nrm[k, 1] + gz * nrm[k, 2]
+        if s < 0.0:
+            t[i, 1], t[i, 2] = c, b
 
 
 def light_reference_distance(lights: object, center: NDArray[np.float64], radius: float) -> float:
