@@ -341,3 +341,38 @@ def test_quads_of_a_patch_cover_it_once(cam):
     clear = ~amb.any(axis=2)
     assert hit.sum() > 200
     np.testing.assert_array_equal(counts[clear], hit[clear].astype(int))
+
+
+@pytest.mark.parametrize("cam", CAMERAS.values(), ids=CAMERAS.keys())
+def test_projected_fill_equals_the_triangle_fill_without_labels(cam):
+    """fill_projected (CSG leaves: projection done once, no labels) writes the same
+    front and back buffers as fill_kernel with culling and back buffers."""
+    from isocsg.render.raster import camera_affine, fill_kernel, fill_projected, project_kernel
+
+    rng = np.random.default_rng(5)
+    verts, tris = random_triangles(rng, 40)
+    tris = tris.astype(np.int32)
+    vo = rng.uniform(0, 1, len(tris)).astype(np.float32)
+    vi = rng.uniform(0, 1, len(tris)).astype(np.float32)
+    H, W = cam.height, cam.width
+    oy, ox, h, w = 3, 5, H - 7, W - 9  # a viewport inside the image
+    h4 = homogeneous(cam, verts)
+    near = near_distance(h4[3])
+    persp = not cam.orthographic
+
+    def buffers():
+        return np.full((h, w), np.inf), np.full((h, w), np.nan, np.float32), np.full((h, w), -np.inf), np.full((h, w), np.nan, np.float32)
+
+    zf, vf, zb, vb = buffers()
+    labels = np.full((h, w), -1, np.int32)
+    fill_kernel(h4[0], h4[1], h4[2], h4[3], tris, vo, vi, near, persp, True, True, 0, ox, oy, zf, vf, labels, zb, vb)
+    a, b = camera_affine(cam)
+    proj = np.empty((7, len(verts)))
+    project_kernel(verts, cam.eye_array, a, b, persp, proj, 0, len(verts))
+    zf2, vf2, zb2, vb2 = buffers()
+    fill_projected(proj, tris, vo, vi, near, persp, ox, oy, zf2, vf2, zb2, vb2)
+    assert np.isfinite(zf).sum() > 50 and np.isfinite(zb).sum() > 50
+    np.testing.assert_allclose(zf2, zf, rtol=1e-12)
+    np.testing.assert_allclose(zb2, zb, rtol=1e-12)
+    np.testing.assert_array_equal(vf2, vf)
+    np.testing.assert_array_equal(vb2, vb)

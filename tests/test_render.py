@@ -561,3 +561,50 @@ def test_auto_builds_the_csg_surface_on_the_second_render_only(monkeypatch):
 def test_unknown_csg_method_is_refused():
     with pytest.raises(InvalidParameterError, match=re.escape("csg must be one of auto, surface, pixel, got 'mesh'")):
         Renderer(csg="mesh")
+
+
+RECT_CAMERAS = {
+    "perspective": Camera((0.4, -5.0, 1.6), (0.3, 0, 0.2), fov=50, width=90, height=70),
+    "wide": Camera((2.5, -2.2, 0.9), (0, 0, 0), fov=100, width=80, height=80),
+    "orthographic": Camera((0.4, -5.0, 1.6), (0, 0, 0), width=64, height=48, orthographic=True, height_m=4.0),
+}
+
+
+@pytest.mark.parametrize("cam", RECT_CAMERAS.values(), ids=RECT_CAMERAS.keys())
+def test_screen_rectangle_holds_every_pixel_of_the_solid(cam):
+    # The per-pixel CSG buffers cover a rectangle computed before any band
+    # exists; every pixel whose ray meets the solid must lie inside it, and a
+    # sphere's rectangle must be tight (one pixel of margin). Rays against
+    # spheres and boxes are intersected here, independently of the renderer.
+    from isocsg.render import painter
+
+    s1, s2 = Sphere((0.3, 0.2, -0.1), 0.9), Sphere((-0.8, 0.4, 0.5), 0.6)
+    box = Box((0.6, -0.2, 0.3), (1.4, 0.8, 1.1))
+    o = cam.ray_origins().reshape(-1, 3)
+    d = cam.ray_directions().reshape(-1, 3)
+
+    def hits_sphere(s):
+        oc = o - s.center_array
+        bq = np.einsum("ij,ij->i", oc, d)
+        disc = bq * bq - (np.einsum("ij,ij->i", oc, oc) - s.radius**2) * np.einsum("ij,ij->i", d, d)
+        return (disc >= 0) & (-bq + np.sqrt(np.maximum(disc, 0)) > 0)
+
+    def hits_box(bx):
+        lo, hi = np.asarray(bx.bounds)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            t1, t2 = (lo - o) / d, (hi - o) / d
+        tn, tx = np.nanmax(np.minimum(t1, t2), axis=1), np.nanmin(np.maximum(t1, t2), axis=1)
+        return (tn <= tx) & (tx > 0)
+
+    cases = {
+        s1: hits_sphere(s1), box: hits_box(box),
+        s1 | s2: hits_sphere(s1) | hits_sphere(s2), s1 & box: hits_sphere(s1) & hits_box(box),
+        s1 - box: hits_sphere(s1),
+    }
+    for solid, hit in cases.items():
+        c0, r0, c1, r1 = painter._screen_rect(solid, cam, 1e-9)
+        rows, cols = np.divmod(np.flatnonzero(hit), cam.width)
+        assert len(rows) > 20
+        assert r0 <= rows.min() and rows.max() < r1 and c0 <= cols.min() and cols.max() < c1, solid
+        if isinstance(solid, Sphere):
+            assert r0 >= rows.min() - 2 and r1 <= rows.max() + 3 and c0 >= cols.min() - 2 and c1 <= cols.max() + 3

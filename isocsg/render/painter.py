@@ -27,7 +27,7 @@ import threading
 import time
 from collections import OrderedDict
 from collections.abc import Callable, Sequence
-from concurrent.futures import ThreadPoolExecutor
+from concurrent.futures import Future, ThreadPoolExecutor, wait
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -38,13 +38,13 @@ from numpy.typing import NDArray
 from .._validation import integer
 from ..camera import Camera
 from ..csg.surface import surface_from_bands
-from ..csg.tree import CSGNode
+from ..csg.tree import CSGNode, Difference, Union
 from ..errors import InvalidParameterError
-from ..geometry.primitives import Primitive
+from ..geometry.primitives import Primitive, Sphere
 from ..laminae.model import BandMesh
 from ..scene.model import MAX_CONTOURS, Scene
 from .raster import (
-    NEAR_RELATIVE, camera_affine, fill_front_kernel, fill_kernel, fill_rect, key_to_depth, pair_quads, project_kernel,
+    NEAR_RELATIVE, camera_affine, fill_front_kernel, fill_projected, fill_rect, key_to_depth, pair_quads, project_kernel,
 )
 
 __all__ = ["RenderResult", "RenderTimings", "Renderer", "render", "default_renderer"]
@@ -64,8 +64,11 @@ class RenderTimings:
     ----------
     build : float
         Obtaining the band meshes (building them, or fetching them from cache).
+        For a CSG object resolved per pixel, the leaves built first are filled
+        by a worker thread meanwhile.
     fill : float
-        Projection, triangle fill, per-pixel CSG and composition of the image.
+        The rest: projection, triangle fill, per-pixel CSG and composition of
+        the image (``total`` is the render's wall-clock time).
     """
 
     build: float
@@ -419,6 +422,8 @@ class Renderer:
         self._dirty: dict[int, tuple[int, int, int, int]] = {}
         # Per-leaf CSG buffers, by name: grown to the largest object rectangle seen.
         self._scratch: dict[str, NDArray[Any]] = {}
+        # CSG objects already resolved per pixel -> whether their bands were view-dependent.
+        self._csg_seen: OrderedDict[tuple[Any, ...], bool] = OrderedDict()
 
     def _buffer(self, name: str, shape: tuple[int, ...], dtype: Any) -> NDArray[Any]:
         key = (name, shape, np.dtype(dtype).str)
@@ -479,14 +484,26 @@ class Renderer:
             raise InvalidParameterError(f"build_laminae must return a LaminaSet or BandMesh, got {type(out).__name__}")
         return bands, bool(getattr(out, "view_dependent", False))
 
+    def _per_pixel(self, key: tuple[Any, ...]) -> bool:
+        """Whether the CSG object ``(shape, lights, material, contours)`` is resolved per pixel,
+        decided before its bands are built: ``"pixel"``; ``"auto"`` on its first render
+        or when its bands were view-dependent."""
+        if self.csg != "auto":
+            return self.csg == "pixel"
+        seen = self._csg_seen.get(key)
+        if seen is not None:
+            self._csg_seen.move_to_end(key)
+        return seen is None or seen
+
     def _surface(
-        self, program: NDArray[np.int64], built: list[tuple[BandMesh, bool]]
+        self, program: NDArray[np.int64], built: list[tuple[BandMesh, bool]], *, register_only: bool = False,
     ) -> list[tuple[int, _Prepared]] | None:
         """The leaf parts of a CSG object's clipped surface, or None to resolve it per pixel.
 
         Under ``csg="auto"`` the surface is built on the second render of the
         same view-independent bands (a first render costs no Boolean), then
         kept; ``"surface"`` builds it at once (for specular bands: every time).
+        ``register_only`` records a first sight and never builds.
         """
         if self.csg == "pixel":
             return None
@@ -500,9 +517,9 @@ class Renderer:
         seen = hit is not None and all(x is y for x, y in zip(hit[0], bands))
         if seen:
             self._surfaces.move_to_end(key)
-            if hit[1] is not None:
+            if hit[1] is not None or register_only:
                 return hit[1]
-        elif self.csg == "auto":
+        elif self.csg == "auto" or register_only:
             self._surfaces[key] = (bands, None)  # seen once: per pixel this time
             self._trim_surfaces()
             return None
@@ -595,37 +612,12 @@ class Renderer:
         n_contours = integer("contours", n_contours, low=1, high=MAX_CONTOURS, error=InvalidParameterError)
 
         t0 = time.perf_counter()
-        # Labels: one per (object, leaf); a pixel's label maps to both.
-        obj_of: list[int] = []
-        leaf_of: list[int] = []
-        plain: list[tuple[_Prepared, int]] = []  # front fills: (mesh, label)
-        per_pixel: list[tuple[list[_Prepared], NDArray[np.int64], int]] = []  # (leaf meshes, program, first label)
-        for k, obj in enumerate(scene.objects):
-            base = len(obj_of)
-            if isinstance(obj.shape, CSGNode):
-                leaves, program = obj.shape.program()
-            else:
-                leaves, program = [obj.shape], None
-            obj_of.extend([k] * len(leaves))
-            leaf_of.extend(range(len(leaves)))
-            built = [self._bands(p, scene.lights, obj.material, n_contours, cam.eye) for p in leaves]
-            if program is None:
-                plain.append((self._prepare(*built[0]), base))
-                continue
-            parts = self._surface(program, built)
-            if parts is None:
-                per_pixel.append(([self._prepare(*b) for b in built], program, base))
-            else:
-                plain.extend((prep, base + i) for i, prep in parts)
-        t1 = time.perf_counter()
-
         H, W = cam.height, cam.width
         persp = not cam.orthographic
         a, b = camera_affine(cam)
         eye = cam.eye_array
-        unique = list({id(p): p for p in [q for q, _ in plain] + [q for preps, _, _ in per_pixel for q in preps]}.values())
-        # Near plane at a tiny fraction of the scene's depth (bounded by the meshes' bounding spheres).
-        far = max((abs(float(a[3] @ (p.centre - eye))) + p.radius for p in unique if len(p.vertices)), default=1.0)
+        # Near plane at a tiny fraction of the scene's depth (bounded by the objects' bounding boxes).
+        far = max((_far_depth(obj.shape.bounds, a[3], eye) for obj in scene.objects), default=1.0)
         near = NEAR_RELATIVE * max(far if far > 0 else 1.0, 1e-300)
         # Depth keys and labels are private: only the rectangle the previous
         # render wrote needs resetting. The image is the caller's, so all of it
@@ -633,46 +625,66 @@ class Renderer:
         zkey, key_rect = self._stale("key", (H, W), np.float64)
         gid, gid_rect = self._stale("label", (H, W), np.int32)
         value = self._buffer("image", (H, W), np.float32)
-        resets = ((value, (0, H, 0, W), np.float32(np.nan)), (zkey, key_rect, np.inf), (gid, gid_rect, np.int32(-1)))
-        total = len(obj_of)
-        n = _STRIPES if H * W >= _STRIPE_MIN_PIXELS and H >= 2 * _STRIPES else 1
-        for p in unique:
-            p.proj(n - 1)  # scratch for every thread, allocated here (not in the threads)
-        if not per_pixel:
-            dirty = self._fill_primitives(plain, resets, key_rect, a, b, eye, persp, near, n, zkey, value, gid)
-            if progress is not None:
-                for done in range(1, total + 1):
-                    progress(done, total)
-        else:
-            def setup(k: int) -> None:
-                # Share k of n of the projection and of the buffer resets (kernels without the GIL).
-                for p in unique:
-                    nv = len(p.vertices)
-                    project_kernel(p.vertices, eye, a, b, persp, p.proj(), nv * k // n, nv * (k + 1) // n)
-                for buf, (r0, r1, c0, c1), bg in resets:
-                    if r0 < r1 and c0 < c1:
-                        fill_rect(buf, r0 + (r1 - r0) * k // n, r0 + (r1 - r0) * (k + 1) // n, c0, c1, bg)
+        resets = [(value, (0, H, 0, W), np.float32(np.nan)), (zkey, key_rect, np.inf), (gid, gid_rect, np.int32(-1))]
+        dirty = [H, 0, W, 0]  # rows [dirty[0], dirty[1]), columns [dirty[2], dirty[3])
 
-            futures = [_pool().submit(setup, k) for k in range(1, n)]
-            setup(0)
-            for f in futures:
-                f.result()
-            dirty = [H, 0, W, 0]  # rows [dirty[0], dirty[1]), columns [dirty[2], dirty[3])
-            rects = [self._fill_plain(prep, prep.proj(), near, persp, label, zkey, value, gid) for prep, label in plain]
-            done = len(plain)  # at most one mesh per leaf
-            if progress is not None and plain:
-                progress(done, total)
-            for preps, program, base in per_pixel:
-                rects.append(self._fill_csg(
-                    preps, [p.proj() for p in preps], program, near, persp, base, W, H, zkey, value, gid,
-                    progress, done, total,
-                ))
-                done += len(preps)
-                if progress is not None:
-                    progress(done, total)
-            for rect in rects:
-                if rect[0] < rect[1] and rect[2] < rect[3]:
-                    dirty = [min(dirty[0], rect[0]), max(dirty[1], rect[1]), min(dirty[2], rect[2]), max(dirty[3], rect[3])]
+        def grow(rect: Sequence[int]) -> None:
+            if rect[0] < rect[1] and rect[2] < rect[3]:
+                dirty[:] = [min(dirty[0], rect[0]), max(dirty[1], rect[1]), min(dirty[2], rect[2]), max(dirty[3], rect[3])]
+
+        build = 0.0  # seconds spent obtaining band meshes
+        # Labels: one per (object, leaf); a pixel's label maps to both.
+        obj_of: list[int] = []
+        leaf_of: list[int] = []
+        plain: list[tuple[_Prepared, int]] = []  # front fills: (mesh, label)
+        total = sum(len(obj.shape.program()[0]) if isinstance(obj.shape, CSGNode) else 1 for obj in scene.objects)
+        resolved = 0  # leaves of the objects resolved per pixel so far
+        for k, obj in enumerate(scene.objects):
+            base = len(obj_of)
+            if not isinstance(obj.shape, CSGNode):
+                obj_of.append(k)
+                leaf_of.append(0)
+                t = time.perf_counter()
+                plain.append((self._prepare(*self._bands(obj.shape, scene.lights, obj.material, n_contours, cam.eye)), base))
+                build += time.perf_counter() - t
+                continue
+            leaves, program = obj.shape.program()
+            obj_of.extend([k] * len(leaves))
+            leaf_of.extend(range(len(leaves)))
+            seen_key = (obj.shape, scene.lights, obj.material, n_contours)
+            built: list[tuple[BandMesh, bool]] | None = None
+            parts = None
+            if not self._per_pixel(seen_key):
+                t = time.perf_counter()
+                built = [self._bands(p, scene.lights, obj.material, n_contours, cam.eye) for p in leaves]
+                build += time.perf_counter() - t
+                parts = self._surface(program, built)
+            if parts is not None:
+                plain.extend((prep, base + i) for i, prep in parts)
+                continue
+            if resets:  # the image buffers must be clean before an object is resolved into them
+                _reset(resets)
+                resets = []
+            rect, seconds, built = self._render_per_pixel(
+                obj.shape, leaves, program, scene.lights, obj.material, n_contours, cam, near, base, zkey, value, gid, built,
+            )
+            build += seconds
+            grow(rect)
+            if built:
+                self._surface(program, built, register_only=True)  # under "auto": the surface on the next render
+                self._csg_seen[seen_key] = any(v for _, v in built)
+                while len(self._csg_seen) > 256:
+                    self._csg_seen.popitem(last=False)
+            resolved += len(leaves)
+            if progress is not None:
+                progress(resolved, total)
+        # Front fills of the plain meshes (and of CSG surfaces), in row stripes.
+        n = _STRIPES if H * W >= _STRIPE_MIN_PIXELS and H >= 2 * _STRIPES else 1
+        for p, _ in plain:
+            p.proj(n - 1)  # scratch for every thread, allocated here (not in the threads)
+        grow(self._fill_primitives(plain, resets, key_rect, a, b, eye, persp, near, n, zkey, value, gid))
+        if progress is not None and resolved < total:
+            progress(total, total)
         self._dirty[id(zkey)] = self._dirty[id(gid)] = tuple(dirty)
         t2 = time.perf_counter()
         # Label -1 (background) maps to -1 through the leading entry of each table.
@@ -682,7 +694,7 @@ class Renderer:
         key_view, label_view = zkey.view(), gid.view()
         key_view.flags.writeable = False
         label_view.flags.writeable = False
-        return RenderResult(value, RenderTimings(t1 - t0, t2 - t1), cam, label_view, key_view, object_of, leaf_of_arr)
+        return RenderResult(value, RenderTimings(build, t2 - t0 - build), cam, label_view, key_view, object_of, leaf_of_arr)
 
     def _fill_primitives(
         self, plain: list[tuple[_Prepared, int]], resets: Any, key_rect: tuple[int, int, int, int],
@@ -723,109 +735,157 @@ class Renderer:
             f.result()
         return [int(bounds[:, 0].min()), int(bounds[:, 1].max()), int(bounds[:, 2].min()), int(bounds[:, 3].max())]
 
-    def _fill_plain(
-        self, p: _Prepared, proj: NDArray[np.float64], near: float, persp: bool, base: int,
+    def _render_per_pixel(
+        self, shape: CSGNode, leaves: list[Primitive], program: NDArray[np.int64], lights: Sequence[Any], material: Any,
+        contours: int, cam: Camera, near: float, base: int,
         zkey: NDArray[np.float64], value: NDArray[np.float32], gid: NDArray[np.int32],
-    ) -> tuple[int, int, int, int]:
-        """Front faces of one convex primitive, straight into the image buffers.
+        built: list[tuple[BandMesh, bool]] | None,
+    ) -> tuple[tuple[int, int, int, int], float, list[tuple[BandMesh, bool]]]:
+        """Resolve one CSG object per pixel on its leaves' depth intervals, into the image buffers.
 
-        Large images are split into horizontal stripes of the primitive's rows,
-        filled concurrently (the kernel releases the GIL): thin band polygons
-        cost mostly per row, and each stripe only walks its own rows. Returns
-        the rectangle written (rows, then columns, half-open).
+        Each leaf's front and back surfaces are filled into buffers of the
+        object's screen rectangle (its bounding box's, known before any band
+        exists), then row stripes resolve the program per pixel. When the
+        leaves' bands are not given they are obtained here, leaf by leaf, and
+        each leaf is filled by a worker thread while the next one is built.
+        Returns the rectangle written (rows, then columns), the seconds spent
+        obtaining bands and the bands (none if the object is off screen).
         """
-        H = zkey.shape[0]
-        n = _STRIPES if zkey.size >= _STRIPE_MIN_PIXELS and H >= 2 * _STRIPES else 1
-        bounds = np.empty((n, 4), np.int64)
-        bounds[:] = (H, 0, zkey.shape[1], 0)
-        quads, quad_value = p.quads()
-
-        def stripe(k: int, r0: int, r1: int) -> None:
-            fill_front_kernel(
-                proj, quads, quad_value, near, persp, base, r0, zkey[r0:r1], value[r0:r1], gid[r0:r1], bounds[k],
-            )
-
-        if n == 1:
-            stripe(0, 0, H)
-        else:
-            # Split the primitive's own rows evenly (all of them if it crosses the near plane).
-            r_top, r_bot = 0, H
-            front = proj[3] >= near
-            if front.all() and len(front):
-                r_top = min(max(int(math.floor(float(proj[5].min()))), 0), H)
-                r_bot = min(max(int(math.ceil(float(proj[5].max()))) + 1, r_top), H)
-            cuts = [r_top + (r_bot - r_top) * k // n for k in range(n + 1)]
-            cuts[0], cuts[-1] = 0, H
-            futures = [_pool().submit(stripe, k, a, b) for k, (a, b) in enumerate(zip(cuts[1:-1], cuts[2:]), 1)]
-            stripe(0, cuts[0], cuts[1])
-            for f in futures:
-                f.result()
-        return (int(bounds[:, 0].min()), int(bounds[:, 1].max()), int(bounds[:, 2].min()), int(bounds[:, 3].max()))
-
-    def _fill_csg(
-        self,
-        preps: list[_Prepared], hs: list[NDArray[np.float64]], program: NDArray[np.int64], near: float,
-        persp: bool, base: int, W: int, H: int,
-        zkey: NDArray[np.float64], value: NDArray[np.float32], gid: NDArray[np.int32],
-        progress: Callable[[int, int], None] | None, done: int, total: int,
-    ) -> tuple[int, int, int, int]:
-        # The object's screen rectangle (the whole image if anything crosses the near plane).
-        ox, oy, x1, y1 = 0, 0, W, H
-        allh = np.hstack(hs) if hs else np.zeros((7, 0))
-        if allh.shape[1] and np.all(allh[3] >= near):
-            cols, rows = allh[4], allh[5]
-            ox = min(max(int(math.floor(cols.min())) - 1, 0), W)
-            oy = min(max(int(math.floor(rows.min())) - 1, 0), H)
-            x1 = min(max(int(math.ceil(cols.max())) + 1, 0), W)
-            y1 = min(max(int(math.ceil(rows.max())) + 1, 0), H)
+        H, W = cam.height, cam.width
+        persp = not cam.orthographic
+        a, b = camera_affine(cam)
+        eye = cam.eye_array
+        ox, oy, x1, y1 = _screen_rect(shape, cam, near)
         w, h = x1 - ox, y1 - oy
         if w <= 0 or h <= 0:
-            return (0, 0, 0, 0)
-        n = len(preps)
+            return (0, 0, 0, 0), 0.0, built or []
+        n = len(leaves)
         table = _cached_table(program.astype(np.int64).tobytes(), n) if n <= _TABLE_LEAVES else np.zeros(0, np.bool_)
         # Contiguous views into reused buffers sized by the object's rectangle
         # (not the image): a small object costs small buffers.
-        def view(name: str, dtype: Any, shape: tuple[int, ...]) -> NDArray[Any]:
-            return self._scratch_buffer(name, math.prod(shape), dtype)[: math.prod(shape)].reshape(shape)
+        def view(name: str, dtype: Any) -> NDArray[Any]:
+            return self._scratch_buffer(name, n * h * w, dtype)[: n * h * w].reshape(n, h, w)
 
-        kf = view("csg-front", np.float64, (n, h, w))
-        kf.fill(np.inf)
-        kb = view("csg-back", np.float64, (n, h, w))
-        kb.fill(-np.inf)
-        vf = view("csg-front-value", np.float32, (n, h, w))
-        vb = view("csg-back-value", np.float32, (n, h, w))
-        scratch = view("csg-label", np.int32, (n, h, w))
+        kf, kb = view("csg-front", np.float64), view("csg-back", np.float64)
+        vf, vb = view("csg-front-value", np.float32), view("csg-back-value", np.float32)
 
-        def leaf(i: int) -> None:
-            p, hv = preps[i], hs[i]
-            fill_kernel(
-                hv[0], hv[1], hv[2], hv[3], p.triangles, p.value_out, p.value_in, near, persp, True, True,
-                0, ox, oy, kf[i], vf[i], scratch[i], kb[i], vb[i],
-            )
+        def leaf(i: int, p: _Prepared) -> None:
+            fill_rect(kf[i], 0, h, 0, w, np.inf)
+            fill_rect(kb[i], 0, h, 0, w, -np.inf)
+            proj = p.proj()
+            project_kernel(p.vertices, eye, a, b, persp, proj, 0, len(p.vertices))
+            fill_projected(proj, p.triangles, p.value_out, p.value_in, near, persp, ox, oy, kf[i], vf[i], kb[i], vb[i])
+
+        # One worker fills the leaves in order (they share projection scratch
+        # when a primitive repeats): the kernels release the GIL, so building
+        # the next leaf's bands goes on meanwhile.
+        concurrent = _STRIPES > 1 and w * h >= _STRIPE_MIN_PIXELS // 4
+        jobs: list[Future[None]] = []
+        seconds = 0.0
+        # Spheres last: their bands take longer to build than to fill, other
+        # leaves' the other way round (Johnson's rule for a two-stage line).
+        order = sorted(range(n), key=lambda i: isinstance(leaves[i], Sphere)) if built is None else range(n)
+        out: list[tuple[BandMesh, bool] | None] = [None] * n
+        try:
+            for i in order:
+                prim = leaves[i]
+                t = time.perf_counter()
+                out[i] = built[i] if built is not None else self._bands(prim, lights, material, contours, cam.eye)
+                prep = self._prepare(*out[i])
+                seconds += time.perf_counter() - t
+                if concurrent:
+                    jobs.append(_leaf_pool().submit(leaf, i, prep))
+                else:
+                    leaf(i, prep)
+        finally:
+            wait(jobs)  # never leave a worker writing into buffers that a later render reuses
+        for job in jobs:
+            job.result()
 
         def stripe(r0: int, r1: int) -> None:
             resolve_csg(kf[:, r0:r1], vf[:, r0:r1], kb[:, r0:r1], vb[:, r0:r1], program, table, base, ox, oy + r0,
                         zkey, value, gid)
 
-        # Leaves fill their own buffers, and row stripes resolve disjoint pixels:
-        # both run concurrently (the kernels release the GIL).
-        parallel = _STRIPES > 1 and w * h >= _STRIPE_MIN_PIXELS // 4
-        if parallel:
-            futures = [_pool().submit(leaf, i) for i in range(1, n)]
-            leaf(0)
-            for k, f in enumerate(futures):
-                f.result()
-        else:
-            for i in range(n):
-                leaf(i)
-        if progress is not None and n > 1:
-            progress(done + n - 1, total)
-        cuts = [h * k // _STRIPES for k in range(_STRIPES + 1)] if parallel and h >= 2 * _STRIPES else [0, h]
-        futures = [_pool().submit(stripe, a, b) for a, b in zip(cuts[1:-1], cuts[2:])]
+        cuts = [h * k // _STRIPES for k in range(_STRIPES + 1)] if concurrent and h >= 2 * _STRIPES else [0, h]
+        futures = [_pool().submit(stripe, r0, r1) for r0, r1 in zip(cuts[1:-1], cuts[2:])]
         stripe(cuts[0], cuts[1])
         for f in futures:
             f.result()
-        return (oy, y1, ox, x1)
+        return (oy, y1, ox, x1), seconds, [b for b in out if b is not None]
+
+
+def _far_depth(bounds: NDArray[np.float64], forward: NDArray[np.float64], eye: NDArray[np.float64]) -> float:
+    """Largest camera depth (in absolute value) of a bounding box, bounded through its circumscribed sphere."""
+    lo, hi = np.asarray(bounds, dtype=np.float64)
+    return abs(float(forward @ (0.5 * (lo + hi) - eye))) + 0.5 * float(np.linalg.norm(hi - lo))
+
+
+Rect = tuple[int, int, int, int]  # (col0, row0, col1, row1), half-open
+
+
+def _screen_rect(solid: Any, cam: Camera, near: float) -> Rect:
+    """A pixel rectangle holding the projection of a solid, known before its bands exist.
+
+    A primitive's rectangle bounds the projection of its bounding box (the
+    hull of the corners' projections) and, for a sphere, of the sphere itself
+    (exact, from the tangents in the camera's two vertical planes); a union
+    takes the hull of its children's, an intersection their overlap, a
+    difference its first child's. The whole image when anything reaches
+    behind the near plane.
+    """
+    W, H = cam.width, cam.height
+    if isinstance(solid, CSGNode):
+        rects = [_screen_rect(c, cam, near) for c in solid.children]
+        if isinstance(solid, Difference):
+            return rects[0]
+        pick = (min, max) if isinstance(solid, Union) else (max, min)
+        return (pick[0](r[0] for r in rects), pick[0](r[1] for r in rects),
+                pick[1](r[2] for r in rects), pick[1](r[3] for r in rects))
+    f, r, u = cam.frame
+    m = np.stack([r, u, f])
+    lo, hi = np.asarray(solid.bounds, dtype=np.float64)
+    corners = np.array([[x, y, z] for x in (lo[0], hi[0]) for y in (lo[1], hi[1]) for z in (lo[2], hi[2])])
+    xr, yu, z = m @ (corners - cam.eye_array).T  # camera space
+    if not np.all(np.isfinite(z)) or z.min() < near:
+        return 0, 0, W, H
+    sx, sy = (xr / z, yu / z) if not cam.orthographic else (xr, yu)
+    box = [sx.min(), sx.max(), sy.min(), sy.max()]
+    if isinstance(solid, Sphere):
+        cx, cy, cz = m @ (solid.center_array - cam.eye_array)
+        rad = solid.radius
+        if cam.orthographic:
+            ball = [cx - rad, cx + rad, cy - rad, cy + rad]
+        else:
+            # x / z over the disk the sphere projects to in the (x, z) plane (likewise y): tangent lines.
+            ball = []
+            for c in (cx, cy):
+                t0, dt = math.atan2(c, cz), math.asin(min(rad / math.hypot(c, cz), 1.0))
+                ball += [math.tan(t0 - dt), math.tan(t0 + dt)]
+        box = [max(box[0], ball[0]), min(box[1], ball[1]), max(box[2], ball[2]), min(box[3], ball[3])]
+    if cam.orthographic:
+        half_h = cam.height_m / 2
+        sx_scale, sy_scale = 1.0 / (half_h * cam.aspect), 1.0 / half_h
+    else:
+        sx_scale, sy_scale = 1.0 / (cam.tan_half_fov * cam.aspect), 1.0 / cam.tan_half_fov
+    c0, c1 = (box[0] * sx_scale + 1.0) * W / 2, (box[1] * sx_scale + 1.0) * W / 2
+    r0, r1 = (1.0 - box[3] * sy_scale) * H / 2, (1.0 - box[2] * sy_scale) * H / 2
+    return (min(max(int(math.floor(c0)) - 1, 0), W), min(max(int(math.floor(r0)) - 1, 0), H),
+            min(max(int(math.ceil(c1)) + 1, 0), W), min(max(int(math.ceil(r1)) + 1, 0), H))
+
+
+def _reset(resets: Sequence[tuple[NDArray[Any], tuple[int, int, int, int], Any]]) -> None:
+    """Fill rectangles of buffers with their background, in concurrent row shares."""
+    n = _STRIPES
+
+    def share(k: int) -> None:
+        for buf, (r0, r1, c0, c1), bg in resets:
+            if r0 < r1 and c0 < c1:
+                fill_rect(buf, r0 + (r1 - r0) * k // n, r0 + (r1 - r0) * (k + 1) // n, c0, c1, bg)
+
+    futures = [_pool().submit(share, k) for k in range(1, n)]
+    share(0)
+    for f in futures:
+        f.result()
 
 
 _DEFAULT: Renderer | None = None
@@ -841,6 +901,17 @@ def _pool() -> ThreadPoolExecutor:
     if _POOL is None:
         _POOL = ThreadPoolExecutor(max_workers=max(_STRIPES - 1, 1), thread_name_prefix="isocsg-fill")
     return _POOL
+
+
+_LEAF_POOL: ThreadPoolExecutor | None = None
+
+
+def _leaf_pool() -> ThreadPoolExecutor:
+    """The single worker that fills CSG leaves while the next leaf is built."""
+    global _LEAF_POOL
+    if _LEAF_POOL is None:
+        _LEAF_POOL = ThreadPoolExecutor(max_workers=1, thread_name_prefix="isocsg-leaf")
+    return _LEAF_POOL
 
 
 def default_renderer() -> Renderer:

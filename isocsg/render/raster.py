@@ -177,12 +177,18 @@ def _fill_triangle(
             continue
         q = ka + gx * (j0 + 0.5 - xa) + gy * (py - ya)
         row = i - oy
-        if front:
+        if front and tag >= 0:
             for j in range(j0 - ox, j1 - ox):
                 if q < zbuf[row, j]:
                     zbuf[row, j] = q
                     vbuf[row, j] = value
                     tbuf[row, j] = tag
+                q += gx
+        elif front:
+            for j in range(j0 - ox, j1 - ox):
+                if q < zbuf[row, j]:
+                    zbuf[row, j] = q
+                    vbuf[row, j] = value
                 q += gx
         else:
             for j in range(j0 - ox, j1 - ox):
@@ -227,11 +233,27 @@ def fill_kernel(
     buffers cover the viewport whose top-left pixel is ``(oy, ox)``. With
     ``cull`` false every triangle goes to the front buffers (and, with
     ``do_back``, to the back ones too). ``tf`` receives ``tag`` wherever the
-    front buffers are written.
+    front buffers are written (nothing with a negative ``tag``).
     """
     sx, sy, sk = project_vertices(hx, hy, hw, hd, near, perspective)
     _fill_all(hx, hy, hw, hd, sx, sy, sk, tris, vout, vin, near, perspective, cull, do_back, tag, ox, oy, zf, vf, tf, zb, vb,
               np.empty((3, 4)))
+
+
+@njit(cache=True, nogil=True)
+def fill_projected(
+    proj: NDArray[np.float64], tris: NDArray[np.int32], vout: NDArray[np.float32], vin: NDArray[np.float32],
+    near: float, perspective: bool, ox: int, oy: int,
+    zf: NDArray[np.float64], vf: NDArray[np.float32], zb: NDArray[np.float64], vb: NDArray[np.float32],
+) -> None:
+    """Front and back buffers of triangles projected by :func:`project_kernel` (no labels).
+
+    As :func:`fill_kernel` with culling and back buffers, for the leaves of
+    per-pixel CSG: each pixel's nearest front-facing and farthest
+    back-facing surface, over the viewport whose top-left pixel is ``(oy, ox)``.
+    """
+    _fill_all(proj[0], proj[1], proj[2], proj[3], proj[4], proj[5], proj[6], tris, vout, vin, near, perspective,
+              True, True, -1, ox, oy, zf, vf, np.empty((1, 1), np.int32), zb, vb, np.empty((3, 4)))
 
 
 @njit(**_RAW)
