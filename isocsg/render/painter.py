@@ -8,7 +8,9 @@ depend on the viewpoint) are filled with :mod:`isocsg.render.raster`:
   faces are culled), filled straight into the image with a depth test;
 - an object that is a CSG tree fills the front *and* back surface of every
   leaf (the ray's interval ``[front, back]`` through the convex leaf) inside
-  the object's screen rectangle, then the tree's postfix program is evaluated
+  the object's screen rectangle (known from the tree before any band is
+  built, so that a worker fills each leaf while the next one is built), then
+  the tree's postfix program is evaluated
   per pixel on those intervals: the first depth where the result turns from
   outside to inside is the visible point. If it is leaf i's front the pixel
   shows i's ``value_out``; if it is leaf i's back (the inside of a cut), i's
