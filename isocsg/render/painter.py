@@ -46,7 +46,7 @@ from ..geometry.primitives import Primitive, Sphere
 from ..laminae.model import BandMesh
 from ..scene.model import MAX_CONTOURS, Scene
 from .raster import (
-    NEAR_RELATIVE, camera_affine, fill_front_kernel, fill_projected, fill_rect, key_to_depth, pair_quads, project_kernel,
+    _RAW, NEAR_RELATIVE, camera_affine, fill_front_kernel, fill_projected, fill_rect, key_to_depth, pair_quads, project_kernel,
 )
 
 __all__ = ["RenderResult", "RenderTimings", "Renderer", "render", "default_renderer"]
@@ -227,7 +227,7 @@ def resolve_csg(
 
 # Without reference counting (see isocsg.render.raster): the per-pixel loop
 # passes arrays to inlined helpers, two atomic operations each otherwise.
-@njit(cache=True, nogil=True, _nrt=False)
+@njit(**_RAW)
 def _resolve_rows(
     kf: NDArray[np.float64], vf: NDArray[np.float32], kb: NDArray[np.float64], vb: NDArray[np.float32],
     program: NDArray[np.int64], table: NDArray[np.bool_], gid_base: int, ox: int, oy: int,
@@ -318,8 +318,6 @@ class _Prepared:
     value_out: NDArray[np.float32]
     value_in: NDArray[np.float32]
     projs: list[NDArray[np.float64]]  # (7, V) scratch of project_kernel per fill thread, reused
-    centre: NDArray[np.float64]  # bounding sphere (for the near plane)
-    radius: float
     _quads: list[tuple[NDArray[np.int32], NDArray[np.float32]]] = field(default_factory=list)
 
     def quads(self) -> tuple[NDArray[np.int32], NDArray[np.float32]]:
@@ -559,11 +557,7 @@ class Renderer:
                 f"band mesh of {nv} vertices and {nt} triangles is malformed: vertices {vertices.shape}, "
                 f"triangles {triangles.shape}, value_out {value_out.shape}, value_in {value_in.shape}"
             )
-        centre = (vertices.min(axis=0) + vertices.max(axis=0)) / 2 if nv else np.zeros(3)
-        radius = float(np.sqrt(((vertices - centre) ** 2).sum(axis=1).max())) if nv else 0.0
-        prep = _Prepared(
-            vertices, triangles, value_out, value_in, [], centre, radius,
-        )
+        prep = _Prepared(vertices, triangles, value_out, value_in, [])
         if not view_dependent:
             self._prepared[key] = (bands, prep)
             while len(self._prepared) > 256:
@@ -639,18 +633,19 @@ class Renderer:
         obj_of: list[int] = []
         leaf_of: list[int] = []
         plain: list[tuple[_Prepared, int]] = []  # front fills: (mesh, label)
-        total = sum(len(obj.shape.program()[0]) if isinstance(obj.shape, CSGNode) else 1 for obj in scene.objects)
+        programs = [obj.shape.program() if isinstance(obj.shape, CSGNode) else None for obj in scene.objects]
+        total = sum(1 if prog is None else len(prog[0]) for prog in programs)
         resolved = 0  # leaves of the objects resolved per pixel so far
-        for k, obj in enumerate(scene.objects):
+        for k, (obj, prog) in enumerate(zip(scene.objects, programs)):
             base = len(obj_of)
-            if not isinstance(obj.shape, CSGNode):
+            if prog is None:
                 obj_of.append(k)
                 leaf_of.append(0)
                 t = time.perf_counter()
                 plain.append((self._prepare(*self._bands(obj.shape, scene.lights, obj.material, n_contours, cam.eye)), base))
                 build += time.perf_counter() - t
                 continue
-            leaves, program = obj.shape.program()
+            leaves, program = prog
             obj_of.extend([k] * len(leaves))
             leaf_of.extend(range(len(leaves)))
             seen_key = (obj.shape, scene.lights, obj.material, n_contours)
@@ -746,14 +741,13 @@ class Renderer:
         """Resolve one CSG object per pixel on its leaves' depth intervals, into the image buffers.
 
         Each leaf's front and back surfaces are filled into buffers of the
-        object's screen rectangle (its bounding box's, known before any band
+        object's screen rectangle (:func:`_screen_rect`, known before any band
         exists), then row stripes resolve the program per pixel. When the
         leaves' bands are not given they are obtained here, leaf by leaf, and
         each leaf is filled by a worker thread while the next one is built.
         Returns the rectangle written (rows, then columns), the seconds spent
         obtaining bands and the bands (none if the object is off screen).
         """
-        H, W = cam.height, cam.width
         persp = not cam.orthographic
         a, b = camera_affine(cam)
         eye = cam.eye_array
