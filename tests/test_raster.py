@@ -343,17 +343,31 @@ def test_quads_of_a_patch_cover_it_once(cam):
     np.testing.assert_array_equal(counts[clear], hit[clear].astype(int))
 
 
-@pytest.mark.parametrize("cam", CAMERAS.values(), ids=CAMERAS.keys())
-def test_projected_fill_equals_the_triangle_fill_without_labels(cam):
-    """fill_projected (CSG leaves: projection done once, no labels) writes the same
-    front and back buffers as fill_kernel with culling and back buffers."""
+@pytest.mark.parametrize("cam", QUAD_CAMERAS.values(), ids=QUAD_CAMERAS.keys())
+@pytest.mark.parametrize("mesh", ["triangles", "quads"])
+def test_projected_fill_equals_the_triangle_fill_without_labels(cam, mesh):
+    """fill_projected (CSG leaves: projection done once, quads, no labels) writes
+    the same front and back buffers as fill_kernel with culling and back
+    buffers on the triangles."""
     from isocsg.render.raster import camera_affine, fill_kernel, fill_projected, project_kernel
 
     rng = np.random.default_rng(5)
-    verts, tris = random_triangles(rng, 40)
+    if mesh == "triangles":
+        verts, tris = random_triangles(rng, 40)
+        polys = np.column_stack([tris, np.full(len(tris), -1)]).astype(np.int32)
+        source = np.arange(len(tris))
+    else:
+        verts, tris, vals = _scene_mesh(4)
+        polys, source = pair_quads(verts, tris, vals)
+        assert (polys[:, 3] >= 0).sum() > 60
+        # Triangles in the quads' order, so that fill_kernel meets them as fill_projected does.
+        fan = [(a, b, c) for a, b, c, d in polys] + [(a, c, d) for a, b, c, d in polys if d >= 0]
+        order = list(range(len(polys))) + [k for k, q in enumerate(polys) if q[3] >= 0]
+        tris, source = np.asarray(fan), source[order]
     tris = tris.astype(np.int32)
-    vo = rng.uniform(0, 1, len(tris)).astype(np.float32)
-    vi = rng.uniform(0, 1, len(tris)).astype(np.float32)
+    vo_t = rng.uniform(0, 1, int(source.max()) + 1).astype(np.float32)
+    vi_t = rng.uniform(0, 1, len(vo_t)).astype(np.float32)
+    vo, vi = vo_t[source], vi_t[source]
     H, W = cam.height, cam.width
     oy, ox, h, w = 3, 5, H - 7, W - 9  # a viewport inside the image
     h4 = homogeneous(cam, verts)
@@ -370,7 +384,8 @@ def test_projected_fill_equals_the_triangle_fill_without_labels(cam):
     proj = np.empty((7, len(verts)))
     project_kernel(verts, cam.eye_array, a, b, persp, proj, 0, len(verts))
     zf2, vf2, zb2, vb2 = buffers()
-    fill_projected(proj, tris, vo, vi, near, persp, ox, oy, zf2, vf2, zb2, vb2)
+    fill_projected(proj, polys, vo_t[source[: len(polys)]], vi_t[source[: len(polys)]], near, persp, ox, oy,
+                   zf2, vf2, zb2, vb2)
     assert np.isfinite(zf).sum() > 50 and np.isfinite(zb).sum() > 50
     np.testing.assert_allclose(zf2, zf, rtol=1e-12)
     np.testing.assert_allclose(zb2, zb, rtol=1e-12)

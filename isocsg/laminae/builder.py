@@ -25,12 +25,14 @@ are built for each one.
 
 from __future__ import annotations
 
+import math
 import threading
 from collections import OrderedDict
 from collections.abc import Sequence
 from typing import Any
 
 import numpy as np
+from numba import njit
 from numpy.typing import ArrayLike, NDArray
 
 from .._validation import integer, vector3
@@ -284,20 +286,69 @@ def _cut(surf: Surface, fams: list[FieldFamily], mat: Material) -> BandMesh:
         vertices, values, triangles = out.vertices, out.values, out.triangles
         band = band[out.parent]
         band[:, i] = out.band
-    # Drop triangles of zero area (a cone's apex, cuts through a vertex): they cover no pixel.
-    a, b, c = vertices[triangles[:, 0]], vertices[triangles[:, 1]], vertices[triangles[:, 2]]
-    area2 = np.linalg.norm(np.cross(b - a, c - a), axis=1)
+    # Each family's band values side by side, padded to the longest table.
+    width = max(len(f.table_out) for f in fams)
+    tables = np.zeros((2, len(fams), width))
+    for i, f in enumerate(fams):
+        tables[0, i, : len(f.table_out)] = f.table_out
+        tables[1, i, : len(f.table_in)] = f.table_in
+    kinds = np.array([_KIND_CODES[f.kind] for f in fams], np.int64)
+    laws = np.array([(f.exponent, f.weight_out, f.weight_in) for f in fams], np.float64)
     scale = float(np.max(np.abs(vertices))) if len(vertices) else 1.0
-    keep = area2 > 1e-24 * max(scale, 1.0) ** 2
-    triangles, band = triangles[keep], band[keep]
-    v_out = np.full(len(triangles), mat.ambient)
-    v_in = np.full(len(triangles), mat.ambient)
-    for i, fam in enumerate(fams):
-        f0, f1, f2 = (values[triangles[:, k], i] for k in range(3))
-        flat = np.maximum(np.maximum(f0, f1), f2) - np.minimum(np.minimum(f0, f1), f2) <= 1e-12
-        o, n_ = fam.table_out[band[:, i]], fam.table_in[band[:, i]]
-        eo, ei = fam.exact(f0)
-        v_out += np.where(flat, eo, o)
-        v_in += np.where(flat, ei, n_)
+    tri32 = np.empty((len(triangles), 3), np.int32)
+    v_out = np.empty(len(triangles))
+    v_in = np.empty(len(triangles))
+    kept = np.empty(len(triangles), np.int64)
+    m = _pieces(vertices, triangles, values, band, tables, kinds, laws, float(mat.ambient),
+                1e-24 * max(scale, 1.0) ** 2, tri32, v_out, v_in, kept)
+    band = band[kept[:m]]
     composite = band[:, 0] if band.shape[1] == 1 else np.unique(band, axis=0, return_inverse=True)[1].reshape(-1)
-    return BandMesh(vertices, triangles.astype(np.int32), v_out, v_in, composite.astype(np.int32))
+    return BandMesh(vertices, tri32[:m], v_out[:m], v_in[:m], composite.astype(np.int32))
+
+
+_KIND_CODES = {"diffuse": 0, "specular_out": 1, "specular_in": 2}
+
+
+@njit(cache=True, nogil=True)
+def _pieces(
+    vertices: NDArray[np.float64], triangles: NDArray[np.int64], values: NDArray[np.float64], band: NDArray[np.int64],
+    tables: NDArray[np.float64], kinds: NDArray[np.int64], laws: NDArray[np.float64], ambient: float, min_area2: float,
+    tri_out: NDArray[np.int32], v_out: NDArray[np.float64], v_in: NDArray[np.float64], kept: NDArray[np.int64],
+) -> int:
+    """The pieces that cover pixels and their values; returns their number.
+
+    Pieces of zero area (a cone's apex, cuts through a vertex) are dropped.
+    A piece takes ``ambient`` plus, per family, its band's table entry, or the
+    exact value (:meth:`FieldFamily.exact`) where the family's field is
+    constant on it (within 1e-12).
+    """
+    m = 0
+    for t in range(triangles.shape[0]):
+        a, b, c = triangles[t, 0], triangles[t, 1], triangles[t, 2]
+        ux, uy, uz = vertices[b, 0] - vertices[a, 0], vertices[b, 1] - vertices[a, 1], vertices[b, 2] - vertices[a, 2]
+        wx, wy, wz = vertices[c, 0] - vertices[a, 0], vertices[c, 1] - vertices[a, 1], vertices[c, 2] - vertices[a, 2]
+        cx, cy, cz = uy * wz - uz * wy, uz * wx - ux * wz, ux * wy - uy * wx
+        if not math.sqrt(cx * cx + cy * cy + cz * cz) > min_area2:
+            continue
+        o = ambient
+        n = ambient
+        for i in range(kinds.shape[0]):
+            f0, f1, f2 = values[a, i], values[b, i], values[c, i]
+            if max(f0, f1, f2) - min(f0, f1, f2) <= 1e-12:
+                p = max(f0, 0.0)
+                if kinds[i] == 0:
+                    o += laws[i, 1] * p
+                    n += laws[i, 2] * max(-f0, 0.0)
+                elif kinds[i] == 1:
+                    o += laws[i, 1] * p ** laws[i, 0]
+                else:
+                    n += laws[i, 1] * p ** laws[i, 0]
+            else:
+                o += tables[0, i, band[t, i]]
+                n += tables[1, i, band[t, i]]
+        tri_out[m, 0], tri_out[m, 1], tri_out[m, 2] = a, b, c
+        v_out[m] = o
+        v_in[m] = n
+        kept[m] = t
+        m += 1
+    return m

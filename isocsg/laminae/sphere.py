@@ -156,13 +156,15 @@ def sphere_laminae(
     k = np.arange(contours)
     cos_k = k / contours
     t = contour_heights(sphere, light, cos_k)
-    out = []
-    for tk, ck in zip(t, cos_k):
-        if not np.isfinite(tk):
-            continue
-        rho = np.sqrt(max(1.0 - tk * tk, 0.0))
-        nv = max(8, int(np.ceil(LONGITUDES * rho)))
-        phi = 2.0 * np.pi * np.arange(nv) / nv
-        poly = c + r * (tk * w + rho * (np.cos(phi)[:, None] * e1 + np.sin(phi)[:, None] * e2))
-        out.append((poly, w.copy(), float(ck + 0.5 / contours)))
-    return out
+    ok = np.isfinite(t)
+    tk, ck = t[ok], cos_k[ok]
+    rho = np.sqrt(np.maximum(1.0 - tk * tk, 0.0))
+    nv = np.maximum(8, np.ceil(LONGITUDES * rho).astype(np.int64))
+    # All circles in one pass: circle i has nv[i] points at angles 2 pi j / nv[i].
+    first = np.concatenate([[0], np.cumsum(nv)])
+    j = np.arange(first[-1]) - np.repeat(first[:-1], nv)
+    phi = 2.0 * np.pi * j / np.repeat(nv, nv)
+    ring = np.cos(phi)[:, None] * e1 + np.sin(phi)[:, None] * e2
+    points = c + r * (np.repeat(tk, nv)[:, None] * w + np.repeat(rho, nv)[:, None] * ring)
+    polys = np.split(points, first[1:-1])
+    return [(poly, w.copy(), float(x + 0.5 / contours)) for poly, x in zip(polys, ck)]

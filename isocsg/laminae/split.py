@@ -235,41 +235,21 @@ def split_by_levels(
     >>> out.band.tolist(), len(out.vertices)
     ([0, 0, 1], 5)
     """
-    v = np.asarray(vertices, dtype=np.float64)
-    t = np.asarray(triangles, dtype=np.int64)
-    vals = np.asarray(values, dtype=np.float64).copy()
-    lv = np.asarray(levels, dtype=np.float64)
-    f = vals[:, column]
+    v = np.ascontiguousarray(vertices, dtype=np.float64)
+    t = np.ascontiguousarray(triangles, dtype=np.int64)
+    vals = np.array(values, dtype=np.float64, order="C")  # a copy: the cut column is snapped
+    lv = np.ascontiguousarray(levels, dtype=np.float64)
     # Values within rounding of a level sit on it: no sliver bands.
     scale = max(1.0, float(np.max(np.abs(lv))) if len(lv) else 1.0)
-    near = np.searchsorted(lv, f).clip(0, max(len(lv) - 1, 0))
-    if len(lv):
-        for cand in (near, (near - 1).clip(0)):
-            close = np.abs(f - lv[cand]) <= 1e-11 * scale
-            f[close] = lv[cand[close]]
-    vals[:, column] = f
+    _snap(vals, column, lv, 1e-11 * scale)
+    f = vals[:, column].copy()
 
     edges, tri_edge = mesh_edges(t)
-    fa, fb = f[edges[:, 0]], f[edges[:, 1]]
-    lo, hi = np.minimum(fa, fb), np.maximum(fa, fb)
-    k0 = np.searchsorted(lv, lo, side="right")
-    k1 = np.searchsorted(lv, hi, side="left")
-    count = np.maximum(k1 - k0, 0)
-    off = np.concatenate([[0], np.cumsum(count)[:-1]]).astype(np.int64)
-
-    # Cut points: edge e at level k, from the lower-indexed end vertex a towards b.
-    e_rep = np.repeat(np.arange(len(edges)), count)
-    k_rep = k0[e_rep] + (np.arange(len(e_rep)) - off[e_rep])
-    a, b = edges[e_rep, 0], edges[e_rep, 1]
-    w = (lv[k_rep] - f[a]) / (f[b] - f[a])
-    new_v = v[a] + w[:, None] * (v[b] - v[a])
-    new_vals = vals[a] + w[:, None] * (vals[b] - vals[a])
-    new_vals[:, column] = lv[k_rep]
-
-    f0, f1, f2 = f[t[:, 0]], f[t[:, 1]], f[t[:, 2]]  # (a reduction along axis 1 is slow on 3 columns)
-    kmin = np.searchsorted(lv, np.minimum(np.minimum(f0, f1), f2), side="right")
-    kmax = np.searchsorted(lv, np.maximum(np.maximum(f0, f1), f2), side="left")
-    cap = int(np.sum(3 * (np.maximum(kmax - kmin, 0) + 1)))
+    k0, off, n_cuts = _edge_levels(f, edges, lv)
+    new_v = np.empty((n_cuts, 3))
+    new_vals = np.empty((n_cuts, vals.shape[1]))
+    _cut_points(v, vals, column, f, edges, lv, k0, off, new_v, new_vals)
+    kmin, kmax, cap = _triangle_levels(f, t, lv)
     if cap > MAX_PIECES:
         raise InvalidParameterError(
             f"contours: cutting {len(t)} triangles at {len(lv)} levels could give {cap} band triangles "
@@ -278,10 +258,89 @@ def split_by_levels(
     out_tri = np.empty((cap, 3), np.int64)
     out_parent = np.empty(cap, np.int64)
     out_band = np.empty(cap, np.int64)
-    m = _split_kernel(
-        t, f, tri_edge, edges[:, 0].copy(), k0.astype(np.int64), off, len(v), lv,
-        kmin.astype(np.int64), kmax.astype(np.int64), out_tri, out_parent, out_band,
-    )
+    m = _split_kernel(t, f, tri_edge, edges[:, 0].copy(), k0, off, len(v), lv, kmin, kmax, out_tri, out_parent, out_band)
     return SplitMesh(
         np.vstack([v, new_v]), np.vstack([vals, new_vals]), out_tri[:m], out_parent[:m], out_band[:m]
     )
+
+
+@njit(cache=True, nogil=True, inline="always")
+def _search(levels: NDArray[np.float64], x: float, right: bool) -> int:
+    """``np.searchsorted(levels, x, side="right" if right else "left")``."""
+    lo, hi = 0, levels.shape[0]
+    while lo < hi:
+        mid = (lo + hi) // 2
+        if levels[mid] < x or (right and levels[mid] == x):
+            lo = mid + 1
+        else:
+            hi = mid
+    return lo
+
+
+@njit(cache=True, nogil=True)
+def _snap(vals: NDArray[np.float64], column: int, levels: NDArray[np.float64], tol: float) -> None:
+    """Move the values of ``column`` within ``tol`` of a level onto it (the nearest above first)."""
+    n = levels.shape[0]
+    if n == 0:
+        return
+    for i in range(vals.shape[0]):
+        x = vals[i, column]
+        k = min(_search(levels, x, False), n - 1)
+        if abs(x - levels[k]) <= tol:
+            x = levels[k]
+        k = max(k - 1, 0)
+        if abs(x - levels[k]) <= tol:
+            x = levels[k]
+        vals[i, column] = x
+
+
+@njit(cache=True, nogil=True)
+def _edge_levels(
+    f: NDArray[np.float64], edges: NDArray[np.int64], levels: NDArray[np.float64]
+) -> tuple[NDArray[np.int64], NDArray[np.int64], int]:
+    """Per edge: the first level strictly inside it and the offset of its cut points; the number of cut points."""
+    k0 = np.empty(edges.shape[0], np.int64)
+    off = np.empty(edges.shape[0], np.int64)
+    total = 0
+    for e in range(edges.shape[0]):
+        fa, fb = f[edges[e, 0]], f[edges[e, 1]]
+        k0[e] = _search(levels, min(fa, fb), True)
+        off[e] = total
+        total += max(_search(levels, max(fa, fb), False) - k0[e], 0)
+    return k0, off, total
+
+
+@njit(cache=True, nogil=True)
+def _cut_points(
+    v: NDArray[np.float64], vals: NDArray[np.float64], column: int, f: NDArray[np.float64], edges: NDArray[np.int64],
+    levels: NDArray[np.float64], k0: NDArray[np.int64], off: NDArray[np.int64],
+    new_v: NDArray[np.float64], new_vals: NDArray[np.float64],
+) -> None:
+    """Cut point of edge e at level k, from its lower-indexed end a towards b, at row ``off[e] + k - k0[e]``."""
+    for e in range(edges.shape[0]):
+        a, b = edges[e, 0], edges[e, 1]
+        end = off[e + 1] if e + 1 < edges.shape[0] else new_v.shape[0]
+        for r in range(off[e], end):
+            lv = levels[k0[e] + r - off[e]]
+            w = (lv - f[a]) / (f[b] - f[a])
+            for j in range(3):
+                new_v[r, j] = v[a, j] + w * (v[b, j] - v[a, j])
+            for j in range(vals.shape[1]):
+                new_vals[r, j] = vals[a, j] + w * (vals[b, j] - vals[a, j])
+            new_vals[r, column] = lv
+
+
+@njit(cache=True, nogil=True)
+def _triangle_levels(
+    f: NDArray[np.float64], t: NDArray[np.int64], levels: NDArray[np.float64]
+) -> tuple[NDArray[np.int64], NDArray[np.int64], int]:
+    """Per triangle: the levels strictly inside its range ``kmin .. kmax - 1``; a bound on the pieces."""
+    kmin = np.empty(t.shape[0], np.int64)
+    kmax = np.empty(t.shape[0], np.int64)
+    cap = 0
+    for i in range(t.shape[0]):
+        f0, f1, f2 = f[t[i, 0]], f[t[i, 1]], f[t[i, 2]]
+        kmin[i] = _search(levels, min(f0, f1, f2), True)
+        kmax[i] = _search(levels, max(f0, f1, f2), False)
+        cap += 3 * (max(kmax[i] - kmin[i], 0) + 1)
+    return kmin, kmax, cap

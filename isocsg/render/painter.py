@@ -45,6 +45,7 @@ from ..errors import InvalidParameterError
 from ..geometry.primitives import Primitive, Sphere
 from ..laminae.model import BandMesh
 from ..scene.model import MAX_CONTOURS, Scene
+from .scratch import SCRATCH
 from .raster import (
     _RAW, NEAR_RELATIVE, camera_affine, fill_front_kernel, fill_projected, fill_rect, key_to_depth, pair_quads, project_kernel,
 )
@@ -318,13 +319,13 @@ class _Prepared:
     value_out: NDArray[np.float32]
     value_in: NDArray[np.float32]
     projs: list[NDArray[np.float64]]  # (7, V) scratch of project_kernel per fill thread, reused
-    _quads: list[tuple[NDArray[np.int32], NDArray[np.float32]]] = field(default_factory=list)
+    _quads: list[tuple[NDArray[np.int32], NDArray[np.float32], NDArray[np.float32]]] = field(default_factory=list)
 
-    def quads(self) -> tuple[NDArray[np.int32], NDArray[np.float32]]:
-        """pair_quads of the triangles and their values (front fills only: made when first needed)."""
+    def quads(self) -> tuple[NDArray[np.int32], NDArray[np.float32], NDArray[np.float32]]:
+        """pair_quads of the triangles and their ``value_out`` and ``value_in`` (made when first needed)."""
         if not self._quads:
             quads, source = pair_quads(self.vertices, self.triangles, self.value_out, self.value_in)
-            self._quads.append((np.ascontiguousarray(quads), np.ascontiguousarray(self.value_out[source])))
+            self._quads.append((quads, self.value_out[source], self.value_in[source]))
         return self._quads[0]
 
     def proj(self, k: int = 0) -> NDArray[np.float64]:
@@ -420,8 +421,6 @@ class Renderer:
         self._lock = threading.Lock()
         # id of a pooled buffer -> (row0, row1, col0, col1) that may differ from its background.
         self._dirty: dict[int, tuple[int, int, int, int]] = {}
-        # Per-leaf CSG buffers, by name: grown to the largest object rectangle seen.
-        self._scratch: dict[str, NDArray[Any]] = {}
         # CSG objects already resolved per pixel -> whether their bands were view-dependent.
         self._csg_seen: OrderedDict[tuple[Any, ...], bool] = OrderedDict()
 
@@ -440,19 +439,6 @@ class Renderer:
         while len(self._pool) > 24:
             for old in self._pool.popitem(last=False)[1]:
                 self._dirty.pop(id(old), None)
-        return a
-
-    def _scratch_buffer(self, name: str, size: int, dtype: Any) -> NDArray[Any]:
-        """A private 1-D buffer of at least ``size`` elements, reused between renders.
-
-        Grown by a quarter when too small. Its pages are not touched here: the
-        per-leaf kernels write every element they later read, so a fresh
-        buffer costs one pass of page faults, not two.
-        """
-        a = self._scratch.get(name)
-        if a is None or a.size < size or a.dtype != np.dtype(dtype):
-            a = _staggered_empty((max(size + size // 4, 1),), dtype, len(self._scratch), touch=False)
-            self._scratch[name] = a
         return a
 
     def _stale(self, name: str, shape: tuple[int, int], dtype: Any) -> tuple[NDArray[Any], tuple[int, int, int, int]]:
@@ -709,7 +695,7 @@ class Renderer:
         H, W = zkey.shape
         bounds = np.empty((n, 4), np.int64)
         bounds[:] = (H, 0, W, 0)
-        meshes = [(p, base, *p.quads()) for p, base in plain]  # quads made here, not in the threads
+        meshes = [(p, base, *p.quads()[:2]) for p, base in plain]  # quads made here, not in the threads
 
         def stripe(k: int, r0: int, r1: int) -> None:
             for buf, (q0, q1, c0, c1), bg in resets:
@@ -748,29 +734,39 @@ class Renderer:
         Returns the rectangle written (rows, then columns), the seconds spent
         obtaining bands and the bands (none if the object is off screen).
         """
-        persp = not cam.orthographic
-        a, b = camera_affine(cam)
-        eye = cam.eye_array
         ox, oy, x1, y1 = _screen_rect(shape, cam, near)
         w, h = x1 - ox, y1 - oy
         if w <= 0 or h <= 0:
             return (0, 0, 0, 0), 0.0, built or []
         n = len(leaves)
-        table = _cached_table(program.astype(np.int64).tobytes(), n) if n <= _TABLE_LEAVES else np.zeros(0, np.bool_)
-        # Contiguous views into reused buffers sized by the object's rectangle
-        # (not the image): a small object costs small buffers.
-        def view(name: str, dtype: Any) -> NDArray[Any]:
-            return self._scratch_buffer(name, n * h * w, dtype)[: n * h * w].reshape(n, h, w)
+        # Buffers of the object's rectangle (not the image), lent for this object only.
+        block, (kf, kb, vf, vb) = SCRATCH.lend([((n, h, w), np.float64)] * 2 + [((n, h, w), np.float32)] * 2)
+        try:
+            return self._resolve_leaves(leaves, lights, material, contours, cam, near, base, zkey, value, gid, built,
+                                        (ox, oy, x1, y1), program, kf, kb, vf, vb)
+        finally:
+            SCRATCH.give_back(block)
 
-        kf, kb = view("csg-front", np.float64), view("csg-back", np.float64)
-        vf, vb = view("csg-front-value", np.float32), view("csg-back-value", np.float32)
+    def _resolve_leaves(
+        self, leaves: list[Primitive], lights: Sequence[Any], material: Any, contours: int, cam: Camera, near: float,
+        base: int, zkey: NDArray[np.float64], value: NDArray[np.float32], gid: NDArray[np.int32],
+        built: list[tuple[BandMesh, bool]] | None, rect: Rect, program: NDArray[np.int64],
+        kf: NDArray[np.float64], kb: NDArray[np.float64], vf: NDArray[np.float32], vb: NDArray[np.float32],
+    ) -> tuple[tuple[int, int, int, int], float, list[tuple[BandMesh, bool]]]:
+        """:meth:`_render_per_pixel` on the leaves' buffers ``kf``, ``kb``, ``vf``, ``vb`` (n, h, w)."""
+        persp = not cam.orthographic
+        a, b = camera_affine(cam)
+        eye = cam.eye_array
+        ox, oy, x1, y1 = rect
+        n, h, w = kf.shape
+        table = _cached_table(program.astype(np.int64).tobytes(), n) if n <= _TABLE_LEAVES else np.zeros(0, np.bool_)
 
         def leaf(i: int, p: _Prepared) -> None:
             fill_rect(kf[i], 0, h, 0, w, np.inf)
             fill_rect(kb[i], 0, h, 0, w, -np.inf)
             proj = p.proj()
             project_kernel(p.vertices, eye, a, b, persp, proj, 0, len(p.vertices))
-            fill_projected(proj, p.triangles, p.value_out, p.value_in, near, persp, ox, oy, kf[i], vf[i], kb[i], vb[i])
+            fill_projected(proj, *p.quads(), near, persp, ox, oy, kf[i], vf[i], kb[i], vb[i])
 
         # One worker fills the leaves in order (they share projection scratch
         # when a primitive repeats): the kernels release the GIL, so building

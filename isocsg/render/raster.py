@@ -242,18 +242,95 @@ def fill_kernel(
 
 @njit(cache=True, nogil=True)
 def fill_projected(
-    proj: NDArray[np.float64], tris: NDArray[np.int32], vout: NDArray[np.float32], vin: NDArray[np.float32],
+    proj: NDArray[np.float64], polys: NDArray[np.int32], vout: NDArray[np.float32], vin: NDArray[np.float32],
     near: float, perspective: bool, ox: int, oy: int,
     zf: NDArray[np.float64], vf: NDArray[np.float32], zb: NDArray[np.float64], vb: NDArray[np.float32],
 ) -> None:
-    """Front and back buffers of triangles projected by :func:`project_kernel` (no labels).
+    """Front and back buffers of convex polygons projected by :func:`project_kernel` (no labels).
 
-    As :func:`fill_kernel` with culling and back buffers, for the leaves of
-    per-pixel CSG: each pixel's nearest front-facing and farthest
-    back-facing surface, over the viewport whose top-left pixel is ``(oy, ox)``.
+    For the leaves of per-pixel CSG: each pixel's nearest front-facing and
+    farthest back-facing surface, over the viewport whose top-left pixel is
+    ``(oy, ox)``. ``polys`` (P, 4) are the quads of :func:`pair_quads` (the
+    last index -1 for a triangle) with their values ``vout`` and ``vin``.
+    A quad that projects strictly convex is filled with one span per row into
+    the buffers of its facing; any other as its two triangles. The pixels and
+    values are those of :func:`fill_kernel` with culling and back buffers on
+    the quads' triangles.
     """
-    _fill_all(proj[0], proj[1], proj[2], proj[3], proj[4], proj[5], proj[6], tris, vout, vin, near, perspective,
-              True, True, -1, ox, oy, zf, vf, np.empty((1, 1), np.int32), zb, vb, np.empty((3, 4)))
+    _fill_leaf(proj, polys, vout, vin, near, perspective, ox, oy, zf, vf, zb, vb,
+               np.empty((3, 4)), np.empty((1, 1), np.int32), np.empty(4, np.int64))
+
+
+@njit(**_RAW)
+def _fill_leaf(
+    proj: NDArray[np.float64], polys: NDArray[np.int32], vout: NDArray[np.float32], vin: NDArray[np.float32],
+    near: float, perspective: bool, ox: int, oy: int,
+    zf: NDArray[np.float64], vf: NDArray[np.float32], zb: NDArray[np.float64], vb: NDArray[np.float32],
+    scratch: NDArray[np.float64], no_tags: NDArray[np.int32], bounds: NDArray[np.int64],
+) -> None:
+    hx, hy, hw, hd = proj[0], proj[1], proj[2], proj[3]
+    sx, sy, sk = proj[4], proj[5], proj[6]
+    h, w = zf.shape
+    r_lo, r_hi = float(oy), float(oy + h)
+    c_lo, c_hi = float(ox), float(ox + w)
+    px, py, pk = scratch[0], scratch[1], scratch[2]
+    for p in range(polys.shape[0]):
+        a, b, c, d = polys[p, 0], polys[p, 1], polys[p, 2], polys[p, 3]
+        n = 3 if d < 0 else 4
+        if not (hd[a] >= near and hd[b] >= near and hd[c] >= near and (n == 3 or hd[d] >= near)):
+            _fill_one(hx, hy, hw, hd, sx, sy, sk, a, b, c, near, perspective, True, True, vout[p], vin[p],
+                      -1, ox, oy, zf, vf, no_tags, zb, vb, px, py, pk)
+            if n == 4:
+                _fill_one(hx, hy, hw, hd, sx, sy, sk, a, c, d, near, perspective, True, True, vout[p], vin[p],
+                          -1, ox, oy, zf, vf, no_tags, zb, vb, px, py, pk)
+            continue
+        ymin = min(sy[a], sy[b], sy[c])
+        ymax = max(sy[a], sy[b], sy[c])
+        xmin = min(sx[a], sx[b], sx[c])
+        xmax = max(sx[a], sx[b], sx[c])
+        if n == 4:
+            ymin, ymax = min(ymin, sy[d]), max(ymax, sy[d])
+            xmin, xmax = min(xmin, sx[d]), max(xmax, sx[d])
+        if ymax <= r_lo or ymin >= r_hi + 0.5 or xmax <= c_lo or xmin >= c_hi + 0.5:
+            continue  # no pixel centre of the viewport
+        clamp = not (xmin >= c_lo and xmax <= c_hi)
+        # A convex quad is one part; a quad whose projection is not strictly
+        # convex (seen nearly edge-on) goes as its fan triangles, each with its facing.
+        parts = 1
+        if n == 4:
+            neg = 0
+            pos = 0
+            for k in range(4):
+                i0 = polys[p, k]
+                i1 = polys[p, (k + 1) % 4]
+                i2 = polys[p, (k + 2) % 4]
+                crs = (sx[i1] - sx[i0]) * (sy[i2] - sy[i1]) - (sy[i1] - sy[i0]) * (sx[i2] - sx[i1])
+                if crs < 0.0:
+                    neg += 1
+                elif crs > 0.0:
+                    pos += 1
+            if neg != 4 and pos != 4:
+                parts = 2
+        for part in range(parts):
+            m = n if parts == 1 else 3
+            for k in range(m):
+                v = polys[p, 0] if k == 0 else polys[p, k + part]
+                px[k], py[k], pk[k] = sx[v], sy[v], sk[v]
+            s2 = 0.0
+            for k in range(m):
+                k1 = (k + 1) % m
+                s2 += px[k] * py[k1] - px[k1] * py[k]
+            if s2 == 0.0 or not math.isfinite(s2):
+                continue
+            front = s2 < 0.0
+            if not front:  # clockwise on screen: reverse the ring (the same fan triangles)
+                for k in range(1, (m + 1) // 2):
+                    k2 = m - k
+                    px[k], px[k2] = px[k2], px[k]
+                    py[k], py[k2] = py[k2], py[k]
+                    pk[k], pk[k2] = pk[k2], pk[k]
+            _fill_convex(px, py, pk, m, vout[p] if front else vin[p], -1, ox, oy, clamp, front,
+                         zf if front else zb, vf if front else vb, no_tags, bounds)
 
 
 @njit(**_RAW)
@@ -445,26 +522,17 @@ def project_kernel(
 COPLANAR_RELATIVE = 1e-10
 
 
-@njit(cache=True)
-def _match(t1: NDArray[np.int64], t2: NDArray[np.int64], n_tri: int) -> NDArray[np.int64]:
-    partner = np.full(n_tri, -1, np.int64)
-    for k in range(t1.shape[0]):
-        a, b = t1[k], t2[k]
-        if partner[a] < 0 and partner[b] < 0:
-            partner[a] = b
-            partner[b] = a
-    return partner
-
-
 def pair_quads(
     vertices: ArrayLike, triangles: ArrayLike, value_out: ArrayLike, value_in: ArrayLike | None = None,
 ) -> tuple[NDArray[np.int32], NDArray[np.int32]]:
     """Pair triangles into planar convex quads for the one-span-per-row fill.
 
     Two triangles are paired when they share an edge (in opposite directions,
-    as in a consistently oriented mesh), carry the same values, lie in one
-    plane (within ``COPLANAR_RELATIVE`` of their size) and form a strictly
-    convex quad. Band meshes are mostly such quads.
+    as in a consistently oriented mesh) that no other triangle has, carry the
+    same values, lie in one plane (within ``COPLANAR_RELATIVE`` of their size)
+    and form a strictly convex quad. Edges are taken in increasing order of
+    their (lower, higher) vertex pair, each pairing two triangles that are
+    both still single. Band meshes are mostly such quads.
 
     Parameters
     ----------
@@ -478,7 +546,7 @@ def pair_quads(
     quads : ndarray of int32, shape (P, 4)
         Counter-clockwise like the triangles; a quad ``(a, b, c, d)`` is the
         triangles ``(a, b, c)`` and ``(a, c, d)``; an unpaired triangle has
-        ``d = -1``.
+        ``d = -1``. In the order of each quad's first triangle in the mesh.
     source : ndarray of int32, shape (P,)
         A triangle of each quad (for its values).
 
@@ -489,54 +557,116 @@ def pair_quads(
     >>> quads.tolist(), source.tolist()
     ([[2, 3, 0, 1]], [0])
     """
-    v = np.asarray(vertices, dtype=np.float64).reshape(-1, 3)
-    t = np.asarray(triangles, dtype=np.int64).reshape(-1, 3)
-    vo = np.asarray(value_out, dtype=np.float64).reshape(-1)
-    vi = vo if value_in is None else np.asarray(value_in, dtype=np.float64).reshape(-1)
-    n_tri = len(t)
+    v = np.ascontiguousarray(vertices, dtype=np.float64).reshape(-1, 3)
+    t = np.ascontiguousarray(triangles, dtype=np.int64).reshape(-1, 3)
+    vo = np.ascontiguousarray(value_out, dtype=np.float64).reshape(-1)
+    vi = vo if value_in is None else np.ascontiguousarray(value_in, dtype=np.float64).reshape(-1)
+    if len(t) and (t.min() < 0 or t.max() >= len(v)):
+        raise InvalidGeometryError("triangles: vertex indices out of range")
+    quads, source, count = _pair_kernel(v, t, vo, vi, COPLANAR_RELATIVE)
+    return quads[:count], source[:count]
+
+
+@njit(cache=True, nogil=True)
+def _pair_kernel(
+    v: NDArray[np.float64], t: NDArray[np.int64], vo: NDArray[np.float64], vi: NDArray[np.float64], tol: float,
+) -> tuple[NDArray[np.int32], NDArray[np.int32], int]:
+    n_tri = t.shape[0]
+    nv = v.shape[0]
+    # Half-edges bucketed by their lower vertex (a counting sort), each bucket
+    # sorted by the higher one (insertion sort, stable): the edges in
+    # increasing (lower, higher) order, in linear time.
+    start = np.zeros(nv + 1, np.int64)
+    for i in range(n_tri):
+        for j in range(3):
+            start[min(t[i, j], t[i, (j + 1) % 3]) + 1] += 1
+    for k in range(nv):
+        start[k + 1] += start[k]
+    nxt = start[:-1].copy()
+    his = np.empty(3 * n_tri, np.int64)
+    owner = np.empty(3 * n_tri, np.int64)
+    for i in range(n_tri):
+        for j in range(3):
+            a, b = t[i, j], t[i, (j + 1) % 3]
+            s = nxt[min(a, b)]
+            his[s] = max(a, b)
+            owner[s] = 3 * i + j
+            nxt[min(a, b)] = s + 1
     partner = np.full(n_tri, -1, np.int64)
-    quad_at = np.zeros(0, np.int64)
-    quad_rows = np.zeros((0, 4), np.int64)
-    if n_tri >= 2 and len(v):
-        u = t.ravel()
-        w = t[:, [1, 2, 0]].ravel()
-        key = np.minimum(u, w) * len(v) + np.maximum(u, w)
-        order = np.argsort(key, kind="stable")
-        ks = key[order]
-        same = ks[1:] == ks[:-1]
-        # Edges with exactly two half-edges.
-        single = same.copy()
-        single[1:] &= ~same[:-1]
-        single[:-1] &= ~same[1:]
-        i = np.flatnonzero(single)
-        h1, h2 = order[i], order[i + 1]
-        ta, tb = h1 // 3, h2 // 3
-        ok = (u[h1] == w[h2]) & (w[h1] == u[h2]) & (ta != tb) & (vo[ta] == vo[tb]) & (vi[ta] == vi[tb])
-        h1, h2, ta, tb = h1[ok], h2[ok], ta[ok], tb[ok]
-        # Quad (p, r2, q, r1): edge p -> q of triangle ta with r1 opposite, r2 opposite in tb.
-        idx = np.stack([u[h1], t[tb, (h2 % 3 + 2) % 3], w[h1], t[ta, (h1 % 3 + 2) % 3]], axis=1)
-        corners = v[idx]
-        p, r2, q, r1 = (corners[:, k] for k in range(4))
-        nrm = np.cross(q - p, r1 - p)
-        size = np.maximum.reduce([np.linalg.norm(x - p, axis=1) for x in (q, r1, r2)])
-        nlen = np.linalg.norm(nrm, axis=1)
-        off = np.abs(np.einsum("ij,ij->i", nrm, r2 - p))
-        ok = (nlen > 0) & (off <= COPLANAR_RELATIVE * size * nlen)
-        for k in range(4):
-            e0 = corners[:, (k + 1) % 4] - corners[:, k]
-            e1 = corners[:, (k + 2) % 4] - corners[:, (k + 1) % 4]
-            ok &= np.einsum("ij,ij->i", np.cross(e0, e1), nrm) > 0
-        sel = np.flatnonzero(ok)
-        partner = _match(ta[sel], tb[sel], n_tri)
-        kept = sel[partner[ta[sel]] == tb[sel]]
-        kept = kept[np.unique(ta[kept], return_index=True)[1]]  # one candidate per pair
-        quad_at = np.minimum(ta[kept], tb[kept])
-        quad_rows = idx[kept]
-    lone = np.flatnonzero(partner < 0)
-    rows = np.vstack([quad_rows, np.column_stack([t[lone], np.full(len(lone), -1)])])
-    at = np.concatenate([quad_at, lone])
-    order = np.argsort(at, kind="stable")  # the mesh's own order (locality)
-    return rows[order].astype(np.int32), at[order].astype(np.int32)
+    corner = np.empty((n_tri, 4), np.int64)  # the quad, stored at its lower triangle
+    for lo in range(nv):
+        s0, s1 = start[lo], start[lo + 1]
+        for s in range(s0 + 1, s1):
+            h, o = his[s], owner[s]
+            r = s - 1
+            while r >= s0 and his[r] > h:
+                his[r + 1] = his[r]
+                owner[r + 1] = owner[r]
+                r -= 1
+            his[r + 1] = h
+            owner[r + 1] = o
+        s = s0
+        while s < s1:
+            e = s + 1
+            while e < s1 and his[e] == his[s]:
+                e += 1
+            if e - s == 2:  # an edge with exactly two half-edges
+                h1, h2 = owner[s], owner[s + 1]
+                ta, ja = h1 // 3, h1 % 3
+                tb, jb = h2 // 3, h2 % 3
+                p, q = t[ta, ja], t[ta, (ja + 1) % 3]
+                if (
+                    ta != tb and partner[ta] < 0 and partner[tb] < 0
+                    and t[tb, jb] == q and t[tb, (jb + 1) % 3] == p
+                    and vo[ta] == vo[tb] and vi[ta] == vi[tb]
+                ):
+                    r1, r2 = t[ta, (ja + 2) % 3], t[tb, (jb + 2) % 3]
+                    if _planar_convex(v, p, r2, q, r1, tol):
+                        partner[ta] = tb
+                        partner[tb] = ta
+                        m = min(ta, tb)
+                        corner[m, 0], corner[m, 1], corner[m, 2], corner[m, 3] = p, r2, q, r1
+            s = e
+    quads = np.empty((n_tri, 4), np.int32)
+    source = np.empty(n_tri, np.int32)
+    count = 0
+    for i in range(n_tri):
+        if partner[i] < 0:
+            quads[count, 0], quads[count, 1], quads[count, 2], quads[count, 3] = t[i, 0], t[i, 1], t[i, 2], -1
+        elif partner[i] > i:
+            for k in range(4):
+                quads[count, k] = corner[i, k]
+        else:
+            continue
+        source[count] = i
+        count += 1
+    return quads, source, count
+
+
+@njit(cache=True, nogil=True, inline="always")
+def _planar_convex(v: NDArray[np.float64], p: int, r2: int, q: int, r1: int, tol: float) -> bool:
+    """The quad ``(p, r2, q, r1)``, the triangles ``(p, q, r1)`` and ``(q, p, r2)``, is planar and strictly convex."""
+    nx = (v[q, 1] - v[p, 1]) * (v[r1, 2] - v[p, 2]) - (v[q, 2] - v[p, 2]) * (v[r1, 1] - v[p, 1])
+    ny = (v[q, 2] - v[p, 2]) * (v[r1, 0] - v[p, 0]) - (v[q, 0] - v[p, 0]) * (v[r1, 2] - v[p, 2])
+    nz = (v[q, 0] - v[p, 0]) * (v[r1, 1] - v[p, 1]) - (v[q, 1] - v[p, 1]) * (v[r1, 0] - v[p, 0])
+    nlen = math.sqrt(nx * nx + ny * ny + nz * nz)
+    if not nlen > 0.0:
+        return False
+    size = 0.0
+    for o in (q, r1, r2):
+        size = max(size, math.sqrt((v[o, 0] - v[p, 0]) ** 2 + (v[o, 1] - v[p, 1]) ** 2 + (v[o, 2] - v[p, 2]) ** 2))
+    off = abs(nx * (v[r2, 0] - v[p, 0]) + ny * (v[r2, 1] - v[p, 1]) + nz * (v[r2, 2] - v[p, 2]))
+    if not off <= tol * size * nlen:
+        return False
+    ring = (p, r2, q, r1)
+    for k in range(4):
+        c0, c1, c2 = ring[k], ring[(k + 1) % 4], ring[(k + 2) % 4]
+        e0x, e0y, e0z = v[c1, 0] - v[c0, 0], v[c1, 1] - v[c0, 1], v[c1, 2] - v[c0, 2]
+        e1x, e1y, e1z = v[c2, 0] - v[c1, 0], v[c2, 1] - v[c1, 1], v[c2, 2] - v[c1, 2]
+        turn = (e0y * e1z - e0z * e1y) * nx + (e0z * e1x - e0x * e1z) * ny + (e0x * e1y - e0y * e1x) * nz
+        if not turn > 0.0:
+            return False
+    return True
 
 
 @njit(**_RAW)
@@ -552,18 +682,21 @@ def fill_rect(a: NDArray[Any], r0: int, r1: int, c0: int, c1: int, value: float)
 @njit(**_RAW, error_model="numpy", inline="always")
 def _fill_convex(
     px: NDArray[np.float64], py: NDArray[np.float64], pk: NDArray[np.float64], n: int,
-    value: float, tag: int, oy: int, clamp: bool,
+    value: float, tag: int, ox: int, oy: int, clamp: bool, front: bool,
     zbuf: NDArray[np.float64], vbuf: NDArray[np.float32], tbuf: NDArray[np.int32], bounds: NDArray[np.int64],
 ) -> None:
-    """Front fill of a strictly convex polygon (3 or 4 vertices, negative signed area).
+    """Fill of a strictly convex polygon (3 or 4 vertices, negative signed area).
 
     One span per row between the polygon's left and right chains. Each edge's
     crossing of a row is computed exactly as in :func:`_fill_triangle` (from
     its upper end, with its own slope), so the result is the union of the
     fan triangles pixel for pixel, and neighbours sharing an edge split rows
-    identically. ``clamp`` false promises that all columns lie in
-    ``[0, width]`` (no clamping needed). ``bounds`` (row min, row max + 1,
-    column min, column max + 1) grows to cover every pixel written.
+    identically. The buffers cover the viewport whose top-left pixel is
+    ``(oy, ox)``; ``front`` keeps the nearest key (and writes ``tag`` into
+    ``tbuf`` unless it is negative), otherwise the farthest. ``clamp`` false
+    promises that all columns lie in ``[ox, ox + width]`` (no clamping
+    needed). ``bounds`` (row min, row max + 1, column min, column max + 1)
+    grows to cover every pixel written.
     """
     h, w = zbuf.shape
     top = 0
@@ -596,8 +729,8 @@ def _fill_convex(
     rn = ri - 1 if ri > 0 else n - 1
     l_thr = int(math.ceil(min(max(lo, py[ln] - 0.5), hi)))  # first row on the next left edge's successor
     r_thr = int(math.ceil(min(max(lo, py[rn] - 0.5), hi)))
-    cmin = -1.0
-    cmax = float(w)
+    cmin = float(ox) - 1.0
+    cmax = float(ox + w)
     value32 = np.float32(value)
     tag32 = np.int32(tag)
     # The written rectangle grows by the polygon's pixel box (cheaper than per row).
@@ -608,8 +741,8 @@ def _fill_convex(
         xmax = max(xmax, px[k])
     bounds[0] = min(bounds[0], i_start)
     bounds[1] = max(bounds[1], i_end)
-    bounds[2] = min(bounds[2], max(0, int(math.ceil(min(max(xmin, cmin), cmax) - 0.5))))
-    bounds[3] = max(bounds[3], min(w, int(math.ceil(min(max(xmax, cmin), cmax) - 0.5))))
+    bounds[2] = min(bounds[2], max(ox, int(math.ceil(min(max(xmin, cmin), cmax) - 0.5))))
+    bounds[3] = max(bounds[3], min(ox + w, int(math.ceil(min(max(xmax, cmin), cmax) - 0.5))))
     i = i_start
     while i < i_end:
         while i >= l_thr:
@@ -632,8 +765,8 @@ def _fill_convex(
             if clamp:
                 xl = min(max(xl, cmin), cmax)
                 xr = min(max(xr, cmin), cmax)
-                j0 = max(0, int(math.ceil(xl - 0.5)))
-                j1 = min(w, int(math.ceil(xr - 0.5)))
+                j0 = max(ox, int(math.ceil(xl - 0.5)))
+                j1 = min(ox + w, int(math.ceil(xr - 0.5)))
             else:
                 j0 = int(math.ceil(xl - 0.5))
                 j1 = int(math.ceil(xr - 0.5))
@@ -643,13 +776,26 @@ def _fill_convex(
             q = ka + gx * (j0 + 0.5 - xa) + gy * (pyc - ya)
             zr = zbuf[row]
             vr = vbuf[row]
-            tr = tbuf[row]
-            for j in range(j0, j1):
-                if q < zr[j]:
-                    zr[j] = q
-                    vr[j] = value32
-                    tr[j] = tag32
-                q += gx
+            if front and tag32 >= 0:
+                tr = tbuf[row]
+                for j in range(j0 - ox, j1 - ox):
+                    if q < zr[j]:
+                        zr[j] = q
+                        vr[j] = value32
+                        tr[j] = tag32
+                    q += gx
+            elif front:
+                for j in range(j0 - ox, j1 - ox):
+                    if q < zr[j]:
+                        zr[j] = q
+                        vr[j] = value32
+                    q += gx
+            else:
+                for j in range(j0 - ox, j1 - ox):
+                    if q > zr[j]:
+                        zr[j] = q
+                        vr[j] = value32
+                    q += gx
         i = seg_end
 
 
@@ -740,7 +886,7 @@ def _fill_front(
                 if not crs < 0.0:
                     convex = False
             if convex:
-                _fill_convex(px, py, pk, 4, values[p], tag, oy, clamp, zf, vf, tf, bounds)
+                _fill_convex(px, py, pk, 4, values[p], tag, 0, oy, clamp, True, zf, vf, tf, bounds)
                 continue
             # Otherwise its two triangles (a, b, c) and (a, c, d), each with its own facing.
             for k in range(2):
@@ -749,14 +895,14 @@ def _fill_front(
                     px[2], py[2], pk[2] = px[3], py[3], pk[3]
                 s2 = px[0] * py[1] - px[1] * py[0] + px[1] * py[2] - px[2] * py[1] + px[2] * py[0] - px[0] * py[2]
                 if s2 < 0.0:
-                    _fill_convex(px, py, pk, 3, values[p], tag, oy, clamp, zf, vf, tf, bounds)
+                    _fill_convex(px, py, pk, 3, values[p], tag, 0, oy, clamp, True, zf, vf, tf, bounds)
             continue
         if xmax <= 0.0 or xmin >= w + 0.5:
             continue
         clamp = not (xmin >= 0.0 and xmax <= w)
         s2 = px[0] * py[1] - px[1] * py[0] + px[1] * py[2] - px[2] * py[1] + px[2] * py[0] - px[0] * py[2]
         if s2 < 0.0:
-            _fill_convex(px, py, pk, 3, values[p], tag, oy, clamp, zf, vf, tf, bounds)
+            _fill_convex(px, py, pk, 3, values[p], tag, 0, oy, clamp, True, zf, vf, tf, bounds)
 
 
 # ------------------------------------------------------------------ Python API
