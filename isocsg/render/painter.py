@@ -45,10 +45,10 @@ from ..errors import InvalidParameterError
 from ..geometry.primitives import Primitive, Sphere
 from ..laminae.model import BandMesh
 from ..scene.model import MAX_CONTOURS, Scene
-from .scratch import SCRATCH
 from .raster import (
     _RAW, NEAR_RELATIVE, camera_affine, fill_front_kernel, fill_projected, fill_rect, key_to_depth, pair_quads, project_kernel,
 )
+from .scratch import SCRATCH
 
 __all__ = ["RenderResult", "RenderTimings", "Renderer", "render", "default_renderer"]
 
