@@ -177,3 +177,26 @@ def test_too_many_pieces_is_refused(monkeypatch):
     # Under the limit the same call is fine.
     monkeypatch.setattr(split, "MAX_PIECES", 10**6)
     assert len(split.split_by_levels(v, t, v[:, :1], 0, np.linspace(0.01, 0.99, 50)).triangles) > 100
+
+
+@pytest.mark.parametrize("seed", [0, 1, 2])
+def test_sorted_half_edges_match_a_stable_lexicographic_sort(seed):
+    from isocsg.geometry.halfedges import sorted_half_edges
+
+    rng = np.random.default_rng(seed)
+    t = rng.integers(0, 40, (300, 3)).astype(np.int64)
+    start, higher, owner = sorted_half_edges(t, 40)
+    u, w = t.ravel(), t[:, [1, 2, 0]].ravel()
+    lo, hi = np.minimum(u, w), np.maximum(u, w)
+    order = np.lexsort((hi, lo))  # stable: equal edges keep the half-edge order
+    np.testing.assert_array_equal(owner, order)
+    np.testing.assert_array_equal(higher, hi[order])
+    np.testing.assert_array_equal(np.diff(start), np.bincount(lo, minlength=40))
+
+
+def test_pair_quads_names_a_short_value_array():
+    from isocsg.render.raster import pair_quads
+
+    square = [(0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 1, 0)]
+    with pytest.raises(InvalidParameterError, match="value_in"):
+        pair_quads(square, [(0, 1, 2), (0, 2, 3)], [0.5, 0.5], [0.5])

@@ -21,6 +21,7 @@ from numba import njit
 from numpy.typing import NDArray
 
 from ..errors import InvalidParameterError
+from ..geometry.halfedges import sorted_half_edges
 
 __all__ = ["SplitMesh", "split_by_levels", "mesh_edges", "MAX_PIECES"]
 
@@ -83,44 +84,16 @@ def mesh_edges(triangles: NDArray[np.int64]) -> tuple[NDArray[np.int64], NDArray
 def _edges_kernel(
     t: NDArray[np.int64], n: int
 ) -> tuple[NDArray[np.int64], NDArray[np.int64], NDArray[np.int64], int]:
-    # Half-edges bucketed by their lower vertex (a counting sort), each bucket
-    # (a vertex's few neighbours) sorted by the higher one: the order of a
-    # sort by (lower, higher) key in linear time.
+    start, his, owner = sorted_half_edges(t, n)
     nh = 3 * t.shape[0]
-    start = np.zeros(n + 1, np.int64)
-    for i in range(t.shape[0]):
-        for j in range(3):
-            start[min(t[i, j], t[i, (j + 1) % 3]) + 1] += 1
-    for v in range(n):
-        start[v + 1] += start[v]
-    nxt = start[:-1].copy()
-    his = np.empty(nh, np.int64)
-    owner = np.empty(nh, np.int64)
-    for i in range(t.shape[0]):
-        for j in range(3):
-            a, b = t[i, j], t[i, (j + 1) % 3]
-            s = nxt[min(a, b)]
-            his[s] = max(a, b)
-            owner[s] = 3 * i + j
-            nxt[min(a, b)] = s + 1
     lo = np.empty(nh, np.int64)
     hi = np.empty(nh, np.int64)
     inverse = np.empty((t.shape[0], 3), np.int64)
     flat = inverse.reshape(-1)
     count = 0
     for v in range(n):
-        s0, s1 = start[v], start[v + 1]
-        for s in range(s0 + 1, s1):  # insertion sort of a short bucket
-            h, o = his[s], owner[s]
-            r = s - 1
-            while r >= s0 and his[r] > h:
-                his[r + 1] = his[r]
-                owner[r + 1] = owner[r]
-                r -= 1
-            his[r + 1] = h
-            owner[r + 1] = o
-        for s in range(s0, s1):
-            if s == s0 or his[s] != his[s - 1]:
+        for s in range(start[v], start[v + 1]):
+            if s == start[v] or his[s] != his[s - 1]:
                 lo[count] = v
                 hi[count] = his[s]
                 count += 1

@@ -38,6 +38,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from ..camera import Camera
 from ..errors import InvalidGeometryError, InvalidParameterError
+from ..geometry.halfedges import sorted_half_edges
 
 __all__ = ["Raster", "rasterize", "homogeneous", "near_distance", "camera_affine", "pair_quads"]
 
@@ -563,6 +564,9 @@ def pair_quads(
     vi = vo if value_in is None else np.ascontiguousarray(value_in, dtype=np.float64).reshape(-1)
     if len(t) and (t.min() < 0 or t.max() >= len(v)):
         raise InvalidGeometryError("triangles: vertex indices out of range")
+    for name, vals in (("value_out", vo), ("value_in", vi)):
+        if len(vals) != len(t):
+            raise InvalidParameterError(f"{name}: one value per triangle expected, got {len(vals)} for {len(t)}")
     quads, source, count = _pair_kernel(v, t, vo, vi, COPLANAR_RELATIVE)
     return quads[:count], source[:count]
 
@@ -573,38 +577,11 @@ def _pair_kernel(
 ) -> tuple[NDArray[np.int32], NDArray[np.int32], int]:
     n_tri = t.shape[0]
     nv = v.shape[0]
-    # Half-edges bucketed by their lower vertex (a counting sort), each bucket
-    # sorted by the higher one (insertion sort, stable): the edges in
-    # increasing (lower, higher) order, in linear time.
-    start = np.zeros(nv + 1, np.int64)
-    for i in range(n_tri):
-        for j in range(3):
-            start[min(t[i, j], t[i, (j + 1) % 3]) + 1] += 1
-    for k in range(nv):
-        start[k + 1] += start[k]
-    nxt = start[:-1].copy()
-    his = np.empty(3 * n_tri, np.int64)
-    owner = np.empty(3 * n_tri, np.int64)
-    for i in range(n_tri):
-        for j in range(3):
-            a, b = t[i, j], t[i, (j + 1) % 3]
-            s = nxt[min(a, b)]
-            his[s] = max(a, b)
-            owner[s] = 3 * i + j
-            nxt[min(a, b)] = s + 1
+    start, his, owner = sorted_half_edges(t, nv)  # edges in increasing (lower, higher) order
     partner = np.full(n_tri, -1, np.int64)
     corner = np.empty((n_tri, 4), np.int64)  # the quad, stored at its lower triangle
     for lo in range(nv):
         s0, s1 = start[lo], start[lo + 1]
-        for s in range(s0 + 1, s1):
-            h, o = his[s], owner[s]
-            r = s - 1
-            while r >= s0 and his[r] > h:
-                his[r + 1] = his[r]
-                owner[r + 1] = owner[r]
-                r -= 1
-            his[r + 1] = h
-            owner[r + 1] = o
         s = s0
         while s < s1:
             e = s + 1
