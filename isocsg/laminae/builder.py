@@ -318,9 +318,11 @@ def _pieces(
     """The pieces that cover pixels and their values; returns their number.
 
     Pieces of zero area (a cone's apex, cuts through a vertex) are dropped.
-    A piece takes ``ambient`` plus, per family, its band's table entry, or the
-    exact value (:meth:`FieldFamily.exact`) where the family's field is
-    constant on it (within 1e-12).
+    A piece takes ``ambient`` plus, per family, its band's table entry or,
+    where the family's field is constant ``c`` on it (within 1e-12), the exact
+    value: diffuse ``weight_out * max(0, c)`` outward and ``weight_in *
+    max(0, -c)`` reversed; specular ``weight_out * max(0, c) ** exponent`` on
+    the family's own side (see :class:`FieldFamily`).
     """
     m = 0
     for t in range(triangles.shape[0]):

@@ -62,13 +62,6 @@ class FieldFamily:
     weight_out: float
     weight_in: float
 
-    def exact(self, c: NDArray[np.float64]) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
-        """Exact (outward, reversed) contributions of a constant field value ``c``."""
-        if self.kind == "diffuse":
-            return self.weight_out * np.maximum(c, 0.0), self.weight_in * np.maximum(-c, 0.0)
-        s = self.weight_out * np.maximum(c, 0.0) ** self.exponent
-        return (s, np.zeros_like(s)) if self.kind == "specular_out" else (np.zeros_like(s), s)
-
 
 def light_direction_at(light: Light, points: NDArray[np.float64]) -> NDArray[np.float64]:
     """Unit directions from ``points`` (n, 3) towards ``light`` (a zero vector at the light itself)."""
