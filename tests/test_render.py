@@ -493,11 +493,17 @@ def _concurrency_scenes():
     )
     part = (Box((0, 0, 0), (1.6, 1.6, 1.6)) - Cylinder((0, 0, 0), (2.4, 0, 0), 0.45)) & Sphere((0, 0, 0), 1.05)
     csg = Scene(Camera((3, -4, 3), (0, 0, 0), width=420, height=380), [PointLight((4, -3, 5))], [part])
-    return {"plain-stripes": plain, "csg-leaves-and-stripes": csg}
+    # Large enough on screen for the leaf worker: the last leaf's rows are shared
+    # by both threads, unless its mesh is an earlier leaf's too.
+    ball = Sphere((0, 0, 0), 1.0)
+    big = Camera((2.2, -2.6, 1.6), (0, 0, 0), width=700, height=640)
+    large = Scene(big, [PointLight((4, -3, 5))], [ball - Cylinder((0, 0, 0), (0, 0, 3), 0.45)])
+    repeated = Scene(big, [PointLight((4, -3, 5))], [(ball - Cylinder((0, 0, 0), (0, 0, 3), 0.45)) | (ball & Box((0.5, 0, 0), (1, 1, 1)))])
+    return {"plain-stripes": plain, "csg-leaves-and-stripes": csg, "csg-large": large, "csg-repeated-leaf": repeated}
 
 
 @pytest.mark.parametrize("csg", ["pixel", "surface"], ids=str)
-@pytest.mark.parametrize("name", ["plain-stripes", "csg-leaves-and-stripes"], ids=str)
+@pytest.mark.parametrize("name", ["plain-stripes", "csg-leaves-and-stripes", "csg-large", "csg-repeated-leaf"], ids=str)
 def test_concurrent_fill_equals_the_serial_one(name, csg, monkeypatch):
     # Large images of plain primitives are filled in concurrent row stripes; CSG
     # objects fill their leaves and resolve row stripes concurrently (per pixel)
@@ -507,7 +513,14 @@ def test_concurrent_fill_equals_the_serial_one(name, csg, monkeypatch):
 
     scene = _concurrency_scenes()[name]
     monkeypatch.setattr(painter, "_STRIPES", 3)
+    calls = []
+    fill = painter.fill_projected
+    monkeypatch.setattr(painter, "fill_projected", lambda *a: calls.append(a[7]) or fill(*a))  # a[7]: first row
     threaded = Renderer(csg=csg).render(scene)
+    if csg == "pixel" and name == "csg-large":  # the sphere (last) in row chunks
+        assert len(calls) == 1 + painter._LAST_CHUNKS and len(set(calls)) == painter._LAST_CHUNKS
+    if csg == "pixel" and name == "csg-repeated-leaf":  # the last leaf's mesh was filled before: whole
+        assert len(calls) == 4
     monkeypatch.setattr(painter, "_STRIPES", 1)
     serial = Renderer(csg=csg).render(scene)
     np.testing.assert_array_equal(threaded.image, serial.image)

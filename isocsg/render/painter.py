@@ -730,7 +730,8 @@ class Renderer:
         object's screen rectangle (:func:`_screen_rect`, known before any band
         exists), then row stripes resolve the program per pixel. When the
         leaves' bands are not given they are obtained here, leaf by leaf, and
-        each leaf is filled by a worker thread while the next one is built.
+        each leaf is filled by a worker thread while the next one is built;
+        the last leaf's rows are shared by both threads.
         Returns the rectangle written (rows, then columns), the seconds spent
         obtaining bands and the bands (none if the object is off screen).
         """
@@ -761,12 +762,36 @@ class Renderer:
         n, h, w = kf.shape
         table = _cached_table(program.astype(np.int64).tobytes(), n) if n <= _TABLE_LEAVES else np.zeros(0, np.bool_)
 
+        def fill_rows(i: int, p: _Prepared, proj: NDArray[np.float64], r0: int, r1: int) -> None:
+            fill_rect(kf[i], r0, r1, 0, w, np.inf)
+            fill_rect(kb[i], r0, r1, 0, w, -np.inf)
+            fill_projected(proj, *p.quads(), near, persp, ox, oy + r0, kf[i, r0:r1], vf[i, r0:r1], kb[i, r0:r1],
+                           vb[i, r0:r1])
+
         def leaf(i: int, p: _Prepared) -> None:
-            fill_rect(kf[i], 0, h, 0, w, np.inf)
-            fill_rect(kb[i], 0, h, 0, w, -np.inf)
             proj = p.proj()
             project_kernel(p.vertices, eye, a, b, persp, proj, 0, len(p.vertices))
-            fill_projected(proj, *p.quads(), near, persp, ox, oy, kf[i], vf[i], kb[i], vb[i])
+            fill_rows(i, p, proj, 0, h)
+
+        def shared_leaf(i: int, p: _Prepared) -> None:
+            # The last leaf: nothing left to build, so this thread and the worker
+            # (once it is done with the earlier leaves) take row chunks in turn.
+            proj = p.proj(1)  # not the worker's scratch: it may still fill this mesh for an earlier leaf
+            project_kernel(p.vertices, eye, a, b, persp, proj, 0, len(p.vertices))
+            p.quads()
+            chunks = [(h * k // _LAST_CHUNKS, h * (k + 1) // _LAST_CHUNKS) for k in range(_LAST_CHUNKS)]
+            lock = threading.Lock()
+
+            def drain() -> None:
+                while True:
+                    with lock:
+                        if not chunks:
+                            return
+                        r0, r1 = chunks.pop(0)
+                    fill_rows(i, p, proj, r0, r1)
+
+            jobs.append(_leaf_pool().submit(drain))
+            drain()
 
         # One worker fills the leaves in order (they share projection scratch
         # when a primitive repeats): the kernels release the GIL, so building
@@ -778,17 +803,21 @@ class Renderer:
         # leaves' the other way round (Johnson's rule for a two-stage line).
         order = sorted(range(n), key=lambda i: isinstance(leaves[i], Sphere)) if built is None else range(n)
         out: list[tuple[BandMesh, bool] | None] = [None] * n
+        seen: set[int] = set()
         try:
-            for i in order:
+            for k, i in enumerate(order):
                 prim = leaves[i]
                 t = time.perf_counter()
                 out[i] = built[i] if built is not None else self._bands(prim, lights, material, contours, cam.eye)
                 prep = self._prepare(*out[i])
                 seconds += time.perf_counter() - t
-                if concurrent:
-                    jobs.append(_leaf_pool().submit(leaf, i, prep))
-                else:
+                if not concurrent:
                     leaf(i, prep)
+                elif k == n - 1 and id(prep) not in seen and h >= _LAST_CHUNKS:
+                    shared_leaf(i, prep)
+                else:
+                    jobs.append(_leaf_pool().submit(leaf, i, prep))
+                seen.add(id(prep))
         finally:
             wait(jobs)  # never leave a worker writing into buffers that a later render reuses
         for job in jobs:
@@ -896,6 +925,10 @@ def _pool() -> ThreadPoolExecutor:
 
 
 _LEAF_POOL: ThreadPoolExecutor | None = None
+
+
+#: Row chunks of the last CSG leaf, shared by the main thread and the leaf worker.
+_LAST_CHUNKS = 6
 
 
 def _leaf_pool() -> ThreadPoolExecutor:
