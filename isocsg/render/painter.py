@@ -337,8 +337,8 @@ class _Prepared:
 _HUGE_PAGE = 2 << 20
 
 
-def _staggered_empty(shape: tuple[int, ...], dtype: Any, k: int, *, touch: bool = True) -> NDArray[Any]:
-    """A ``(shape, dtype)`` array (zeroed with ``touch``) starting ``64 * (k % 37) + 64`` bytes into a page.
+def _staggered_empty(shape: tuple[int, ...], dtype: Any, k: int) -> NDArray[Any]:
+    """A zeroed ``(shape, dtype)`` array starting ``64 * (k % 37) + 64`` bytes into a page.
 
     Large allocations all start at the same offset within a 4 KiB page; a loop
     that reads one such buffer and writes another at the same index then
@@ -352,10 +352,9 @@ def _staggered_empty(shape: tuple[int, ...], dtype: Any, k: int, *, touch: bool 
     # once, and with 4 KiB pages every row is another TLB entry.
     align = _HUGE_PAGE if nbytes >= 2 * _HUGE_PAGE else 4096
     raw = np.empty(nbytes + align + 4096, np.uint8)
-    if touch:
-        # Touch every page now: reading pages that were never written (the value
-        # buffer outside the objects) page-faults on every pass on some kernels.
-        raw.fill(0)
+    # Touch every page now: reading pages that were never written (the value
+    # buffer outside the objects) page-faults on every pass on some kernels.
+    raw.fill(0)
     start = (-raw.ctypes.data) % align + 64 * (k % 37) + 64
     return raw[start : start + nbytes].view(dt).reshape(shape)
 
@@ -740,98 +739,82 @@ class Renderer:
         if w <= 0 or h <= 0:
             return (0, 0, 0, 0), 0.0, built or []
         n = len(leaves)
-        # Buffers of the object's rectangle (not the image), lent for this object only.
-        block, (kf, kb, vf, vb) = SCRATCH.lend([((n, h, w), np.float64)] * 2 + [((n, h, w), np.float32)] * 2)
-        try:
-            return self._resolve_leaves(leaves, lights, material, contours, cam, near, base, zkey, value, gid, built,
-                                        (ox, oy, x1, y1), program, kf, kb, vf, vb)
-        finally:
-            SCRATCH.give_back(block)
-
-    def _resolve_leaves(
-        self, leaves: list[Primitive], lights: Sequence[Any], material: Any, contours: int, cam: Camera, near: float,
-        base: int, zkey: NDArray[np.float64], value: NDArray[np.float32], gid: NDArray[np.int32],
-        built: list[tuple[BandMesh, bool]] | None, rect: Rect, program: NDArray[np.int64],
-        kf: NDArray[np.float64], kb: NDArray[np.float64], vf: NDArray[np.float32], vb: NDArray[np.float32],
-    ) -> tuple[tuple[int, int, int, int], float, list[tuple[BandMesh, bool]]]:
-        """:meth:`_render_per_pixel` on the leaves' buffers ``kf``, ``kb``, ``vf``, ``vb`` (n, h, w)."""
         persp = not cam.orthographic
         a, b = camera_affine(cam)
         eye = cam.eye_array
-        ox, oy, x1, y1 = rect
-        n, h, w = kf.shape
         table = _cached_table(program.astype(np.int64).tobytes(), n) if n <= _TABLE_LEAVES else np.zeros(0, np.bool_)
-
-        def fill_rows(i: int, p: _Prepared, proj: NDArray[np.float64], r0: int, r1: int) -> None:
-            fill_rect(kf[i], r0, r1, 0, w, np.inf)
-            fill_rect(kb[i], r0, r1, 0, w, -np.inf)
-            fill_projected(proj, *p.quads(), near, persp, ox, oy + r0, kf[i, r0:r1], vf[i, r0:r1], kb[i, r0:r1],
-                           vb[i, r0:r1])
-
-        def leaf(i: int, p: _Prepared) -> None:
-            proj = p.proj()
-            project_kernel(p.vertices, eye, a, b, persp, proj, 0, len(p.vertices))
-            fill_rows(i, p, proj, 0, h)
-
-        def shared_leaf(i: int, p: _Prepared) -> None:
-            # The last leaf: nothing left to build, so this thread and the worker
-            # (once it is done with the earlier leaves) take row chunks in turn.
-            proj = p.proj(1)  # not the worker's scratch: it may still fill this mesh for an earlier leaf
-            project_kernel(p.vertices, eye, a, b, persp, proj, 0, len(p.vertices))
-            p.quads()
-            chunks = [(h * k // _LAST_CHUNKS, h * (k + 1) // _LAST_CHUNKS) for k in range(_LAST_CHUNKS)]
-            lock = threading.Lock()
-
-            def drain() -> None:
-                while True:
-                    with lock:
-                        if not chunks:
-                            return
-                        r0, r1 = chunks.pop(0)
-                    fill_rows(i, p, proj, r0, r1)
-
-            jobs.append(_leaf_pool().submit(drain))
-            drain()
-
         # One worker fills the leaves in order (they share projection scratch
         # when a primitive repeats): the kernels release the GIL, so building
         # the next leaf's bands goes on meanwhile.
         concurrent = _STRIPES > 1 and w * h >= _STRIPE_MIN_PIXELS // 4
         jobs: list[Future[None]] = []
-        seconds = 0.0
-        # Spheres last: their bands take longer to build than to fill, other
-        # leaves' the other way round (Johnson's rule for a two-stage line).
-        order = sorted(range(n), key=lambda i: isinstance(leaves[i], Sphere)) if built is None else range(n)
-        out: list[tuple[BandMesh, bool] | None] = [None] * n
-        seen: set[int] = set()
-        try:
-            for k, i in enumerate(order):
-                prim = leaves[i]
-                t = time.perf_counter()
-                out[i] = built[i] if built is not None else self._bands(prim, lights, material, contours, cam.eye)
-                prep = self._prepare(*out[i])
-                seconds += time.perf_counter() - t
-                if not concurrent:
-                    leaf(i, prep)
-                elif k == n - 1 and id(prep) not in seen and h >= _LAST_CHUNKS:
-                    shared_leaf(i, prep)
-                else:
-                    jobs.append(_leaf_pool().submit(leaf, i, prep))
-                seen.add(id(prep))
-        finally:
-            wait(jobs)  # never leave a worker writing into buffers that a later render reuses
-        for job in jobs:
-            job.result()
+        # Buffers of the object's rectangle (not the image), lent for this object only.
+        with SCRATCH.borrow([((n, h, w), np.float64)] * 2 + [((n, h, w), np.float32)] * 2) as (kf, kb, vf, vb):
 
-        def stripe(r0: int, r1: int) -> None:
-            resolve_csg(kf[:, r0:r1], vf[:, r0:r1], kb[:, r0:r1], vb[:, r0:r1], program, table, base, ox, oy + r0,
-                        zkey, value, gid)
+            def fill_rows(i: int, p: _Prepared, proj: NDArray[np.float64], r0: int, r1: int) -> None:
+                fill_rect(kf[i], r0, r1, 0, w, np.inf)
+                fill_rect(kb[i], r0, r1, 0, w, -np.inf)
+                fill_projected(proj, *p.quads(), near, persp, ox, oy + r0, kf[i, r0:r1], vf[i, r0:r1], kb[i, r0:r1],
+                               vb[i, r0:r1])
 
-        cuts = [h * k // _STRIPES for k in range(_STRIPES + 1)] if concurrent and h >= 2 * _STRIPES else [0, h]
-        futures = [_pool().submit(stripe, r0, r1) for r0, r1 in zip(cuts[1:-1], cuts[2:])]
-        stripe(cuts[0], cuts[1])
-        for f in futures:
-            f.result()
+            def leaf(i: int, p: _Prepared) -> None:
+                proj = p.proj()
+                project_kernel(p.vertices, eye, a, b, persp, proj, 0, len(p.vertices))
+                fill_rows(i, p, proj, 0, h)
+
+            def shared_leaf(i: int, p: _Prepared) -> None:
+                # The last leaf: nothing left to build, so this thread and the worker
+                # (once it is done with the earlier leaves) take row chunks in turn.
+                proj = p.proj(1)  # not the worker's scratch: it may still fill this mesh for an earlier leaf
+                project_kernel(p.vertices, eye, a, b, persp, proj, 0, len(p.vertices))
+                p.quads()
+                chunks = [(h * k // _LAST_CHUNKS, h * (k + 1) // _LAST_CHUNKS) for k in range(_LAST_CHUNKS)]
+                lock = threading.Lock()
+
+                def drain() -> None:
+                    while True:
+                        with lock:
+                            if not chunks:
+                                return
+                            r0, r1 = chunks.pop(0)
+                        fill_rows(i, p, proj, r0, r1)
+
+                jobs.append(_leaf_pool().submit(drain))
+                drain()
+
+            seconds = 0.0
+            # Spheres last: their bands take longer to build than to fill, other
+            # leaves' the other way round (Johnson's rule for a two-stage line).
+            order = sorted(range(n), key=lambda i: isinstance(leaves[i], Sphere)) if built is None else range(n)
+            out: list[tuple[BandMesh, bool] | None] = [None] * n
+            seen: set[int] = set()
+            try:
+                for k, i in enumerate(order):
+                    t = time.perf_counter()
+                    out[i] = built[i] if built is not None else self._bands(leaves[i], lights, material, contours, cam.eye)
+                    prep = self._prepare(*out[i])
+                    seconds += time.perf_counter() - t
+                    if not concurrent:
+                        leaf(i, prep)
+                    elif k == n - 1 and id(prep) not in seen and h >= _LAST_CHUNKS:
+                        shared_leaf(i, prep)
+                    else:
+                        jobs.append(_leaf_pool().submit(leaf, i, prep))
+                    seen.add(id(prep))
+            finally:
+                wait(jobs)  # never give back buffers that a worker still writes
+            for job in jobs:
+                job.result()
+
+            def stripe(r0: int, r1: int) -> None:
+                resolve_csg(kf[:, r0:r1], vf[:, r0:r1], kb[:, r0:r1], vb[:, r0:r1], program, table, base, ox, oy + r0,
+                            zkey, value, gid)
+
+            cuts = [h * k // _STRIPES for k in range(_STRIPES + 1)] if concurrent and h >= 2 * _STRIPES else [0, h]
+            futures = [_pool().submit(stripe, r0, r1) for r0, r1 in zip(cuts[1:-1], cuts[2:])]
+            stripe(cuts[0], cuts[1])
+            for f in futures:
+                f.result()
         return (oy, y1, ox, x1), seconds, [b for b in out if b is not None]
 
 
@@ -914,6 +897,8 @@ _DEFAULT: Renderer | None = None
 #: Stripes filled concurrently for one primitive on images of at least ``_STRIPE_MIN_PIXELS``.
 _STRIPES = max(1, min(4, os.cpu_count() or 1))
 _STRIPE_MIN_PIXELS = 512 * 512
+#: Row chunks of the last CSG leaf, shared by the main thread and the leaf worker.
+_LAST_CHUNKS = 6
 _POOL: ThreadPoolExecutor | None = None
 
 
@@ -925,10 +910,6 @@ def _pool() -> ThreadPoolExecutor:
 
 
 _LEAF_POOL: ThreadPoolExecutor | None = None
-
-
-#: Row chunks of the last CSG leaf, shared by the main thread and the leaf worker.
-_LAST_CHUNKS = 6
 
 
 def _leaf_pool() -> ThreadPoolExecutor:

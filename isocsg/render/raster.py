@@ -258,6 +258,7 @@ def fill_projected(
     values are those of :func:`fill_kernel` with culling and back buffers on
     the quads' triangles.
     """
+    # Scratch corners; no labels and no written rectangle for leaves (both discarded).
     _fill_leaf(proj, polys, vout, vin, near, perspective, ox, oy, zf, vf, zb, vb,
                np.empty((3, 4)), np.empty((1, 1), np.int32), np.empty(4, np.int64))
 

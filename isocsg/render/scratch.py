@@ -15,12 +15,16 @@ Examples
 >>> a.shape, b.dtype.name
 ((2, 3), 'float32')
 >>> pool.give_back(block)  # the next lend of at most its size reuses it
+>>> with pool.borrow([((4,), np.int32)]) as (c,):
+...     c.shape
+(4,)
 """
 
 from __future__ import annotations
 
 import threading
-from collections.abc import Sequence
+from collections.abc import Iterator, Sequence
+from contextlib import contextmanager
 from typing import Any
 
 import numpy as np
@@ -83,6 +87,15 @@ class ScratchPool:
             self._free.append(block)
             while self._free and (len(self._free) > self._keep or sum(b.size for b in self._free) > self._limit):
                 self._free.pop(0)  # the longest unused
+
+    @contextmanager
+    def borrow(self, specs: Sequence[tuple[tuple[int, ...], Any]]) -> Iterator[list[NDArray[Any]]]:
+        """:meth:`lend` for the time of a ``with`` block, given back at its end."""
+        block, arrays = self.lend(specs)
+        try:
+            yield arrays
+        finally:
+            self.give_back(block)
 
     def clear(self) -> None:
         """Free every block not lent out."""
