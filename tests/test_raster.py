@@ -391,3 +391,54 @@ def test_projected_fill_equals_the_triangle_fill_without_labels(cam, mesh):
     np.testing.assert_allclose(zb2, zb, rtol=1e-12)
     np.testing.assert_array_equal(vf2, vf)
     np.testing.assert_array_equal(vb2, vb)
+
+
+# Screen corners of a sliver triangle met in a random CSG tree (a sphere & a cone,
+# 72 x 64 pixels): its shoelace area is non-zero but its area from corner 0
+# rounds to exactly zero, which once divided by zero in the convex fill.
+SLIVER = [(24.196377711429836, 33.4357774620601), (24.110680500947428, 33.6780741946622),
+          (24.127010467874946, 33.631903524604624)]
+# A quad whose four corner turns are all negative (strictly convex) while the
+# area of its fan triangle (0, 1, 2) rounds to zero.
+THIN_CORNER_QUAD = [(16.786617188559035, 27.523620820517905), (16.387070356560514, 26.73321200820501),
+                    (16.283059918010277, 26.527451980547127), (13.546332033372328, 28.53620821217879)]
+
+
+@pytest.mark.parametrize("ring", ["sliver", "sliver reversed", "quad", "quad reversed"])
+def test_degenerate_polygons_fill_like_their_triangles(ring):
+    """A polygon with a zero-area fan triangle fills as fill_kernel fills its
+    triangles (the zero-area one draws nothing), in the leaf and the front fill."""
+    from isocsg.render.raster import fill_kernel, fill_projected
+
+    pts = list(THIN_CORNER_QUAD if ring.startswith("quad") else SLIVER)
+    if ring.endswith("reversed"):
+        pts = pts[::-1]
+    sx, sy = np.array(pts).T
+    sk = 2.0 + 0.01 * sx + 0.02 * sy  # orthographic depth key = camera depth, on a plane
+    n = len(pts)
+    proj = np.vstack([sx, sy, np.ones(n), sk, sx, sy, sk])
+    poly = np.array([list(range(n)) + [-1] * (4 - n)], np.int32)
+    vo, vi = np.array([0.25], np.float32), np.array([0.75], np.float32)
+    tris = np.array([[0, k, k + 1] for k in range(1, n - 1)], np.int32)
+    H, W = 48, 40
+
+    def buffers():
+        return np.full((H, W), np.inf), np.full((H, W), np.nan, np.float32), np.full((H, W), -np.inf), np.full((H, W), np.nan, np.float32)
+
+    zf, vf, zb, vb = buffers()
+    labels = np.full((H, W), -1, np.int32)
+    fill_kernel(sx, sy, np.ones(n), sk, tris, np.repeat(vo, n - 2), np.repeat(vi, n - 2), 1e-3, False, True, True,
+                0, 0, 0, zf, vf, labels, zb, vb)
+    zf2, vf2, zb2, vb2 = buffers()
+    fill_projected(proj, poly, vo, vi, 1e-3, False, 0, 0, zf2, vf2, zb2, vb2)
+    np.testing.assert_allclose(zf2, zf, rtol=1e-12)
+    np.testing.assert_allclose(zb2, zb, rtol=1e-12)
+    np.testing.assert_array_equal(vf2, vf)
+    np.testing.assert_array_equal(vb2, vb)
+    if ring.startswith("quad"):
+        assert np.isfinite(zf).sum() + np.isfinite(zb).sum() == 2  # the pixels of the fan triangle (0, 2, 3)
+    zf3, vf3 = np.full((H, W), np.inf), np.full((H, W), np.nan, np.float32)
+    fill_front_kernel(proj, poly, vo, 1e-3, False, 0, 0, zf3, vf3, np.full((H, W), -1, np.int32),
+                      np.array([H, 0, W, 0], np.int64))
+    np.testing.assert_allclose(zf3, zf, rtol=1e-12)
+    np.testing.assert_array_equal(vf3, vf)

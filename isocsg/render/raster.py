@@ -690,15 +690,26 @@ def _fill_convex(
     i_end = min(oy + h, int(math.ceil(hi)))
     if i_start >= i_end:
         return
-    # Depth-key plane through vertices 0, 1, 2, anchored at the farthest of them.
+    # Depth-key plane through vertices 0, t1, t1 + 1 (the fan triangle of larger
+    # area: a corner's turn test and this area round differently, so one of
+    # them may be exactly zero), anchored at the farthest of them.
+    t1 = 1
     area = (px[1] - px[0]) * (py[2] - py[0]) - (py[1] - py[0]) * (px[2] - px[0])
-    gx = ((pk[1] - pk[0]) * (py[2] - py[0]) - (pk[2] - pk[0]) * (py[1] - py[0])) / area
-    gy = ((pk[2] - pk[0]) * (px[1] - px[0]) - (pk[1] - pk[0]) * (px[2] - px[0])) / area
+    if n == 4:
+        area3 = (px[2] - px[0]) * (py[3] - py[0]) - (py[2] - py[0]) * (px[3] - px[0])
+        if abs(area3) > abs(area):
+            t1 = 2
+            area = area3
+    if area == 0.0 or not math.isfinite(area):
+        return  # no area in floating point: no pixel centre strictly inside
+    t2 = t1 + 1
+    gx = ((pk[t1] - pk[0]) * (py[t2] - py[0]) - (pk[t2] - pk[0]) * (py[t1] - py[0])) / area
+    gy = ((pk[t2] - pk[0]) * (px[t1] - px[0]) - (pk[t1] - pk[0]) * (px[t2] - px[0])) / area
     an = 0
-    if pk[1] > pk[an]:
-        an = 1
-    if pk[2] > pk[an]:
-        an = 2
+    if pk[t1] > pk[an]:
+        an = t1
+    if pk[t2] > pk[an]:
+        an = t2
     ka, xa, ya = pk[an], px[an], py[an]
     # Left chain: increasing index from the top (negative area); right chain: decreasing.
     li = top
