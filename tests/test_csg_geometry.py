@@ -216,6 +216,37 @@ def test_section_closed_forms(solid, o, n, expected):
     assert s.area == pytest.approx(expected, rel=1e-4, abs=1e-12)
 
 
+# A cone and a coaxial cone that shares its base centre, met by a random tree:
+# shapely nodes A's boundary inside A | B with 1e-16 perturbations, so
+# A - (A | B) once left slivers of area 1e-17 instead of nothing.
+_CONE_A = Cone((0.25423156048603834, 0.0, 0.0001), (-0.07265381656163997, -0.33691987242677474, 0.6661129202342149), 0.8125)
+_CONE_B = Cone((0.25423156048603834, 0.0, 0.0001), (-0.18542695941879425, -0.8598863826907363, 1.7000523754153112),
+               0.3717012975809501)
+_SLIVER_PLANE = ((0.25423156048603834, 0.0, 0.0001), (-0.867512454867703, 0.25879071320683233, 0.4247934879530412))
+
+
+@pytest.mark.parametrize("solid", [Difference(_CONE_A, _CONE_A, _CONE_B), _CONE_A - (_CONE_A | _CONE_B),
+                                   (_CONE_A - _CONE_A) | (_CONE_A - _CONE_A - _CONE_B)],
+                         ids=["a-a-b", "a-(a|b)", "(a-a)|(a-a-b)"])
+def test_empty_results_have_no_rounding_slivers(solid):
+    o, n = _SLIVER_PLANE
+    assert section(_CONE_A, o, n).area > 0.5 and section(_CONE_B, o, n).area > 0.4  # both leaves are cut
+    s = section(solid, o, n)
+    assert s.is_empty and s.area == 0.0
+    assert volume(solid) == 0.0
+
+
+def test_sliver_filter_keeps_thin_but_real_parts():
+    """Only parts thinner than SLIVER_WIDTH of the leaves' extent go: a 1e-6 wide slot stays."""
+    from isocsg.csg.section import SLIVER_WIDTH
+
+    assert SLIVER_WIDTH <= 1e-9
+    # x in [-1, 1] without x >= 0.5 + 1e-6 and without x <= 0.5: a slot 1e-6 wide, 2 long
+    slot = Box((0, 0, 0), (2, 2, 2)) - Box((1.5 + 1e-6, 0, 0), (2, 3, 3)) - Box((-0.5, 0, 0), (2, 3, 3))
+    s = section(slot, (0, 0, 0), (0, 0, 1))
+    assert s.area == pytest.approx(2e-6, rel=1e-6)
+
+
 # --------------------------------------------------------------------------- meshes
 
 

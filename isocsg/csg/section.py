@@ -156,28 +156,45 @@ def plane_frame(plane_origin: ArrayLike, plane_normal: ArrayLike) -> NDArray[np.
     return F
 
 
-def polygonal(geom: BaseGeometry) -> Polygon | MultiPolygon:
+#: Parts of a Boolean result whose mean width (2 area / perimeter) is below this
+#: fraction of the operands' extent are rounding slivers, not solid: shapely nodes
+#: a shared boundary with perturbations of 1e-16, so ``A - (A | B)`` can leave
+#: slivers of area 1e-17 where the exact result is empty.
+SLIVER_WIDTH = 1e-10
+
+
+def polygonal(geom: BaseGeometry, min_width: float = 0.0) -> Polygon | MultiPolygon:
     """Keep only the areal parts of a shapely result (drop touching lines and points).
 
     Regularised set operations have no dangling edges: shapely may return
-    a GeometryCollection with lines where two operands touch.
+    a GeometryCollection with lines where two operands touch. Parts of zero
+    area, and parts whose mean width ``2 area / perimeter`` is below
+    ``min_width``, are dropped.
 
     Examples
     --------
     >>> from shapely.geometry import box
     >>> polygonal(box(0, 0, 1, 1) & box(1, 0, 2, 1)).is_empty
     True
+    >>> polygonal(box(0, 0, 1, 1e-12) | box(2, 0, 3, 1), min_width=1e-9).area
+    1.0
     """
     if geom is None or geom.is_empty:
         return _EMPTY
-    if isinstance(geom, (Polygon, MultiPolygon)):
-        return geom if geom.area > 0 else _EMPTY
-    parts: list[Polygon] = []
-    for g in getattr(geom, "geoms", []):
-        if isinstance(g, Polygon) and g.area > 0:
-            parts.append(g)
-        elif isinstance(g, MultiPolygon):
-            parts.extend(p for p in g.geoms if p.area > 0)
+    if isinstance(geom, Polygon):
+        candidates = [geom]
+    elif isinstance(geom, MultiPolygon):
+        candidates = list(geom.geoms)
+    else:
+        candidates = []
+        for g in getattr(geom, "geoms", []):
+            if isinstance(g, Polygon):
+                candidates.append(g)
+            elif isinstance(g, MultiPolygon):
+                candidates.extend(g.geoms)
+    parts = [p for p in candidates if p.area > 0 and 2.0 * p.area >= min_width * p.length]
+    if isinstance(geom, (Polygon, MultiPolygon)) and len(parts) == len(candidates):
+        return geom
     if not parts:
         return _EMPTY
     return parts[0] if len(parts) == 1 else MultiPolygon(parts)
@@ -412,6 +429,9 @@ def combine_sections(program: NDArray[np.int64], leaf_geoms: Sequence[BaseGeomet
     >>> combine_sections(prog, [box(0, 0, 2, 2), box(1, 0, 3, 2)]).area
     2.0
     """
+    nonempty = [g for g in leaf_geoms if not g.is_empty]
+    bounds = shapely.total_bounds(nonempty) if nonempty else np.zeros(4)
+    min_width = SLIVER_WIDTH * float(max(bounds[2] - bounds[0], bounds[3] - bounds[1]))
     stack: list[BaseGeometry] = []
     for ins in program.tolist():
         if ins >= 0:
@@ -433,8 +453,8 @@ def combine_sections(program: NDArray[np.int64], leaf_geoms: Sequence[BaseGeomet
                 res = shapely.difference(first, rest[0] if len(rest) == 1 else shapely.union_all(rest))
         else:  # pragma: no cover - programs come from CSGNode.program
             raise InvalidGeometryError(f"unknown CSG opcode {op} in program")
-        stack.append(polygonal(res))
-    return polygonal(stack[-1])
+        stack.append(polygonal(res, min_width))
+    return polygonal(stack[-1], min_width)
 
 
 def section(
