@@ -258,81 +258,9 @@ def fill_projected(
     values are those of :func:`fill_kernel` with culling and back buffers on
     the quads' triangles.
     """
-    # Scratch corners; no labels and no written rectangle for leaves (both discarded).
-    _fill_leaf(proj, polys, vout, vin, near, perspective, ox, oy, zf, vf, zb, vb,
-               np.empty((3, 4)), np.empty((1, 1), np.int32), np.empty(4, np.int64))
-
-
-@njit(**_RAW)
-def _fill_leaf(
-    proj: NDArray[np.float64], polys: NDArray[np.int32], vout: NDArray[np.float32], vin: NDArray[np.float32],
-    near: float, perspective: bool, ox: int, oy: int,
-    zf: NDArray[np.float64], vf: NDArray[np.float32], zb: NDArray[np.float64], vb: NDArray[np.float32],
-    scratch: NDArray[np.float64], no_tags: NDArray[np.int32], bounds: NDArray[np.int64],
-) -> None:
-    hx, hy, hw, hd = proj[0], proj[1], proj[2], proj[3]
-    sx, sy, sk = proj[4], proj[5], proj[6]
-    h, w = zf.shape
-    r_lo, r_hi = float(oy), float(oy + h)
-    c_lo, c_hi = float(ox), float(ox + w)
-    px, py, pk = scratch[0], scratch[1], scratch[2]
-    for p in range(polys.shape[0]):
-        a, b, c, d = polys[p, 0], polys[p, 1], polys[p, 2], polys[p, 3]
-        n = 3 if d < 0 else 4
-        if not (hd[a] >= near and hd[b] >= near and hd[c] >= near and (n == 3 or hd[d] >= near)):
-            _fill_one(hx, hy, hw, hd, sx, sy, sk, a, b, c, near, perspective, True, True, vout[p], vin[p],
-                      -1, ox, oy, zf, vf, no_tags, zb, vb, px, py, pk)
-            if n == 4:
-                _fill_one(hx, hy, hw, hd, sx, sy, sk, a, c, d, near, perspective, True, True, vout[p], vin[p],
-                          -1, ox, oy, zf, vf, no_tags, zb, vb, px, py, pk)
-            continue
-        ymin = min(sy[a], sy[b], sy[c])
-        ymax = max(sy[a], sy[b], sy[c])
-        xmin = min(sx[a], sx[b], sx[c])
-        xmax = max(sx[a], sx[b], sx[c])
-        if n == 4:
-            ymin, ymax = min(ymin, sy[d]), max(ymax, sy[d])
-            xmin, xmax = min(xmin, sx[d]), max(xmax, sx[d])
-        if ymax <= r_lo or ymin >= r_hi + 0.5 or xmax <= c_lo or xmin >= c_hi + 0.5:
-            continue  # no pixel centre of the viewport
-        clamp = not (xmin >= c_lo and xmax <= c_hi)
-        # A convex quad is one part; a quad whose projection is not strictly
-        # convex (seen nearly edge-on) goes as its fan triangles, each with its facing.
-        parts = 1
-        if n == 4:
-            neg = 0
-            pos = 0
-            for k in range(4):
-                i0 = polys[p, k]
-                i1 = polys[p, (k + 1) % 4]
-                i2 = polys[p, (k + 2) % 4]
-                crs = (sx[i1] - sx[i0]) * (sy[i2] - sy[i1]) - (sy[i1] - sy[i0]) * (sx[i2] - sx[i1])
-                if crs < 0.0:
-                    neg += 1
-                elif crs > 0.0:
-                    pos += 1
-            if neg != 4 and pos != 4:
-                parts = 2
-        for part in range(parts):
-            m = n if parts == 1 else 3
-            for k in range(m):
-                v = polys[p, 0] if k == 0 else polys[p, k + part]
-                px[k], py[k], pk[k] = sx[v], sy[v], sk[v]
-            s2 = 0.0
-            for k in range(m):
-                k1 = (k + 1) % m
-                s2 += px[k] * py[k1] - px[k1] * py[k]
-            if s2 == 0.0 or not math.isfinite(s2):
-                continue
-            front = s2 < 0.0
-            if not front:  # clockwise on screen: reverse the ring (the same fan triangles)
-                for k in range(1, (m + 1) // 2):
-                    k2 = m - k
-                    px[k], px[k2] = px[k2], px[k]
-                    py[k], py[k2] = py[k2], py[k]
-                    pk[k], pk[k2] = pk[k2], pk[k]
-            _fill_convex(px, py, pk, m, vout[p] if front else vin[p], -1, ox, oy, clamp, front,
-                         zf if front else zb, vf if front else vb, no_tags, bounds)
+    # No labels and no written rectangle for leaves (both discarded).
+    _fill_polys(proj, polys, vout, vin, near, perspective, True, -1, ox, oy, zf, vf, np.empty((1, 1), np.int32),
+                zb, vb, np.empty(4, np.int64), np.empty((3, 4)))
 
 
 @njit(**_RAW)
@@ -804,94 +732,107 @@ def fill_front_kernel(
     the near plane is clipped first (as :func:`fill_kernel`). ``bounds``
     grows to cover every row and column written.
     """
-    _fill_front(proj, polys, values, near, perspective, tag, oy, zf, vf, tf, bounds,
-                np.empty((3, 4)), np.empty((1, 1)), np.empty((1, 1), np.float32))
+    _fill_polys(proj, polys, values, values, near, perspective, False, tag, 0, oy, zf, vf, tf,
+                np.empty((1, 1)), np.empty((1, 1), np.float32), bounds, np.empty((3, 4)))
+
+
+@njit(cache=True, inline="always")
+def _extent(t: NDArray[np.float64], a: int, b: int, c: int, d: int) -> tuple[float, float]:
+    """Smallest and largest ``t`` over the corners of a quad (``d < 0``: a triangle)."""
+    lo = min(t[a], t[b], t[c])
+    hi = max(t[a], t[b], t[c])
+    if d >= 0:
+        lo, hi = min(lo, t[d]), max(hi, t[d])
+    return lo, hi
 
 
 @njit(**_RAW)
-def _fill_front(
-    proj: NDArray[np.float64], polys: NDArray[np.int32], values: NDArray[np.float32],
-    near: float, perspective: bool, tag: int, oy: int,
-    zf: NDArray[np.float64], vf: NDArray[np.float32], tf: NDArray[np.int32], bounds: NDArray[np.int64],
-    scratch: NDArray[np.float64], dummy_k: NDArray[np.float64], dummy_v: NDArray[np.float32],
+def _fill_polys(
+    proj: NDArray[np.float64], polys: NDArray[np.int32], vout: NDArray[np.float32], vin: NDArray[np.float32],
+    near: float, perspective: bool, back: bool, tag: int, ox: int, oy: int,
+    zf: NDArray[np.float64], vf: NDArray[np.float32], tf: NDArray[np.int32],
+    zb: NDArray[np.float64], vb: NDArray[np.float32], bounds: NDArray[np.int64], scratch: NDArray[np.float64],
 ) -> None:
+    """Convex polygons (quads of :func:`pair_quads`) into the viewport whose top-left pixel is ``(oy, ox)``.
+
+    Front-facing polygons go to the nearest-key buffers ``zf, vf`` (and
+    ``tag`` into ``tf``); back-facing ones to the farthest-key buffers
+    ``zb, vb`` with ``back``, else they are culled. Shared by the plain render
+    (:func:`fill_front_kernel`) and the CSG leaves (:func:`fill_projected`).
+    """
     hx, hy, hw, hd = proj[0], proj[1], proj[2], proj[3]
     sx, sy, sk = proj[4], proj[5], proj[6]
-    nrow, w = zf.shape
-    r_lo = float(oy)
-    r_hi = float(oy + nrow)
+    h, w = zf.shape
+    r_lo, r_hi = float(oy), float(oy + h)
+    c_lo, c_hi = float(ox), float(ox + w)
     px, py, pk = scratch[0], scratch[1], scratch[2]
     for p in range(polys.shape[0]):
-        a = polys[p, 0]
-        b = polys[p, 1]
-        c = polys[p, 2]
-        d = polys[p, 3]
+        a, b, c, d = polys[p, 0], polys[p, 1], polys[p, 2], polys[p, 3]
         n = 3 if d < 0 else 4
-        front_all = hd[a] >= near and hd[b] >= near and hd[c] >= near and (n == 3 or hd[d] >= near)
-        if not front_all:
-            _fill_one(hx, hy, hw, hd, sx, sy, sk, a, b, c, near, perspective, True, False, values[p], values[p],
-                      tag, 0, oy, zf, vf, tf, dummy_k, dummy_v, px, py, pk)
+        if not (hd[a] >= near and hd[b] >= near and hd[c] >= near and (n == 3 or hd[d] >= near)):
+            # Crossing the near plane: clipped triangle by triangle (rare).
+            _fill_one(hx, hy, hw, hd, sx, sy, sk, a, b, c, near, perspective, True, back, vout[p], vin[p],
+                      tag, ox, oy, zf, vf, tf, zb, vb, px, py, pk)
             if n == 4:
-                _fill_one(hx, hy, hw, hd, sx, sy, sk, a, c, d, near, perspective, True, False, values[p], values[p],
-                          tag, 0, oy, zf, vf, tf, dummy_k, dummy_v, px, py, pk)
+                _fill_one(hx, hy, hw, hd, sx, sy, sk, a, c, d, near, perspective, True, back, vout[p], vin[p],
+                          tag, ox, oy, zf, vf, tf, zb, vb, px, py, pk)
             bounds[0] = min(bounds[0], oy)
-            bounds[1] = max(bounds[1], oy + nrow)
-            bounds[2] = 0
-            bounds[3] = w
+            bounds[1] = max(bounds[1], oy + h)
+            bounds[2] = min(bounds[2], ox)
+            bounds[3] = max(bounds[3], ox + w)
             continue
-        ymin = min(sy[a], sy[b], sy[c])
-        ymax = max(sy[a], sy[b], sy[c])
-        if n == 4:
-            ymin = min(ymin, sy[d])
-            ymax = max(ymax, sy[d])
+        ymin, ymax = _extent(sy, a, b, c, d)
         if ymax <= r_lo or ymin >= r_hi + 0.5:
-            continue  # no pixel centre of this stripe
-        # Back faces first (about half of a closed mesh): a planar polygon is
-        # back-facing when both its fan triangles are (signed area >= 0).
+            continue  # no pixel centre of the viewport's rows
         ax, ay = sx[a], sy[a]
-        s_abc = (sx[b] - ax) * (sy[c] - ay) - (sy[b] - ay) * (sx[c] - ax)
-        if n == 3 and not s_abc < 0.0:
+        if not back:
+            # Back faces first (about half of a closed mesh): a planar polygon is
+            # back-facing when both its fan triangles are (signed area >= 0).
+            if not (sx[b] - ax) * (sy[c] - ay) - (sy[b] - ay) * (sx[c] - ax) < 0.0 and (
+                n == 3 or not (sx[c] - ax) * (sy[d] - ay) - (sy[c] - ay) * (sx[d] - ax) < 0.0
+            ):
+                continue
+        xmin, xmax = _extent(sx, a, b, c, d)
+        if xmax <= c_lo or xmin >= c_hi + 0.5:
             continue
-        if n == 4 and not s_abc < 0.0 and not (sx[c] - ax) * (sy[d] - ay) - (sy[c] - ay) * (sx[d] - ax) < 0.0:
-            continue
-        px[0], py[0], pk[0] = sx[a], sy[a], sk[a]
-        px[1], py[1], pk[1] = sx[b], sy[b], sk[b]
-        px[2], py[2], pk[2] = sx[c], sy[c], sk[c]
-        xmin = min(px[0], px[1], px[2])
-        xmax = max(px[0], px[1], px[2])
+        clamp = not (xmin >= c_lo and xmax <= c_hi)
+        # A strictly convex quad is one part; any other quad (seen nearly
+        # edge-on) goes as its fan triangles, each with its own facing.
+        parts = 1
         if n == 4:
-            px[3], py[3], pk[3] = sx[d], sy[d], sk[d]
-            xmin = min(xmin, px[3])
-            xmax = max(xmax, px[3])
-            if xmax <= 0.0 or xmin >= w + 0.5:
-                continue
-            clamp = not (xmin >= 0.0 and xmax <= w)
-            # Strictly convex and front-facing: every corner turns the same way.
-            convex = True
+            neg = 0
+            pos = 0
             for k in range(4):
-                k1 = (k + 1) % 4
-                k2 = (k + 2) % 4
-                crs = (px[k1] - px[k]) * (py[k2] - py[k1]) - (py[k1] - py[k]) * (px[k2] - px[k1])
-                if not crs < 0.0:
-                    convex = False
-            if convex:
-                _fill_convex(px, py, pk, 4, values[p], tag, 0, oy, clamp, True, zf, vf, tf, bounds)
-                continue
-            # Otherwise its two triangles (a, b, c) and (a, c, d), each with its own facing.
-            for k in range(2):
-                if k == 1:
-                    px[1], py[1], pk[1] = px[2], py[2], pk[2]
-                    px[2], py[2], pk[2] = px[3], py[3], pk[3]
-                s2 = px[0] * py[1] - px[1] * py[0] + px[1] * py[2] - px[2] * py[1] + px[2] * py[0] - px[0] * py[2]
-                if s2 < 0.0:
-                    _fill_convex(px, py, pk, 3, values[p], tag, 0, oy, clamp, True, zf, vf, tf, bounds)
-            continue
-        if xmax <= 0.0 or xmin >= w + 0.5:
-            continue
-        clamp = not (xmin >= 0.0 and xmax <= w)
-        s2 = px[0] * py[1] - px[1] * py[0] + px[1] * py[2] - px[2] * py[1] + px[2] * py[0] - px[0] * py[2]
-        if s2 < 0.0:
-            _fill_convex(px, py, pk, 3, values[p], tag, 0, oy, clamp, True, zf, vf, tf, bounds)
+                i0 = polys[p, k]
+                i1 = polys[p, (k + 1) % 4]
+                i2 = polys[p, (k + 2) % 4]
+                crs = (sx[i1] - sx[i0]) * (sy[i2] - sy[i1]) - (sy[i1] - sy[i0]) * (sx[i2] - sx[i1])
+                if crs < 0.0:
+                    neg += 1
+                elif crs > 0.0:
+                    pos += 1
+            if neg != 4 and pos != 4:
+                parts = 2
+        for part in range(parts):
+            m = n if parts == 1 else 3
+            for k in range(m):
+                v = a if k == 0 else polys[p, k + part]
+                px[k], py[k], pk[k] = sx[v], sy[v], sk[v]
+            s2 = 0.0
+            for k in range(m):
+                k1 = (k + 1) % m
+                s2 += px[k] * py[k1] - px[k1] * py[k]
+            if not (s2 < 0.0 or back and s2 > 0.0) or not math.isfinite(s2):
+                continue  # culled, or no area
+            front = s2 < 0.0
+            if not front:  # clockwise on screen: reverse the ring (the same fan triangles)
+                for k in range(1, (m + 1) // 2):
+                    k2 = m - k
+                    px[k], px[k2] = px[k2], px[k]
+                    py[k], py[k2] = py[k2], py[k]
+                    pk[k], pk[k2] = pk[k2], pk[k]
+            _fill_convex(px, py, pk, m, vout[p] if front else vin[p], tag, ox, oy, clamp, front,
+                         zf if front else zb, vf if front else vb, tf, bounds)
 
 
 # ------------------------------------------------------------------ Python API
