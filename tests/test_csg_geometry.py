@@ -60,10 +60,10 @@ EXACT = {
 # --------------------------------------------------------------------------- independent reference meshes
 
 
-def _ref_leaf(p):
+def _ref_leaf(p, segments=REF_SEGMENTS):
     M = m3.Manifold
     if isinstance(p, Sphere):
-        return M.sphere(p.radius, REF_SEGMENTS).translate(p.center)
+        return M.sphere(p.radius, segments).translate(p.center)
     if isinstance(p, Truncus):
         # manifold3d's cylinder: radius_low at z=0, radius_high at z=h; map z to the axis (E2 -> E1)
         a = np.asarray(p.axis, float) / p.height
@@ -71,7 +71,7 @@ def _ref_leaf(p):
         x /= np.linalg.norm(x)
         y = np.cross(a, x)
         mat = np.column_stack([x, y, a, np.asarray(p.center) - np.asarray(p.axis) / 2])
-        return M.cylinder(p.height, p.r2, p.r1, REF_SEGMENTS).transform(mat.tolist())
+        return M.cylinder(p.height, p.r2, p.r1, segments).transform(mat.tolist())
     if isinstance(p, Box):
         return M.cube(p.size).translate(tuple(np.asarray(p.center) - np.asarray(p.size) / 2))
     if isinstance(p, ConvexPolyhedron):
@@ -79,15 +79,16 @@ def _ref_leaf(p):
     raise AssertionError(type(p))
 
 
-def _ref(solid):
+def _ref(solid, segments=REF_SEGMENTS):
+    """manifold3d's Boolean of the tree, from manifold3d's own primitives at ``segments`` per circle."""
     if isinstance(solid, (Union, Intersection, Difference)):
-        kids = [_ref(c) for c in solid.children]
+        kids = [_ref(c, segments) for c in solid.children]
         if isinstance(solid, Union):
             return M_batch(kids, m3.OpType.Add)
         if isinstance(solid, Intersection):
             return M_batch(kids, m3.OpType.Intersect)
         return kids[0] - M_batch(kids[1:], m3.OpType.Add) if len(kids) > 1 else kids[0]
-    return _ref_leaf(solid)
+    return _ref_leaf(solid, segments)
 
 
 def M_batch(kids, op):
@@ -100,10 +101,15 @@ def reference(name: str) -> m3.Manifold:
 
 
 def reference_slice(name: str, frame: np.ndarray) -> Polygon:
-    """manifold3d's section in the plane of ``frame``: transform the plane to z = 0, then slice."""
+    """manifold3d's section of a catalogue scene in the plane of ``frame``."""
+    return manifold_slice(reference(name), frame)
+
+
+def manifold_slice(mesh: m3.Manifold, frame: np.ndarray) -> Polygon:
+    """``Manifold.slice`` in the plane of ``frame``: transform the plane to z = 0, then slice."""
     R, o = frame[:3, :3], frame[:3, 3]
     to_frame = np.column_stack([R.T, -R.T @ o])
-    cs = reference(name).transform(to_frame.tolist()).slice(0.0)
+    cs = mesh.transform(to_frame.tolist()).slice(0.0)
     g = Polygon()
     for ring in cs.to_polygons():
         if len(ring) >= 3:

@@ -1,6 +1,7 @@
 """Property-based invariants of CSG volumes and sections (hypothesis).
 
-Random trees of up to 6 overlapping primitives. Volumes come from sections
+Random trees of up to 6 overlapping primitives. Sections are judged by
+manifold3d's ``Manifold.slice`` of its own Boolean of the tree; volumes come from sections
 (:func:`isocsg.csg.volume.volume`) and are judged by manifold3d's mesh
 Booleans (a different algorithm on different data) and by set identities.
 """
@@ -8,6 +9,8 @@ Booleans (a different algorithm on different data) and by set identities.
 from __future__ import annotations
 
 import math
+import sys
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -19,6 +22,10 @@ from isocsg.csg.mesh import to_manifold
 from isocsg.csg.section import section
 from isocsg.csg.tree import leaves
 from isocsg.csg.volume import volume
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+
+from test_csg_geometry import _ref, manifold_slice  # noqa: E402
 
 SETTINGS = settings(max_examples=25, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 # the pair tests integrate four volumes per example: fewer examples keep the suite quick
@@ -70,6 +77,23 @@ def test_volume_matches_manifold3d(tree):
     ref = to_manifold(tree, resolution=192).volume()
     # inscribed 192-gons lose ~ (2 pi / 192)^2 / 3 < 4e-4 of the curved leaves
     assert abs(v - ref) <= 2 * TOL * _scale(tree)
+
+
+#: manifold3d's reference meshes: circles as 384-gons, whose sagitta (3.3e-5 at radius 1)
+#: moves a section's area by at most 2 pi r sagitta = 2.1e-4 per curved leaf it cuts.
+SLICE_SEGMENTS = 384
+
+
+@SETTINGS
+@given(trees, planes)
+def test_section_matches_manifold_slice(tree, plane):
+    assume(len(leaves(tree)) <= 6)
+    o, ang = plane
+    s = section(tree, o, _dir(*ang, 1.0), resolution=1024)
+    ref = manifold_slice(_ref(tree, SLICE_SEGMENTS), s.frame)
+    floor = 2e-3  # absolute: the inscribed meshes' area loss summed over up to 6 leaves, with margin
+    assert abs(s.area - ref.area) <= 5e-3 * ref.area + floor
+    assert s.geometry.symmetric_difference(ref).area <= 1e-2 * ref.area + floor
 
 
 @PAIR_SETTINGS
