@@ -90,6 +90,44 @@ def test_empty_result_has_no_triangles():
     assert surf.n_triangles == 0
 
 
+_CYL = Cylinder((0, 0, 0), (0, 0, 2), 0.5)
+# From a random tree: a cylinder with a small bite taken by a sphere.
+_BITTEN = Cylinder((-0.546586355479198, 2.220446049250313e-16, 0.0), (0.0, 0.0, 1.6875), 0.2448267539922169) - Sphere(
+    (0.023421762527588763, 0.0, 0.0), 0.35
+)
+
+
+@pytest.mark.parametrize("tree", [_CYL - _CYL, _BITTEN - _BITTEN], ids=["cylinder", "bitten-cylinder"])
+def test_a_minus_a_leaves_no_zero_volume_sheets(tree):
+    """Where faces coincide manifold3d can leave closed shells of zero volume (the
+    axis-aligned cylinder minus itself left 592 triangles at 64 contours). They are
+    dropped, so the surface is empty and renders as background."""
+    from isocsg import Camera, RenderSettings, Scene
+    from isocsg.render import Renderer
+
+    lights = (PointLight((3, -4, 5)), PointLight((-4, -1, 2), 0.5))
+    assert csg_surface(tree, lights, contours=64).n_triangles == 0
+    scene = Scene(Camera((2.5, -4.0, 2.0), (0, 0, 0), width=96, height=80), lights, [tree], RenderSettings(contours=64))
+    assert np.isnan(Renderer(csg="surface").render(scene).image).all()
+
+
+def test_sheet_removal_keeps_thin_solids_and_other_parts():
+    """Only shells thinner than SHEET_THICKNESS of the leaves' size go: a 1e-4 thick
+    slab stays, and so does B beside the sheets of A - A."""
+    from isocsg.csg.surface import SHEET_THICKNESS
+
+    assert SHEET_THICKNESS <= 1e-8
+    slab = Box((0, 0, 0), (1, 1, 1)) - Box((0, 0, -0.5001), (2, 2, 2))  # z in [0.4999, 0.5]
+    surf = csg_surface(slab, LIGHTS, contours=8)
+    mesh = trimesh.Trimesh(surf.vertices, surf.triangles, process=True)
+    assert mesh.is_watertight and mesh.volume == pytest.approx(1e-4, rel=1e-6)
+    b = Sphere((3, 0, 0), 0.5)
+    surf = csg_surface((_CYL - _CYL) | b, LIGHTS, contours=64)
+    assert set(np.unique(surf.leaf).tolist()) == {2}  # B alone (leaves: cylinder, cylinder, sphere)
+    mesh = trimesh.Trimesh(surf.vertices, surf.triangles, process=True)
+    assert mesh.is_watertight and mesh.volume == pytest.approx(4 / 3 * np.pi * 0.125, rel=5e-3)
+
+
 def test_close_mesh_welds_t_junctions_of_a_box_split_face_by_face():
     # Two faces of a cube subdivided differently: the welded mesh is closed.
     box = trimesh.creation.box((1, 1, 1))

@@ -15,14 +15,15 @@ lamina ownership: each visible surface point takes the value of the leaf whose
 boundary it lies on, decided once in object space. The renderer then fills
 the result like any primitive (front faces, depth test), so a new viewpoint
 costs a plain fill. Coincident faces of different leaves are resolved by
-manifold3d's symbolic perturbation (regularised results).
+manifold3d's symbolic perturbation (regularised results); the zero-volume
+shells it can leave there are dropped (:data:`SHEET_THICKNESS`).
 """
 
 from __future__ import annotations
 
 from collections.abc import Sequence
 from dataclasses import dataclass
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 from numba import njit
@@ -41,6 +42,11 @@ __all__ = ["CSGSurface", "close_mesh", "csg_surface", "surface_from_bands"]
 
 # Relative distance (to the mesh size) within which a vertex lies on an open edge.
 _ON_EDGE_RELATIVE = 1e-9
+#: Connected parts of a Boolean result whose mean thickness (2 volume / area) is
+#: below this fraction of the leaves' size are sheets, not solid: where faces of
+#: two operands coincide (``A - A``, flush cuts) manifold3d can leave closed
+#: shells of zero volume, which a fill would show from either side.
+SHEET_THICKNESS = 1e-9
 _OPS = {1: "Add", 2: "Intersect", 3: "Subtract"}
 
 
@@ -261,7 +267,8 @@ def surface_from_bands(program: NDArray[np.int64], bands: Sequence[BandMesh]) ->
         args = stack[len(stack) - k :]
         del stack[len(stack) - k :]
         stack.append(m3.Manifold.batch_boolean(args, getattr(m3.OpType, _OPS[op])))
-    out = stack[0].to_mesh64()  # type: ignore[attr-defined]
+    size = max(float(np.ptp(np.asarray(bm.vertices, np.float64), axis=0).max(initial=0.0)) for bm in bands)
+    out = _without_sheets(stack[0], size).to_mesh64()  # type: ignore[attr-defined]
     verts = np.asarray(out.vert_properties, dtype=np.float64)[:, :3].reshape(-1, 3)
     tris = np.asarray(out.tri_verts, dtype=np.int64).reshape(-1, 3)
     face = np.asarray(out.face_id, dtype=np.int64).reshape(-1)
@@ -278,6 +285,15 @@ def surface_from_bands(program: NDArray[np.int64], bands: Sequence[BandMesh]) ->
         rev[sel] = np.einsum("ij,ij->i", mine[sel], normals[i][s]) < 0
         value[sel] = np.where(rev[sel], np.asarray(bm.value_in)[s], np.asarray(bm.value_out)[s])
     return CSGSurface(verts, tris.astype(np.int32), value, leaf, face.astype(np.int32), rev)
+
+
+def _without_sheets(solid: Any, size: float) -> Any:
+    """``solid`` without its connected parts thinner than :data:`SHEET_THICKNESS` times ``size``."""
+    parts = solid.decompose()
+    keep = [p for p in parts if 2.0 * abs(p.volume()) >= SHEET_THICKNESS * size * p.surface_area()]
+    if len(keep) == len(parts):
+        return solid
+    return type(solid).compose(keep) if keep else type(solid)()
 
 
 def _triangle_normals(v: NDArray[np.float64], t: NDArray[np.int64]) -> NDArray[np.float64]:
