@@ -19,3 +19,17 @@ os.environ.setdefault("NUMBA_NUM_THREADS", "2")
 settings.register_profile("explore", print_blob=True)
 settings.register_profile("ci", derandomize=True, print_blob=True)
 settings.load_profile("ci" if os.environ.get("CI") else "explore")
+
+
+def pytest_sessionfinish(session, exitstatus):
+    """Release the cached manifold3d reference meshes before the interpreter shuts down.
+
+    nanobind reports manifold3d objects still alive at exit as leaks.
+    """
+    import gc
+    import sys
+
+    geometry = sys.modules.get("test_csg_geometry")
+    if geometry is not None:
+        geometry.reference.cache_clear()
+    gc.collect()
