@@ -218,11 +218,12 @@ def split_by_levels(
     f = vals[:, column].copy()
 
     edges, tri_edge = mesh_edges(t)
-    k0, off, n_cuts = _edge_levels(f, edges, lv)
+    k0, _, off, n_cuts = _level_ranges(f, edges, lv)  # the cut points, edge after edge
     new_v = np.empty((n_cuts, 3))
     new_vals = np.empty((n_cuts, vals.shape[1]))
     _cut_points(v, vals, column, f, edges, lv, k0, off, new_v, new_vals)
-    kmin, kmax, cap = _triangle_levels(f, t, lv)
+    kmin, kmax, _, inside = _level_ranges(f, t, lv)
+    cap = 3 * (inside + len(t))  # k levels cut a triangle into k + 1 polygons of at most 5 corners
     if cap > MAX_PIECES:
         raise InvalidParameterError(
             f"contours: cutting {len(t)} triangles at {len(lv)} levels could give {cap} band triangles "
@@ -268,19 +269,30 @@ def _snap(vals: NDArray[np.float64], column: int, levels: NDArray[np.float64], t
 
 
 @njit(cache=True, nogil=True)
-def _edge_levels(
-    f: NDArray[np.float64], edges: NDArray[np.int64], levels: NDArray[np.float64]
-) -> tuple[NDArray[np.int64], NDArray[np.int64], int]:
-    """Per edge: the first level strictly inside it and the offset of its cut points; the number of cut points."""
-    k0 = np.empty(edges.shape[0], np.int64)
-    off = np.empty(edges.shape[0], np.int64)
+def _level_ranges(
+    f: NDArray[np.float64], rows: NDArray[np.int64], levels: NDArray[np.float64]
+) -> tuple[NDArray[np.int64], NDArray[np.int64], NDArray[np.int64], int]:
+    """Per row of vertex indices (an edge or a triangle): the levels strictly inside ``f``'s range on it.
+
+    They are ``levels[kmin] .. levels[kmax - 1]``. Also each row's offset in
+    the list of those levels taken row after row, and the list's length.
+    """
+    n = rows.shape[0]
+    kmin = np.empty(n, np.int64)
+    kmax = np.empty(n, np.int64)
+    off = np.empty(n, np.int64)
     total = 0
-    for e in range(edges.shape[0]):
-        fa, fb = f[edges[e, 0]], f[edges[e, 1]]
-        k0[e] = _search(levels, min(fa, fb), True)
-        off[e] = total
-        total += max(_search(levels, max(fa, fb), False) - k0[e], 0)
-    return k0, off, total
+    for i in range(n):
+        lo = hi = f[rows[i, 0]]
+        for j in range(1, rows.shape[1]):
+            x = f[rows[i, j]]
+            lo = min(lo, x)
+            hi = max(hi, x)
+        kmin[i] = _search(levels, lo, True)
+        kmax[i] = _search(levels, hi, False)
+        off[i] = total
+        total += max(kmax[i] - kmin[i], 0)
+    return kmin, kmax, off, total
 
 
 @njit(cache=True, nogil=True)
@@ -301,19 +313,3 @@ def _cut_points(
             for j in range(vals.shape[1]):
                 new_vals[r, j] = vals[a, j] + w * (vals[b, j] - vals[a, j])
             new_vals[r, column] = lv
-
-
-@njit(cache=True, nogil=True)
-def _triangle_levels(
-    f: NDArray[np.float64], t: NDArray[np.int64], levels: NDArray[np.float64]
-) -> tuple[NDArray[np.int64], NDArray[np.int64], int]:
-    """Per triangle: the levels strictly inside its range ``kmin .. kmax - 1``; a bound on the pieces."""
-    kmin = np.empty(t.shape[0], np.int64)
-    kmax = np.empty(t.shape[0], np.int64)
-    cap = 0
-    for i in range(t.shape[0]):
-        f0, f1, f2 = f[t[i, 0]], f[t[i, 1]], f[t[i, 2]]
-        kmin[i] = _search(levels, min(f0, f1, f2), True)
-        kmax[i] = _search(levels, max(f0, f1, f2), False)
-        cap += 3 * (max(kmax[i] - kmin[i], 0) + 1)
-    return kmin, kmax, cap
