@@ -407,9 +407,8 @@ class Renderer:
         self._build = build_laminae
         self.csg = csg
         # CSG surfaces (leaf band meshes clipped in 3D), keyed by the leaves' band
-        # meshes and the program: (band meshes kept alive, leaf parts or None if
-        # only seen once so far).
-        self._surfaces: OrderedDict[tuple[Any, ...], tuple[tuple[BandMesh, ...], list[tuple[int, _Prepared]] | None]] = (
+        # meshes and the program: (band meshes kept alive, leaf parts).
+        self._surfaces: OrderedDict[tuple[Any, ...], tuple[tuple[BandMesh, ...], list[tuple[int, _Prepared]]]] = (
             OrderedDict()
         )
         # Arrays converted for the kernels, keyed by the band mesh's identity.
@@ -481,17 +480,15 @@ class Renderer:
         return seen is None or seen
 
     def _surface(
-        self, program: NDArray[np.int64], built: list[tuple[BandMesh, bool]], *, register_only: bool = False,
+        self, program: NDArray[np.int64], built: list[tuple[BandMesh, bool]]
     ) -> list[tuple[int, _Prepared]] | None:
         """The leaf parts of a CSG object's clipped surface, or None to resolve it per pixel.
 
-        Under ``csg="auto"`` the surface is built on the second render of the
-        same view-independent bands (a first render costs no Boolean), then
-        kept; ``"surface"`` builds it at once (for specular bands: every time).
-        ``register_only`` records a first sight and never builds.
+        Called once :meth:`_per_pixel` has declined: under ``csg="auto"`` from
+        the second render of an object with view-independent bands (a first
+        render costs no Boolean), under ``"surface"`` always (for specular
+        bands: built every time). Surfaces of view-independent bands are kept.
         """
-        if self.csg == "pixel":
-            return None
         bands = tuple(b for b, _ in built)
         view_dependent = any(v for _, v in built)
         if view_dependent and self.csg == "auto":
@@ -499,25 +496,16 @@ class Renderer:
         key = (tuple(id(b) for b in bands), program.tobytes())
         hit = self._surfaces.get(key)
         # The ids of band meshes that were dropped may be reused: compare the objects too.
-        seen = hit is not None and all(x is y for x, y in zip(hit[0], bands))
-        if seen:
+        if hit is not None and all(x is y for x, y in zip(hit[0], bands)):
             self._surfaces.move_to_end(key)
-            if hit[1] is not None or register_only:
-                return hit[1]
-        elif self.csg == "auto" or register_only:
-            self._surfaces[key] = (bands, None)  # seen once: per pixel this time
-            self._trim_surfaces()
-            return None
+            return hit[1]
         surface = surface_from_bands(program, bands)
         parts = [(int(i), self._prepare(surface.leaf_bands(int(i)), True)) for i in np.unique(surface.leaf)]
         if not view_dependent:
             self._surfaces[key] = (bands, parts)
-            self._trim_surfaces()
+            while len(self._surfaces) > 64:
+                self._surfaces.popitem(last=False)
         return parts
-
-    def _trim_surfaces(self) -> None:
-        while len(self._surfaces) > 64:
-            self._surfaces.popitem(last=False)
 
     def _prepare(self, bands: BandMesh, view_dependent: bool) -> _Prepared:
         # View-independent meshes come back from the builder's cache as the same
@@ -652,8 +640,7 @@ class Renderer:
             )
             build += seconds
             grow(rect)
-            if built:
-                self._surface(program, built, register_only=True)  # under "auto": the surface on the next render
+            if built:  # under "auto": the surface on the next render, unless the bands depend on the view
                 self._csg_seen[seen_key] = any(v for _, v in built)
                 while len(self._csg_seen) > 256:
                     self._csg_seen.popitem(last=False)
@@ -767,7 +754,7 @@ class Renderer:
                 # (once it is done with the earlier leaves) take row chunks in turn.
                 proj = p.proj(1)  # not the worker's scratch: it may still fill this mesh for an earlier leaf
                 project_kernel(p.vertices, eye, a, b, persp, proj, 0, len(p.vertices))
-                p.quads()
+                p.quads()  # made here, not by both threads at once
                 chunks = [(h * k // _LAST_CHUNKS, h * (k + 1) // _LAST_CHUNKS) for k in range(_LAST_CHUNKS)]
                 lock = threading.Lock()
 
