@@ -3,7 +3,7 @@
 Every leaf is convex, so a ray meets it in one interval ``[t_in, t_out]``
 (the primitives' analytic ``intersect_rays``). The CSG result along a ray can
 only change at those 2k depths; the visible point is the first depth ``t >= 0``
-just after which the tree's postfix program says "inside". If that depth is
+just after which the tree's program says "inside". If that depth is
 leaf j's entry, the normal is j's outward normal; if it is j's exit (the wall
 of a cut), the normal is reversed. The pixel gets the conventions' shading
 formula (``isocsg.shade``) at that point.
@@ -15,36 +15,20 @@ import numpy as np
 
 from isocsg import Camera, Material, shade
 from isocsg.csg.section import solid_program
-from isocsg.csg.tree import OP_DIFFERENCE, OP_INTERSECTION, OP_UNION
+from isocsg.csg.program import combine_masks
 
 __all__ = ["raycast"]
 
 
-def _run(prog: np.ndarray, inside: np.ndarray) -> np.ndarray:
-    """Evaluate a postfix CSG program on per-leaf membership columns ``inside`` (n, k)."""
-    stack: list[np.ndarray] = []
-    for ins in prog.tolist():
-        if ins >= 0:
-            stack.append(inside[:, ins])
-            continue
-        op, k = divmod(-ins, 1000)
-        args = stack[-k:]
-        del stack[-k:]
-        if op == OP_UNION:
-            stack.append(np.logical_or.reduce(args))
-        elif op == OP_INTERSECTION:
-            stack.append(np.logical_and.reduce(args))
-        elif op == OP_DIFFERENCE:
-            out = args[0].copy()
-            for a in args[1:]:
-                out &= ~a
-            stack.append(out)
-    return stack[-1]
+def _run(prog, inside: np.ndarray) -> np.ndarray:
+    """Evaluate a CSG program on per-leaf membership columns ``inside`` (n, k)."""
+    return prog.evaluate(lambda i, _: inside[:, i], combine_masks)
 
 
 def raycast(solid, camera: Camera, lights, material: Material | None = None) -> np.ndarray:
     """The exact float32 image ``(H, W)`` of one solid, NaN where nothing is hit."""
-    prims, prog = solid_program(solid)
+    prog = solid_program(solid)
+    prims = prog.leaves
     d = camera.ray_directions().reshape(-1, 3)
     o = camera.ray_origins().reshape(-1, 3)
     n_rays, k = len(d), len(prims)

@@ -17,6 +17,7 @@ __all__ = [
     "InvalidParameterError",
     "SceneFileError",
     "MissingDependencyError",
+    "ResourceLimitError",
 ]
 
 
@@ -46,3 +47,12 @@ class SceneFileError(IsocsgError, ValueError):
 
 class MissingDependencyError(IsocsgError, ImportError):
     """An optional dependency needed by the called function is not installed."""
+
+
+class ResourceLimitError(IsocsgError, MemoryError):
+    """A request would need more memory than the budget allows (see :mod:`isocsg.limits`).
+
+    Raised before anything is allocated; the message names the request, the
+    estimate and the budget, e.g. ``render: 4096 x 4096 image with ... needs
+    about 3.2 GB, over the memory budget of 2.0 GB (isocsg.limits.set_memory_budget)``.
+    """

@@ -16,6 +16,7 @@ import numpy as np
 import pytest
 import trimesh
 
+from isocsg.csg.program import compile_program
 from isocsg import Box, Cylinder, Material, PointLight, Sphere
 from isocsg.csg.surface import close_mesh, csg_surface, surface_from_bands
 from isocsg.errors import InvalidGeometryError, InvalidParameterError
@@ -155,11 +156,12 @@ def test_close_mesh_welds_t_junctions_of_a_box_split_face_by_face():
 def test_bad_inputs_name_what_is_wrong():
     with pytest.raises(InvalidGeometryError, match="tree must be a CSG node"):
         csg_surface(Sphere((0, 0, 0), 1), LIGHTS)
+    two = compile_program(Sphere((0, 0, 0), 1) | Sphere((1, 0, 0), 1))
     square = BandMesh(
         np.array([[0, 0, 0], [1, 0, 0], [1, 1, 0]], float), np.array([[0, 1, 2]], np.int32),
         np.zeros(1), np.zeros(1), np.zeros(1, np.int32),
     )
     with pytest.raises(InvalidGeometryError, match="band mesh of leaf 0 is not a closed surface"):
-        surface_from_bands(np.array([0, 1, -1002]), [square, square])
+        surface_from_bands(two, [square, square])
     with pytest.raises(InvalidParameterError, match="does not match 1 band meshes"):
-        surface_from_bands(np.array([0, 1, -1002]), [square])
+        surface_from_bands(two, [square])

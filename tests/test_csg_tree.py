@@ -23,7 +23,8 @@ from isocsg import (
 )
 from isocsg.csg.mesh import to_manifold, to_trimesh
 from isocsg.csg.section import section
-from isocsg.csg.tree import OP_DIFFERENCE, OP_INTERSECTION, OP_UNION, leaves
+from isocsg.csg.program import OP_DIFFERENCE, OP_INTERSECTION, OP_LEAF, OP_UNION
+from isocsg.csg.tree import leaves
 from isocsg.csg.volume import volume
 
 A = Sphere((0, 0, 0), 1.0)
@@ -81,11 +82,12 @@ def test_nodes_are_frozen_and_hashable():
 
 def test_program_is_postfix_over_the_leaves():
     tree = Difference(Union(A, B), C, Intersection(B, A))
-    prims, prog = tree.program()
-    assert prims == [A, B, C, B, A] == leaves(tree)
-    expected = [0, 1, -(OP_UNION * 1000 + 2), 2, 3, 4, -(OP_INTERSECTION * 1000 + 2), -(OP_DIFFERENCE * 1000 + 3)]
-    assert prog.tolist() == expected
-    assert prog.dtype == np.int64
+    prog = tree.program()
+    assert list(prog.leaves) == [A, B, C, B, A] == leaves(tree)
+    L = OP_LEAF
+    assert prog.op.tolist() == [L, L, OP_UNION, L, L, L, OP_INTERSECTION, OP_DIFFERENCE]
+    assert prog.arg.tolist() == [0, 1, 2, 2, 3, 4, 2, 3]
+    assert prog.op.dtype == np.int8 and prog.arg.dtype == np.int64
 
 
 def test_contains_follows_the_set_operations():

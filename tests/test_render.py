@@ -33,6 +33,7 @@ from isocsg import (
 from isocsg.laminae.model import BandMesh
 from isocsg.render import Renderer
 from isocsg.render import image as imagemod
+from isocsg.csg.program import compile_program
 from isocsg.render.painter import resolve_csg, truth_table
 
 RES = 48  # segments of the inscribed test meshes
@@ -122,8 +123,8 @@ def test_csg_resolution_matches_brute_force_on_intervals(seed, use_table):
     tree = _random_tree(rng, pool, 3)
     if isinstance(tree, Sphere):
         tree = Union(tree, pool[-1])
-    leaves, program = tree.program()
-    n, h, w = len(leaves), 12, 10
+    program = tree.program()
+    n, h, w = program.n_leaves, 12, 10
     # Integer-valued keys: many coincident events exercise the grouping.
     f = rng.integers(0, 8, (n, h, w)).astype(float)
     b = f + rng.integers(0, 5, (n, h, w))
@@ -137,8 +138,8 @@ def test_csg_resolution_matches_brute_force_on_intervals(seed, use_table):
     zkey[0, :] = 2.5  # something already nearer in the image on row 0
     value = np.zeros((h, w), np.float32)
     gid = np.full((h, w), -1, np.int32)
-    table = truth_table(program, n) if use_table else np.zeros(0, np.bool_)
-    resolve_csg(f, vf, b, vb, program, table, 10, 0, 0, zkey, value, gid)
+    table = truth_table(program.op, program.arg, n) if use_table else np.zeros(0, np.bool_)
+    resolve_csg(f, vf, b, vb, program.op, program.arg, table, 10, 0, 0, zkey, value, gid)
     n_visible = 0
     for r, c in itertools.product(range(h), range(w)):
         # Brute force: membership on each open stretch between consecutive distinct depths,
@@ -226,7 +227,7 @@ CSG_CASES = {
 @pytest.mark.parametrize("case", CSG_CASES.values(), ids=CSG_CASES.keys())
 def test_csg_render_matches_analytic_intervals(case, cam):
     tree, tree_eval = case
-    leaves, _ = tree.program()
+    leaves = tree.leaves()
     res = renderer().render(Scene(cam, LIGHTS, [tree]), contours=8)
     fronts, backs, dists = sphere_intervals(cam, leaves)
     leaf, is_front, depth = _visible_from_intervals(fronts, backs, tree_eval)
@@ -260,7 +261,7 @@ def test_several_objects_nearest_wins(cam):
     a = Sphere((-0.3, 0.8, 0.0), 1.0)
     b = Sphere((0.5, -0.6, 0.2), 0.7)
     c = Sphere((0.0, 0.0, 0.0), 0.9) - Sphere((0.0, -0.7, 0.0), 0.5)
-    spheres = [a, b] + c.program()[0]
+    spheres = [a, b] + c.leaves()
     scene = Scene(cam, LIGHTS, [SceneObject(a), SceneObject(b, Material(kd=0.5)), SceneObject(c)])
     res = renderer().render(scene, contours=4)
     fronts, backs, dists = sphere_intervals(cam, spheres)
@@ -615,7 +616,7 @@ def test_screen_rectangle_holds_every_pixel_of_the_solid(cam):
         s1 - box: hits_sphere(s1),
     }
     for solid, hit in cases.items():
-        c0, r0, c1, r1 = painter._screen_rect(solid, cam, 1e-9)
+        c0, r0, c1, r1 = painter._screen_rect(compile_program(solid), cam, 1e-9)
         rows, cols = np.divmod(np.flatnonzero(hit), cam.width)
         assert len(rows) > 20
         assert r0 <= rows.min() and rows.max() < r1 and c0 <= cols.min() and cols.max() < c1, solid

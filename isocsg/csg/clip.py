@@ -42,7 +42,7 @@ from .._validation import integer
 from ..errors import InvalidParameterError
 from ..geometry.primitives import Primitive, Solid
 from .section import Section, combine_sections, plane_frame, polygonal, primitive_section, solid_program
-from .tree import CSGNode, Difference
+from .program import OP_DIFFERENCE, Program
 
 __all__ = ["ClippedLamina", "leaf_polarities", "clip_lamina_set", "clip_laminae"]
 
@@ -104,18 +104,13 @@ def leaf_polarities(solid: Solid) -> list[int]:
     >>> leaf_polarities(a - (b - c))
     [1, -1, 1]
     """
-    out: list[int] = []
 
-    def walk(s: Solid, sign: int) -> None:
-        if isinstance(s, CSGNode):
-            for i, c in enumerate(s.children):
-                walk(c, -sign if (isinstance(s, Difference) and i > 0) else sign)
-        else:
-            out.append(sign)
+    def combine(op: int, parts: list[list[int]]) -> list[int]:
+        if op != OP_DIFFERENCE:
+            return [s for p in parts for s in p]
+        return parts[0] + [-s for p in parts[1:] for s in p]
 
-    solid_program(solid)  # validates
-    walk(solid, 1)
-    return out
+    return solid_program(solid).evaluate(lambda i, p: [1], combine)
 
 
 def _lamina_polygon(vertices: NDArray[np.float64], F: NDArray[np.float64]) -> Polygon | MultiPolygon:
@@ -133,7 +128,7 @@ def _clip_one(
     leaf: int,
     polarity: int,
     prims: list[Primitive],
-    prog: NDArray[np.int64],
+    prog: Program,
     resolution: int,
 ) -> ClippedLamina:
     verts = np.asarray(lamina.vertices, dtype=np.float64)
@@ -193,7 +188,8 @@ def clip_lamina_set(
     >>> clip_lamina_set(tree, 0, [square])[0].area
     2.0
     """
-    prims, prog = solid_program(solid)
+    prog = solid_program(solid)
+    prims = prog.leaves
     i = integer("leaf", leaf, low=0, high=len(prims) - 1, error=InvalidParameterError)
     res = integer("resolution", resolution, low=8, high=1_000_000, error=InvalidParameterError)
     pol = leaf_polarities(solid)[i]
@@ -255,7 +251,8 @@ def clip_laminae(
     from ..laminae import build_laminae
 
     res = integer("resolution", resolution, low=8, high=1_000_000, error=InvalidParameterError)
-    prims, prog = solid_program(solid)
+    prog = solid_program(solid)
+    prims = prog.leaves
     pols = leaf_polarities(solid)
     out: list[ClippedLamina] = []
     for i, prim in enumerate(prims):

@@ -9,7 +9,7 @@ converges to the true one as ``resolution`` grows.
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 from numpy.typing import NDArray
@@ -17,7 +17,7 @@ from numpy.typing import NDArray
 from .._validation import integer
 from ..errors import InvalidGeometryError, InvalidParameterError, MissingDependencyError
 from ..geometry.primitives import Box, ConvexPolyhedron, Primitive, Solid, Sphere, Truncus
-from .tree import CSGNode, Difference, Intersection, Union
+from .program import OP_INTERSECTION, OP_UNION, compile_program
 
 if TYPE_CHECKING:  # pragma: no cover
     import manifold3d
@@ -85,22 +85,24 @@ def _leaf(prim: Primitive, resolution: int) -> "manifold3d.Manifold":
 
 
 def _build(solid: Solid, resolution: int, path: str) -> "manifold3d.Manifold":
-    if isinstance(solid, Primitive):
-        return _leaf(solid, resolution)
-    if isinstance(solid, CSGNode):
-        kids = [_build(c, resolution, f"{path}.children[{i}]") for i, c in enumerate(solid.children)]
-        out = kids[0]
-        for k in kids[1:]:
-            if isinstance(solid, Union):
-                out = out + k
-            elif isinstance(solid, Intersection):
-                out = out ^ k  # manifold3d's ^ is intersection
-            elif isinstance(solid, Difference):
-                out = out - k
-            else:  # pragma: no cover - the three node types are exhaustive
-                raise InvalidGeometryError(f"{path}: unknown CSG node {type(solid).__name__}")
-        return out
-    raise InvalidGeometryError(f"{path} must be a solid (primitive or CSG node), got {type(solid).__name__}")
+    if not isinstance(solid, Solid):
+        raise InvalidGeometryError(f"{path} must be a solid (primitive or CSG node), got {type(solid).__name__}")
+    m3 = _manifold3d()
+    M = m3.Manifold
+    add, sub, meet = m3.OpType.Add, m3.OpType.Subtract, m3.OpType.Intersect
+
+    def combine(op: int, parts: list[Any]) -> Any:
+        if len(parts) == 1:
+            return parts[0]
+        if op == OP_UNION:
+            # manifold3d's batch union joins operands whose boxes do not overlap without a Boolean.
+            return M.batch_boolean(parts, add)
+        if op == OP_INTERSECTION:
+            return M.batch_boolean(parts, meet)
+        rest = parts[1] if len(parts) == 2 else M.batch_boolean(parts[1:], add)
+        return M.batch_boolean([parts[0], rest], sub)
+
+    return compile_program(solid).evaluate(lambda _, p: _leaf(p, resolution), combine)
 
 
 def to_manifold(solid: Solid, resolution: int = 64) -> "manifold3d.Manifold":

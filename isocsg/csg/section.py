@@ -38,7 +38,8 @@ from shapely.geometry.base import BaseGeometry
 from .._validation import integer, nonzero_vector3, points_array, vector3
 from ..errors import InvalidGeometryError, InvalidParameterError
 from ..geometry.primitives import Box, ConvexPolyhedron, Primitive, Solid, Sphere, Truncus
-from .tree import OP_DIFFERENCE, OP_INTERSECTION, OP_UNION, CSGNode
+from .program import OP_INTERSECTION, OP_UNION, Program, compile_program
+from .tree import CSGNode
 
 __all__ = [
     "Section",
@@ -391,8 +392,8 @@ def primitive_section(prim: Primitive, frame: NDArray[np.float64], resolution: i
 # ----------------------------------------------------------------------------- trees
 
 
-def solid_program(solid: Solid) -> tuple[list[Primitive], NDArray[np.int64]]:
-    """``(leaves, postfix program)`` of a primitive or tree (a primitive is the program ``[0]``).
+def solid_program(solid: Solid) -> Program:
+    """The flat program of a primitive or tree (a primitive is the one-leaf program).
 
     Raises
     ------
@@ -401,21 +402,18 @@ def solid_program(solid: Solid) -> tuple[list[Primitive], NDArray[np.int64]]:
     """
     if isinstance(solid, CSGNode):
         return solid.program()
-    if isinstance(solid, Primitive):
-        return [solid], np.zeros(1, dtype=np.int64)
-    raise InvalidGeometryError(f"solid must be a primitive or CSG node, got {type(solid).__name__}")
+    return compile_program(solid)
 
 
-def combine_sections(program: NDArray[np.int64], leaf_geoms: Sequence[BaseGeometry]) -> Polygon | MultiPolygon:
-    """Evaluate a postfix CSG program on 2D leaf geometries with shapely Booleans.
+def combine_sections(program: Program, leaf_geoms: Sequence[BaseGeometry]) -> Polygon | MultiPolygon:
+    """Evaluate a CSG program on 2D leaf geometries with shapely Booleans.
 
     Parameters
     ----------
-    program : ndarray of int64
-        From :meth:`CSGNode.program` (non-negative entries push a leaf,
-        ``-(op * 1000 + k)`` combines the top ``k`` entries).
+    program : Program
+        From :func:`isocsg.csg.program.compile_program`.
     leaf_geoms : sequence of shapely geometries
-        One per leaf, in the plane's 2D frame.
+        One per leaf of the program, in the plane's 2D frame.
 
     Returns
     -------
@@ -425,36 +423,30 @@ def combine_sections(program: NDArray[np.int64], leaf_geoms: Sequence[BaseGeomet
     Examples
     --------
     >>> from shapely.geometry import box
-    >>> prog = np.array([0, 1, -(3 * 1000 + 2)])  # leaf0 - leaf1
+    >>> from isocsg import Box
+    >>> prog = compile_program(Box((1, 1, 0), (2, 2, 1)) - Box((2, 1, 0), (2, 2, 1)))
     >>> combine_sections(prog, [box(0, 0, 2, 2), box(1, 0, 3, 2)]).area
     2.0
     """
     nonempty = [g for g in leaf_geoms if not g.is_empty]
     bounds = shapely.total_bounds(nonempty) if nonempty else np.zeros(4)
     min_width = SLIVER_WIDTH * float(max(bounds[2] - bounds[0], bounds[3] - bounds[1]))
-    stack: list[BaseGeometry] = []
-    for ins in program.tolist():
-        if ins >= 0:
-            stack.append(leaf_geoms[ins])
-            continue
-        op, k = divmod(-ins, 1000)
-        args = stack[-k:]
-        del stack[-k:]
+
+    def combine(op: int, args: list[BaseGeometry]) -> BaseGeometry:
         if op == OP_UNION:
             nonempty = [g for g in args if not g.is_empty]
             res = shapely.union_all(nonempty) if nonempty else _EMPTY
         elif op == OP_INTERSECTION:
             res = _EMPTY if any(g.is_empty for g in args) else shapely.intersection_all(args)
-        elif op == OP_DIFFERENCE:
+        else:
             first, rest = args[0], [g for g in args[1:] if not g.is_empty]
             if first.is_empty or not rest:
                 res = first
             else:
                 res = shapely.difference(first, rest[0] if len(rest) == 1 else shapely.union_all(rest))
-        else:  # pragma: no cover - programs come from CSGNode.program
-            raise InvalidGeometryError(f"unknown CSG opcode {op} in program")
-        stack.append(polygonal(res, min_width))
-    return polygonal(stack[-1], min_width)
+        return polygonal(res, min_width)
+
+    return polygonal(program.evaluate(lambda i, _: leaf_geoms[i], combine), min_width)
 
 
 def section(
@@ -498,6 +490,7 @@ def section(
     """
     res = integer("resolution", resolution, low=8, high=1_000_000, error=InvalidParameterError)
     F = plane_frame(plane_origin, plane_normal)
-    prims, prog = solid_program(solid)
+    prog = solid_program(solid)
+    prims = prog.leaves
     geoms = [primitive_section(p, F, res) for p in prims]
     return Section(combine_sections(prog, geoms), F)

@@ -33,6 +33,7 @@ from ..errors import InvalidGeometryError, InvalidParameterError
 from ..laminae.model import BandMesh
 from ..laminae.split import mesh_edges
 from .mesh import _manifold3d
+from .program import OP_DIFFERENCE, OP_INTERSECTION, OP_UNION, Program
 from .tree import CSGNode
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -47,7 +48,7 @@ _ON_EDGE_RELATIVE = 1e-9
 #: two operands coincide (``A - A``, flush cuts) manifold3d can leave closed
 #: shells of zero volume, which a fill would show from either side.
 SHEET_THICKNESS = 1e-9
-_OPS = {1: "Add", 2: "Intersect", 3: "Subtract"}
+_OPS = {OP_UNION: "Add", OP_INTERSECTION: "Intersect", OP_DIFFERENCE: "Subtract"}
 
 
 @dataclass(frozen=True, slots=True, eq=False)
@@ -214,13 +215,13 @@ def _points_on_edges(
     return np.array(out_e, np.int64), np.array(out_v, np.int64), np.array(out_s, np.float64)
 
 
-def surface_from_bands(program: NDArray[np.int64], bands: Sequence[BandMesh]) -> CSGSurface:
+def surface_from_bands(program: Program, bands: Sequence[BandMesh]) -> CSGSurface:
     """Clip the leaves' band meshes against each other along a CSG program.
 
     Parameters
     ----------
-    program : ndarray of int64
-        The postfix program of :meth:`isocsg.csg.CSGNode.program`.
+    program : Program
+        The tree's flat program (:meth:`isocsg.csg.CSGNode.program`).
     bands : sequence of BandMesh
         One band mesh per leaf, each tiling the leaf's closed surface.
 
@@ -237,9 +238,8 @@ def surface_from_bands(program: NDArray[np.int64], bands: Sequence[BandMesh]) ->
         If the program and the band meshes do not match.
     """
     m3 = _manifold3d()
-    prog = np.asarray(program, dtype=np.int64).reshape(-1)
-    if prog.size == 0 or (prog[prog >= 0].max(initial=-1) >= len(bands)):
-        raise InvalidParameterError(f"program {prog.tolist()} does not match {len(bands)} band meshes")
+    if not isinstance(program, Program) or program.n_leaves != len(bands):
+        raise InvalidParameterError(f"{program!r} does not match {len(bands)} band meshes")
     solids, normals = [], []
     # One original id per leaf: manifold3d tags each result triangle with it.
     first_id = int(m3.Manifold.reserve_ids(len(bands)))
@@ -258,17 +258,12 @@ def surface_from_bands(program: NDArray[np.int64], bands: Sequence[BandMesh]) ->
             raise InvalidGeometryError(f"the band mesh of leaf {i} is not a closed surface ({solid.status()})")
         solids.append(solid)
         normals.append(_triangle_normals(np.asarray(bm.vertices, np.float64), np.asarray(bm.triangles, np.int64)))
-    stack: list[object] = []
-    for p in prog:
-        if p >= 0:
-            stack.append(solids[p])
-            continue
-        op, k = divmod(int(-p), 1000)
-        args = stack[len(stack) - k :]
-        del stack[len(stack) - k :]
-        stack.append(m3.Manifold.batch_boolean(args, getattr(m3.OpType, _OPS[op])))
+    result = program.evaluate(
+        lambda i, _: solids[i],
+        lambda op, args: args[0] if len(args) == 1 else m3.Manifold.batch_boolean(args, getattr(m3.OpType, _OPS[op])),
+    )
     size = max(float(np.ptp(np.asarray(bm.vertices, np.float64), axis=0).max(initial=0.0)) for bm in bands)
-    out = _without_sheets(stack[0], size).to_mesh64()  # type: ignore[attr-defined]
+    out = _without_sheets(result, size).to_mesh64()  # type: ignore[attr-defined]
     verts = np.asarray(out.vert_properties, dtype=np.float64)[:, :3].reshape(-1, 3)
     tris = np.asarray(out.tri_verts, dtype=np.int64).reshape(-1, 3)
     face = np.asarray(out.face_id, dtype=np.int64).reshape(-1)
@@ -332,7 +327,8 @@ def csg_surface(
 
     if not isinstance(tree, CSGNode):
         raise InvalidGeometryError(f"tree must be a CSG node, got {type(tree).__name__}")
-    leaves, program = tree.program()
+    program = tree.program()
+    leaves = program.leaves
     mat = Material() if material is None else material
     bands = [build_laminae(p, tuple(lights), mat, contours).bands for p in leaves]
     return surface_from_bands(program, bands)

@@ -1,15 +1,21 @@
 """Immutable CSG trees: n-ary union, intersection and difference of solids.
 
 Trees are regularised set operations over convex primitives. Each node is a
-frozen dataclass holding a tuple of children. Point membership is evaluated
-from the leaves up, and :meth:`CSGNode.program` flattens a tree into a postfix
-program that compiled kernels (the renderer) evaluate per pixel.
+frozen dataclass holding a tuple of children; the operators ``|``, ``&`` and
+``-`` build them in constant time, so a modelling loop
+(``for h in holes: part = part - h``) nests one level per operation.
+
+Nothing here recurses over the tree: construction, ``hash``, ``==``, pickling,
+``repr`` and ``to_dict`` walk it with explicit stacks, and everything that
+evaluates it (``contains``, ``bounds``, sections, volumes, meshes, rendering)
+goes through its flat :class:`~isocsg.csg.program.Program`, compiled once
+per node and kept. Trees of any depth and width work, short of memory.
 """
 
 from __future__ import annotations
 
-from collections.abc import Iterable
-from dataclasses import dataclass
+from collections.abc import Iterable, Iterator
+from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
@@ -17,6 +23,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from ..errors import InvalidGeometryError
 from ..geometry.primitives import Primitive, Solid
+from .program import OP_DIFFERENCE, OP_INTERSECTION, OP_UNION, Program, compile_program
 
 __all__ = [
     "CSGNode",
@@ -33,11 +40,8 @@ __all__ = [
     "OP_DIFFERENCE",
 ]
 
-# Opcodes of the postfix program: a non-negative entry pushes leaf i; a
-# negative entry -(op * 1000 + k) pops k operands and pushes the result.
-OP_UNION = 1
-OP_INTERSECTION = 2
-OP_DIFFERENCE = 3
+#: Trees with more leaves than this print as a summary (their full repr would be huge).
+REPR_LEAVES = 16
 
 
 def _check_children(name: str, children: Iterable[Any]) -> tuple[Solid, ...]:
@@ -50,25 +54,112 @@ def _check_children(name: str, children: Iterable[Any]) -> tuple[Solid, ...]:
     return kids
 
 
-@dataclass(frozen=True, slots=True)
+def _postorder(root: Solid) -> Iterator[Solid]:
+    """Every node and leaf of the tree, children before their parent, without recursion."""
+    todo: list[tuple[Solid, bool]] = [(root, False)]
+    while todo:
+        s, expanded = todo.pop()
+        if expanded or not isinstance(s, CSGNode):
+            yield s
+            continue
+        todo.append((s, True))
+        todo.extend((c, False) for c in reversed(s.children))
+
+
+@dataclass(frozen=True, slots=True, eq=False, repr=False, init=False)
 class CSGNode(Solid):
     """Base of the Boolean nodes; ``children`` is a non-empty tuple of solids."""
 
     children: tuple[Solid, ...]
+    # Computed once, on first use: the structural hash and the flat program.
+    _hash: int | None = field(default=None, compare=False)
+    _program: Program | None = field(default=None, compare=False)
     kind = "csg"
     opcode = 0
 
     def __init__(self, *children: Solid | Iterable[Solid]) -> None:
         # Accept Union(a, b, c) as well as Union([a, b, c]).
         if len(children) == 1 and not isinstance(children[0], Solid):
+            if not isinstance(children[0], Iterable) or isinstance(children[0], (str, bytes)):
+                raise InvalidGeometryError(
+                    f"{type(self).__name__} operand 0 must be a solid (primitive or CSG node), "
+                    f"got {type(children[0]).__name__}"
+                )
             children = tuple(children[0])  # type: ignore[arg-type]
         object.__setattr__(self, "children", _check_children(type(self).__name__, children))
+        object.__setattr__(self, "_hash", None)
+        object.__setattr__(self, "_program", None)
+
+    # ------------------------------------------------------------ identity
+    def __hash__(self) -> int:
+        if self._hash is None:
+            for s in _postorder_unhashed(self):
+                object.__setattr__(s, "_hash", hash((s.kind, tuple(map(hash, s.children)))))  # type: ignore[attr-defined]
+        return self._hash  # type: ignore[return-value]
+
+    def __eq__(self, other: object) -> bool:
+        if self is other:
+            return True
+        if not isinstance(other, CSGNode):
+            return NotImplemented
+        if hash(self) != hash(other):
+            return False
+        pairs: list[tuple[Solid, Solid]] = [(self, other)]
+        while pairs:
+            a, b = pairs.pop()
+            if a is b:
+                continue
+            if isinstance(a, CSGNode) or isinstance(b, CSGNode):
+                if type(a) is not type(b) or len(a.children) != len(b.children) or hash(a) != hash(b):  # type: ignore[union-attr]
+                    return False
+                pairs.extend(zip(a.children, b.children))  # type: ignore[union-attr]
+            elif a != b:
+                return False
+        return True
+
+    def __reduce__(self) -> tuple[Any, ...]:
+        # The structure as flat lists (pickle's own recursion would follow the nesting).
+        kinds: list[str] = []
+        arity: list[int] = []
+        prims: list[Primitive] = []
+        for s in _postorder(self):
+            if isinstance(s, CSGNode):
+                kinds.append(s.kind)
+                arity.append(len(s.children))
+            else:
+                kinds.append("")
+                arity.append(0)
+                prims.append(s)  # type: ignore[arg-type]
+        return (_rebuild, (kinds, arity, prims))
 
     def __repr__(self) -> str:
-        return f"{type(self).__name__}({', '.join(map(repr, self.children))})"
+        n = self.program().n_leaves
+        if n > REPR_LEAVES:
+            return f"<{type(self).__name__} of {len(self.children)} operands, {n} leaves>"
+        # Tokens in preorder, joined once (no nested string building).
+        out: list[str] = []
+        todo: list[Any] = [self]
+        while todo:
+            s = todo.pop()
+            if isinstance(s, str):
+                out.append(s)
+            elif isinstance(s, CSGNode):
+                out.append(f"{type(s).__name__}(")
+                todo.append(")")
+                for i, c in enumerate(reversed(s.children)):
+                    todo.append(c)
+                    if i < len(s.children) - 1:
+                        todo.append(", ")
+            else:
+                out.append(repr(s))
+        return "".join(out)
 
-    def _combine(self, masks: list[NDArray[np.bool_]]) -> NDArray[np.bool_]:  # pragma: no cover
-        raise NotImplementedError
+    # ------------------------------------------------------------ evaluation
+    def program(self) -> Program:
+        """The tree's flat program (:func:`isocsg.csg.program.compile_program`), made once."""
+        if self._program is None:
+            object.__setattr__(self, "_program", compile_program(self))
+        return self._program  # type: ignore[return-value]
 
     def contains(self, points: ArrayLike) -> NDArray[np.bool_]:
         """Point membership of the (closed) result solid.
@@ -76,7 +167,7 @@ class CSGNode(Solid):
         Regularisation only matters on measure-zero sets (shared boundaries);
         points exactly there are classified by the closed operands.
         """
-        return self._combine([c.contains(points) for c in self.children])
+        return self.program().contains(points)
 
     @property
     def bounds(self) -> NDArray[np.float64]:
@@ -84,11 +175,7 @@ class CSGNode(Solid):
 
         Empty results (e.g. disjoint intersections) may still report a box.
         """
-        bs = [c.bounds for c in self.children]
-        return self._combine_bounds(bs)
-
-    def _combine_bounds(self, bs: list[NDArray[np.float64]]) -> NDArray[np.float64]:  # pragma: no cover
-        raise NotImplementedError
+        return self.program().bounds()
 
     def leaves(self) -> list[Primitive]:
         """The primitives of the tree, depth first, left to right (repeats kept)."""
@@ -112,31 +199,44 @@ class CSGNode(Solid):
 
         return to_trimesh(self, resolution)
 
-    def program(self) -> tuple[list[Primitive], NDArray[np.int64]]:
-        """Flatten into (leaves, postfix program); see the module docstring."""
-        prims: list[Primitive] = []
-        prog: list[int] = []
-
-        def walk(s: Solid) -> None:
-            if isinstance(s, CSGNode):
-                for c in s.children:
-                    walk(c)
-                prog.append(-(s.opcode * 1000 + len(s.children)))
-            elif isinstance(s, Primitive):
-                prog.append(len(prims))
-                prims.append(s)
-            else:  # pragma: no cover - guarded by _check_children
-                raise InvalidGeometryError(f"not a solid: {type(s).__name__}")
-
-        walk(self)
-        return prims, np.asarray(prog, dtype=np.int64)
-
     def to_dict(self) -> dict[str, Any]:
-        """``{"union": [child, ...]}`` etc. for scene files."""
-        return {self.kind: [c.to_dict() for c in self.children]}  # type: ignore[attr-defined]
+        """``{"union": [child, ...]}`` etc. for scene files (built without recursion)."""
+        done: dict[int, dict[str, Any]] = {}
+        for s in _postorder(self):
+            if isinstance(s, CSGNode):
+                done[id(s)] = {s.kind: [done[id(c)] for c in s.children]}
+            else:
+                done[id(s)] = s.to_dict()  # type: ignore[attr-defined]
+        return done[id(self)]
 
 
-@dataclass(frozen=True, slots=True, init=False, repr=False)
+def _postorder_unhashed(root: CSGNode) -> Iterator[CSGNode]:
+    """The nodes of ``root`` whose hash is not known yet, children first."""
+    todo: list[tuple[CSGNode, bool]] = [(root, False)]
+    while todo:
+        s, expanded = todo.pop()
+        if expanded:
+            yield s
+            continue
+        todo.append((s, True))
+        todo.extend((c, False) for c in reversed(s.children) if isinstance(c, CSGNode) and c._hash is None)
+
+
+def _rebuild(kinds: list[str], arity: list[int], prims: list[Primitive]) -> Solid:
+    """Inverse of :meth:`CSGNode.__reduce__`: nodes from their postorder."""
+    stack: list[Solid] = []
+    it = iter(prims)
+    for kind, k in zip(kinds, arity):
+        if not kind:
+            stack.append(next(it))
+            continue
+        args = stack[len(stack) - k :]
+        del stack[len(stack) - k :]
+        stack.append(_KINDS[kind](*args))
+    return stack[-1]
+
+
+@dataclass(frozen=True, slots=True, eq=False, repr=False, init=False)
 class Union(CSGNode):
     """All points in any operand.
 
@@ -151,44 +251,24 @@ class Union(CSGNode):
     kind = "union"
     opcode = OP_UNION
 
-    def _combine(self, masks: list[NDArray[np.bool_]]) -> NDArray[np.bool_]:
-        return np.logical_or.reduce(masks)
 
-    def _combine_bounds(self, bs: list[NDArray[np.float64]]) -> NDArray[np.float64]:
-        return np.stack([np.min([b[0] for b in bs], axis=0), np.max([b[1] for b in bs], axis=0)])
-
-
-@dataclass(frozen=True, slots=True, init=False, repr=False)
+@dataclass(frozen=True, slots=True, eq=False, repr=False, init=False)
 class Intersection(CSGNode):
     """The points common to every operand."""
 
     kind = "intersection"
     opcode = OP_INTERSECTION
 
-    def _combine(self, masks: list[NDArray[np.bool_]]) -> NDArray[np.bool_]:
-        return np.logical_and.reduce(masks)
 
-    def _combine_bounds(self, bs: list[NDArray[np.float64]]) -> NDArray[np.float64]:
-        lo = np.max([b[0] for b in bs], axis=0)
-        hi = np.min([b[1] for b in bs], axis=0)
-        return np.stack([lo, np.maximum(hi, lo)])
-
-
-@dataclass(frozen=True, slots=True, init=False, repr=False)
+@dataclass(frozen=True, slots=True, eq=False, repr=False, init=False)
 class Difference(CSGNode):
     """The first operand minus all the others."""
 
     kind = "difference"
     opcode = OP_DIFFERENCE
 
-    def _combine(self, masks: list[NDArray[np.bool_]]) -> NDArray[np.bool_]:
-        out = masks[0].copy()
-        for m in masks[1:]:
-            out &= ~m
-        return out
 
-    def _combine_bounds(self, bs: list[NDArray[np.float64]]) -> NDArray[np.float64]:
-        return bs[0]
+_KINDS: dict[str, type[CSGNode]] = {"union": Union, "intersection": Intersection, "difference": Difference}
 
 
 def union(*solids: Solid) -> Union:
@@ -216,8 +296,5 @@ def leaves(solid: Solid) -> list[Primitive]:
     if isinstance(solid, Primitive):
         return [solid]
     if isinstance(solid, CSGNode):
-        out: list[Primitive] = []
-        for c in solid.children:
-            out.extend(leaves(c))
-        return out
+        return list(solid.program().leaves)
     raise InvalidGeometryError(f"not a solid: {type(solid).__name__}")

@@ -24,6 +24,7 @@ from shapely.geometry import Polygon
 from .._validation import integer, nonzero_vector3, scalar
 from ..errors import InvalidParameterError
 from ..geometry.primitives import Box, ConvexPolyhedron, Primitive, Solid, Sphere, Truncus
+from .program import Program
 from .section import combine_sections, plane_frame, primitive_section, solid_program
 
 __all__ = ["volume", "section_areas", "breakpoints"]
@@ -74,7 +75,7 @@ def breakpoints(solid: Solid, axis: ArrayLike = (0.0, 0.0, 1.0)) -> NDArray[np.f
     """
     w = np.asarray(nonzero_vector3("axis", axis, error=InvalidParameterError))
     w = w / np.linalg.norm(w)
-    prims, _ = solid_program(solid)
+    prims = solid_program(solid).leaves
     z = np.unique(np.concatenate([_extents(p, w) for p in prims]))
     scale = max(float(z[-1] - z[0]), 1e-300)
     keep = np.concatenate([[True], np.diff(z) > 1e-9 * scale])
@@ -115,13 +116,14 @@ def section_areas(
     z = np.atleast_1d(np.asarray(positions, dtype=np.float64))
     if z.ndim != 1 or not np.all(np.isfinite(z)):
         raise InvalidParameterError(f"positions must be a 1-D array of finite numbers, got shape {z.shape}")
-    prims, prog = solid_program(solid)
+    prog = solid_program(solid)
+    prims = prog.leaves
     return np.array([_area(prims, prog, w, float(zi), res) for zi in z])
 
 
 def _area(
     prims: list[Primitive],
-    prog: NDArray[np.int64],
+    prog: Program,
     w: NDArray[np.float64],
     z: float,
     res: int,
@@ -192,7 +194,8 @@ def volume(
         res = integer("resolution", resolution, low=8, high=1_000_000, error=InvalidParameterError)
     w = np.asarray(nonzero_vector3("axis", axis, error=InvalidParameterError))
     w = w / np.linalg.norm(w)
-    prims, prog = solid_program(solid)
+    prog = solid_program(solid)
+    prims = prog.leaves
     z = breakpoints(solid, w)
     if len(z) < 2:
         return 0.0

@@ -40,7 +40,8 @@ from numpy.typing import NDArray
 from .._validation import integer
 from ..camera import Camera
 from ..csg.surface import surface_from_bands
-from ..csg.tree import CSGNode, Difference, Union
+from ..csg.program import OP_DIFFERENCE, OP_UNION, Program, evaluate_mask
+from ..csg.tree import CSGNode
 from ..errors import InvalidParameterError
 from ..geometry.primitives import Primitive, Sphere
 from ..laminae.model import BandMesh
@@ -134,65 +135,43 @@ class RenderResult:
 
 
 # --------------------------------------------------------------------- kernels
-@njit(cache=True, inline="always")
-def _evaluate(program: NDArray[np.int64], inside: NDArray[np.bool_], stack: NDArray[np.bool_]) -> bool:
-    # Postfix program of CSGNode.program(): i >= 0 pushes leaf i; -(op*1000+k) pops k.
-    sp = 0
-    for p in program:
-        if p >= 0:
-            stack[sp] = inside[p]
-            sp += 1
-            continue
-        code = -p
-        op = code // 1000
-        k = code % 1000
-        base = sp - k
-        if op == 1:  # union
-            r = False
-            for s in range(base, sp):
-                r = r or stack[s]
-        elif op == 2:  # intersection
-            r = True
-            for s in range(base, sp):
-                r = r and stack[s]
-        else:  # difference: first minus the others
-            r = stack[base]
-            for s in range(base + 1, sp):
-                r = r and not stack[s]
-        stack[base] = r
-        sp = base + 1
-    return stack[0]
-
-
 #: Objects with at most this many leaves are resolved through a truth table of their program.
 _TABLE_LEAVES = 16
 
 
 @njit(cache=True)
-def truth_table(program: NDArray[np.int64], n: int) -> NDArray[np.bool_]:
+def truth_table(op: NDArray[np.int8], arg: NDArray[np.int64], n: int) -> NDArray[np.bool_]:
     """The program's value for every inside-mask of ``n`` leaves (bit i: inside leaf i)."""
     table = np.zeros(1 << n, np.bool_)
     inside = np.zeros(max(n, 1), np.bool_)
-    stack = np.zeros(max(len(program), 1), np.bool_)
+    stack = np.zeros(max(len(op), 1), np.bool_)
     for m in range(1 << n):
         for i in range(n):
             inside[i] = (m >> i) & 1 == 1
-        table[m] = _evaluate(program, inside, stack)
+        table[m] = evaluate_mask(op, arg, inside, stack)
     return table
 
 
 @functools.lru_cache(maxsize=64)
-def _cached_table(program: bytes, n: int) -> NDArray[np.bool_]:
+def _cached_table(op: bytes, arg: bytes, n: int) -> NDArray[np.bool_]:
     # 2**n evaluations of the program (milliseconds at 16 leaves): once per tree, not per render.
-    return truth_table(np.frombuffer(program, np.int64), n)
+    return truth_table(np.frombuffer(op, np.int8), np.frombuffer(arg, np.int64), n)
+
+
+def _table(program: Program) -> NDArray[np.bool_]:
+    """The program's truth table if it has at most :data:`_TABLE_LEAVES` leaves, else empty."""
+    n = program.n_leaves
+    if n > _TABLE_LEAVES:
+        return np.zeros(0, np.bool_)
+    return _cached_table(program.op.tobytes(), program.arg.tobytes(), n)
 
 
 @njit(cache=True, inline="always")
-def _state(table: NDArray[np.bool_], program: NDArray[np.int64], inside: NDArray[np.bool_],
+def _state(table: NDArray[np.bool_], op: NDArray[np.int8], arg: NDArray[np.int64], inside: NDArray[np.bool_],
            stack: NDArray[np.bool_], mask: int) -> bool:
     if len(table):
         return table[mask]
-    return _evaluate(program, inside, stack)
+    return evaluate_mask(op, arg, inside, stack)
 
 
 #: Relative depth-key difference below which surfaces of different leaves coincide.
@@ -202,12 +181,13 @@ _COINCIDENT = 1e-9
 @njit(cache=True, nogil=True)
 def resolve_csg(
     kf: NDArray[np.float64], vf: NDArray[np.float32], kb: NDArray[np.float64], vb: NDArray[np.float32],
-    program: NDArray[np.int64], table: NDArray[np.bool_], gid_base: int, ox: int, oy: int,
+    op: NDArray[np.int8], arg: NDArray[np.int64], table: NDArray[np.bool_], gid_base: int, ox: int, oy: int,
     zkey: NDArray[np.float64], value: NDArray[np.float32], gid: NDArray[np.int32],
 ) -> None:
     """Per-pixel CSG on leaf intervals, depth-tested into the image buffers.
 
-    ``table`` is :func:`truth_table` of the program (or empty: the program
+    ``op`` and ``arg`` are the object's :class:`~isocsg.csg.program.Program`
+    arrays; ``table`` is their :func:`truth_table` (or empty: the program
     is then evaluated on each event).
 
     ``kf``/``kb`` (n, h, w) are the depth keys of each leaf's front (``+inf``
@@ -222,8 +202,8 @@ def resolve_csg(
     that leaves.
     """
     n = kf.shape[0]
-    _resolve_rows(kf, vf, kb, vb, program, table, gid_base, ox, oy, zkey, value, gid,
-                  np.empty(n), np.empty(n, np.int8), np.zeros(n, np.bool_), np.zeros(max(len(program), 1), np.bool_))
+    _resolve_rows(kf, vf, kb, vb, op, arg, table, gid_base, ox, oy, zkey, value, gid,
+                  np.empty(n), np.empty(n, np.int8), np.zeros(n, np.bool_), np.zeros(max(len(op), 1), np.bool_))
 
 
 # Without reference counting (see isocsg.render.raster): the per-pixel loop
@@ -231,7 +211,7 @@ def resolve_csg(
 @njit(**_RAW)
 def _resolve_rows(
     kf: NDArray[np.float64], vf: NDArray[np.float32], kb: NDArray[np.float64], vb: NDArray[np.float32],
-    program: NDArray[np.int64], table: NDArray[np.bool_], gid_base: int, ox: int, oy: int,
+    op: NDArray[np.int8], arg: NDArray[np.int64], table: NDArray[np.bool_], gid_base: int, ox: int, oy: int,
     zkey: NDArray[np.float64], value: NDArray[np.float32], gid: NDArray[np.int32],
     nxt: NDArray[np.float64], phase: NDArray[np.int8], inside: NDArray[np.bool_], stack: NDArray[np.bool_],
 ) -> None:
@@ -265,7 +245,7 @@ def _resolve_rows(
                     covered = True
             if not covered:
                 continue
-            state = _state(table, program, inside, stack, mask)
+            state = _state(table, op, arg, inside, stack, mask)
             limit = zkey[rr, cc]
             while True:
                 key = np.inf
@@ -302,7 +282,7 @@ def _resolve_rows(
                             shown = i
                     if use_table:
                         mask = (mask | (1 << i)) if inside[i] else (mask & ~(1 << i))
-                now = _state(table, program, inside, stack, mask)
+                now = _state(table, op, arg, inside, stack, mask)
                 if now and not state:
                     zkey[rr, cc] = key
                     value[rr, cc] = vf[shown, r, c] if shown_front else vb[shown, r, c]
@@ -480,7 +460,7 @@ class Renderer:
         return seen is None or seen
 
     def _surface(
-        self, program: NDArray[np.int64], built: list[tuple[BandMesh, bool]]
+        self, program: Program, built: list[tuple[BandMesh, bool]]
     ) -> list[tuple[int, _Prepared]] | None:
         """The leaf parts of a CSG object's clipped surface, or None to resolve it per pixel.
 
@@ -493,7 +473,7 @@ class Renderer:
         view_dependent = any(v for _, v in built)
         if view_dependent and self.csg == "auto":
             return None
-        key = (tuple(id(b) for b in bands), program.tobytes())
+        key = (tuple(id(b) for b in bands), program.op.tobytes(), program.arg.tobytes())
         hit = self._surfaces.get(key)
         # The ids of band meshes that were dropped may be reused: compare the objects too.
         if hit is not None and all(x is y for x, y in zip(hit[0], bands)):
@@ -607,7 +587,7 @@ class Renderer:
         leaf_of: list[int] = []
         plain: list[tuple[_Prepared, int]] = []  # front fills: (mesh, label)
         programs = [obj.shape.program() if isinstance(obj.shape, CSGNode) else None for obj in scene.objects]
-        total = sum(1 if prog is None else len(prog[0]) for prog in programs)
+        total = sum(1 if prog is None else prog.n_leaves for prog in programs)
         resolved = 0  # leaves of the objects resolved per pixel so far
         for k, (obj, prog) in enumerate(zip(scene.objects, programs)):
             base = len(obj_of)
@@ -618,7 +598,7 @@ class Renderer:
                 plain.append((self._prepare(*self._bands(obj.shape, scene.lights, obj.material, n_contours, cam.eye)), base))
                 build += time.perf_counter() - t
                 continue
-            leaves, program = prog
+            leaves, program = prog.leaves, prog
             obj_of.extend([k] * len(leaves))
             leaf_of.extend(range(len(leaves)))
             seen_key = (obj.shape, scene.lights, obj.material, n_contours)
@@ -636,7 +616,7 @@ class Renderer:
                 _reset(resets)
                 resets = []
             rect, seconds, built = self._render_per_pixel(
-                obj.shape, leaves, program, scene.lights, obj.material, n_contours, cam, near, base, zkey, value, gid, built,
+                leaves, program, scene.lights, obj.material, n_contours, cam, near, base, zkey, value, gid, built,
             )
             build += seconds
             grow(rect)
@@ -705,7 +685,7 @@ class Renderer:
         return [int(bounds[:, 0].min()), int(bounds[:, 1].max()), int(bounds[:, 2].min()), int(bounds[:, 3].max())]
 
     def _render_per_pixel(
-        self, shape: CSGNode, leaves: list[Primitive], program: NDArray[np.int64], lights: Sequence[Any], material: Any,
+        self, leaves: Sequence[Primitive], program: Program, lights: Sequence[Any], material: Any,
         contours: int, cam: Camera, near: float, base: int,
         zkey: NDArray[np.float64], value: NDArray[np.float32], gid: NDArray[np.int32],
         built: list[tuple[BandMesh, bool]] | None,
@@ -721,7 +701,7 @@ class Renderer:
         Returns the rectangle written (rows, then columns), the seconds spent
         obtaining bands and the bands (none if the object is off screen).
         """
-        ox, oy, x1, y1 = _screen_rect(shape, cam, near)
+        ox, oy, x1, y1 = _screen_rect(program, cam, near)
         w, h = x1 - ox, y1 - oy
         if w <= 0 or h <= 0:
             return (0, 0, 0, 0), 0.0, built or []
@@ -729,7 +709,7 @@ class Renderer:
         persp = not cam.orthographic
         a, b = camera_affine(cam)
         eye = cam.eye_array
-        table = _cached_table(program.astype(np.int64).tobytes(), n) if n <= _TABLE_LEAVES else np.zeros(0, np.bool_)
+        table = _table(program)
         # One worker fills the leaves in order (they share projection scratch
         # when a primitive repeats): the kernels release the GIL, so building
         # the next leaf's bands goes on meanwhile.
@@ -794,7 +774,7 @@ class Renderer:
                 job.result()
 
             def stripe(r0: int, r1: int) -> None:
-                resolve_csg(kf[:, r0:r1], vf[:, r0:r1], kb[:, r0:r1], vb[:, r0:r1], program, table, base, ox, oy + r0,
+                resolve_csg(kf[:, r0:r1], vf[:, r0:r1], kb[:, r0:r1], vb[:, r0:r1], program.op, program.arg, table, base, ox, oy + r0,
                             zkey, value, gid)
 
             cuts = [h * k // _STRIPES for k in range(_STRIPES + 1)] if concurrent and h >= 2 * _STRIPES else [0, h]
@@ -814,24 +794,30 @@ def _far_depth(bounds: NDArray[np.float64], forward: NDArray[np.float64], eye: N
 Rect = tuple[int, int, int, int]  # (col0, row0, col1, row1), half-open
 
 
-def _screen_rect(solid: Any, cam: Camera, near: float) -> Rect:
+def _screen_rect(program: Program, cam: Camera, near: float) -> Rect:
     """A pixel rectangle holding the projection of a solid, known before its bands exist.
 
     A primitive's rectangle bounds the projection of its bounding box (the
     hull of the corners' projections) and, for a sphere, of the sphere itself
     (exact, from the tangents in the camera's two vertical planes); a union
-    takes the hull of its children's, an intersection their overlap, a
-    difference its first child's. The whole image when anything reaches
+    takes the hull of its operands', an intersection their overlap, a
+    difference its first operand's. The whole image when anything reaches
     behind the near plane.
     """
-    W, H = cam.width, cam.height
-    if isinstance(solid, CSGNode):
-        rects = [_screen_rect(c, cam, near) for c in solid.children]
-        if isinstance(solid, Difference):
+
+    def combine(op: int, rects: list[Rect]) -> Rect:
+        if op == OP_DIFFERENCE:
             return rects[0]
-        pick = (min, max) if isinstance(solid, Union) else (max, min)
+        pick = (min, max) if op == OP_UNION else (max, min)
         return (pick[0](r[0] for r in rects), pick[0](r[1] for r in rects),
                 pick[1](r[2] for r in rects), pick[1](r[3] for r in rects))
+
+    return program.evaluate(lambda _, p: _leaf_rect(p, cam, near), combine)
+
+
+def _leaf_rect(solid: Primitive, cam: Camera, near: float) -> Rect:
+    """:func:`_screen_rect` of one primitive."""
+    W, H = cam.width, cam.height
     f, r, u = cam.frame
     m = np.stack([r, u, f])
     lo, hi = np.asarray(solid.bounds, dtype=np.float64)

@@ -43,7 +43,8 @@ from numpy.typing import NDArray
 
 from .._validation import integer
 from ..camera import Camera
-from ..csg.tree import CSGNode, OP_DIFFERENCE, OP_INTERSECTION, OP_UNION
+from ..csg.program import combine_masks, compile_program
+from ..csg.tree import CSGNode
 from ..errors import InvalidLightError, InvalidParameterError
 from ..geometry.primitives import DEFAULT_RESOLUTION, Box, ConvexPolyhedron, Primitive, Truncus
 from .lights import AreaLight, PolyhedronLight
@@ -93,37 +94,12 @@ def _part_index(prim: Primitive, points: NDArray[np.float64], normals: NDArray[n
     return np.zeros(len(points), dtype=np.int64)
 
 
-def _evaluate(program: NDArray[np.int64], inside: NDArray[np.bool_]) -> NDArray[np.bool_]:
-    """Evaluate a postfix CSG program on (n, leaves) membership flags."""
-    stack: list[NDArray[np.bool_]] = []
-    for code in program:
-        if code >= 0:
-            stack.append(inside[:, code].copy())
-            continue
-        op, k = divmod(-int(code), 1000)
-        args = stack[-k:]
-        del stack[-k:]
-        if op == OP_UNION:
-            stack.append(np.logical_or.reduce(args))
-        elif op == OP_INTERSECTION:
-            stack.append(np.logical_and.reduce(args))
-        elif op == OP_DIFFERENCE:
-            r = args[0].copy()
-            for a in args[1:]:
-                r &= ~a
-            stack.append(r)
-        else:  # pragma: no cover - programs come from CSGNode.program()
-            raise InvalidParameterError(f"unknown CSG opcode {op}")
-    return stack[0]
-
-
 def _object_hits(shape: Any, o: NDArray[np.float64], d: NDArray[np.float64], t_min: float) -> tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.int64]]:
     """First hit of rays with one object: t, normal, part id (leaf * 2 + side) * 1024 + face."""
     n = len(o)
-    if isinstance(shape, Primitive):
-        leaves, program = [shape], np.array([0], dtype=np.int64)
-    elif isinstance(shape, CSGNode):
-        leaves, program = shape.program()
+    if isinstance(shape, (Primitive, CSGNode)):
+        program = compile_program(shape) if isinstance(shape, Primitive) else shape.program()
+        leaves = program.leaves
     else:
         raise InvalidParameterError(f"scene object must be a primitive or a CSG tree, got {type(shape).__name__}")
     k = len(leaves)
@@ -141,7 +117,7 @@ def _object_hits(shape: Any, o: NDArray[np.float64], d: NDArray[np.float64], t_m
     ev_leaf = np.take_along_axis(ev_leaf, order, axis=1)
     ev_enter = np.take_along_axis(ev_enter, order, axis=1)
     inside = inside0.copy()
-    state = _evaluate(program, inside)
+    state = program.evaluate(lambda i, _: inside[:, i].copy(), combine_masks)
     found = np.zeros(n, bool)
     t_hit = np.full(n, np.inf)
     leaf_hit = np.zeros(n, np.int64)
@@ -153,7 +129,7 @@ def _object_hits(shape: Any, o: NDArray[np.float64], d: NDArray[np.float64], t_m
         inside[rows[live], ev_leaf[live, j]] = ev_enter[live, j]
         # events at one depth act together (regularised operations): decide at the group's last one
         last = ev_t[:, j + 1] != tj if j < 2 * k - 1 else np.ones(n, dtype=bool)
-        now = _evaluate(program, inside)
+        now = program.evaluate(lambda i, _: inside[:, i].copy(), combine_masks)
         new = last & live & now & ~state & ~found
         t_hit[new] = tj[new]
         leaf_hit[new] = ev_leaf[new, j]

@@ -24,7 +24,7 @@ from typing import Any
 import numpy as np
 from numpy.typing import NDArray
 
-from ..csg.tree import CSGNode, Difference, Intersection, Union
+from ..csg.program import OP_INTERSECTION, OP_UNION, compile_program
 from ..errors import InvalidGeometryError, InvalidParameterError
 from ..geometry.primitives import DEFAULT_RESOLUTION, Box, ConvexPolyhedron, Primitive, Solid
 
@@ -123,14 +123,16 @@ class _Decomposer:
         return _chebyshev(hs)[1] > self.tol
 
     def pieces(self, solid: Solid) -> list[HalfSpaces]:
-        if isinstance(solid, Primitive):
-            return [_leaf_halfspaces(solid, self.resolution)]
-        if isinstance(solid, Union):
-            return [p for c in solid.children for p in self.pieces(c)]
-        if isinstance(solid, Intersection):
-            cur = self.pieces(solid.children[0])
-            for c in solid.children[1:]:
-                other = self.pieces(c)
+        if not isinstance(solid, Solid):
+            raise InvalidGeometryError(f"occluder must be a primitive or a CSG tree, got {type(solid).__name__}")
+        return compile_program(solid).evaluate(lambda _, p: [_leaf_halfspaces(p, self.resolution)], self.combine)
+
+    def combine(self, op: int, parts: list[list[HalfSpaces]]) -> list[HalfSpaces]:
+        if op == OP_UNION:
+            return [p for c in parts for p in c]
+        cur = parts[0]
+        if op == OP_INTERSECTION:
+            for other in parts[1:]:
                 nxt = []
                 for p in cur:
                     for q in other:
@@ -139,15 +141,10 @@ class _Decomposer:
                             nxt.append(hs)
                 cur = nxt
             return cur
-        if isinstance(solid, Difference):
-            cur = self.pieces(solid.children[0])
-            for c in solid.children[1:]:
-                for q in self.pieces(c):
-                    cur = [r for p in cur for r in self.subtract(p, q)]
-            return cur
-        if isinstance(solid, CSGNode):  # pragma: no cover - every node kind is handled above
-            raise InvalidGeometryError(f"unsupported CSG node {type(solid).__name__}")
-        raise InvalidGeometryError(f"occluder must be a primitive or a CSG tree, got {type(solid).__name__}")
+        for other in parts[1:]:
+            for q in other:
+                cur = [r for p in cur for r in self.subtract(p, q)]
+        return cur
 
     def subtract(self, p: HalfSpaces, q: HalfSpaces) -> list[HalfSpaces]:
         both = (np.vstack([p[0], q[0]]), np.concatenate([p[1], q[1]]))

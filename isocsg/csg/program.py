@@ -1,0 +1,399 @@
+"""The flat program of a CSG tree: one representation, one evaluator.
+
+Every consumer of a CSG tree (point membership, bounds, sections, volumes,
+meshes, the renderer's per-pixel resolution, the clipped band surface, the
+half-tone renderer and the shadows' convex pieces) reads the tree through a
+:class:`Program`: a postfix list of instructions held in two arrays,
+
+- ``op[k]``: :data:`OP_LEAF` (push leaf ``arg[k]``) or one of
+  :data:`OP_UNION`, :data:`OP_INTERSECTION`, :data:`OP_DIFFERENCE`
+  (pop ``arg[k]`` operands, push the result; a difference is its first
+  operand minus all the others),
+
+and the tuple of leaves (primitives, repeats kept) that ``OP_LEAF`` indexes.
+
+:func:`compile_program` builds it once per tree, iteratively (no Python
+recursion, so trees built by a loop of 100 000 operations are fine), and
+flattens nested nodes of the same operation on the way:
+``(a | b) | c`` is one union of three, ``(a - b) - c`` is ``a - b - c`` and
+``a - (b | c)`` is ``a - b - c`` too. :meth:`Program.evaluate` is the one
+generic evaluator; :func:`evaluate_mask` is its compiled form for inside
+masks (per pixel); :meth:`Program.prune` drops the leaves that are absent
+from a region (a screen tile, a plane, a group of receivers), simplifying
+the program the way bounding-box pruning does in image-space CSG.
+
+There is no limit on depth or width short of memory.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass
+from typing import TYPE_CHECKING, Any, TypeVar
+
+import numpy as np
+from numba import njit
+from numpy.typing import ArrayLike, NDArray
+
+from .._validation import points_array
+from ..errors import InvalidGeometryError
+
+if TYPE_CHECKING:  # pragma: no cover
+    from ..geometry.primitives import Primitive, Solid
+
+__all__ = [
+    "OP_LEAF",
+    "OP_UNION",
+    "OP_INTERSECTION",
+    "OP_DIFFERENCE",
+    "OP_NAMES",
+    "Program",
+    "compile_program",
+    "combine_masks",
+    "evaluate_mask",
+]
+
+OP_LEAF = 0
+OP_UNION = 1
+OP_INTERSECTION = 2
+OP_DIFFERENCE = 3
+#: Operation names by opcode (the node kinds of scene files).
+OP_NAMES = {OP_UNION: "union", OP_INTERSECTION: "intersection", OP_DIFFERENCE: "difference"}
+
+T = TypeVar("T")
+
+
+@dataclass(frozen=True, slots=True, eq=False)
+class Program:
+    """A CSG tree as a flat postfix program (see the module docstring).
+
+    Attributes
+    ----------
+    leaves : tuple of Primitive
+        The primitives, in the order their ``OP_LEAF`` instructions appear.
+    op : ndarray of int8, shape (n,)
+        Opcode of each instruction (read-only).
+    arg : ndarray of int64, shape (n,)
+        Leaf index of an ``OP_LEAF``, operand count of an operation (read-only).
+
+    Examples
+    --------
+    >>> from isocsg import Box, Sphere
+    >>> a, b, c = Sphere((0, 0, 0), 1), Box((0, 0, 0), (1, 1, 1)), Sphere((2, 0, 0), 1)
+    >>> prog = compile_program((a - b) - c)
+    >>> prog.op.tolist(), prog.arg.tolist()
+    ([0, 0, 0, 3], [0, 1, 2, 3])
+    >>> prog.contains([[0.9, 0, 0], [0, 0, 0]]).tolist()
+    [True, False]
+    """
+
+    leaves: tuple[Primitive, ...]
+    op: NDArray[np.int8]
+    arg: NDArray[np.int64]
+
+    def __len__(self) -> int:
+        return len(self.op)
+
+    def __repr__(self) -> str:
+        return f"Program({len(self.leaves)} leaves, {len(self.op)} instructions)"
+
+    @property
+    def n_leaves(self) -> int:
+        """Number of leaves (``OP_LEAF`` instructions)."""
+        return len(self.leaves)
+
+    @property
+    def stack_size(self) -> int:
+        """The deepest the evaluation stack gets (what a compiled evaluator must allocate)."""
+        if len(self.op) == 0:
+            return 0
+        delta = np.where(self.op == OP_LEAF, 1, 1 - self.arg)
+        return int(np.cumsum(delta).max())
+
+    def evaluate(
+        self,
+        leaf: Callable[[int, Primitive], T],
+        combine: Callable[[int, list[T]], T],
+    ) -> T:
+        """Evaluate the program bottom up with a stack (the one generic evaluator).
+
+        Parameters
+        ----------
+        leaf : callable
+            ``leaf(index, primitive) -> value`` for each ``OP_LEAF``.
+        combine : callable
+            ``combine(opcode, operands) -> value`` for each operation; for a
+            difference the first operand is the one the others are taken from.
+
+        Returns
+        -------
+        The value of the whole program.
+
+        Examples
+        --------
+        >>> from isocsg import Sphere
+        >>> prog = compile_program(Sphere((0, 0, 0), 1) | Sphere((3, 0, 0), 1) | Sphere((6, 0, 0), 1))
+        >>> prog.evaluate(lambda i, p: [i], lambda op, xs: [OP_NAMES[op]] + [x for v in xs for x in v])
+        ['union', 0, 1, 2]
+        """
+        stack: list[T] = []
+        leaves = self.leaves
+        for o, a in zip(self.op.tolist(), self.arg.tolist()):
+            if o == OP_LEAF:
+                stack.append(leaf(a, leaves[a]))
+            else:
+                args = stack[len(stack) - a :]
+                del stack[len(stack) - a :]
+                stack.append(combine(o, args))
+        return stack[-1]
+
+    def contains(self, points: ArrayLike) -> NDArray[np.bool_]:
+        """Point membership of the closed operands combined by the program.
+
+        Each leaf tests only the points inside its bounding box.
+        """
+        pts = points_array("contains(points)", points)
+
+        def leaf(_: int, p: Primitive) -> NDArray[np.bool_]:
+            lo, hi = p.bounds
+            near = np.nonzero(np.all((pts >= lo) & (pts <= hi), axis=1))[0]
+            out = np.zeros(len(pts), dtype=bool)
+            if len(near):
+                out[near] = p.contains(pts[near])
+            return out
+
+        return self.evaluate(leaf, combine_masks)
+
+    def bounds(self) -> NDArray[np.float64]:
+        """A conservative axis-aligned box ``(2, 3)``: unions take the hull,
+        intersections the overlap (collapsed to a point where there is none),
+        differences their first operand's."""
+        return self.evaluate(lambda _, p: np.asarray(p.bounds, dtype=np.float64), _combine_boxes)
+
+    def prune(self, present: ArrayLike) -> tuple[Program, NDArray[np.int64]] | None:
+        """The program with the leaves marked absent replaced by the empty set, simplified.
+
+        A region (a screen tile, a plane) where a leaf cannot be present
+        evaluates the same program with that leaf empty: an absent operand
+        drops out of a union and out of the subtracted operands of a
+        difference, and empties an intersection or a difference whose first
+        operand it is. Single-operand nodes collapse to their operand.
+
+        Parameters
+        ----------
+        present : array_like of bool, shape (n_leaves,)
+
+        Returns
+        -------
+        (Program, ndarray of int64) or None
+            The pruned program and, for each of its leaves, the index of that
+            leaf in this program; ``None`` when the result is empty.
+
+        Examples
+        --------
+        >>> from isocsg import Box, Sphere
+        >>> plate, hole1, hole2 = Box((0, 0, 0), (4, 1, 1)), Sphere((-1, 0, 0), 0.3), Sphere((1, 0, 0), 0.3)
+        >>> prog = compile_program(plate - hole1 - hole2)
+        >>> pruned, ids = prog.prune([True, False, True])
+        >>> pruned.op.tolist(), ids.tolist()
+        ([0, 0, 3], [0, 2])
+        >>> prog.prune([False, True, True]) is None
+        True
+        """
+        keep = np.asarray(present, dtype=bool).reshape(-1)
+        if keep.shape != (len(self.leaves),):
+            raise InvalidGeometryError(f"present must have {len(self.leaves)} entries, got {keep.shape[0]}")
+        if keep.all():
+            return self, np.arange(len(self.leaves), dtype=np.int64)
+        # Each stack entry is a sub-program (op list, arg list of original leaf
+        # indices) or None for the empty set.
+        stack: list[tuple[list[int], list[int]] | None] = []
+        for o, a in zip(self.op.tolist(), self.arg.tolist()):
+            if o == OP_LEAF:
+                stack.append(([OP_LEAF], [a]) if keep[a] else None)
+                continue
+            args = stack[len(stack) - a :]
+            del stack[len(stack) - a :]
+            if o == OP_INTERSECTION and any(x is None for x in args):
+                stack.append(None)
+                continue
+            if o == OP_DIFFERENCE and args[0] is None:
+                stack.append(None)
+                continue
+            kept = [x for x in args if x is not None]
+            if not kept:
+                stack.append(None)
+            elif len(kept) == 1:
+                stack.append(kept[0])
+            else:
+                ops = [v for x in kept for v in x[0]] + [o]
+                arg = [v for x in kept for v in x[1]] + [len(kept)]
+                stack.append((ops, arg))
+        top = stack[-1]
+        if top is None:
+            return None
+        op = np.asarray(top[0], dtype=np.int8)
+        arg = np.asarray(top[1], dtype=np.int64)
+        is_leaf = op == OP_LEAF
+        ids = arg[is_leaf].copy()
+        arg[is_leaf] = np.arange(len(ids))
+        return _make(tuple(self.leaves[i] for i in ids.tolist()), op, arg), ids
+
+    def to_solid(self) -> Solid:
+        """The program as a tree of CSG nodes (flat: one node per operation)."""
+        from .tree import Difference, Intersection, Union
+
+        kinds = {OP_UNION: Union, OP_INTERSECTION: Intersection, OP_DIFFERENCE: Difference}
+        return self.evaluate(lambda _, p: p, lambda o, xs: kinds[o](*xs))
+
+
+def _make(leaves: tuple[Primitive, ...], op: NDArray[np.int8], arg: NDArray[np.int64]) -> Program:
+    op.flags.writeable = False
+    arg.flags.writeable = False
+    return Program(leaves, op, arg)
+
+
+def combine_masks(o: int, xs: list[NDArray[np.bool_]]) -> NDArray[np.bool_]:
+    """``combine`` for :meth:`Program.evaluate` on boolean arrays (inside masks)."""
+    if o == OP_UNION:
+        return np.logical_or.reduce(xs)
+    if o == OP_INTERSECTION:
+        return np.logical_and.reduce(xs)
+    out = xs[0].copy()
+    for m in xs[1:]:
+        out &= ~m
+    return out
+
+
+def _combine_boxes(o: int, xs: list[NDArray[np.float64]]) -> NDArray[np.float64]:
+    if o == OP_DIFFERENCE:
+        return xs[0]
+    lo = np.array([x[0] for x in xs])
+    hi = np.array([x[1] for x in xs])
+    if o == OP_UNION:
+        return np.stack([lo.min(axis=0), hi.max(axis=0)])
+    lo, hi = lo.max(axis=0), hi.min(axis=0)
+    return np.stack([lo, np.maximum(hi, lo)])
+
+
+def compile_program(solid: Solid) -> Program:
+    """The flat program of a primitive or CSG tree, built without recursion.
+
+    Nested nodes of the same operation become one node: ``(a | b) | c`` and
+    ``a | (b | c)`` are one union of three, ``(a & b) & c`` one intersection,
+    ``(a - b) - c`` and ``a - (b | c)`` one difference ``a - b - c``.
+
+    Parameters
+    ----------
+    solid : Solid
+        A primitive (the one-instruction program) or a CSG tree.
+
+    Returns
+    -------
+    Program
+
+    Raises
+    ------
+    InvalidGeometryError
+        If ``solid`` is not a solid.
+
+    Examples
+    --------
+    >>> from isocsg import Sphere
+    >>> parts = Sphere((0, 0, 0), 1)
+    >>> for i in range(1, 5):
+    ...     parts = parts | Sphere((2 * i, 0, 0), 1)
+    >>> prog = compile_program(parts)
+    >>> prog.n_leaves, prog.op.tolist()[-1], prog.arg.tolist()[-1]
+    (5, 1, 5)
+    """
+    from ..geometry.primitives import Primitive
+    from .tree import CSGNode
+
+    if isinstance(solid, Primitive):
+        return _make((solid,), np.zeros(1, np.int8), np.zeros(1, np.int64))
+    if not isinstance(solid, CSGNode):
+        raise InvalidGeometryError(f"solid must be a primitive or CSG node, got {type(solid).__name__}")
+    leaves: list[Primitive] = []
+    ops: list[int] = []
+    args: list[int] = []
+    # Explicit stack: a solid to expand, or an operation (opcode, arity) to emit
+    # once its operands (pushed above it) have been emitted.
+    todo: list[Any] = [solid]
+    while todo:
+        item = todo.pop()
+        if isinstance(item, tuple):
+            ops.append(item[0])
+            args.append(item[1])
+            continue
+        if isinstance(item, Primitive):
+            ops.append(OP_LEAF)
+            args.append(len(leaves))
+            leaves.append(item)
+            continue
+        operands = _operands(item)
+        todo.append((item.opcode, len(operands)))
+        todo.extend(reversed(operands))
+    return _make(tuple(leaves), np.asarray(ops, np.int8), np.asarray(args, np.int64))
+
+
+def _operands(node: Any) -> list[Solid]:
+    """The operands of ``node`` after absorbing nested nodes of the same operation."""
+    from .tree import CSGNode, Difference, Union
+
+    if isinstance(node, Difference):
+        # (a - b) - c: walk down the chain of first operands.
+        subtracted: list[Sequence[Solid]] = []
+        first: Solid = node
+        while isinstance(first, Difference):
+            subtracted.append(first.children[1:])
+            first = first.children[0]
+        rest = [c for group in reversed(subtracted) for c in group]
+        # a - (b | c): the subtracted unions' operands are subtracted one by one.
+        return [first] + _spliced(rest, Union)
+    return _spliced(node.children, type(node))
+
+
+def _spliced(children: Sequence[Solid], kind: type) -> list[Solid]:
+    """``children`` with every node of type ``kind`` replaced by its operands (at any depth)."""
+    out: list[Solid] = []
+    todo = list(reversed(children))
+    while todo:
+        c = todo.pop()
+        if type(c) is kind:
+            todo.extend(reversed(c.children))  # type: ignore[attr-defined]
+        else:
+            out.append(c)
+    return out
+
+
+# ----------------------------------------------------------------- compiled form
+@njit(cache=True, nogil=True, inline="always")
+def evaluate_mask(op: NDArray[np.int8], arg: NDArray[np.int64], inside: NDArray[np.bool_], stack: NDArray[np.bool_]) -> bool:
+    """The program's value for one inside mask (``inside[i]``: inside leaf i), compiled.
+
+    ``stack`` is scratch of at least :attr:`Program.stack_size` entries.
+    """
+    sp = 0
+    for k in range(len(op)):
+        o = op[k]
+        if o == 0:
+            stack[sp] = inside[arg[k]]
+            sp += 1
+            continue
+        base = sp - arg[k]
+        if o == 1:  # union
+            r = False
+            for s in range(base, sp):
+                r = r or stack[s]
+        elif o == 2:  # intersection
+            r = True
+            for s in range(base, sp):
+                r = r and stack[s]
+        else:  # difference: first minus the others
+            r = stack[base]
+            for s in range(base + 1, sp):
+                r = r and not stack[s]
+        stack[base] = r
+        sp = base + 1
+    return stack[0]
