@@ -72,8 +72,8 @@ class CSGNode(Solid):
 
     children: tuple[Solid, ...]
     # Computed once, on first use: the structural hash and the flat program.
-    _hash: int | None = field(default=None, compare=False)
-    _program: Program | None = field(default=None, compare=False)
+    _hash: int | None = field(default=None, compare=False, repr=False)
+    _program: Program | None = field(default=None, compare=False, repr=False)
     kind = "csg"
     opcode = 0
 
