@@ -87,10 +87,10 @@ def camera_rays(camera: Camera) -> tuple[F64, F64]:
 
     f = normalize(T - E), r = normalize(f x U), u = r x f; pixel (i, j) has
     x = (2 (j + 0.5) / W - 1) tan(fov/2) W/H, y = (1 - 2 (i + 0.5) / H) tan(fov/2)
-    and direction normalize(f + x r + y u); row 0 is the top row.
+    and direction normalize(f + x r + y u); row 0 is the top row. An orthographic
+    camera has parallel rays along f from E + x r + y u, with tan(fov/2)
+    replaced by height_m / 2.
     """
-    if camera.orthographic:
-        raise NotImplementedError("the reference renders pinhole cameras only")
     eye = np.asarray(camera.eye, dtype=np.float64)
     f = np.asarray(camera.target, dtype=np.float64) - eye
     f /= np.linalg.norm(f)
@@ -98,9 +98,12 @@ def camera_rays(camera: Camera) -> tuple[F64, F64]:
     r /= np.linalg.norm(r)
     u = np.cross(r, f)
     w, h = int(camera.width), int(camera.height)
-    t = np.tan(np.radians(camera.fov) / 2)
+    t = camera.height_m / 2 if camera.orthographic else np.tan(np.radians(camera.fov) / 2)
     x = (2 * (np.arange(w) + 0.5) / w - 1) * t * (w / h)
     y = (1 - 2 * (np.arange(h) + 0.5) / h) * t
+    if camera.orthographic:
+        o = eye + x[None, :, None] * r + y[:, None, None] * u
+        return o, np.broadcast_to(f, o.shape).copy()
     d = f + x[None, :, None] * r + y[:, None, None] * u
     d /= np.linalg.norm(d, axis=-1, keepdims=True)
     return np.broadcast_to(eye, d.shape).copy(), d
