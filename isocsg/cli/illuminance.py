@@ -172,13 +172,10 @@ def _grid_from_table(path: str, table: dict[str, Any], nx: int | None, ny: int |
 
 def run(args: argparse.Namespace) -> int:
     """Load, compute, write; prints the files written and the range of E."""
-    from ._common import progress_bar
+    from ._common import check_outputs, progress_bar
 
     out = Path(args.output)
-    if out.suffix.lower() != ".png":
-        raise InvalidParameterError(f"output file {str(out)!r} must end in .png")
-    if args.npy is not None and Path(args.npy).suffix.lower() != ".npy":
-        raise InvalidParameterError(f"output file {args.npy!r} must end in .npy")
+    check_outputs(args.output, args.npy)
     given = [args.origin is not None, args.u is not None, args.v is not None]
     if any(given) and not all(given):
         raise InvalidParameterError("--origin, --u and --v must be given together")
