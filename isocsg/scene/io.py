@@ -52,7 +52,7 @@ from importlib import resources
 from pathlib import Path
 from typing import Any
 
-from .._validation import MAX_SCENE_FILE_BYTES, show
+from .._validation import MAX_LIGHTS, MAX_SCENE_FILE_BYTES, show
 from ..camera import Camera
 from ..csg.tree import CSGNode, Difference, Intersection, Union
 from ..errors import (
@@ -351,6 +351,8 @@ def scene_from_dict(data: Mapping[str, Any], *, source: str | os.PathLike[str] |
     camera = _camera(r, top["camera"])
     render = _render(r, top["render"]) if "render" in top else RenderSettings()
     lights_doc = r.array("lights", top["lights"]) if "lights" in top else []
+    if len(lights_doc) > MAX_LIGHTS:  # before building any of them
+        raise r.fail("lights", f"must hold at most {MAX_LIGHTS} lights, got {len(lights_doc)}")
     lights = tuple(_light(r, f"lights[{i}]", v) for i, v in enumerate(lights_doc))
     objects_doc = r.array("objects", top["objects"])
     if not objects_doc:
