@@ -17,10 +17,10 @@ from typing import Any
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from ._validation import Vec3, integer, nonzero_vector3, scalar, vector3
+from ._validation import MAX_ABS_COORD, MAX_PIXELS, MIN_FOV, Vec3, integer, length_floor, nonzero_vector3, scalar, show, vector3
 from .errors import InvalidParameterError
 
-__all__ = ["Camera", "MAX_IMAGE_SIDE"]
+__all__ = ["Camera", "MAX_IMAGE_SIDE", "MAX_PIXELS", "MIN_FOV"]
 
 #: Largest accepted image side in pixels (a 16k x 16k float image is 1 GiB).
 MAX_IMAGE_SIDE = 16384
@@ -37,18 +37,21 @@ class Camera:
     up : array_like, shape (3,), default (0, 0, 1)
         Not parallel to ``target - eye``.
     fov : float, default 40
-        Vertical field of view in degrees, in (0, 180).
+        Vertical field of view in degrees, 0.01 .. 179.
     width, height : int, default 512
-        Image size in pixels, 1 .. 16384.
+        Image size in pixels, 1 .. 16384 each and at most 4096 x 4096
+        pixels in all (:data:`MAX_PIXELS`).
     orthographic : bool, default False
         Use parallel rays; ``height_m`` is then the world height of the view.
     height_m : float, default 1
+        At least 1e-9 x max(1, largest |coordinate| of the eye), at most 1e12.
 
     Raises
     ------
     InvalidParameterError
         On non-finite vectors, ``eye == target``, ``up`` parallel to the view
-        direction, a field of view outside (0, 180) or an absurd image size.
+        direction, a field of view outside [0.01, 179], an absurd image size,
+        a non-boolean ``orthographic`` or a bad ``height_m``.
 
     Examples
     --------
@@ -81,11 +84,24 @@ class Camera:
         object.__setattr__(self, "eye", eye)
         object.__setattr__(self, "target", target)
         object.__setattr__(self, "up", up)
-        object.__setattr__(self, "fov", scalar("camera.fov", self.fov, low=0.0, high=179.0, error=err))
-        object.__setattr__(self, "width", integer("camera.width", self.width, low=1, high=MAX_IMAGE_SIDE, error=err))
-        object.__setattr__(self, "height", integer("camera.height", self.height, low=1, high=MAX_IMAGE_SIDE, error=err))
+        fov = scalar("camera.fov", self.fov, low=0.0, high=179.0, error=err)
+        if fov < MIN_FOV:  # narrower views give every pixel the same ray in float64
+            raise err(f"camera.fov must be >= {MIN_FOV:g} degrees, got {fov:g}")
+        object.__setattr__(self, "fov", fov)
+        width = integer("camera.width", self.width, low=1, high=MAX_IMAGE_SIDE, error=err)
+        height = integer("camera.height", self.height, low=1, high=MAX_IMAGE_SIDE, error=err)
+        if width * height > MAX_PIXELS:
+            raise err(f"camera.width x camera.height must be at most {MAX_PIXELS} pixels, got {width} x {height}")
+        object.__setattr__(self, "width", width)
+        object.__setattr__(self, "height", height)
+        if not isinstance(self.orthographic, (bool, np.bool_)):
+            raise err(f"camera.orthographic must be true or false, got {show(self.orthographic)}")
         object.__setattr__(self, "orthographic", bool(self.orthographic))
-        object.__setattr__(self, "height_m", scalar("camera.height_m", self.height_m, low=0.0, error=err))
+        height_m = scalar("camera.height_m", self.height_m, low=0.0, high=MAX_ABS_COORD, error=err)
+        floor = length_floor(eye)
+        if height_m < floor:
+            raise err(f"camera.height_m must be >= {floor:g} (the smallest length at this position), got {height_m:g}")
+        object.__setattr__(self, "height_m", height_m)
 
     # ------------------------------------------------------------------ frame
     @property

@@ -107,6 +107,8 @@ def check_outputs(png: str | Path | None, npy: str | Path | None = None) -> None
     for path, suffix in ((png, ".png"), (npy, ".npy")):
         if path is not None and Path(path).suffix.lower() != suffix:
             raise InvalidParameterError(f"output file {str(path)!r} must end in {suffix}")
+        if path is not None and Path(path).is_dir():  # found now, not after a long render
+            raise InvalidParameterError(f"output file {str(path)!r} is a directory")
 
 
 def write_outputs(image: Any, png: str | Path | None, npy: str | Path | None = None) -> list[Path]:

@@ -9,7 +9,7 @@ The grid lies on a plane given on the command line (``--origin``, ``--u``,
     v = [0.0, 6.0, 0.0]
     nx = 96                        # optional, nodes along u (default 64)
     ny = 96                        # optional, nodes along v (default 64)
-    levels = 8                     # optional: how many isolux lines, or a list of values
+    levels = 8                     # optional: how many isolux lines (1 .. 1000), or a list of values
 
 or, by default, the scene's floor: the top face of the box with the largest
 horizontal footprint (else the bottom of the scene's bounding box).
@@ -19,16 +19,17 @@ Only the scene's area and polyhedron lights count; its objects occlude.
 from __future__ import annotations
 
 import argparse
-import json
-import tomllib
+import math
+import re
 from pathlib import Path
 from typing import Any
 
 import numpy as np
 
+from .._validation import MAX_RESOLUTION, integer, resolution, show
 from ..errors import InvalidLightError, InvalidParameterError, SceneFileError
 from ..geometry.primitives import Box
-from ..scene.io import scene_from_dict
+from ..scene.io import decode_scene_text, read_scene_file, scene_from_dict
 from ..scene.model import Scene
 from ..shadows.lights import AreaLight, PolyhedronLight
 from ..shadows.luxmap import LuxGrid, illuminance_map, save_luxmap_png
@@ -44,6 +45,12 @@ Default plane: the scene's [illuminance] table, else the top of its floor.
 
 _TABLE_FIELDS = {"origin", "u", "v", "nx", "ny", "levels"}
 
+#: Largest number of isolux lines (a count, or the length of a list of levels).
+MAX_LEVELS = 1000
+
+#: Grid nodes along u and v when neither the command line nor the table says.
+DEFAULT_NODES = 64
+
 
 def register(subparsers: Any) -> argparse.ArgumentParser:
     """Add the ``illuminance`` sub-command."""
@@ -55,8 +62,11 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
     p.add_argument("--origin", nargs=3, type=float, metavar=("X", "Y", "Z"), help="corner of the grid")
     p.add_argument("--u", nargs=3, type=float, metavar=("UX", "UY", "UZ"), help="first edge vector of the grid")
     p.add_argument("--v", nargs=3, type=float, metavar=("VX", "VY", "VZ"), help="second edge vector of the grid")
-    p.add_argument("--levels", type=int, metavar="N", help="number of isolux lines (default 8)")
-    p.add_argument("--resolution", type=int, default=32, metavar="R", help="tessellation of curved occluders (default 32)")
+    p.add_argument("--levels", type=int, metavar="N", help=f"number of isolux lines, 1 .. {MAX_LEVELS} (default 8)")
+    p.add_argument(
+        "--resolution", type=int, default=32, metavar="R",
+        help=f"tessellation of curved occluders, 3 .. {MAX_RESOLUTION} (default 32)",
+    )
     p.add_argument("--no-progress", action="store_true", help="do not show the progress bar on stderr")
     p.set_defaults(func=run)
     return p
@@ -88,20 +98,18 @@ def floor_grid(scene: Scene, nx: int = 64, ny: int = 64) -> LuxGrid:
 def load_scene_and_grid(path: str | Path) -> tuple[Scene, dict[str, Any] | None]:
     """Read a scene file and its optional ``[illuminance]`` table (raw mapping).
 
+    The file is read as :func:`isocsg.scene.load_scene` reads it: ``.toml``
+    or ``.json`` only, a regular UTF-8 file of at most 16 MiB. The table's
+    ``nx``, ``ny`` and ``levels`` are checked here.
+
     Raises
     ------
     SceneFileError
         On unreadable files or a malformed ``[illuminance]`` table.
     """
     p = Path(path)
-    try:
-        text = p.read_text(encoding="utf-8")
-    except OSError as exc:
-        raise SceneFileError(f"{p}: cannot read the file: {exc.strerror or exc}") from None
-    try:
-        doc = json.loads(text) if p.suffix.lower() == ".json" else tomllib.loads(text)
-    except (tomllib.TOMLDecodeError, json.JSONDecodeError) as exc:
-        raise SceneFileError(f"{p}: not valid {'JSON' if p.suffix.lower() == '.json' else 'TOML'}: {exc}") from None
+    text, fmt = read_scene_file(p)
+    doc = decode_scene_text(text, format=fmt, source=p)
     table = None
     if isinstance(doc, dict) and "illuminance" in doc:
         table = doc.pop("illuminance")
@@ -113,42 +121,85 @@ def load_scene_and_grid(path: str | Path) -> tuple[Scene, dict[str, Any] | None]
         missing = [k for k in ("origin", "u", "v") if k not in table]
         if missing:
             raise SceneFileError(f"{p}: illuminance.{missing[0]}: missing")
+        try:
+            for key in ("nx", "ny"):
+                if key in table:
+                    table[key] = integer(f"illuminance.{key}", table[key], low=2, high=4096, error=InvalidParameterError)
+            if "levels" in table:
+                table["levels"] = _levels("illuminance.levels", table["levels"])
+        except InvalidParameterError as exc:
+            field, _, rest = str(exc).partition(" ")
+            raise SceneFileError(f"{p}: {field}: {rest}") from None
     return scene_from_dict(doc, source=p.name), table
 
 
+def _levels(name: str, value: Any) -> int | list[float]:
+    """A count of isolux lines (1 .. MAX_LEVELS) or a list of finite levels."""
+    if isinstance(value, list):
+        if not 1 <= len(value) <= MAX_LEVELS:
+            raise InvalidParameterError(f"{name} must list 1 to {MAX_LEVELS} values, got {len(value)}")
+        out = []
+        for i, x in enumerate(value):
+            if isinstance(x, bool) or not isinstance(x, (int, float)):
+                raise InvalidParameterError(f"{name} must be a list of numbers, item {i} is {show(x)}")
+            try:
+                v = float(x)
+            except OverflowError:
+                v = math.inf
+            if not math.isfinite(v):
+                raise InvalidParameterError(f"{name} must be finite numbers, item {i} is {show(x)}")
+            out.append(v)
+        return out
+    if isinstance(value, bool) or not isinstance(value, int):
+        raise InvalidParameterError(
+            f"{name} must be a number of isolux lines (1 .. {MAX_LEVELS}) or a list of values, got {show(value)}"
+        )
+    return integer(name, value, low=1, high=MAX_LEVELS, error=InvalidParameterError)
+
+
 def _grid_from_table(path: str, table: dict[str, Any], nx: int | None, ny: int | None) -> LuxGrid:
+    nx = table.get("nx", DEFAULT_NODES) if nx is None else nx
+    ny = table.get("ny", DEFAULT_NODES) if ny is None else ny
     try:
-        return LuxGrid(table["origin"], table["u"], table["v"], nx or table.get("nx", 64), ny or table.get("ny", 64))
+        return LuxGrid(table["origin"], table["u"], table["v"], nx, ny)
     except InvalidParameterError as exc:
-        raise SceneFileError(f"{Path(path).name}: illuminance: {str(exc).replace('grid.', '')}") from None
+        text = str(exc)
+        one_field = re.match(r"^grid\.(\w+) (must .*)$", text, flags=re.DOTALL)
+        if one_field is not None:
+            raise SceneFileError(f"{Path(path).name}: illuminance.{one_field.group(1)}: {one_field.group(2)}") from None
+        raise SceneFileError(f"{Path(path).name}: illuminance: {text.replace('grid.', '')}") from None
 
 
 def run(args: argparse.Namespace) -> int:
     """Load, compute, write; prints the files written and the range of E."""
-    from ._common import progress_bar
+    from ._common import check_outputs, progress_bar
 
     out = Path(args.output)
-    if out.suffix.lower() != ".png":
-        raise InvalidParameterError(f"output file {str(out)!r} must end in .png")
-    if args.npy is not None and Path(args.npy).suffix.lower() != ".npy":
-        raise InvalidParameterError(f"output file {args.npy!r} must end in .npy")
+    check_outputs(args.output, args.npy)
     given = [args.origin is not None, args.u is not None, args.v is not None]
     if any(given) and not all(given):
         raise InvalidParameterError("--origin, --u and --v must be given together")
-    nx, ny = args.grid if args.grid else (None, None)
+    # Every size is checked before the scene is read or anything is allocated.
+    nx, ny = args.grid if args.grid is not None else (None, None)
+    for name, n in (("grid.nx", nx), ("grid.ny", ny)):
+        if n is not None:
+            integer(name, n, low=2, high=4096, error=InvalidParameterError)
+    if args.levels is not None:
+        _levels("--levels", args.levels)
+    res = resolution("--resolution", args.resolution)
     scene, table = load_scene_and_grid(args.scene)
     lights = [li for li in scene.lights if isinstance(li, (AreaLight, PolyhedronLight))]
     if not lights:
         raise InvalidLightError(f"{Path(args.scene).name} has no area or polyhedron light")
     if all(given):
-        grid = LuxGrid(args.origin, args.u, args.v, nx or 64, ny or 64)
+        grid = LuxGrid(args.origin, args.u, args.v, DEFAULT_NODES if nx is None else nx, DEFAULT_NODES if ny is None else ny)
     elif table is not None:
         grid = _grid_from_table(args.scene, table, nx, ny)
     else:
-        grid = floor_grid(scene, nx or 64, ny or 64)
+        grid = floor_grid(scene, DEFAULT_NODES if nx is None else nx, DEFAULT_NODES if ny is None else ny)
     levels: Any = args.levels if args.levels is not None else (table or {}).get("levels", 8)
     with progress_bar("illuminance", enabled=not args.no_progress) as progress:
-        m = illuminance_map(grid, lights, [o.shape for o in scene.objects], resolution=args.resolution, progress=progress)
+        m = illuminance_map(grid, lights, [o.shape for o in scene.objects], resolution=res, progress=progress)
     out.parent.mkdir(parents=True, exist_ok=True)
     save_luxmap_png(out, m, levels=levels)
     print(f"wrote {out}")

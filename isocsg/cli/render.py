@@ -47,6 +47,8 @@ def run(args: argparse.Namespace) -> int:
     check_outputs(args.output, args.npy)
     if args.svg is not None and not str(args.svg).lower().endswith(".svg"):
         raise InvalidParameterError(f"--svg must name a .svg file, got {args.svg!r}")
+    if args.svg is not None and Path(args.svg).is_dir():
+        raise InvalidParameterError(f"--svg {args.svg!r} is a directory")
     scene = apply_overrides(load_scene(args.scene), size=args.size, contours=args.contours)
     if args.svg is not None:
         if scene.render.mode != "isoluminance":

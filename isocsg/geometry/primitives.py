@@ -23,7 +23,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from .._validation import Vec3, nonzero_vector3, points_array, scalar, vector3
+from .._validation import MAX_ABS_COORD, MAX_VERTICES, MIN_ASPECT, Vec3, length_floor, nonzero_vector3, points_array, scalar, vector3
 from ..errors import InvalidGeometryError
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -146,6 +146,14 @@ def _as_rays(origins: ArrayLike, directions: ArrayLike) -> tuple[NDArray[np.floa
     return o, d
 
 
+def _check_length(name: str, value: float, *positions: Any, what: str = "") -> None:
+    """Reject a length below :func:`~isocsg._validation.length_floor` of the positions."""
+    floor = length_floor(*positions)
+    if value < floor:
+        verb = f"have {what}" if what else "be"
+        raise InvalidGeometryError(f"{name} must {verb} >= {floor:g} (the smallest length at this position), got {value:g}")
+
+
 def _unit(v: Vec3) -> NDArray[np.float64]:
     a = np.asarray(v, dtype=np.float64)
     return a / np.linalg.norm(a)
@@ -190,8 +198,11 @@ class Sphere(Primitive):
     kind = "sphere"
 
     def __post_init__(self) -> None:
-        object.__setattr__(self, "center", vector3("Sphere.center", self.center))
-        object.__setattr__(self, "radius", scalar("Sphere.radius", self.radius, low=0.0))
+        center = vector3("Sphere.center", self.center)
+        radius = scalar("Sphere.radius", self.radius, low=0.0, high=MAX_ABS_COORD)
+        _check_length("Sphere.radius", radius, center)
+        object.__setattr__(self, "center", center)
+        object.__setattr__(self, "radius", radius)
 
     @property
     def center_array(self) -> NDArray[np.float64]:
@@ -294,12 +305,35 @@ class Truncus(Primitive):
 
     def __post_init__(self) -> None:
         name = type(self).__name__
-        object.__setattr__(self, "center", vector3(f"{name}.center", self.center))
-        object.__setattr__(self, "axis", nonzero_vector3(f"{name}.axis", self.axis))
-        r1 = scalar(f"{name}.r1", self.r1, low=0.0, low_inclusive=True)
-        r2 = scalar(f"{name}.r2", self.r2, low=0.0, low_inclusive=True)
+        center = vector3(f"{name}.center", self.center)
+        axis = nonzero_vector3(f"{name}.axis", self.axis)
+        object.__setattr__(self, "center", center)
+        object.__setattr__(self, "axis", axis)
+        r1 = scalar(f"{name}.r1", self.r1, low=0.0, low_inclusive=True, high=MAX_ABS_COORD)
+        r2 = scalar(f"{name}.r2", self.r2, low=0.0, low_inclusive=True, high=MAX_ABS_COORD)
         if r1 == 0.0 and r2 == 0.0:
             raise InvalidGeometryError(f"{name}.r1 and {name}.r2 must not both be 0")
+        # Cylinders and cones are given one `radius`; name that field in their messages.
+        one_radius = isinstance(self, (Cylinder, Cone))
+        floor = length_floor(center, axis)
+        for field_name, r in (("r1", r1), ("r2", r2)):
+            if 0.0 < r < floor:
+                shown = "radius" if one_radius else field_name
+                raise InvalidGeometryError(
+                    f"{name}.{shown} must be 0 or >= {floor:g} (the smallest length at this position), got {r:g}"
+                )
+        height = math.hypot(*axis)
+        _check_length(f"{name}.axis", height, center, what="length")
+        big = max(r1, r2)
+        if height < MIN_ASPECT * big:
+            raise InvalidGeometryError(
+                f"{name}.axis must be at least {MIN_ASPECT:g} x the larger radius {big:g} long, got length {height:g}"
+            )
+        if big < MIN_ASPECT * height:
+            shown = "radius" if one_radius else ("r1" if r1 >= r2 else "r2")
+            raise InvalidGeometryError(
+                f"{name}.{shown} must be at least {MIN_ASPECT:g} x the height {height:g}, got {big:g}"
+            )
         object.__setattr__(self, "r1", r1)
         object.__setattr__(self, "r2", r2)
 
@@ -510,7 +544,7 @@ class Cylinder(Truncus):
     kind = "cylinder"
 
     def __init__(self, center: ArrayLike, axis: ArrayLike, radius: float) -> None:
-        r = scalar("Cylinder.radius", radius, low=0.0)
+        r = scalar("Cylinder.radius", radius, low=0.0, high=MAX_ABS_COORD)
         Truncus.__init__(self, center, axis, r, r)  # type: ignore[arg-type]
 
     @property
@@ -540,7 +574,7 @@ class Cone(Truncus):
     kind = "cone"
 
     def __init__(self, center: ArrayLike, axis: ArrayLike, radius: float) -> None:
-        r = scalar("Cone.radius", radius, low=0.0)
+        r = scalar("Cone.radius", radius, low=0.0, high=MAX_ABS_COORD)
         Truncus.__init__(self, center, axis, r, 0.0)  # type: ignore[arg-type]
 
     @property
@@ -661,7 +695,13 @@ class ConvexPolyhedron(Primitive):
 
     def __post_init__(self) -> None:
         name = f"{type(self).__name__}.vertices"
-        pts = points_array(name, self.vertices, min_rows=4)
+        pts = points_array(name, self.vertices, min_rows=4, max_rows=MAX_VERTICES)
+        extent = float(np.max(np.ptp(pts, axis=0)))
+        floor = length_floor(pts.min(axis=0), pts.max(axis=0))
+        if 0.0 < extent < floor:
+            raise InvalidGeometryError(
+                f"{name} must span at least {floor:g} (the smallest length at this position), got {extent:g}"
+            )
         object.__setattr__(self, "vertices", tuple(tuple(map(float, p)) for p in pts))
         hv, faces, normals, offsets, tris = _hull(pts, name)
         for arr in (hv, normals, offsets, tris):
@@ -734,10 +774,20 @@ class Box(Primitive):
     kind = "box"
 
     def __post_init__(self) -> None:
-        object.__setattr__(self, "center", vector3("Box.center", self.center))
+        center = vector3("Box.center", self.center)
+        object.__setattr__(self, "center", center)
         size = vector3("Box.size", self.size)
         if min(size) <= 0:
             raise InvalidGeometryError(f"Box.size must be > 0 in every axis, got {size}")
+        floor = length_floor(center)
+        if min(size) < floor:
+            raise InvalidGeometryError(
+                f"Box.size must be >= {floor:g} in every axis (the smallest length at this position), got {size}"
+            )
+        if min(size) < MIN_ASPECT * max(size):
+            raise InvalidGeometryError(
+                f"Box.size must have its smallest edge at least {MIN_ASPECT:g} x its largest, got {size}"
+            )
         object.__setattr__(self, "size", size)
 
     @property

@@ -8,7 +8,7 @@ from typing import Any, Union
 import numpy as np
 from numpy.typing import NDArray
 
-from .._validation import Vec3, nonzero_vector3, scalar, vector3
+from .._validation import MAX_INTENSITY, Vec3, nonzero_vector3, scalar, vector3
 from ..errors import InvalidLightError
 
 __all__ = ["PointLight", "DirectionalLight", "Light", "Material"]
@@ -22,7 +22,7 @@ class PointLight:
     ----------
     position : array_like, shape (3,)
     intensity : float, default 1
-        Scales the diffuse and specular terms of this light (>= 0).
+        Scales the diffuse and specular terms of this light, 0 .. 1e6.
 
     Examples
     --------
@@ -39,7 +39,7 @@ class PointLight:
         object.__setattr__(
             self,
             "intensity",
-            scalar("PointLight.intensity", self.intensity, low=0.0, low_inclusive=True, error=InvalidLightError),
+            scalar("PointLight.intensity", self.intensity, low=0.0, low_inclusive=True, high=MAX_INTENSITY, error=InvalidLightError),
         )
 
     def directions_from(self, points: NDArray[np.float64]) -> NDArray[np.float64]:
@@ -74,7 +74,7 @@ class DirectionalLight:
         object.__setattr__(
             self,
             "intensity",
-            scalar("DirectionalLight.intensity", self.intensity, low=0.0, low_inclusive=True, error=InvalidLightError),
+            scalar("DirectionalLight.intensity", self.intensity, low=0.0, low_inclusive=True, high=MAX_INTENSITY, error=InvalidLightError),
         )
 
     @property
@@ -114,10 +114,10 @@ class Material:
 
     def __post_init__(self) -> None:
         for name in ("ambient", "kd", "ks"):
-            v = scalar(f"Material.{name}", getattr(self, name), low=0.0, low_inclusive=True, high=1e6, error=InvalidLightError)
+            v = scalar(f"Material.{name}", getattr(self, name), low=0.0, low_inclusive=True, high=MAX_INTENSITY, error=InvalidLightError)
             object.__setattr__(self, name, v)
         object.__setattr__(
-            self, "shininess", scalar("Material.shininess", self.shininess, low=0.0, high=1e6, error=InvalidLightError)
+            self, "shininess", scalar("Material.shininess", self.shininess, low=0.0, high=MAX_INTENSITY, error=InvalidLightError)
         )
 
     def to_dict(self) -> dict[str, Any]:

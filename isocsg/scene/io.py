@@ -31,6 +31,12 @@ A scene file holds four parts (TOML shown; JSON uses the same structure)::
 Every error is a :class:`~isocsg.errors.SceneFileError` whose message starts
 with the file name and the dotted path of the offending field, e.g.
 ``scene.toml: objects[0].shape.sphere.radius: must be > 0, got -1``.
+
+Only regular files of at most 16 MiB (:data:`MAX_SCENE_FILE_BYTES`) in
+UTF-8 are read; the size and the kind of file are checked before reading, so
+that a FIFO or a device such as ``/dev/zero`` is refused at once. Shape trees
+are read without recursion; the TOML and JSON decoders themselves stop at a
+few hundred levels of nesting, which is reported as an error of the file.
 """
 
 from __future__ import annotations
@@ -39,12 +45,14 @@ import json
 import math
 import os
 import re
+import stat
 import tomllib
 from collections.abc import Callable, Mapping
 from importlib import resources
 from pathlib import Path
 from typing import Any
 
+from .._validation import MAX_LIGHTS, MAX_SCENE_FILE_BYTES, show
 from ..camera import Camera
 from ..csg.tree import CSGNode, Difference, Intersection, Union
 from ..errors import (
@@ -69,6 +77,9 @@ __all__ = [
     "BUILTIN_SCENES",
     "SHAPE_KINDS",
     "LIGHT_KINDS",
+    "MAX_SCENE_FILE_BYTES",
+    "read_scene_file",
+    "decode_scene_text",
 ]
 
 #: Names of the scenes shipped in ``isocsg/data`` (``<name>.toml``).
@@ -168,7 +179,7 @@ class _Reader:
             return factory(**kwargs)
         except _VALUE_ERRORS as exc:
             raise self.fail(*_reword(path, class_name, str(exc))) from None
-        except (TypeError, ValueError) as exc:  # a value that numpy cannot even convert
+        except (TypeError, ValueError, ArithmeticError) as exc:  # a value that numpy cannot even convert
             raise self.fail(path, str(exc)) from None
 
 
@@ -185,7 +196,7 @@ def _type_name(value: Any) -> str:
         return f"a string {value!r}"
     if isinstance(value, bool):
         return f"a boolean {str(value).lower()}"
-    return f"{type(value).__name__} {value!r}"
+    return f"{type(value).__name__} {show(value)}"
 
 
 def _reword(path: str, class_name: str, message: str) -> tuple[str, str]:
@@ -241,25 +252,54 @@ def _material(r: _Reader, path: str, value: Any) -> Material:
     return r.construct(path, "Material", Material, **dict(t))
 
 
-def _shape(r: _Reader, path: str, value: Any) -> Solid:
+def _node(r: _Reader, path: str, value: Any) -> tuple[str, str, Any]:
+    """Check one shape node ``{kind: body}``; returns ``(kind, path.kind, body)``."""
     if not isinstance(value, Mapping):
         raise r.fail(path, f"a shape node must be a table with one key ({', '.join(SHAPE_KINDS)}), got {_type_name(value)}")
     if len(value) != 1:
-        keys = ", ".join(repr(k) for k in value)
+        keys = ", ".join(show(k, 40) for k in value)
         got = f"{len(value)} ({keys})" if value else "none"
         raise r.fail(path, f"a shape node must have exactly one key ({', '.join(SHAPE_KINDS)}), got {got}")
     ((kind, body),) = value.items()
-    if kind not in SHAPE_KINDS:
-        raise r.fail(path, f"unknown shape {kind!r} (expected one of {', '.join(SHAPE_KINDS)})")
-    here = _join(path, kind)
-    if kind in _CSG_TYPES:
-        operands = r.array(here, body)
-        if not operands:
-            raise r.fail(here, "needs at least one operand, got none")
-        children = [_shape(r, f"{here}[{i}]", child) for i, child in enumerate(operands)]
-        return _CSG_TYPES[kind](*children)
-    t = r.table(here, body, _PRIMITIVE_FIELDS[kind])
-    return r.construct(here, _CLASS_NAMES[kind], _PRIMITIVE_TYPES[kind], **dict(t))
+    if not isinstance(kind, str) or kind not in SHAPE_KINDS:
+        raise r.fail(path, f"unknown shape {show(kind, 40)} (expected one of {', '.join(SHAPE_KINDS)})")
+    return kind, _join(path, kind), body
+
+
+def _shape(r: _Reader, path: str, value: Any) -> Solid:
+    """Build a shape tree depth first with an explicit stack (no recursion).
+
+    Deep trees must not exhaust Python's recursion limit; each stack entry is
+    ``(kind, path, operands, children built so far)``.
+    """
+    stack: list[tuple[str, str, list[Any], list[Solid]]] = []
+    todo: tuple[str, Any] | None = (path, value)
+    while True:
+        assert todo is not None
+        kind, here, body = _node(r, *todo)
+        if kind in _CSG_TYPES:
+            operands = r.array(here, body)
+            if not operands:
+                raise r.fail(here, "needs at least one operand, got none")
+            stack.append((kind, here, operands, []))
+            todo = (f"{here}[0]", operands[0])
+            continue
+        t = r.table(here, body, _PRIMITIVE_FIELDS[kind])
+        solid: Solid = r.construct(here, _CLASS_NAMES[kind], _PRIMITIVE_TYPES[kind], **dict(t))
+        # Hand the finished solid to its parent; close every parent that is complete.
+        while True:
+            if not stack:
+                return solid
+            kind, here, operands, children = stack[-1]
+            children.append(solid)
+            if len(children) < len(operands):
+                todo = (f"{here}[{len(children)}]", operands[len(children)])
+                break
+            stack.pop()
+            try:
+                solid = _CSG_TYPES[kind](*children)
+            except _VALUE_ERRORS as exc:
+                raise r.fail(here, str(exc)) from None
 
 
 def _object(r: _Reader, path: str, value: Any) -> SceneObject:
@@ -311,12 +351,19 @@ def scene_from_dict(data: Mapping[str, Any], *, source: str | os.PathLike[str] |
     camera = _camera(r, top["camera"])
     render = _render(r, top["render"]) if "render" in top else RenderSettings()
     lights_doc = r.array("lights", top["lights"]) if "lights" in top else []
+    if len(lights_doc) > MAX_LIGHTS:  # before building any of them
+        raise r.fail("lights", f"must hold at most {MAX_LIGHTS} lights, got {len(lights_doc)}")
     lights = tuple(_light(r, f"lights[{i}]", v) for i, v in enumerate(lights_doc))
     objects_doc = r.array("objects", top["objects"])
     if not objects_doc:
         raise r.fail("objects", "needs at least one object, got none")
     objects = tuple(_object(r, f"objects[{i}]", v) for i, v in enumerate(objects_doc))
-    return Scene(camera, lights, objects, render)
+    try:
+        return Scene(camera, lights, objects, render)
+    except _VALUE_ERRORS as exc:
+        # "scene.lights must ..." -> "lights: must ..."; "render.contours must ..." likewise
+        m = re.match(r"^(?:scene\.)?([\w.\[\]]+) (.*)$", str(exc), flags=re.DOTALL)
+        raise (r.fail(m.group(1), m.group(2)) if m else r.fail("", str(exc))) from None
 
 
 def loads_scene(text: str, *, format: str = "toml", source: str | os.PathLike[str] | None = None) -> Scene:
@@ -351,20 +398,103 @@ def loads_scene(text: str, *, format: str = "toml", source: str | os.PathLike[st
     (1.0, 1.0, 1.0)
     """
     name = None if source is None else os.fspath(source)
+    return scene_from_dict(decode_scene_text(text, format=format, source=name), source=name)
+
+
+def decode_scene_text(text: str, *, format: str = "toml", source: str | os.PathLike[str] | None = None) -> Any:
+    """Decode TOML or JSON text into plain Python values (no scene checks yet).
+
+    Raises
+    ------
+    SceneFileError
+        On malformed text, integers too long to read, or nesting deeper than
+        the decoder allows; the message starts with ``source``.
+
+    Examples
+    --------
+    >>> decode_scene_text('{"a": [1, 2]}', format="json")
+    {'a': [1, 2]}
+    """
+    name = None if source is None else os.fspath(source)
     prefix = f"{name}: " if name else ""
-    if format == "toml":
+    if not isinstance(text, str):
+        raise SceneFileError(f"{prefix}scene text must be a str, got {type(text).__name__}")
+    if format not in ("toml", "json"):
+        raise SceneFileError(f"{prefix}unknown scene format {show(format)} (expected 'toml' or 'json')")
+    label = format.upper()
+    try:
+        return tomllib.loads(text) if format == "toml" else json.loads(text)
+    except (tomllib.TOMLDecodeError, json.JSONDecodeError) as exc:
+        raise SceneFileError(f"{prefix}invalid {label}: {exc}") from None
+    except RecursionError:
+        raise SceneFileError(f"{prefix}invalid {label}: nested more deeply than the {label} decoder allows") from None
+    except ValueError as exc:  # e.g. an integer with more digits than Python converts
+        raise SceneFileError(f"{prefix}invalid {label}: {exc}") from None
+
+
+def read_scene_file(path: str | os.PathLike[str]) -> tuple[str, str]:
+    """Read a scene file's text safely; returns ``(text, format)``.
+
+    The extension must be ``.toml`` or ``.json``; the path must name a regular
+    file (not a directory, FIFO or device) of at most
+    :data:`MAX_SCENE_FILE_BYTES` bytes, checked before any byte is read, and
+    the text must be UTF-8 without NUL characters.
+
+    Raises
+    ------
+    SceneFileError
+        Naming the file and what is wrong with it.
+
+    Examples
+    --------
+    >>> text, fmt = read_scene_file(builtin_scene_path("demo"))
+    >>> fmt, "[camera]" in text
+    ('toml', True)
+    """
+    p = Path(path)
+    fmt = _format_of(p)
+    try:
+        st = os.stat(p)
+    except OSError as exc:
+        raise SceneFileError(f"{p}: cannot read the file: {exc.strerror or exc}") from None
+    _check_regular(p, st)
+    try:
+        # O_NONBLOCK: should the path be swapped for a FIFO after the check, open() must not wait.
+        fd = os.open(p, os.O_RDONLY | getattr(os, "O_NONBLOCK", 0))
+    except OSError as exc:
+        raise SceneFileError(f"{p}: cannot read the file: {exc.strerror or exc}") from None
+    with os.fdopen(fd, "rb") as f:
+        _check_regular(p, os.fstat(f.fileno()))
         try:
-            data: Any = tomllib.loads(text)
-        except tomllib.TOMLDecodeError as exc:
-            raise SceneFileError(f"{prefix}invalid TOML: {exc}") from None
-    elif format == "json":
-        try:
-            data = json.loads(text)
-        except json.JSONDecodeError as exc:
-            raise SceneFileError(f"{prefix}invalid JSON: {exc}") from None
-    else:
-        raise SceneFileError(f"{prefix}unknown scene format {format!r} (expected 'toml' or 'json')")
-    return scene_from_dict(data, source=name)
+            data = f.read(MAX_SCENE_FILE_BYTES + 1)
+        except OSError as exc:
+            raise SceneFileError(f"{p}: cannot read the file: {exc.strerror or exc}") from None
+    if len(data) > MAX_SCENE_FILE_BYTES:
+        raise SceneFileError(f"{p}: the file is larger than the limit of {MAX_SCENE_FILE_BYTES} bytes")
+    try:
+        text = data.decode("utf-8")
+    except UnicodeDecodeError as exc:
+        raise SceneFileError(
+            f"{p}: not a UTF-8 text file (byte 0x{data[exc.start]:02x} at offset {exc.start}); scene files are UTF-8 TOML or JSON"
+        ) from None
+    if "\x00" in text:
+        raise SceneFileError(f"{p}: not a text file (NUL byte at offset {text.index(chr(0))}); scene files are UTF-8 TOML or JSON")
+    return text, fmt
+
+
+def _check_regular(p: Path, st: os.stat_result) -> None:
+    if stat.S_ISREG(st.st_mode):
+        if st.st_size > MAX_SCENE_FILE_BYTES:
+            raise SceneFileError(f"{p}: the file has {st.st_size} bytes, more than the limit of {MAX_SCENE_FILE_BYTES}")
+        return
+    kind = (
+        "a directory" if stat.S_ISDIR(st.st_mode)
+        else "a FIFO" if stat.S_ISFIFO(st.st_mode)
+        else "a device" if stat.S_ISCHR(st.st_mode) or stat.S_ISBLK(st.st_mode)
+        else "a socket" if stat.S_ISSOCK(st.st_mode)
+        else "not a regular file"
+    )
+    raise SceneFileError(f"{p}: cannot read the file: it is {kind}, not a regular file")
 
 
 def _format_of(path: Path) -> str:
@@ -374,6 +504,11 @@ def _format_of(path: Path) -> str:
     if suffix == ".json":
         return "json"
     raise SceneFileError(f"{path}: unknown scene file extension {path.suffix!r} (expected .toml or .json)")
+
+
+def scene_format(path: str | os.PathLike[str]) -> str:
+    """``"toml"`` or ``"json"`` from a file name; raises :class:`SceneFileError` otherwise."""
+    return _format_of(Path(path))
 
 
 def load_scene(path: str | os.PathLike[str]) -> Scene:
@@ -390,9 +525,10 @@ def load_scene(path: str | os.PathLike[str]) -> Scene:
     Raises
     ------
     SceneFileError
-        If the file cannot be read, is not valid TOML/JSON, or does not
-        describe a valid scene; the message starts with the file name and the
-        dotted path of the field.
+        If the file cannot be read (missing, not a regular file, larger than
+        16 MiB, not UTF-8), is not valid TOML/JSON, or does not describe a
+        valid scene; the message starts with the file name and the dotted
+        path of the field.
 
     Examples
     --------
@@ -401,12 +537,7 @@ def load_scene(path: str | os.PathLike[str]) -> Scene:
     'isoluminance'
     """
     p = Path(path)
-    fmt = _format_of(p)
-    try:
-        text = p.read_text(encoding="utf-8")
-    except (OSError, UnicodeDecodeError) as exc:
-        reason = exc.strerror if isinstance(exc, OSError) and exc.strerror else str(exc)
-        raise SceneFileError(f"{p}: cannot read the file: {reason}") from None
+    text, fmt = read_scene_file(p)
     return loads_scene(text, format=fmt, source=p)
 
 

@@ -5,11 +5,12 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import Any
 
-from .._validation import integer, scalar
+from .._validation import MAX_INTENSITY, integer, light_budget, scalar, show
 from ..camera import Camera
-from ..errors import InvalidGeometryError, InvalidParameterError
+from ..errors import InvalidGeometryError, InvalidLightError, InvalidParameterError
 from ..geometry.primitives import Solid
-from ..lighting.lights import Material
+from ..lighting.lights import DirectionalLight, Material, PointLight
+from ..shadows.lights import AreaLight, PolyhedronLight
 
 __all__ = ["SceneObject", "RenderSettings", "Scene", "MAX_CONTOURS", "RENDER_MODES"]
 
@@ -45,7 +46,8 @@ class RenderSettings:
         Isoluminance contours per light family, 1 .. 4096.
     mode : {"isoluminance", "halftone"}
     exposure : float, default 1
-        Half-tone images show ``E * exposure`` (clipped to [0, 1]).
+        Half-tone images show ``E * exposure`` (clipped to [0, 1]); > 0 and
+        at most 1e6.
     interval : int, default 1
         Half-tone speed-up: exact values every ``interval`` pixels along a
         scanline, linear in between (never across face or shadow boundaries);
@@ -61,15 +63,39 @@ class RenderSettings:
         object.__setattr__(
             self, "contours", integer("render.contours", self.contours, low=1, high=MAX_CONTOURS, error=InvalidParameterError)
         )
-        if self.mode not in RENDER_MODES:
-            raise InvalidParameterError(f"render.mode must be one of {RENDER_MODES}, got {self.mode!r}")
-        object.__setattr__(self, "exposure", scalar("render.exposure", self.exposure, low=0.0, error=InvalidParameterError))
+        if not isinstance(self.mode, str) or self.mode not in RENDER_MODES:
+            raise InvalidParameterError(f"render.mode must be one of {RENDER_MODES}, got {show(self.mode)}")
+        object.__setattr__(
+            self, "exposure", scalar("render.exposure", self.exposure, low=0.0, high=MAX_INTENSITY, error=InvalidParameterError)
+        )
         object.__setattr__(self, "interval", integer("render.interval", self.interval, low=1, high=256, error=InvalidParameterError))
 
 
 @dataclass(frozen=True, slots=True)
 class Scene:
-    """Camera, lights, objects and render settings."""
+    """Camera, lights, objects and render settings.
+
+    Parameters
+    ----------
+    camera : Camera
+    lights : sequence of lights
+        Point, directional, area and polyhedron lights, at most 16
+        (:data:`~isocsg._validation.MAX_LIGHTS`); (point and directional
+        lights) x ``render.contours`` is at most 1024
+        (:data:`~isocsg._validation.MAX_LIGHT_CONTOURS`).
+    objects : sequence of SceneObject or Solid
+    render : RenderSettings, optional
+
+    Raises
+    ------
+    InvalidParameterError
+        If ``camera`` or ``render`` has the wrong type, or on too many lights
+        for the limits above.
+    InvalidLightError
+        If a light is not one of the four light types.
+    InvalidGeometryError
+        If an object is not a solid.
+    """
 
     camera: Camera
     lights: tuple[Any, ...]
@@ -77,6 +103,33 @@ class Scene:
     render: RenderSettings = field(default_factory=RenderSettings)
 
     def __post_init__(self) -> None:
-        object.__setattr__(self, "lights", tuple(self.lights))
-        objs = tuple(o if isinstance(o, SceneObject) else SceneObject(o) for o in self.objects)
+        if not isinstance(self.camera, Camera):
+            raise InvalidParameterError(f"scene.camera must be a Camera, got {type(self.camera).__name__}")
+        if not isinstance(self.render, RenderSettings):
+            raise InvalidParameterError(f"scene.render must be RenderSettings, got {type(self.render).__name__}")
+        lights = _sequence("scene.lights", self.lights, InvalidLightError)
+        for i, light in enumerate(lights):
+            if not isinstance(light, _LIGHT_TYPES):
+                raise InvalidLightError(
+                    f"scene.lights[{i}] must be a PointLight, DirectionalLight, AreaLight or PolyhedronLight, "
+                    f"got {type(light).__name__}"
+                )
+        families = sum(isinstance(li, (PointLight, DirectionalLight)) for li in lights)
+        light_budget(len(lights), families, self.render.contours, where="scene.")
+        object.__setattr__(self, "lights", lights)
+        objects = _sequence("scene.objects", self.objects, InvalidGeometryError)
+        objs = tuple(o if isinstance(o, SceneObject) else SceneObject(o) for o in objects)
         object.__setattr__(self, "objects", objs)
+
+
+_LIGHT_TYPES = (PointLight, DirectionalLight, AreaLight, PolyhedronLight)
+
+
+def _sequence(name: str, value: Any, error: type[Exception]) -> tuple[Any, ...]:
+    """``value`` as a tuple; strings, mappings and non-iterables are refused."""
+    if isinstance(value, (str, bytes, dict)):
+        raise error(f"{name} must be a sequence, got {type(value).__name__}")
+    try:
+        return tuple(value)
+    except TypeError:
+        raise error(f"{name} must be a sequence, got {type(value).__name__}") from None

@@ -20,7 +20,7 @@ from typing import Any
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from .._validation import Vec3, points_array, scalar
+from .._validation import MAX_INTENSITY, MAX_VERTICES, Vec3, length_floor, points_array, scalar
 from ..errors import InvalidGeometryError, InvalidLightError
 from ..geometry.primitives import ConvexPolyhedron
 
@@ -32,7 +32,7 @@ CONVEXITY_TOL = 1e-12
 
 
 def _radiance(name: str, value: Any) -> float:
-    return scalar(name, value, low=0.0, low_inclusive=True, error=InvalidLightError)
+    return scalar(name, value, low=0.0, low_inclusive=True, high=MAX_INTENSITY, error=InvalidLightError)
 
 
 def _newell_normal(p: NDArray[np.float64]) -> NDArray[np.float64]:
@@ -53,7 +53,7 @@ class AreaLight:
         normal of the winding (``normal``) points to the lit side. Either
         winding is accepted: it chooses the side that is lit.
     radiance : float, default 1
-        Radiance L (>= 0). A fully visible source covering the whole
+        Radiance L, 0 .. 1e6. A fully visible source covering the whole
         hemisphere above a point would give illuminance pi L.
 
     Attributes
@@ -88,20 +88,31 @@ class AreaLight:
 
     def __post_init__(self) -> None:
         name = "AreaLight.vertices"
-        pts = points_array(name, self.vertices, min_rows=3, error=InvalidLightError)
+        pts = points_array(name, self.vertices, min_rows=3, max_rows=MAX_VERTICES, error=InvalidLightError)
         scale = float(np.max(np.ptp(pts, axis=0)))
         if scale <= 0:
             raise InvalidLightError(f"{name} are all the same point")
+        floor = length_floor(pts.min(axis=0), pts.max(axis=0))
+        if scale < floor:
+            raise InvalidLightError(f"{name} must span at least {floor:g} (the smallest length at this position), got {scale:g}")
         m = len(pts)
         edges = np.roll(pts, -1, axis=0) - pts
         elen = np.linalg.norm(edges, axis=1)
         if np.any(elen <= 1e-12 * scale):
             i = int(np.argmin(elen))
             raise InvalidLightError(f"{name} has repeated consecutive points (vertex {i} and {(i + 1) % m})")
-        nn = _newell_normal(pts - pts.mean(axis=0))
+        rel = pts - pts.mean(axis=0)
+        nn = _newell_normal(rel)
         area = float(np.linalg.norm(nn))
         if area <= 1e-12 * scale * scale:
-            raise InvalidLightError(f"{name} are collinear: the polygon has zero area")
+            # Zero signed area: either every point is on one line, or the
+            # outline crosses itself (a bow-tie) and its lobes cancel.
+            sv = np.linalg.svd(rel, compute_uv=False)
+            if sv[1] <= 1e-9 * sv[0]:
+                raise InvalidLightError(f"{name} are collinear: the polygon has zero area")
+            raise InvalidLightError(
+                f"{name} must form a convex polygon, the outline is self-intersecting (not convex): its signed area is zero"
+            )
         n = nn / area
         dev = np.abs((pts - pts.mean(axis=0)) @ n)
         if np.max(dev) > PLANARITY_TOL * scale:
@@ -159,7 +170,7 @@ class PolyhedronLight:
         At least 4 points, not coplanar; the source is their convex hull
         (interior points are dropped).
     radiance : float, default 1
-        Radiance L (>= 0) of every face.
+        Radiance L (0 .. 1e6) of every face.
 
     Attributes
     ----------
@@ -187,7 +198,7 @@ class PolyhedronLight:
 
     def __post_init__(self) -> None:
         name = "PolyhedronLight.vertices"
-        pts = points_array(name, self.vertices, min_rows=4, error=InvalidLightError)
+        pts = points_array(name, self.vertices, min_rows=4, max_rows=MAX_VERTICES, error=InvalidLightError)
         try:
             poly = ConvexPolyhedron(pts)
         except InvalidGeometryError as exc:
