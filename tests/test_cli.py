@@ -232,3 +232,24 @@ def test_halftone_scene_renders(tmp_path: Path) -> None:
                  "--size", "40x30", "--no-progress"]) == 0
     image = np.load(npy)
     assert image.shape == (30, 40) and np.isfinite(image).any()
+
+
+@needs_renderer
+def test_halftone_png_applies_the_scene_exposure(tmp_path: Path) -> None:
+    # A room in real units: E of hundreds of lux, shown through render.exposure.
+    pytest.importorskip("isocsg.shadows.halftone")
+    from PIL import Image
+
+    text = builtin_scene_path("halftone").read_text().replace("radiance = 5.0", "radiance = 500.0")
+    text = text.replace("exposure = 1.0", "exposure = 0.002")
+    scene = tmp_path / "room.toml"
+    scene.write_text(text)
+    png, npy = tmp_path / "room.png", tmp_path / "room.npy"
+    assert main(["render", str(scene), "-o", str(png), "--npy", str(npy), "--size", "40x30", "--no-progress"]) == 0
+    E = np.load(npy)
+    shown = np.asarray(Image.open(png).convert("L"), dtype=float)
+    lit = np.isfinite(E)
+    assert np.nanmax(E) > 100  # the raw illuminance, unscaled, in the NPY file
+    expected = np.clip(E[lit] * 0.002, 0, 1) * 255
+    assert np.abs(shown[lit] - expected).max() <= 1.0
+    assert (shown[lit] < 255).mean() > 0.9  # not washed out

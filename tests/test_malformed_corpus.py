@@ -893,7 +893,6 @@ API_CASES += [
 # Cases that need a change in a module another change owns; they pass once it lands.
 # (reason, run): cases that could exhaust memory before the change are not run.
 PENDING: dict[str, tuple[str, bool]] = {
-    "Union-number": ("isocsg/csg/tree.py: CSGNode.__init__ must check a single non-solid operand before iterating it", True),
     "illuminance-resolution-million": (
         "isocsg/shadows/occluders.py: convex_pieces must bound resolution with isocsg._validation.resolution (3 .. 512)", True),
     "render-lights-x-contours": (

@@ -111,13 +111,19 @@ def check_outputs(png: str | Path | None, npy: str | Path | None = None) -> None
             raise InvalidParameterError(f"output file {str(path)!r} is a directory")
 
 
-def write_outputs(image: Any, png: str | Path | None, npy: str | Path | None = None) -> list[Path]:
-    """Write the PNG (and NPY) files, creating missing parent folders."""
+def write_outputs(result: Any, png: str | Path | None, npy: str | Path | None = None) -> list[Path]:
+    """Write the PNG (and NPY) files of a render result, creating missing parent folders.
+
+    The NPY file holds ``result.image`` (for a half-tone render: the illuminance E);
+    the PNG shows ``result.display`` where the result has one (E times the scene's
+    ``render.exposure``, clipped), else the image.
+    """
     from ..render.image import save_npy, save_png
 
     check_outputs(png, npy)
     written = []
-    for path, writer in ((png, save_png), (npy, save_npy)):
+    shown = getattr(result, "display", result.image)
+    for path, writer, image in ((png, save_png, shown), (npy, save_npy, result.image)):
         if path is None:
             continue
         p = Path(path)

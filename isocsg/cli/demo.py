@@ -47,7 +47,7 @@ def run(args: argparse.Namespace) -> int:
     scene = apply_overrides(load_scene(source), size=args.size, contours=args.contours)
     with progress_bar(f"render {scene.render.mode}", enabled=not args.no_progress) as progress:
         result = render_scene(scene, progress=progress)
-    (path,) = write_outputs(result.image, output)
+    (path,) = write_outputs(result, output)
     w, h = scene.camera.width, scene.camera.height
     print(f"wrote {path.resolve()} ({w}x{h} pixels, scene {source})")
     return 0

@@ -58,7 +58,7 @@ def run(args: argparse.Namespace) -> int:
                 raise InvalidParameterError(f"--svg: objects[{k}] is a CSG tree; SVG output takes single primitives only")
     with progress_bar(f"render {scene.render.mode}", enabled=not args.no_progress) as progress:
         result = render_scene(scene, progress=progress)
-    for path in write_outputs(result.image, args.output, args.npy):
+    for path in write_outputs(result, args.output, args.npy):
         print(f"wrote {path}")
     if args.svg is not None:
         from ..render.svg import save_scene_svg
