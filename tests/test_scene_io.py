@@ -455,3 +455,28 @@ def test_area_and_polyhedron_light_errors(tmp_path: Path, monkeypatch: pytest.Mo
     Path("scene.json").write_text(json.dumps(doc))
     with pytest.raises(SceneFileError, match=f"^{re.escape('scene.json: ' + message)}$"):
         load_scene("scene.json")
+
+
+def test_trees_built_by_a_loop_are_written_flat_and_read_back(tmp_path):
+    # 5000 subtractions nest 5000 levels; the file holds one difference of 5001 operands.
+    part = Box((0, 0, 0), (100, 100, 1))
+    for i in range(5000):
+        part = part - Sphere((i % 70 - 35.0, i // 70 - 36.0, 0.5), 0.2)
+    scene = Scene(Camera((0, -5, 3), (0, 0, 0)), [PointLight((1, 2, 3))], [part])
+    for ext in ("json", "toml"):
+        path = tmp_path / f"loop.{ext}"
+        save_scene(scene, path)
+        back = load_scene(path)
+        shape = back.objects[0].shape
+        assert isinstance(shape, Difference) and len(shape.children) == 5001
+        assert list(shape.children) == [part.program().leaves[0], *part.program().leaves[1:]]
+
+
+def test_trees_that_alternate_too_deeply_are_refused_naming_the_object(tmp_path):
+    part = Box((0, 0, 0), (100, 100, 1))
+    for i in range(300):
+        s = Sphere((i % 70 - 35.0, i // 70 - 36.0, 0.5), 0.2)
+        part = part - s if i % 2 else part | s
+    scene = Scene(Camera((0, -5, 3), (0, 0, 0)), [PointLight((1, 2, 3))], [Sphere((0, 0, 0), 1), part])
+    with pytest.raises(SceneFileError, match=re.escape("objects[1].shape: the tree nests 301 levels deep")):
+        save_scene(scene, tmp_path / "deep.json")

@@ -554,6 +554,35 @@ def _light_to_dict(light: Any) -> dict[str, Any]:
     return {"kind": d.pop("kind"), **d}
 
 
+#: Deepest shape nesting written to a scene file: the standard TOML and JSON decoders
+#: recurse per level. Deeper trees are written flattened (nested nodes of one
+#: operation merged, see :func:`isocsg.csg.program.compile_program`).
+MAX_FILE_DEPTH = 100
+
+
+def _nesting(shape: Any) -> int:
+    """Depth of a shape tree (a primitive is 1), without recursion."""
+    deepest, todo = 0, [(shape, 1)]
+    while todo:
+        s, d = todo.pop()
+        deepest = max(deepest, d)
+        todo.extend((c, d + 1) for c in getattr(s, "children", ()))
+    return deepest
+
+
+def _file_shape(shape: Any, where: str) -> dict[str, Any]:
+    """``shape.to_dict()``, flattened when it nests deeper than :data:`MAX_FILE_DEPTH`."""
+    if _nesting(shape) > MAX_FILE_DEPTH:
+        shape = shape.program().to_solid()
+        depth = _nesting(shape)
+        if depth > MAX_FILE_DEPTH:
+            raise SceneFileError(
+                f"{where}: the tree nests {depth} levels deep even with nested nodes of one operation merged; "
+                f"scene files hold at most {MAX_FILE_DEPTH} (the TOML and JSON decoders recurse per level)"
+            )
+    return shape.to_dict()
+
+
 def scene_to_dict(scene: Scene) -> dict[str, Any]:
     """The scene-file document of a scene (the inverse of :func:`scene_from_dict`).
 
@@ -565,7 +594,15 @@ def scene_to_dict(scene: Scene) -> dict[str, Any]:
     -------
     dict
         Plain lists, numbers and strings, ready for ``json.dump`` or
-        :func:`dumps_scene`.
+        :func:`dumps_scene`. A tree nested deeper than :data:`MAX_FILE_DEPTH`
+        levels is written flattened (the same solid, with nested nodes of one
+        operation merged).
+
+    Raises
+    ------
+    SceneFileError
+        If a tree still nests deeper than :data:`MAX_FILE_DEPTH` once flattened
+        (operations that alternate level after level).
 
     Examples
     --------
@@ -584,7 +621,10 @@ def scene_to_dict(scene: Scene) -> dict[str, Any]:
         "camera": camera,
         "render": {"contours": rs.contours, "mode": rs.mode, "exposure": rs.exposure, "interval": rs.interval},
         "lights": [_light_to_dict(light) for light in scene.lights],
-        "objects": [{"material": o.material.to_dict(), "shape": o.shape.to_dict()} for o in scene.objects],  # type: ignore[attr-defined]
+        "objects": [
+            {"material": o.material.to_dict(), "shape": _file_shape(o.shape, f"objects[{k}].shape")}
+            for k, o in enumerate(scene.objects)
+        ],
     }
 
 
