@@ -57,7 +57,7 @@ from .raster import (
     _RAW, camera_affine, fill_front_kernel, fill_projected, fill_rect, key_to_depth, pair_quads, project_kernel,
 )
 from .scratch import SCRATCH
-from .tiles import LEAF_PIXEL_BYTES, LeafGeometry, combine_rects, leaf_geometry, leaf_rects, plan_tiles, prune_program
+from .tiles import LEAF_PIXEL_BYTES, LeafGeometry, combine_rects, leaf_geometry, leaf_rects, plan_tiles, tile_leaves
 
 __all__ = ["RenderResult", "RenderTimings", "Renderer", "render", "default_renderer"]
 
@@ -346,9 +346,9 @@ class _Prepared:
 
     @property
     def nbytes(self) -> int:
-        """Bytes held, counting the quads (24 bytes per triangle at most) and two projection scratches."""
+        """About the bytes held: the arrays, the quads (at most 24 bytes per triangle) and one projection."""
         nv, nt = len(self.vertices), len(self.triangles)
-        return self.vertices.nbytes + self.triangles.nbytes + 8 * nt + 24 * nt + 2 * 56 * nv
+        return self.vertices.nbytes + self.triangles.nbytes + 8 * nt + 24 * nt + 56 * nv
 
 
 class _ByteCache:
@@ -387,9 +387,11 @@ class _ByteCache:
         self.nbytes = 0
 
 
-#: Bytes kept by a renderer's caches of prepared band meshes, CSG surfaces and
-#: leaf geometry (each; never more than an eighth of the memory budget).
-PREPARED_CACHE_BYTES = 512 << 20
+#: Bytes kept by a renderer's caches of prepared band meshes (their arrays,
+#: shared with the lamina cache's band meshes, and the quads and projection
+#: made from them), CSG surfaces and leaf geometry (each; never more than an
+#: eighth of the memory budget).
+PREPARED_CACHE_BYTES = 1 << 30
 SURFACE_CACHE_BYTES = 512 << 20
 GEOMETRY_CACHE_BYTES = 64 << 20
 
@@ -1050,7 +1052,9 @@ class Renderer:
             release[max(int(r), 0)].append(i)
         occupied = np.diff(plan.start) > 0
         row_tiles = [np.flatnonzero(occupied[r * plan.cols : (r + 1) * plan.cols]) + r * plan.cols for r in range(plan.rows)]
-        store: list[tuple[_Prepared, NDArray[np.float64]] | None] = [None] * n
+        # Per leaf built and not yet dropped: its projection, quads and their values.
+        store: list[tuple[NDArray[Any], ...] | None] = [None] * n
+        nears_l = nears.tolist()
         cond = threading.Condition()
         queue: deque[int] = deque()
         left = [len(t) for t in row_tiles]  # tiles of each row not done yet
@@ -1058,23 +1062,15 @@ class Renderer:
         op_all, arg_all = program.op, program.arg
 
         def tile(t: int, bufs: list[NDArray[Any]]) -> None:
-            keep = np.zeros(n, np.bool_)
-            keep[plan.leaf[plan.start[t] : plan.start[t + 1]]] = True
-            op, arg, ids = prune_program(op_all, arg_all, keep)
+            c0, r0, c1, r1 = plan.tile(t)
+            op, arg, ids, off, lr0, lc0, lh, lw = tile_leaves(
+                op_all, arg_all, plan.leaf[plan.start[t] : plan.start[t + 1]], n, rects, c0, r0, c1, r1)
             if len(ids) == 0:
                 return
-            c0, r0, c1, r1 = plan.tile(t)
-            sub = rects[ids]
-            lc0, lr0 = np.maximum(sub[:, 0], c0), np.maximum(sub[:, 1], r0)
-            lw, lh = np.minimum(sub[:, 2], c1) - lc0, np.minimum(sub[:, 3], r1) - lr0
-            size = lw * lh
-            off = np.zeros(len(ids), np.int64)
-            np.cumsum(size[:-1], out=off[1:])
             kf, vf, kb, vb = bufs
-            for j, i in enumerate(ids.tolist()):
-                prep, proj = store[i]  # type: ignore[misc]
-                _fill_leaf(kf, vf, kb, vb, int(off[j]), int(lr0[j]), int(lc0[j]), int(lh[j]), int(lw[j]), proj,
-                           *prep.quads(), float(nears[i]), persp)
+            for i, o, y, x, hh, ww in zip(ids.tolist(), off.tolist(), lr0.tolist(), lc0.tolist(), lh.tolist(), lw.tolist()):
+                proj, quads, vout, vin = store[i]  # type: ignore[misc]
+                _fill_leaf(kf, vf, kb, vb, o, y, x, hh, ww, proj, quads, vout, vin, nears_l[i], persp)
             _resolve_packed(kf, vf, kb, vb, off, lr0, lc0, lh, lw, ids, op, arg, _table(op, arg, len(ids)), base,
                             r0, r1, c0, c1, zkey, value, gid, *_resolve_scratch(len(ids), len(op)))
 
@@ -1128,10 +1124,9 @@ class Renderer:
                         prep = self._prepare(*bands)
                         seconds += time.perf_counter() - t
                         view_dependent = bool(view_dependent) or bands[1]
-                        prep.quads()  # made here, not in the workers
                         proj = np.empty((7, len(prep.vertices)))
                         project_kernel(prep.vertices, eye, a, b, persp, proj, 0, len(prep.vertices))
-                        store[i] = (prep, proj)
+                        store[i] = (proj, *prep.quads())  # quads made here, not in the workers
                         report.add(1)
                         with cond:
                             if state["error"] is not None:

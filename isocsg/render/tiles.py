@@ -32,7 +32,9 @@ from ..camera import Camera
 from ..geometry.primitives import Box, Primitive, Sphere, Truncus
 from .raster import NEAR_RELATIVE
 
-__all__ = ["LeafGeometry", "leaf_geometry", "leaf_rects", "combine_rects", "prune_program", "TilePlan", "plan_tiles"]
+__all__ = [
+    "LeafGeometry", "leaf_geometry", "leaf_rects", "combine_rects", "prune_program", "tile_leaves", "TilePlan", "plan_tiles",
+]
 
 #: Bytes per pixel of a leaf in the per-pixel CSG buffers: front and back depth
 #: keys (float64) and values (float32).
@@ -317,6 +319,42 @@ def prune_program(
             rarg[k] = j
             j += 1
     return rop, rarg, ids
+
+
+@njit(cache=True, nogil=True)
+def tile_leaves(
+    op: NDArray[np.int8], arg: NDArray[np.int64], leaves: NDArray[np.int32], n: int, rects: NDArray[np.int64],
+    c0: int, r0: int, c1: int, r1: int,
+) -> tuple[NDArray[np.int8], NDArray[np.int64], NDArray[np.int64], NDArray[np.int64], NDArray[np.int64],
+           NDArray[np.int64], NDArray[np.int64], NDArray[np.int64]]:
+    """A tile's pruned program and its leaves' packed rectangles.
+
+    ``leaves`` are the indices (among ``n``) of the leaves whose rectangle
+    meets the tile ``(c0, r0, c1, r1)``. Returns :func:`prune_program`'s
+    ``op``, ``arg`` and leaf ids, then per remaining leaf the offset of its
+    rectangle in packed buffers, its first row and column and its rows and
+    columns (the leaf's rectangle clipped to the tile).
+    """
+    keep = np.zeros(n, np.bool_)
+    for i in leaves:
+        keep[i] = True
+    pop, parg, ids = prune_program(op, arg, keep)
+    m = len(ids)
+    off = np.empty(m, np.int64)
+    lr0 = np.empty(m, np.int64)
+    lc0 = np.empty(m, np.int64)
+    lh = np.empty(m, np.int64)
+    lw = np.empty(m, np.int64)
+    pos = 0
+    for j in range(m):
+        i = ids[j]
+        lc0[j] = max(rects[i, 0], c0)
+        lr0[j] = max(rects[i, 1], r0)
+        lw[j] = min(rects[i, 2], c1) - lc0[j]
+        lh[j] = min(rects[i, 3], r1) - lr0[j]
+        off[j] = pos
+        pos += lw[j] * lh[j]
+    return pop, parg, ids, off, lr0, lc0, lh, lw
 
 
 # ------------------------------------------------------------------ tile plan
