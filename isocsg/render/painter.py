@@ -1109,8 +1109,7 @@ class Renderer:
         view_dependent: bool | None = None
         specs = [((cap,), np.float64), ((cap,), np.float32), ((cap,), np.float64), ((cap,), np.float32)]
         with SCRATCH.borrow(specs * threads) as arrays:
-            bufs = [arrays[4 * k : 4 * k + 4] for k in range(threads)]
-            bufs = [[bk[0], bk[1], bk[2], bk[3]] for bk in bufs]
+            bufs = [arrays[4 * k : 4 * k + 4] for k in range(threads)]  # each thread's tile buffers
             workers = [_pool().submit(work, bufs[k], True) for k in range(1, threads)]
             try:
                 pos = 0
