@@ -40,6 +40,7 @@ from ..errors import InvalidLightError, InvalidParameterError
 from ..geometry.primitives import Box, ConvexPolyhedron, Primitive, Sphere, Truncus
 from ..lighting.lights import DirectionalLight, PointLight
 from ..lighting.shading import Material
+from ..limits import memory_budget
 from .families import FieldFamily, diffuse_family, diffuse_levels, incidence, specular_families
 from .model import BandMesh, ContourFamily, Lamina, LaminaSet
 from .polyhedron import face_laminae, polyhedron_surface
@@ -48,17 +49,29 @@ from .split import split_by_levels
 from .surface import Surface
 from .truncus import light_frame, paper_levels, truncus_laminae, truncus_surface
 
-__all__ = ["build_laminae", "clear_cache", "cache_info", "MAX_CONTOURS"]
+__all__ = ["build_laminae", "clear_cache", "cache_info", "cache_bytes", "MAX_CONTOURS"]
 
 #: Largest number of contours per family.
 MAX_CONTOURS = 4096
 
 Light = PointLight | DirectionalLight
 
-_CACHE: OrderedDict[tuple[Any, ...], LaminaSet] = OrderedDict()
-_CACHE_SIZE = 128
+#: Most bytes of lamina sets kept by the cache (never more than a quarter of
+#: :func:`isocsg.limits.memory_budget`); the least recently used go first.
+CACHE_BYTES = 1 << 30
+
+# key -> (lamina set, its bytes as counted by _nbytes)
+_CACHE: OrderedDict[tuple[Any, ...], tuple[LaminaSet, int]] = OrderedDict()
 _LOCK = threading.Lock()
 _STATS = {"hits": 0, "misses": 0}
+_BYTES = [0]  # bytes of the sets kept
+
+
+def _nbytes(ls: LaminaSet) -> int:
+    """Bytes held by a lamina set: its arrays, and 256 per lamina object."""
+    b = ls.bands
+    n = sum(a.nbytes for a in (b.vertices, b.triangles, b.value_out, b.value_in, b.band))
+    return n + sum(lam.vertices.nbytes + 256 for lam in ls.laminae) + 1024
 
 
 def clear_cache() -> None:
@@ -66,10 +79,15 @@ def clear_cache() -> None:
     with _LOCK:
         _CACHE.clear()
         _STATS.update(hits=0, misses=0)
+        _BYTES[0] = 0
 
 
 def cache_info() -> dict[str, int]:
     """Cache statistics: ``hits``, ``misses`` and ``size``.
+
+    The cache keeps at most :data:`CACHE_BYTES` of lamina sets (and a quarter
+    of the memory budget), dropping the least recently used first;
+    :func:`cache_bytes` tells how many it holds.
 
     Examples
     --------
@@ -78,6 +96,12 @@ def cache_info() -> dict[str, int]:
     """
     with _LOCK:
         return {**_STATS, "size": len(_CACHE)}
+
+
+def cache_bytes() -> int:
+    """Bytes of the lamina sets the cache holds (arrays, and 256 per lamina object)."""
+    with _LOCK:
+        return _BYTES[0]
 
 
 def _check_lights(lights: Sequence[Any]) -> tuple[Light, ...]:
@@ -167,13 +191,17 @@ def build_laminae(
         if hit is not None:
             _CACHE.move_to_end(key)
             _STATS["hits"] += 1
-            return hit
+            return hit[0]
         _STATS["misses"] += 1
     out = _build(primitive, lights_t, mat, n, None if eye_t is None else np.asarray(eye_t))
+    size = _nbytes(out)
+    limit = min(CACHE_BYTES, memory_budget() // 4)
     with _LOCK:
-        _CACHE[key] = out
-        while len(_CACHE) > _CACHE_SIZE:
-            _CACHE.popitem(last=False)
+        old = _CACHE.pop(key, None)
+        _BYTES[0] += size - (old[1] if old is not None else 0)
+        _CACHE[key] = (out, size)
+        while _BYTES[0] > limit and len(_CACHE) > 1:
+            _BYTES[0] -= _CACHE.popitem(last=False)[1][1]
     return out
 
 

@@ -8,13 +8,19 @@ depend on the viewpoint) are filled with :mod:`isocsg.render.raster`:
   faces are culled), filled straight into the image with a depth test;
 - an object that is a CSG tree fills the front *and* back surface of every
   leaf (the ray's interval ``[front, back]`` through the convex leaf) inside
-  the object's screen rectangle (known from the tree before any band is
+  the leaf's screen rectangle (known from the tree before any band is
   built, so that a worker fills each leaf while the next one is built), then
   the tree's postfix program is evaluated
   per pixel on those intervals: the first depth where the result turns from
   outside to inside is the visible point. If it is leaf i's front the pixel
   shows i's ``value_out``; if it is leaf i's back (the inside of a cut), i's
-  ``value_in``. Results that are empty along the ray stay background.
+  ``value_in``. Results that are empty along the ray stay background. Small
+  trees use buffers over the object's whole rectangle; larger ones screen
+  tiles that each hold only the leaves meeting them, with the program pruned
+  to those (:mod:`isocsg.render.tiles`), so that memory grows with the pixels
+  and the leaves' screen footprints, not with leaves x pixels;
+- each primitive gets as many contours as its size on screen can show
+  (:func:`screen_contours`), so that leaves of a few pixels cost little.
 
 Several objects: the nearest visible point wins.
 """
@@ -27,7 +33,7 @@ import os
 import sys
 import threading
 import time
-from collections import OrderedDict
+from collections import OrderedDict, deque
 from collections.abc import Callable, Sequence
 from concurrent.futures import Future, ThreadPoolExecutor, wait
 from dataclasses import dataclass, field
@@ -40,16 +46,18 @@ from numpy.typing import NDArray
 from .._validation import integer
 from ..camera import Camera
 from ..csg.surface import surface_from_bands
-from ..csg.program import OP_DIFFERENCE, OP_UNION, Program, evaluate_mask
+from ..csg.program import Program, evaluate_mask
 from ..csg.tree import CSGNode
 from ..errors import InvalidParameterError
 from ..geometry.primitives import Primitive, Sphere
 from ..laminae.model import BandMesh
+from ..limits import check_memory, memory_budget
 from ..scene.model import MAX_CONTOURS, Scene
 from .raster import (
-    _RAW, NEAR_RELATIVE, camera_affine, fill_front_kernel, fill_projected, fill_rect, key_to_depth, pair_quads, project_kernel,
+    _RAW, camera_affine, fill_front_kernel, fill_projected, fill_rect, key_to_depth, pair_quads, project_kernel,
 )
 from .scratch import SCRATCH
+from .tiles import LEAF_PIXEL_BYTES, LeafGeometry, combine_rects, leaf_geometry, leaf_rects, plan_tiles, tile_leaves
 
 __all__ = ["RenderResult", "RenderTimings", "Renderer", "render", "default_renderer"]
 
@@ -158,12 +166,11 @@ def _cached_table(op: bytes, arg: bytes, n: int) -> NDArray[np.bool_]:
     return truth_table(np.frombuffer(op, np.int8), np.frombuffer(arg, np.int64), n)
 
 
-def _table(program: Program) -> NDArray[np.bool_]:
-    """The program's truth table if it has at most :data:`_TABLE_LEAVES` leaves, else empty."""
-    n = program.n_leaves
+def _table(op: NDArray[np.int8], arg: NDArray[np.int64], n: int) -> NDArray[np.bool_]:
+    """The truth table of a program of ``n`` leaves if ``n`` is at most :data:`_TABLE_LEAVES`, else empty."""
     if n > _TABLE_LEAVES:
         return np.zeros(0, np.bool_)
-    return _cached_table(program.op.tobytes(), program.arg.tobytes(), n)
+    return _cached_table(op.tobytes(), arg.tobytes(), n)
 
 
 @njit(cache=True, inline="always")
@@ -201,32 +208,56 @@ def resolve_csg(
     the pixel shows that leaf's front value, otherwise the back value of a leaf
     that leaves.
     """
-    n = kf.shape[0]
-    _resolve_rows(kf, vf, kb, vb, op, arg, table, gid_base, ox, oy, zkey, value, gid,
-                  np.empty(n), np.empty(n, np.int8), np.zeros(n, np.bool_), np.zeros(max(len(op), 1), np.bool_))
+    n, h, w = kf.shape
+    lr0 = np.full(n, oy, np.int64)
+    lc0 = np.full(n, ox, np.int64)
+    lh = np.full(n, h, np.int64)
+    lw = np.full(n, w, np.int64)
+    off = np.arange(n) * (h * w)
+    _resolve_packed(np.ascontiguousarray(kf).reshape(-1), np.ascontiguousarray(vf).reshape(-1),
+                    np.ascontiguousarray(kb).reshape(-1), np.ascontiguousarray(vb).reshape(-1),
+                    off, lr0, lc0, lh, lw, np.arange(n), op, arg, table, gid_base, oy, oy + h, ox, ox + w,
+                    zkey, value, gid, np.empty(n), np.empty(n, np.int8), np.zeros(n, np.bool_),
+                    np.zeros(max(len(op), 1), np.bool_), np.zeros(n, np.int64))
 
 
 # Without reference counting (see isocsg.render.raster): the per-pixel loop
 # passes arrays to inlined helpers, two atomic operations each otherwise.
 @njit(**_RAW)
-def _resolve_rows(
+def _resolve_packed(
     kf: NDArray[np.float64], vf: NDArray[np.float32], kb: NDArray[np.float64], vb: NDArray[np.float32],
-    op: NDArray[np.int8], arg: NDArray[np.int64], table: NDArray[np.bool_], gid_base: int, ox: int, oy: int,
+    off: NDArray[np.int64], lr0: NDArray[np.int64], lc0: NDArray[np.int64], lh: NDArray[np.int64], lw: NDArray[np.int64],
+    ids: NDArray[np.int64], op: NDArray[np.int8], arg: NDArray[np.int64], table: NDArray[np.bool_], gid_base: int,
+    row0: int, row1: int, col0: int, col1: int,
     zkey: NDArray[np.float64], value: NDArray[np.float32], gid: NDArray[np.int32],
     nxt: NDArray[np.float64], phase: NDArray[np.int8], inside: NDArray[np.bool_], stack: NDArray[np.bool_],
+    loc: NDArray[np.int64],
 ) -> None:
+    """:func:`resolve_csg` over image rows ``row0 .. row1`` and columns ``col0 .. col1``
+    with each leaf's buffers packed: leaf ``i`` covers the rectangle of
+    ``lh[i]`` rows and ``lw[i]`` columns at ``(lr0[i], lc0[i])``, stored row by
+    row from ``off[i]`` in the flat ``kf``, ``vf``, ``kb``, ``vb``; outside it
+    the leaf is absent. Pixels take the label ``gid_base + ids[i]``. The last
+    five arrays are scratch (``n`` entries each, ``stack`` one per instruction)."""
     # phase: 0 before the leaf's front, 1 inside, 2 past its back.
-    n, h, w = kf.shape
+    n = off.shape[0]
     use_table = len(table) > 0
-    for r in range(h):
-        for c in range(w):
-            rr = r + oy
-            cc = c + ox
+    for rr in range(row0, row1):
+        for cc in range(col0, col1):
             covered = False
             mask = 0
             for i in range(n):
-                f = kf[i, r, c]
-                b = kb[i, r, c]
+                dr = rr - lr0[i]
+                dc = cc - lc0[i]
+                if dr < 0 or dr >= lh[i] or dc < 0 or dc >= lw[i]:
+                    inside[i] = False
+                    phase[i] = 2
+                    nxt[i] = np.inf
+                    continue
+                k = off[i] + dr * lw[i] + dc
+                loc[i] = k
+                f = kf[k]
+                b = kb[k]
                 if b == -np.inf:  # no interval (a front without a back is a zero-width sliver)
                     inside[i] = False
                     phase[i] = 2
@@ -266,7 +297,7 @@ def _resolve_rows(
                     if phase[i] == 0:
                         inside[i] = True
                         phase[i] = 1
-                        nxt[i] = kb[i, r, c]
+                        nxt[i] = kb[loc[i]]
                         if nxt[i] <= group:  # zero width: in and out at once
                             inside[i] = False
                             phase[i] = 2
@@ -285,8 +316,8 @@ def _resolve_rows(
                 now = _state(table, op, arg, inside, stack, mask)
                 if now and not state:
                     zkey[rr, cc] = key
-                    value[rr, cc] = vf[shown, r, c] if shown_front else vb[shown, r, c]
-                    gid[rr, cc] = gid_base + shown
+                    value[rr, cc] = vf[loc[shown]] if shown_front else vb[loc[shown]]
+                    gid[rr, cc] = gid_base + ids[shown]
                     break
                 state = now
 
@@ -312,6 +343,116 @@ class _Prepared:
         while len(self.projs) <= k:
             self.projs.append(np.empty((7, len(self.vertices))))
         return self.projs[k]
+
+    @property
+    def nbytes(self) -> int:
+        """About the bytes held: the arrays, the quads (at most 24 bytes per triangle) and one projection."""
+        nv, nt = len(self.vertices), len(self.triangles)
+        return self.vertices.nbytes + self.triangles.nbytes + 8 * nt + 24 * nt + 56 * nv
+
+
+class _ByteCache:
+    """A least-recently-used mapping bounded by the bytes of its values (as told on insertion).
+
+    The most recent entry is kept even when it alone is over the limit.
+    """
+
+    def __init__(self, limit: int) -> None:
+        self.limit = int(limit)
+        self.nbytes = 0
+        self._items: OrderedDict[Any, tuple[Any, int]] = OrderedDict()
+
+    def __len__(self) -> int:
+        return len(self._items)
+
+    def get(self, key: Any) -> Any:
+        hit = self._items.get(key)
+        if hit is None:
+            return None
+        self._items.move_to_end(key)
+        return hit[0]
+
+    def put(self, key: Any, value: Any, nbytes: int) -> None:
+        old = self._items.pop(key, None)
+        if old is not None:
+            self.nbytes -= old[1]
+        self._items[key] = (value, int(nbytes))
+        self.nbytes += int(nbytes)
+        limit = min(self.limit, memory_budget() // 8)
+        while self.nbytes > limit and len(self._items) > 1:
+            self.nbytes -= self._items.popitem(last=False)[1][1]
+
+    def clear(self) -> None:
+        self._items.clear()
+        self.nbytes = 0
+
+
+#: Bytes kept by a renderer's caches of prepared band meshes (their arrays,
+#: shared with the lamina cache's band meshes, and the quads and projection
+#: made from them), CSG surfaces and leaf geometry (each; never more than an
+#: eighth of the memory budget).
+PREPARED_CACHE_BYTES = 1 << 30
+SURFACE_CACHE_BYTES = 512 << 20
+GEOMETRY_CACHE_BYTES = 64 << 20
+
+#: Under ``csg="auto"``, the clipped surface is built (on an object's second
+#: view) only for trees of at most this many leaves whose bands have at most
+#: this many triangles in all; larger trees stay per pixel on every view.
+SURFACE_MAX_LEAVES = 64
+SURFACE_MAX_TRIANGLES = 1_000_000
+
+#: Per-pixel CSG over the object's whole screen rectangle (one buffer per
+#: leaf) for at most this many leaves and bytes; screen tiles otherwise.
+DENSE_MAX_LEAVES = 8
+DENSE_MAX_BYTES = 256 << 20
+#: Most bytes of one tile's per-pixel CSG buffers (each thread has its own).
+TILE_MAX_BYTES = 32 << 20
+#: Bytes per pixel of the image buffers (depth key, label and value).
+IMAGE_PIXEL_BYTES = 16
+
+#: Contour counts by screen size (``Renderer(adaptive_contours=True)``): a
+#: leaf whose unclipped screen rectangle spans ``e`` pixels, ``e`` at most
+#: ``2 * CONTOUR_LADDER[-1]`` (64), gets the smallest count of the ladder that is
+#: at least ``e / 2`` (bands about two pixels apart) and never more than asked;
+#: larger leaves get the requested count, so the error still shrinks as the
+#: count grows wherever a leaf is large enough to show it. With ``N`` contours
+#: a band's value step is about ``range / N``: :data:`MIN_CONTOURS` (the first
+#: rung) keeps every pixel within 0.05 of the intensity range.
+CONTOUR_LADDER = np.array([16, 32])
+MIN_CONTOURS = int(CONTOUR_LADDER[0])
+PIXELS_PER_BAND = 2.0
+
+
+def screen_contours(extent: NDArray[np.float64], contours: int) -> NDArray[np.int64]:
+    """Contour count of each leaf from its screen size in pixels (see :data:`CONTOUR_LADDER`).
+
+    Examples
+    --------
+    >>> screen_contours(np.array([3.0, 40.0, 64.0, 65.0, 1000.0, np.inf]), 64).tolist()
+    [16, 32, 32, 64, 64, 64]
+    >>> screen_contours(np.array([3.0, 40.0]), 8).tolist()
+    [8, 8]
+    """
+    with np.errstate(invalid="ignore"):
+        need = np.ceil(np.asarray(extent, dtype=np.float64) / PIXELS_PER_BAND)
+    small = need <= CONTOUR_LADDER[-1]
+    rung = CONTOUR_LADDER[np.searchsorted(CONTOUR_LADDER, np.where(small, need, 0))]
+    return np.where(small, np.minimum(rung, contours), contours).astype(np.int64)
+
+
+@njit(cache=True, nogil=True)
+def _fill_leaf(
+    kf: NDArray[np.float64], vf: NDArray[np.float32], kb: NDArray[np.float64], vb: NDArray[np.float32],
+    off: int, r0: int, c0: int, h: int, w: int, proj: NDArray[np.float64], quads: NDArray[np.int32],
+    vout: NDArray[np.float32], vin: NDArray[np.float32], near: float, perspective: bool,
+) -> None:
+    """One leaf's front and back surfaces into its packed rectangle (see :func:`_resolve_packed`)."""
+    zf = kf[off : off + h * w].reshape((h, w))
+    zb = kb[off : off + h * w].reshape((h, w))
+    zf[:] = np.inf
+    zb[:] = -np.inf
+    fill_projected(proj, quads, vout, vin, near, perspective, c0, r0, zf, vf[off : off + h * w].reshape((h, w)),
+                   zb, vb[off : off + h * w].reshape((h, w)))
 
 
 _HUGE_PAGE = 2 << 20
@@ -357,8 +498,17 @@ class Renderer:
         manifold3d Booleans) and cached, so that every later view is a plain
         fill. ``"auto"``: per pixel the first time an object is rendered; from
         its second render on (a new viewpoint of the same bands), the surface,
-        built then and cached. Objects with view-dependent (specular) bands
-        use ``"pixel"`` under ``"auto"``.
+        built then and cached, if the tree has at most
+        :data:`SURFACE_MAX_LEAVES` leaves and its bands at most
+        :data:`SURFACE_MAX_TRIANGLES` triangles (larger trees stay per pixel).
+        Objects with view-dependent (specular) bands use ``"pixel"`` under
+        ``"auto"``.
+    adaptive_contours : bool, default True
+        Build primitives under 64 pixels across on screen with fewer contours
+        (:func:`screen_contours`: bands about two pixels apart, at least
+        :data:`MIN_CONTOURS`, never more than requested), so that leaves of a
+        few pixels cost little. ``False``: every primitive gets the
+        requested count.
 
     Examples
     --------
@@ -381,25 +531,29 @@ class Renderer:
     (0, -1)
     """
 
-    def __init__(self, build_laminae: BandBuilder | None = None, *, csg: str = "auto") -> None:
+    def __init__(
+        self, build_laminae: BandBuilder | None = None, *, csg: str = "auto", adaptive_contours: bool = True,
+    ) -> None:
         if csg not in CSG_METHODS:
             raise InvalidParameterError(f"csg must be one of {', '.join(CSG_METHODS)}, got {csg!r}")
         self._build = build_laminae
         self.csg = csg
+        self.adaptive_contours = bool(adaptive_contours)
         # CSG surfaces (leaf band meshes clipped in 3D), keyed by the leaves' band
         # meshes and the program: (band meshes kept alive, leaf parts).
-        self._surfaces: OrderedDict[tuple[Any, ...], tuple[tuple[BandMesh, ...], list[tuple[int, _Prepared]]]] = (
-            OrderedDict()
-        )
-        # Arrays converted for the kernels, keyed by the band mesh's identity.
-        self._prepared: OrderedDict[int, tuple[BandMesh, _Prepared]] = OrderedDict()
+        self._surfaces = _ByteCache(SURFACE_CACHE_BYTES)
+        # Arrays converted for the kernels, keyed by the band mesh's identity: (band mesh, prepared).
+        self._prepared = _ByteCache(PREPARED_CACHE_BYTES)
+        # Leaves' bounding boxes, keyed by the program's identity: (program, LeafGeometry).
+        self._geometry = _ByteCache(GEOMETRY_CACHE_BYTES)
         # Image-sized buffers reused from one render to the next once no result
         # refers to them any more: fresh pages cost more than the fill itself.
         self._pool: OrderedDict[tuple[str, tuple[int, ...], str], list[NDArray[Any]]] = OrderedDict()
         self._lock = threading.Lock()
         # id of a pooled buffer -> (row0, row1, col0, col1) that may differ from its background.
         self._dirty: dict[int, tuple[int, int, int, int]] = {}
-        # CSG objects already resolved per pixel -> whether their bands were view-dependent.
+        # CSG objects already resolved per pixel -> whether they stay per pixel (view-dependent
+        # bands, or a surface too large to build). Keys only: bounded by a count.
         self._csg_seen: OrderedDict[tuple[Any, ...], bool] = OrderedDict()
 
     def _buffer(self, name: str, shape: tuple[int, ...], dtype: Any) -> NDArray[Any]:
@@ -442,22 +596,45 @@ class Renderer:
     def _bands(
         self, primitive: Primitive, lights: Sequence[Any], material: Any, contours: int, eye: Any
     ) -> tuple[BandMesh, bool]:
-        out = self._builder()(primitive, tuple(lights), material, contours, eye=eye)
+        out = self._builder()(primitive, tuple(lights), material, int(contours), eye=eye)
         bands = getattr(out, "bands", out)
         if not isinstance(bands, BandMesh):
             raise InvalidParameterError(f"build_laminae must return a LaminaSet or BandMesh, got {type(out).__name__}")
         return bands, bool(getattr(out, "view_dependent", False))
 
-    def _per_pixel(self, key: tuple[Any, ...]) -> bool:
+    def _leaf_geometry(self, program: Program) -> LeafGeometry:
+        """The leaves' bounding boxes (kept per program: a tree is usually rendered again)."""
+        hit = self._geometry.get(id(program))
+        if hit is not None and hit[0] is program:
+            return hit[1]
+        geom = leaf_geometry(program.leaves)
+        self._geometry.put(id(program), (program, geom), geom.nbytes + 64 * program.n_leaves)
+        return geom
+
+    def _contours(self, extent: NDArray[np.float64], contours: int) -> NDArray[np.int64]:
+        if not self.adaptive_contours:
+            return np.full(len(extent), contours, np.int64)
+        return screen_contours(extent, contours)
+
+    def _per_pixel(self, key: tuple[Any, ...], n_leaves: int) -> bool:
         """Whether the CSG object ``(shape, lights, material, contours)`` is resolved per pixel,
-        decided before its bands are built: ``"pixel"``; ``"auto"`` on its first render
-        or when its bands were view-dependent."""
+        decided before its bands are built: ``"pixel"``; under ``"auto"`` on its first render,
+        for trees of more than :data:`SURFACE_MAX_LEAVES` leaves, or when an earlier render
+        found its bands view-dependent or too many for a surface."""
         if self.csg != "auto":
             return self.csg == "pixel"
+        if n_leaves > SURFACE_MAX_LEAVES:
+            return True
         seen = self._csg_seen.get(key)
         if seen is not None:
             self._csg_seen.move_to_end(key)
         return seen is None or seen
+
+    def _seen(self, key: tuple[Any, ...], per_pixel: bool) -> None:
+        self._csg_seen[key] = per_pixel
+        self._csg_seen.move_to_end(key)
+        while len(self._csg_seen) > 256:
+            self._csg_seen.popitem(last=False)
 
     def _surface(
         self, program: Program, built: list[tuple[BandMesh, bool]]
@@ -466,25 +643,24 @@ class Renderer:
 
         Called once :meth:`_per_pixel` has declined: under ``csg="auto"`` from
         the second render of an object with view-independent bands (a first
-        render costs no Boolean), under ``"surface"`` always (for specular
-        bands: built every time). Surfaces of view-independent bands are kept.
+        render costs no Boolean) and few enough band triangles, under
+        ``"surface"`` always (for specular bands: built every time). Surfaces
+        of view-independent bands are kept.
         """
         bands = tuple(b for b, _ in built)
         view_dependent = any(v for _, v in built)
-        if view_dependent and self.csg == "auto":
+        if self.csg == "auto" and (view_dependent or sum(len(b.triangles) for b in bands) > SURFACE_MAX_TRIANGLES):
             return None
         key = (tuple(id(b) for b in bands), program.op.tobytes(), program.arg.tobytes())
         hit = self._surfaces.get(key)
         # The ids of band meshes that were dropped may be reused: compare the objects too.
         if hit is not None and all(x is y for x, y in zip(hit[0], bands)):
-            self._surfaces.move_to_end(key)
             return hit[1]
         surface = surface_from_bands(program, bands)
         parts = [(int(i), self._prepare(surface.leaf_bands(int(i)), True)) for i in np.unique(surface.leaf)]
         if not view_dependent:
-            self._surfaces[key] = (bands, parts)
-            while len(self._surfaces) > 64:
-                self._surfaces.popitem(last=False)
+            nbytes = sum(p.nbytes for _, p in parts) + sum(b.vertices.nbytes + 28 * len(b.triangles) for b in bands)
+            self._surfaces.put(key, (bands, parts), nbytes)
         return parts
 
     def _prepare(self, bands: BandMesh, view_dependent: bool) -> _Prepared:
@@ -494,7 +670,6 @@ class Renderer:
         key = id(bands)
         hit = self._prepared.get(key)
         if hit is not None and hit[0] is bands:
-            self._prepared.move_to_end(key)
             return hit[1]
         vertices = np.ascontiguousarray(bands.vertices, dtype=np.float64)
         triangles = np.ascontiguousarray(bands.triangles, dtype=np.int32)
@@ -512,10 +687,30 @@ class Renderer:
             )
         prep = _Prepared(vertices, triangles, value_out, value_in, [])
         if not view_dependent:
-            self._prepared[key] = (bands, prep)
-            while len(self._prepared) > 256:
-                self._prepared.popitem(last=False)
+            self._prepared.put(key, (bands, prep), prep.nbytes)
         return prep
+
+    def clear_caches(self) -> None:
+        """Forget the prepared band meshes, CSG surfaces and leaf geometry this renderer keeps."""
+        with self._lock:
+            self._prepared.clear()
+            self._surfaces.clear()
+            self._geometry.clear()
+            self._csg_seen.clear()
+
+    def cache_info(self) -> dict[str, int]:
+        """Entries and bytes of the renderer's caches (``prepared``, ``surfaces``, ``geometry``).
+
+        Examples
+        --------
+        >>> sorted(Renderer().cache_info())
+        ['geometry', 'geometry_bytes', 'prepared', 'prepared_bytes', 'surfaces', 'surfaces_bytes']
+        """
+        out: dict[str, int] = {}
+        for name, cache in (("prepared", self._prepared), ("surfaces", self._surfaces), ("geometry", self._geometry)):
+            out[name] = len(cache)
+            out[f"{name}_bytes"] = cache.nbytes
+        return out
 
     def render(
         self,
@@ -535,7 +730,9 @@ class Renderer:
         contours : int, optional
             Contours per light family; defaults to ``scene.render.contours``.
         progress : callable, optional
-            Called as ``progress(done, total)`` after each primitive is filled.
+            Called as ``progress(done, total)`` as the primitives (CSG leaves
+            included) are built and filled, ``total`` being their number; the
+            last call is ``progress(total, total)``.
 
         Returns
         -------
@@ -545,6 +742,10 @@ class Renderer:
         ------
         InvalidParameterError
             On a non-scene argument, a bad camera or contour count.
+        ResourceLimitError
+            When the image's buffers, or the per-pixel CSG buffers of a tile
+            of the smallest size, would exceed :func:`isocsg.limits.memory_budget`
+            (raised before they are allocated).
         """
         with self._lock:
             return self._render(scene, camera, contours, progress)
@@ -562,12 +763,10 @@ class Renderer:
 
         t0 = time.perf_counter()
         H, W = cam.height, cam.width
+        check_memory(f"render: {W} x {H} image", H * W * IMAGE_PIXEL_BYTES)
         persp = not cam.orthographic
         a, b = camera_affine(cam)
         eye = cam.eye_array
-        # Near plane at a tiny fraction of the scene's depth (bounded by the objects' bounding boxes).
-        far = max((_far_depth(obj.shape.bounds, a[3], eye) for obj in scene.objects), default=1.0)
-        near = NEAR_RELATIVE * max(far if far > 0 else 1.0, 1e-300)
         # Depth keys and labels are private: only the rectangle the previous
         # render wrote needs resetting. The image is the caller's, so all of it
         # is reset (the fills write each visible value straight into it).
@@ -585,55 +784,73 @@ class Renderer:
         # Labels: one per (object, leaf); a pixel's label maps to both.
         obj_of: list[int] = []
         leaf_of: list[int] = []
-        plain: list[tuple[_Prepared, int]] = []  # front fills: (mesh, label)
+        plain: list[tuple[_Prepared, int, float]] = []  # front fills: (mesh, label, near plane)
         programs = [obj.shape.program() if isinstance(obj.shape, CSGNode) else None for obj in scene.objects]
         total = sum(1 if prog is None else prog.n_leaves for prog in programs)
-        resolved = 0  # leaves of the objects resolved per pixel so far
+        report = _Progress(progress, total)
         for k, (obj, prog) in enumerate(zip(scene.objects, programs)):
             base = len(obj_of)
             if prog is None:
                 obj_of.append(k)
                 leaf_of.append(0)
-                t = time.perf_counter()
-                plain.append((self._prepare(*self._bands(obj.shape, scene.lights, obj.material, n_contours, cam.eye)), base))
-                build += time.perf_counter() - t
+                rects, nears, extent = leaf_rects(leaf_geometry([obj.shape]), cam)
+                if rects[0, 0] < rects[0, 2] and rects[0, 1] < rects[0, 3]:  # on screen
+                    t = time.perf_counter()
+                    n_k = int(self._contours(extent, n_contours)[0])
+                    bands = self._bands(obj.shape, scene.lights, obj.material, n_k, cam.eye)
+                    plain.append((self._prepare(*bands), base, float(nears[0])))
+                    build += time.perf_counter() - t
+                report.add(1)
                 continue
             leaves, program = prog.leaves, prog
             obj_of.extend([k] * len(leaves))
             leaf_of.extend(range(len(leaves)))
+            rects, nears, extent = leaf_rects(self._leaf_geometry(program), cam)
+            counts = self._contours(extent, n_contours)
+            rect = tuple(int(x) for x in combine_rects(program.op, program.arg, rects))
             seen_key = (obj.shape, scene.lights, obj.material, n_contours)
             built: list[tuple[BandMesh, bool]] | None = None
             parts = None
-            if not self._per_pixel(seen_key):
+            if not (rect[0] < rect[2] and rect[1] < rect[3]):  # off screen
+                report.add(len(leaves))
+                continue
+            if not self._per_pixel(seen_key, len(leaves)):
                 t = time.perf_counter()
-                built = [self._bands(p, scene.lights, obj.material, n_contours, cam.eye) for p in leaves]
+                built = [self._bands(p, scene.lights, obj.material, c, cam.eye) for p, c in zip(leaves, counts.tolist())]
                 build += time.perf_counter() - t
                 parts = self._surface(program, built)
+                if parts is None and self.csg == "auto":
+                    self._seen(seen_key, True)  # view-dependent or too large: per pixel from now on
             if parts is not None:
-                plain.extend((prep, base + i) for i, prep in parts)
+                plain.extend((prep, base + i, float(nears[i])) for i, prep in parts)
+                report.add(len(leaves))
                 continue
             if resets:  # the image buffers must be clean before an object is resolved into them
                 _reset(resets)
                 resets = []
-            rect, seconds, built = self._render_per_pixel(
-                leaves, program, scene.lights, obj.material, n_contours, cam, near, base, zkey, value, gid, built,
-            )
+            n = len(leaves)
+            w, h = rect[2] - rect[0], rect[3] - rect[1]
+            if n <= DENSE_MAX_LEAVES and n * h * w * LEAF_PIXEL_BYTES <= min(DENSE_MAX_BYTES, memory_budget() // 4):
+                seconds, view_dependent = self._render_per_pixel(
+                    leaves, program, scene.lights, obj.material, counts, cam, rect, nears, base, zkey, value, gid,
+                    built, report,
+                )
+            else:
+                seconds, view_dependent = self._render_tiled(
+                    leaves, program, scene.lights, obj.material, counts, cam, rects, rect, nears, base,
+                    zkey, value, gid, built, report,
+                )
             build += seconds
-            grow(rect)
-            if built:  # under "auto": the surface on the next render, unless the bands depend on the view
-                self._csg_seen[seen_key] = any(v for _, v in built)
-                while len(self._csg_seen) > 256:
-                    self._csg_seen.popitem(last=False)
-            resolved += len(leaves)
-            if progress is not None:
-                progress(resolved, total)
+            grow((rect[1], rect[3], rect[0], rect[2]))
+            if view_dependent is not None and seen_key not in self._csg_seen:
+                # Under "auto": the surface on the next render, unless the bands depend on the view.
+                self._seen(seen_key, view_dependent)
         # Front fills of the plain meshes (and of CSG surfaces), in row stripes.
         n = _STRIPES if H * W >= _STRIPE_MIN_PIXELS and H >= 2 * _STRIPES else 1
-        for p, _ in plain:
+        for p, _, _ in plain:
             p.proj(n - 1)  # scratch for every thread, allocated here (not in the threads)
-        grow(self._fill_primitives(plain, resets, key_rect, a, b, eye, persp, near, n, zkey, value, gid))
-        if progress is not None and resolved < total:
-            progress(total, total)
+        grow(self._fill_primitives(plain, resets, key_rect, a, b, eye, persp, n, zkey, value, gid))
+        report.finish()
         self._dirty[id(zkey)] = self._dirty[id(gid)] = tuple(dirty)
         t2 = time.perf_counter()
         # Label -1 (background) maps to -1 through the leading entry of each table.
@@ -646,28 +863,28 @@ class Renderer:
         return RenderResult(value, RenderTimings(build, t2 - t0 - build), cam, label_view, key_view, object_of, leaf_of_arr)
 
     def _fill_primitives(
-        self, plain: list[tuple[_Prepared, int]], resets: Any, key_rect: tuple[int, int, int, int],
-        a: NDArray[np.float64], b: NDArray[np.float64], eye: NDArray[np.float64], persp: bool, near: float, n: int,
+        self, plain: list[tuple[_Prepared, int, float]], resets: Any, key_rect: tuple[int, int, int, int],
+        a: NDArray[np.float64], b: NDArray[np.float64], eye: NDArray[np.float64], persp: bool, n: int,
         zkey: NDArray[np.float64], value: NDArray[np.float32], gid: NDArray[np.int32],
     ) -> list[int]:
         """Meshes filled by their front faces, in one pass of ``n`` concurrent row stripes.
 
-        ``plain`` holds (mesh, label) pairs: plain primitives and the leaf
-        parts of CSG surfaces. Each stripe resets its rows of the buffers,
-        projects the meshes itself (cheaper than waiting for a shared
+        ``plain`` holds (mesh, label, near plane) triples: plain primitives and
+        the leaf parts of CSG surfaces. Each stripe resets its rows of the
+        buffers, projects the meshes itself (cheaper than waiting for a shared
         projection) and fills their front faces with the depth test. Returns
         the rectangle written.
         """
         H, W = zkey.shape
         bounds = np.empty((n, 4), np.int64)
         bounds[:] = (H, 0, W, 0)
-        meshes = [(p, base, *p.quads()[:2]) for p, base in plain]  # quads made here, not in the threads
+        meshes = [(p, base, near, *p.quads()[:2]) for p, base, near in plain]  # quads made here, not in the threads
 
         def stripe(k: int, r0: int, r1: int) -> None:
             for buf, (q0, q1, c0, c1), bg in resets:
                 if max(q0, r0) < min(q1, r1) and c0 < c1:
                     fill_rect(buf, max(q0, r0), min(q1, r1), c0, c1, bg)
-            for p, base, quads, quad_value in meshes:
+            for p, base, near, quads, quad_value in meshes:
                 proj = p.proj(k)
                 project_kernel(p.vertices, eye, a, b, persp, proj, 0, len(p.vertices))
                 fill_front_kernel(
@@ -686,30 +903,27 @@ class Renderer:
 
     def _render_per_pixel(
         self, leaves: Sequence[Primitive], program: Program, lights: Sequence[Any], material: Any,
-        contours: int, cam: Camera, near: float, base: int,
+        counts: NDArray[np.int64], cam: Camera, rect: tuple[int, int, int, int], nears: NDArray[np.float64], base: int,
         zkey: NDArray[np.float64], value: NDArray[np.float32], gid: NDArray[np.int32],
-        built: list[tuple[BandMesh, bool]] | None,
-    ) -> tuple[tuple[int, int, int, int], float, list[tuple[BandMesh, bool]]]:
-        """Resolve one CSG object per pixel on its leaves' depth intervals, into the image buffers.
+        built: list[tuple[BandMesh, bool]] | None, report: _Progress,
+    ) -> tuple[float, bool | None]:
+        """Resolve a small CSG object per pixel over its whole screen rectangle, into the image buffers.
 
         Each leaf's front and back surfaces are filled into buffers of the
-        object's screen rectangle (:func:`_screen_rect`, known before any band
-        exists), then row stripes resolve the program per pixel. When the
-        leaves' bands are not given they are obtained here, leaf by leaf, and
-        each leaf is filled by a worker thread while the next one is built;
-        the last leaf's rows are shared by both threads.
-        Returns the rectangle written (rows, then columns), the seconds spent
-        obtaining bands and the bands (none if the object is off screen).
+        object's screen rectangle (known before any band exists), then row
+        stripes resolve the program per pixel. When the leaves' bands are not
+        given they are obtained here, leaf by leaf, and each leaf is filled by
+        a worker thread while the next one is built; the last leaf's rows are
+        shared by both threads. Returns the seconds spent obtaining bands and
+        whether any was view-dependent.
         """
-        ox, oy, x1, y1 = _screen_rect(program, cam, near)
+        ox, oy, x1, y1 = rect
         w, h = x1 - ox, y1 - oy
-        if w <= 0 or h <= 0:
-            return (0, 0, 0, 0), 0.0, built or []
         n = len(leaves)
         persp = not cam.orthographic
         a, b = camera_affine(cam)
         eye = cam.eye_array
-        table = _table(program)
+        table = _table(program.op, program.arg, n)
         # One worker fills the leaves in order (they share projection scratch
         # when a primitive repeats): the kernels release the GIL, so building
         # the next leaf's bands goes on meanwhile.
@@ -721,8 +935,8 @@ class Renderer:
             def fill_rows(i: int, p: _Prepared, proj: NDArray[np.float64], r0: int, r1: int) -> None:
                 fill_rect(kf[i], r0, r1, 0, w, np.inf)
                 fill_rect(kb[i], r0, r1, 0, w, -np.inf)
-                fill_projected(proj, *p.quads(), near, persp, ox, oy + r0, kf[i, r0:r1], vf[i, r0:r1], kb[i, r0:r1],
-                               vb[i, r0:r1])
+                fill_projected(proj, *p.quads(), float(nears[i]), persp, ox, oy + r0, kf[i, r0:r1], vf[i, r0:r1],
+                               kb[i, r0:r1], vb[i, r0:r1])
 
             def leaf(i: int, p: _Prepared) -> None:
                 proj = p.proj()
@@ -750,16 +964,17 @@ class Renderer:
                 drain()
 
             seconds = 0.0
+            view_dependent = False
             # Spheres last: their bands take longer to build than to fill, other
             # leaves' the other way round (Johnson's rule for a two-stage line).
             order = sorted(range(n), key=lambda i: isinstance(leaves[i], Sphere)) if built is None else range(n)
-            out: list[tuple[BandMesh, bool] | None] = [None] * n
             seen: set[int] = set()
             try:
                 for k, i in enumerate(order):
                     t = time.perf_counter()
-                    out[i] = built[i] if built is not None else self._bands(leaves[i], lights, material, contours, cam.eye)
-                    prep = self._prepare(*out[i])
+                    bands = built[i] if built is not None else self._bands(leaves[i], lights, material, counts[i], cam.eye)
+                    view_dependent |= bands[1]
+                    prep = self._prepare(*bands)
                     seconds += time.perf_counter() - t
                     if not concurrent:
                         leaf(i, prep)
@@ -768,33 +983,218 @@ class Renderer:
                     else:
                         jobs.append(_leaf_pool().submit(leaf, i, prep))
                     seen.add(id(prep))
+                    report.add(1)
             finally:
                 wait(jobs)  # never give back buffers that a worker still writes
             for job in jobs:
                 job.result()
+            flat = [x.reshape(-1) for x in (kf, vf, kb, vb)]
+            lr0, lc0 = np.full(n, oy, np.int64), np.full(n, ox, np.int64)
+            lh, lw = np.full(n, h, np.int64), np.full(n, w, np.int64)
+            off, ids = np.arange(n, dtype=np.int64) * (h * w), np.arange(n, dtype=np.int64)
 
             def stripe(r0: int, r1: int) -> None:
-                resolve_csg(kf[:, r0:r1], vf[:, r0:r1], kb[:, r0:r1], vb[:, r0:r1], program.op, program.arg, table, base, ox, oy + r0,
-                            zkey, value, gid)
+                _resolve_packed(*flat, off, lr0, lc0, lh, lw, ids, program.op, program.arg, table, base,
+                                oy + r0, oy + r1, ox, x1, zkey, value, gid, *_resolve_scratch(n, len(program.op)))
 
             cuts = [h * k // _STRIPES for k in range(_STRIPES + 1)] if concurrent and h >= 2 * _STRIPES else [0, h]
             futures = [_pool().submit(stripe, r0, r1) for r0, r1 in zip(cuts[1:-1], cuts[2:])]
             stripe(cuts[0], cuts[1])
             for f in futures:
                 f.result()
-        return (oy, y1, ox, x1), seconds, [b for b in out if b is not None]
+        return seconds, view_dependent
+
+    def _render_tiled(
+        self, leaves: Sequence[Primitive], program: Program, lights: Sequence[Any], material: Any,
+        counts: NDArray[np.int64], cam: Camera, rects: NDArray[np.int64], rect: tuple[int, int, int, int],
+        nears: NDArray[np.float64], base: int, zkey: NDArray[np.float64], value: NDArray[np.float32],
+        gid: NDArray[np.int32], built: list[tuple[BandMesh, bool]] | None, report: _Progress,
+    ) -> tuple[float, bool | None]:
+        """Resolve a CSG object per pixel in screen tiles (see :mod:`isocsg.render.tiles`).
+
+        The tiles (:func:`~isocsg.render.tiles.plan_tiles`) are done row of
+        tiles by row of tiles: the main thread builds the leaves whose
+        rectangle begins in the next row while the other threads take the
+        tiles of the rows already built from a queue (and the main thread
+        too, once it is more than :data:`_ROWS_AHEAD` rows ahead or done
+        building). A tile fills its leaves, each over its own part of the
+        tile, into the thread's buffers and resolves the program pruned to
+        them. A leaf's projection is dropped once every row it meets is done,
+        and leaves off screen are never built. Returns the seconds spent
+        obtaining bands and whether any was view-dependent (None if none
+        was built).
+        """
+        n = len(leaves)
+        persp = not cam.orthographic
+        a, b = camera_affine(cam)
+        eye = cam.eye_array
+        budget = memory_budget()
+        # Leaves clipped to the object's rectangle (the tiles' domain); those outside it are empty.
+        rects = rects.copy()
+        np.clip(rects[:, 0::2], rect[0], rect[2], out=rects[:, 0::2])
+        np.clip(rects[:, 1::2], rect[1], rect[3], out=rects[:, 1::2])
+        plan = plan_tiles(rects, rect, len(program.op), min(TILE_MAX_BYTES, budget // 8))
+        threads = max(1, _STRIPES)
+        cap = max(plan.max_pixels, 1)
+        H, W = zkey.shape
+        check_memory(
+            f"render: per-pixel CSG of {n} leaves in {plan.side}-pixel tiles ({threads} x {cap} leaf pixels)",
+            threads * cap * LEAF_PIXEL_BYTES + H * W * IMAGE_PIXEL_BYTES,
+        )
+        side, oy = plan.side, rect[1]
+        on = np.flatnonzero((rects[:, 0] < rects[:, 2]) & (rects[:, 1] < rects[:, 3]))
+        first = (rects[on, 1] - oy) // side
+        last = np.minimum((rects[on, 3] - 1 - oy) // side, plan.rows - 1)
+        order = np.argsort(first, kind="stable")
+        build_order, build_row = on[order].tolist(), np.maximum(first[order], 0).tolist()
+        release: list[list[int]] = [[] for _ in range(plan.rows)]
+        for i, r in zip(on.tolist(), last.tolist()):
+            release[max(int(r), 0)].append(i)
+        occupied = np.diff(plan.start) > 0
+        row_tiles = [np.flatnonzero(occupied[r * plan.cols : (r + 1) * plan.cols]) + r * plan.cols for r in range(plan.rows)]
+        # Per leaf built and not yet dropped: its projection, quads and their values.
+        store: list[tuple[NDArray[Any], ...] | None] = [None] * n
+        nears_l = nears.tolist()
+        cond = threading.Condition()
+        queue: deque[int] = deque()
+        left = [len(t) for t in row_tiles]  # tiles of each row not done yet
+        state: dict[str, Any] = {"open": True, "error": None, "queued": 0, "done": 0}  # rows queued, rows done (prefix)
+        op_all, arg_all = program.op, program.arg
+
+        def tile(t: int, bufs: list[NDArray[Any]]) -> None:
+            c0, r0, c1, r1 = plan.tile(t)
+            op, arg, ids, off, lr0, lc0, lh, lw = tile_leaves(
+                op_all, arg_all, plan.leaf[plan.start[t] : plan.start[t + 1]], n, rects, c0, r0, c1, r1)
+            if len(ids) == 0:
+                return
+            kf, vf, kb, vb = bufs
+            for i, o, y, x, hh, ww in zip(ids.tolist(), off.tolist(), lr0.tolist(), lc0.tolist(), lh.tolist(), lw.tolist()):
+                proj, quads, vout, vin = store[i]  # type: ignore[misc]
+                _fill_leaf(kf, vf, kb, vb, o, y, x, hh, ww, proj, quads, vout, vin, nears_l[i], persp)
+            _resolve_packed(kf, vf, kb, vb, off, lr0, lc0, lh, lw, ids, op, arg, _table(op, arg, len(ids)), base,
+                            r0, r1, c0, c1, zkey, value, gid, *_resolve_scratch(len(ids), len(op)))
+
+        def work(bufs: list[NDArray[Any]], wait_for_more: bool, limit: int = -1) -> None:
+            """Take tiles from the queue until it is empty and closed (``limit`` tiles at most)."""
+            while limit != 0:
+                with cond:
+                    while not queue and state["open"] and wait_for_more and state["error"] is None:
+                        cond.wait()
+                    if not queue or state["error"] is not None:
+                        return
+                    t = queue.popleft()
+                try:
+                    tile(t, bufs)
+                except BaseException as exc:  # handed to the main thread
+                    with cond:
+                        state["error"] = state["error"] or exc
+                        queue.clear()
+                        cond.notify_all()
+                    return
+                with cond:
+                    row = t // plan.cols
+                    left[row] -= 1
+                    finish_rows()
+                    cond.notify_all()
+                limit -= 1
+
+        def finish_rows() -> None:
+            # Called under the lock: advance the prefix of finished rows, dropping leaves no row needs.
+            while state["done"] < state["queued"] and left[state["done"]] == 0:
+                for i in release[state["done"]]:
+                    store[i] = None
+                state["done"] += 1
+
+        seconds = 0.0
+        view_dependent: bool | None = None
+        specs = [((cap,), np.float64), ((cap,), np.float32), ((cap,), np.float64), ((cap,), np.float32)]
+        with SCRATCH.borrow(specs * threads) as arrays:
+            bufs = [arrays[4 * k : 4 * k + 4] for k in range(threads)]  # each thread's tile buffers
+            workers = [_pool().submit(work, bufs[k], True) for k in range(1, threads)]
+            try:
+                pos = 0
+                for row in range(plan.rows):
+                    while pos < len(build_order) and build_row[pos] <= row:
+                        i = build_order[pos]
+                        pos += 1
+                        t = time.perf_counter()
+                        bands = built[i] if built is not None else self._bands(
+                            leaves[i], lights, material, counts[i], cam.eye)
+                        prep = self._prepare(*bands)
+                        seconds += time.perf_counter() - t
+                        view_dependent = bool(view_dependent) or bands[1]
+                        proj = np.empty((7, len(prep.vertices)))
+                        project_kernel(prep.vertices, eye, a, b, persp, proj, 0, len(prep.vertices))
+                        store[i] = (proj, *prep.quads())  # quads made here, not in the workers
+                        report.add(1)
+                        with cond:
+                            if state["error"] is not None:
+                                break
+                    with cond:
+                        if state["error"] is not None:
+                            break
+                        queue.extend(row_tiles[row].tolist())
+                        state["queued"] = row + 1
+                        finish_rows()
+                        cond.notify_all()
+                    # Too far ahead of the tiles: help with them before building more.
+                    while True:
+                        with cond:
+                            ahead = state["queued"] - state["done"] > _ROWS_AHEAD and bool(queue)
+                        if not ahead:
+                            break
+                        work(bufs[0], False, 1)
+            finally:
+                with cond:
+                    state["open"] = False
+                    if sys.exc_info()[0] is not None:
+                        queue.clear()
+                    cond.notify_all()
+                work(bufs[0], False)
+                wait(workers)  # never give back buffers that a worker still writes
+            for f in workers:
+                f.result()
+            if state["error"] is not None:
+                raise state["error"]
+        report.add(n - len(build_order))  # leaves off screen: nothing to build
+        return seconds, view_dependent
 
 
-def _far_depth(bounds: NDArray[np.float64], forward: NDArray[np.float64], eye: NDArray[np.float64]) -> float:
-    """Largest camera depth (in absolute value) of a bounding box, bounded through its circumscribed sphere."""
-    lo, hi = np.asarray(bounds, dtype=np.float64)
-    return abs(float(forward @ (0.5 * (lo + hi) - eye))) + 0.5 * float(np.linalg.norm(hi - lo))
+class _Progress:
+    """``progress(done, total)`` calls, at most about 200 per render and always the last."""
+
+    def __init__(self, callback: Callable[[int, int], None] | None, total: int) -> None:
+        self.callback = callback
+        self.total = total
+        self.done = 0
+        self._step = max(1, total // 200)
+        self._last = -1
+
+    def add(self, k: int) -> None:
+        self.done += k
+        if self.callback is not None and k and (self.done - self._last >= self._step or self.done >= self.total):
+            self._last = self.done
+            self.callback(self.done, self.total)
+
+    def finish(self) -> None:
+        if self.callback is not None and self._last < self.total:
+            self._last = self.total
+            self.callback(self.total, self.total)
+
+
+@njit(cache=True, nogil=True)
+def _resolve_scratch(
+    n: int, n_op: int,
+) -> tuple[NDArray[np.float64], NDArray[np.int8], NDArray[np.bool_], NDArray[np.bool_], NDArray[np.int64]]:
+    """The scratch arrays of :func:`_resolve_packed` for ``n`` leaves and ``n_op`` instructions."""
+    return (np.empty(n), np.empty(n, np.int8), np.zeros(n, np.bool_), np.zeros(max(n_op, 1), np.bool_),
+            np.zeros(n, np.int64))
 
 
 Rect = tuple[int, int, int, int]  # (col0, row0, col1, row1), half-open
 
 
-def _screen_rect(program: Program, cam: Camera, near: float) -> Rect:
+def _screen_rect(program: Program, cam: Camera) -> Rect:
     """A pixel rectangle holding the projection of a solid, known before its bands exist.
 
     A primitive's rectangle bounds the projection of its bounding box (the
@@ -802,52 +1202,10 @@ def _screen_rect(program: Program, cam: Camera, near: float) -> Rect:
     (exact, from the tangents in the camera's two vertical planes); a union
     takes the hull of its operands', an intersection their overlap, a
     difference its first operand's. The whole image when anything reaches
-    behind the near plane.
+    behind its near plane (:func:`isocsg.render.tiles.leaf_rects`).
     """
-
-    def combine(op: int, rects: list[Rect]) -> Rect:
-        if op == OP_DIFFERENCE:
-            return rects[0]
-        pick = (min, max) if op == OP_UNION else (max, min)
-        return (pick[0](r[0] for r in rects), pick[0](r[1] for r in rects),
-                pick[1](r[2] for r in rects), pick[1](r[3] for r in rects))
-
-    return program.evaluate(lambda _, p: _leaf_rect(p, cam, near), combine)
-
-
-def _leaf_rect(solid: Primitive, cam: Camera, near: float) -> Rect:
-    """:func:`_screen_rect` of one primitive."""
-    W, H = cam.width, cam.height
-    f, r, u = cam.frame
-    m = np.stack([r, u, f])
-    lo, hi = np.asarray(solid.bounds, dtype=np.float64)
-    corners = np.array([[x, y, z] for x in (lo[0], hi[0]) for y in (lo[1], hi[1]) for z in (lo[2], hi[2])])
-    xr, yu, z = m @ (corners - cam.eye_array).T  # camera space
-    if not np.all(np.isfinite(z)) or z.min() < near:
-        return 0, 0, W, H
-    sx, sy = (xr / z, yu / z) if not cam.orthographic else (xr, yu)
-    box = [sx.min(), sx.max(), sy.min(), sy.max()]
-    if isinstance(solid, Sphere):
-        cx, cy, cz = m @ (solid.center_array - cam.eye_array)
-        rad = solid.radius
-        if cam.orthographic:
-            ball = [cx - rad, cx + rad, cy - rad, cy + rad]
-        else:
-            # x / z over the disk the sphere projects to in the (x, z) plane (likewise y): tangent lines.
-            ball = []
-            for c in (cx, cy):
-                t0, dt = math.atan2(c, cz), math.asin(min(rad / math.hypot(c, cz), 1.0))
-                ball += [math.tan(t0 - dt), math.tan(t0 + dt)]
-        box = [max(box[0], ball[0]), min(box[1], ball[1]), max(box[2], ball[2]), min(box[3], ball[3])]
-    if cam.orthographic:
-        half_h = cam.height_m / 2
-        sx_scale, sy_scale = 1.0 / (half_h * cam.aspect), 1.0 / half_h
-    else:
-        sx_scale, sy_scale = 1.0 / (cam.tan_half_fov * cam.aspect), 1.0 / cam.tan_half_fov
-    c0, c1 = (box[0] * sx_scale + 1.0) * W / 2, (box[1] * sx_scale + 1.0) * W / 2
-    r0, r1 = (1.0 - box[3] * sy_scale) * H / 2, (1.0 - box[2] * sy_scale) * H / 2
-    return (min(max(int(math.floor(c0)) - 1, 0), W), min(max(int(math.floor(r0)) - 1, 0), H),
-            min(max(int(math.ceil(c1)) + 1, 0), W), min(max(int(math.ceil(r1)) + 1, 0), H))
+    rects, _, _ = leaf_rects(leaf_geometry(program.leaves), cam)
+    return tuple(int(x) for x in combine_rects(program.op, program.arg, rects))  # type: ignore[return-value]
 
 
 def _reset(resets: Sequence[tuple[NDArray[Any], tuple[int, int, int, int], Any]]) -> None:
@@ -872,6 +1230,8 @@ _STRIPES = max(1, min(4, os.cpu_count() or 1))
 _STRIPE_MIN_PIXELS = 512 * 512
 #: Row chunks of the last CSG leaf, shared by the main thread and the leaf worker.
 _LAST_CHUNKS = 6
+#: Rows of tiles the main thread may build ahead of the tiles done.
+_ROWS_AHEAD = 2
 _POOL: ThreadPoolExecutor | None = None
 
 

@@ -1,0 +1,477 @@
+"""Screen geometry of CSG leaves and the screen tiles of per-pixel CSG.
+
+Per-pixel CSG needs, for every pixel, the depth interval of each leaf that
+covers it. Filling every leaf over the object's whole screen rectangle costs
+memory and time in leaves x pixels; here the rectangle is cut into square
+tiles instead, and each tile holds only the leaves whose screen rectangle
+meets it, each over its own part of the tile (so a tile's buffers are the sum
+of its leaves' clipped rectangles), with the tree's program pruned to those
+leaves as bounding-box pruning does in image-space CSG: a leaf absent from
+the tile drops out of a union and out of a difference's subtracted operands,
+and empties an intersection or a difference whose first operand it is
+(:meth:`isocsg.csg.program.Program.prune`, compiled here as
+:func:`prune_program`).
+
+Everything here is known before any band is built: the leaves' bounding
+boxes (:func:`leaf_geometry`), their screen rectangles, the near plane of
+each leaf and their unclipped size on screen (:func:`leaf_rects`), the
+object's rectangle (:func:`combine_rects`) and the tile plan
+(:func:`plan_tiles`).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from dataclasses import dataclass
+
+import numpy as np
+from numba import njit
+from numpy.typing import NDArray
+
+from ..camera import Camera
+from ..geometry.primitives import Box, Primitive, Sphere, Truncus
+from .raster import NEAR_RELATIVE
+
+__all__ = [
+    "LeafGeometry", "leaf_geometry", "leaf_rects", "combine_rects", "prune_program", "tile_leaves", "TilePlan", "plan_tiles",
+]
+
+#: Bytes per pixel of a leaf in the per-pixel CSG buffers: front and back depth
+#: keys (float64) and values (float32).
+LEAF_PIXEL_BYTES = 24
+
+
+@dataclass(frozen=True, slots=True, eq=False)
+class LeafGeometry:
+    """Bounding boxes of a program's leaves, and the spheres among them (arrays over the leaves).
+
+    Attributes
+    ----------
+    lo, hi : ndarray, shape (n, 3)
+        Axis-aligned bounds of each leaf.
+    sphere : ndarray of bool, shape (n,)
+    center : ndarray, shape (n, 3)
+        Sphere centres (zero for other leaves).
+    radius : ndarray, shape (n,)
+        Sphere radii (zero for other leaves).
+    """
+
+    lo: NDArray[np.float64]
+    hi: NDArray[np.float64]
+    sphere: NDArray[np.bool_]
+    center: NDArray[np.float64]
+    radius: NDArray[np.float64]
+
+    @property
+    def nbytes(self) -> int:
+        """Bytes held by the arrays."""
+        return sum(a.nbytes for a in (self.lo, self.hi, self.sphere, self.center, self.radius))
+
+
+def leaf_geometry(leaves: Sequence[Primitive]) -> LeafGeometry:
+    """The :class:`LeafGeometry` of ``leaves``.
+
+    Spheres, trunci and axis-aligned boxes are read from their parameters in
+    one vectorised pass (a primitive's ``bounds`` property costs tens of
+    microseconds, which adds up over 10 000 leaves); other primitives give
+    their ``bounds``. The boxes are those of the primitives' ``bounds``.
+
+    Examples
+    --------
+    >>> from isocsg import Cylinder, Sphere
+    >>> g = leaf_geometry([Sphere((0, 0, 0), 1), Cylinder((1, 0, 0), (0, 0, 2), 0.5)])
+    >>> g.lo.tolist(), g.hi.tolist(), g.sphere.tolist()
+    ([[-1.0, -1.0, -1.0], [0.5, -0.5, -1.0]], [[1.0, 1.0, 1.0], [1.5, 0.5, 1.0]], [True, False])
+    """
+    n = len(leaves)
+    lo = np.empty((n, 3))
+    hi = np.empty((n, 3))
+    sphere = np.zeros(n, np.bool_)
+    center = np.zeros((n, 3))
+    radius = np.zeros(n)
+    s_idx: list[int] = []
+    s_par: list[tuple[float, float, float, float]] = []
+    t_idx: list[int] = []
+    t_par: list[tuple[float, ...]] = []
+    b_idx: list[int] = []
+    b_par: list[tuple[float, ...]] = []
+    for i, p in enumerate(leaves):
+        if type(p) is Sphere:
+            s_idx.append(i)
+            s_par.append((*p.center, p.radius))
+        elif isinstance(p, Truncus):
+            t_idx.append(i)
+            t_par.append((*p.center, *p.axis, p.r1, p.r2))
+        elif type(p) is Box:
+            b_idx.append(i)
+            b_par.append((*p.center, *p.size))
+        else:
+            lo[i], hi[i] = np.asarray(p.bounds, dtype=np.float64)
+            if isinstance(p, Sphere):
+                sphere[i] = True
+                center[i] = p.center
+                radius[i] = p.radius
+    if s_idx:
+        a = np.asarray(s_par, dtype=np.float64)
+        lo[s_idx] = a[:, :3] - a[:, 3:]
+        hi[s_idx] = a[:, :3] + a[:, 3:]
+        sphere[s_idx] = True
+        center[s_idx] = a[:, :3]
+        radius[s_idx] = a[:, 3]
+    if t_idx:
+        a = np.asarray(t_par, dtype=np.float64)
+        c, ax, r1, r2 = a[:, :3], a[:, 3:6], a[:, 6:7], a[:, 7:8]
+        u = ax / np.linalg.norm(ax, axis=1, keepdims=True)
+        ext = np.sqrt(np.clip(1 - u**2, 0, 1))  # half-extent of a unit circle normal to the axis
+        e1, e2 = c + ax / 2, c - ax / 2
+        lo[t_idx] = np.minimum(e1 - r1 * ext, e2 - r2 * ext)
+        hi[t_idx] = np.maximum(e1 + r1 * ext, e2 + r2 * ext)
+    if b_idx:
+        a = np.asarray(b_par, dtype=np.float64)
+        lo[b_idx] = a[:, :3] - a[:, 3:] / 2
+        hi[b_idx] = a[:, :3] + a[:, 3:] / 2
+    return LeafGeometry(lo, hi, sphere, center, radius)
+
+
+Rects = NDArray[np.int64]  # (n, 4): col0, row0, col1, row1, half-open
+
+
+def leaf_rects(geom: LeafGeometry, cam: Camera) -> tuple[Rects, NDArray[np.float64], NDArray[np.float64]]:
+    """Pixel rectangles holding each leaf's projection, its near plane and its size on screen.
+
+    A leaf's rectangle bounds the projection of its bounding box (the hull of
+    the corners' projections) and, for a sphere, of the sphere itself (exact,
+    from the tangents in the camera's two vertical planes), with one pixel of
+    margin, clipped to the image; the whole image when the box reaches behind
+    the leaf's near plane.
+
+    Returns
+    -------
+    rects : ndarray of int64, shape (n, 4)
+        ``(col0, row0, col1, row1)``, half-open (empty when off screen).
+    near : ndarray, shape (n,)
+        The near-plane depth of each leaf: ``raster.NEAR_RELATIVE`` times its
+        own farthest depth (bounded through the box's circumscribed sphere),
+        so that a far object does not clip a near one.
+    extent : ndarray, shape (n,)
+        The larger side in pixels of the unclipped rectangle (``inf`` when
+        the leaf reaches behind its near plane).
+    """
+    W, H = cam.width, cam.height
+    n = len(geom.lo)
+    f, r, u = cam.frame
+    m = np.stack([r, u, f])
+    eye = cam.eye_array
+    mid, half = 0.5 * (geom.lo + geom.hi), 0.5 * (geom.hi - geom.lo)
+    far = np.abs((mid - eye) @ f) + np.linalg.norm(half, axis=1)
+    near = NEAR_RELATIVE * np.maximum(np.where(far > 0, far, 1.0), 1e-300)
+    signs = np.array([[x, y, z] for x in (-1, 1) for y in (-1, 1) for z in (-1, 1)], dtype=np.float64)
+    corners = mid[:, None, :] + signs[None] * half[:, None, :]  # (n, 8, 3)
+    cs = (corners - eye) @ m.T  # camera space (n, 8, 3)
+    xr, yu, z = cs[..., 0], cs[..., 1], cs[..., 2]
+    behind = ~np.all(np.isfinite(cs), axis=(1, 2)) | (z.min(axis=1) < near)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        sx, sy = (xr, yu) if cam.orthographic else (xr / z, yu / z)
+    box = np.stack([sx.min(axis=1), sx.max(axis=1), sy.min(axis=1), sy.max(axis=1)], axis=1)
+    if geom.sphere.any():
+        k = np.flatnonzero(geom.sphere & ~behind)
+        cc = (geom.center[k] - eye) @ m.T
+        rad = geom.radius[k]
+        if cam.orthographic:
+            ball = np.stack([cc[:, 0] - rad, cc[:, 0] + rad, cc[:, 1] - rad, cc[:, 1] + rad], axis=1)
+        else:
+            # x / z over the disk the sphere projects to in the (x, z) plane (likewise y): tangent lines.
+            cols = []
+            for c in (cc[:, 0], cc[:, 1]):
+                t0 = np.arctan2(c, cc[:, 2])
+                dt = np.arcsin(np.minimum(rad / np.hypot(c, cc[:, 2]), 1.0))
+                cols += [np.tan(t0 - dt), np.tan(t0 + dt)]
+            ball = np.stack(cols, axis=1)
+        sub = box[k]
+        box[k] = np.stack([np.maximum(sub[:, 0], ball[:, 0]), np.minimum(sub[:, 1], ball[:, 1]),
+                           np.maximum(sub[:, 2], ball[:, 2]), np.minimum(sub[:, 3], ball[:, 3])], axis=1)
+    if cam.orthographic:
+        half_h = cam.height_m / 2
+        sx_scale, sy_scale = 1.0 / (half_h * cam.aspect), 1.0 / half_h
+    else:
+        sx_scale, sy_scale = 1.0 / (cam.tan_half_fov * cam.aspect), 1.0 / cam.tan_half_fov
+    with np.errstate(invalid="ignore", over="ignore"):
+        c0 = (box[:, 0] * sx_scale + 1.0) * W / 2
+        c1 = (box[:, 1] * sx_scale + 1.0) * W / 2
+        r0 = (1.0 - box[:, 3] * sy_scale) * H / 2
+        r1 = (1.0 - box[:, 2] * sy_scale) * H / 2
+        extent = np.maximum(c1 - c0, r1 - r0) + 2.0
+    extent[behind | ~np.isfinite(extent)] = np.inf
+    rects = np.empty((n, 4), np.int64)
+    big = 4.0 * (W + H) + 16.0  # clamp before the integer conversion
+    rects[:, 0] = np.clip(np.floor(np.clip(c0, -big, big)) - 1, 0, W)
+    rects[:, 1] = np.clip(np.floor(np.clip(r0, -big, big)) - 1, 0, H)
+    rects[:, 2] = np.clip(np.ceil(np.clip(c1, -big, big)) + 1, 0, W)
+    rects[:, 3] = np.clip(np.ceil(np.clip(r1, -big, big)) + 1, 0, H)
+    rects[behind] = (0, 0, W, H)
+    return rects, near, extent
+
+
+@njit(cache=True)
+def combine_rects(op: NDArray[np.int8], arg: NDArray[np.int64], rects: NDArray[np.int64]) -> NDArray[np.int64]:
+    """The object's rectangle from its leaves' (a :class:`~isocsg.csg.program.Program`'s arrays).
+
+    A union takes the hull of its operands' rectangles, an intersection their
+    overlap, a difference its first operand's. Empty rectangles are empty
+    sets (they leave a union's hull alone and empty an intersection).
+    """
+    stack = np.zeros((max(len(op), 1), 4), np.int64)
+    sp = 0
+    for k in range(len(op)):
+        o = op[k]
+        if o == 0:
+            stack[sp] = rects[arg[k]]
+            sp += 1
+            continue
+        base = sp - arg[k]
+        c0, r0, c1, r1 = stack[base, 0], stack[base, 1], stack[base, 2], stack[base, 3]
+        if o == 1:  # union: hull of the non-empty operands
+            empty = not (c0 < c1 and r0 < r1)
+            for s in range(base + 1, sp):
+                if not (stack[s, 0] < stack[s, 2] and stack[s, 1] < stack[s, 3]):
+                    continue
+                if empty:
+                    c0, r0, c1, r1 = stack[s, 0], stack[s, 1], stack[s, 2], stack[s, 3]
+                    empty = False
+                else:
+                    c0, r0 = min(c0, stack[s, 0]), min(r0, stack[s, 1])
+                    c1, r1 = max(c1, stack[s, 2]), max(r1, stack[s, 3])
+        elif o == 2:  # intersection
+            for s in range(base + 1, sp):
+                c0, r0 = max(c0, stack[s, 0]), max(r0, stack[s, 1])
+                c1, r1 = min(c1, stack[s, 2]), min(r1, stack[s, 3])
+        if not (c0 < c1 and r0 < r1):
+            c0, r0, c1, r1 = 0, 0, 0, 0
+        stack[base, 0], stack[base, 1], stack[base, 2], stack[base, 3] = c0, r0, c1, r1
+        sp = base + 1
+    return stack[0].copy()
+
+
+@njit(cache=True, nogil=True)
+def prune_program(
+    op: NDArray[np.int8], arg: NDArray[np.int64], keep: NDArray[np.bool_],
+) -> tuple[NDArray[np.int8], NDArray[np.int64], NDArray[np.int64]]:
+    """:meth:`Program.prune <isocsg.csg.program.Program.prune>` on the program's arrays, compiled.
+
+    Returns the pruned ``op`` and ``arg`` (leaves renumbered in order) and,
+    per remaining leaf, its index in the original program; all empty when
+    the result is the empty set.
+    """
+    n = len(op)
+    out_op = np.empty(n, np.int8)
+    out_arg = np.empty(n, np.int64)
+    start = np.empty(n, np.int64)  # per stack entry: where its code begins in the output
+    empty = np.empty(n, np.bool_)
+    sp = 0
+    m = 0  # output length
+    for k in range(n):
+        o = op[k]
+        if o == 0:
+            start[sp] = m
+            if keep[arg[k]]:
+                out_op[m] = 0
+                out_arg[m] = arg[k]
+                m += 1
+                empty[sp] = False
+            else:
+                empty[sp] = True
+            sp += 1
+            continue
+        base = sp - arg[k]
+        kept = 0
+        any_empty = False
+        for s in range(base, sp):
+            if empty[s]:
+                any_empty = True
+            else:
+                kept += 1
+        s0 = start[base]
+        if kept == 0 or (o == 2 and any_empty) or (o == 3 and empty[base]):
+            m = s0  # drop the operands' code: the node is empty
+            empty[base] = True
+        elif kept > 1:
+            out_op[m] = o
+            out_arg[m] = kept
+            m += 1
+            empty[base] = False
+        else:
+            empty[base] = False  # one operand left: it is the node
+        start[base] = s0
+        sp = base + 1
+    if sp == 0 or empty[0]:
+        return np.empty(0, np.int8), np.empty(0, np.int64), np.empty(0, np.int64)
+    rop = out_op[:m].copy()
+    rarg = out_arg[:m].copy()
+    count = 0
+    for k in range(m):
+        if rop[k] == 0:
+            count += 1
+    ids = np.empty(count, np.int64)
+    j = 0
+    for k in range(m):
+        if rop[k] == 0:
+            ids[j] = rarg[k]
+            rarg[k] = j
+            j += 1
+    return rop, rarg, ids
+
+
+@njit(cache=True, nogil=True)
+def tile_leaves(
+    op: NDArray[np.int8], arg: NDArray[np.int64], leaves: NDArray[np.int32], n: int, rects: NDArray[np.int64],
+    c0: int, r0: int, c1: int, r1: int,
+) -> tuple[NDArray[np.int8], NDArray[np.int64], NDArray[np.int64], NDArray[np.int64], NDArray[np.int64],
+           NDArray[np.int64], NDArray[np.int64], NDArray[np.int64]]:
+    """A tile's pruned program and its leaves' packed rectangles.
+
+    ``leaves`` are the indices (among ``n``) of the leaves whose rectangle
+    meets the tile ``(c0, r0, c1, r1)``. Returns :func:`prune_program`'s
+    ``op``, ``arg`` and leaf ids, then per remaining leaf the offset of its
+    rectangle in packed buffers, its first row and column and its rows and
+    columns (the leaf's rectangle clipped to the tile).
+    """
+    keep = np.zeros(n, np.bool_)
+    for i in leaves:
+        keep[i] = True
+    pop, parg, ids = prune_program(op, arg, keep)
+    m = len(ids)
+    off = np.empty(m, np.int64)
+    lr0 = np.empty(m, np.int64)
+    lc0 = np.empty(m, np.int64)
+    lh = np.empty(m, np.int64)
+    lw = np.empty(m, np.int64)
+    pos = 0
+    for j in range(m):
+        i = ids[j]
+        lc0[j] = max(rects[i, 0], c0)
+        lr0[j] = max(rects[i, 1], r0)
+        lw[j] = min(rects[i, 2], c1) - lc0[j]
+        lh[j] = min(rects[i, 3], r1) - lr0[j]
+        off[j] = pos
+        pos += lw[j] * lh[j]
+    return pop, parg, ids, off, lr0, lc0, lh, lw
+
+
+# ------------------------------------------------------------------ tile plan
+#: Tile sides tried, largest first (pixels).
+TILE_SIDES = (256, 128, 64, 32, 16, 8)
+# Cost model of a tile plan (seconds on the reference machine, measured on
+# plates with holes): per tile (Python and the program's pruning, the latter
+# per instruction), per leaf in a tile (a compiled call and a pass over the
+# leaf's polygons), per pixel and leaf of a tile (the resolution's loop).
+_COST_TILE = 40e-6
+_COST_INSTRUCTION = 2e-9
+_COST_PAIR = 5e-6
+_COST_PIXEL_LEAF = 2e-9
+
+
+@njit(cache=True)
+def _tile_counts(
+    rects: NDArray[np.int64], ox: int, oy: int, side: int, ntr: int, ntc: int,
+) -> tuple[NDArray[np.int64], NDArray[np.int64]]:
+    """Per tile: the leaves whose rectangle meets it and the pixels of their clipped rectangles."""
+    counts = np.zeros(ntr * ntc, np.int64)
+    pixels = np.zeros(ntr * ntc, np.int64)
+    for i in range(rects.shape[0]):
+        c0, r0, c1, r1 = rects[i, 0], rects[i, 1], rects[i, 2], rects[i, 3]
+        if c0 >= c1 or r0 >= r1:
+            continue
+        for tr in range((r0 - oy) // side, (r1 - 1 - oy) // side + 1):
+            ty = oy + tr * side
+            h = min(r1, ty + side) - max(r0, ty)
+            for tc in range((c0 - ox) // side, (c1 - 1 - ox) // side + 1):
+                tx = ox + tc * side
+                t = tr * ntc + tc
+                counts[t] += 1
+                pixels[t] += h * (min(c1, tx + side) - max(c0, tx))
+    return counts, pixels
+
+
+@njit(cache=True)
+def _tile_lists(
+    rects: NDArray[np.int64], ox: int, oy: int, side: int, ntr: int, ntc: int, counts: NDArray[np.int64],
+) -> tuple[NDArray[np.int64], NDArray[np.int32]]:
+    """The leaves of each tile in increasing order: ``leaf[start[t]:start[t + 1]]``."""
+    start = np.zeros(ntr * ntc + 1, np.int64)
+    for t in range(ntr * ntc):
+        start[t + 1] = start[t] + counts[t]
+    fill = start[:-1].copy()
+    leaf = np.empty(start[-1], np.int32)
+    for i in range(rects.shape[0]):
+        c0, r0, c1, r1 = rects[i, 0], rects[i, 1], rects[i, 2], rects[i, 3]
+        if c0 >= c1 or r0 >= r1:
+            continue
+        for tr in range((r0 - oy) // side, (r1 - 1 - oy) // side + 1):
+            for tc in range((c0 - ox) // side, (c1 - 1 - ox) // side + 1):
+                t = tr * ntc + tc
+                leaf[fill[t]] = i
+                fill[t] += 1
+    return start, leaf
+
+
+@dataclass(frozen=True, slots=True, eq=False)
+class TilePlan:
+    """Square tiles of side ``side`` over the rectangle ``rect`` (col0, row0, col1, row1).
+
+    Tile ``t = tr * cols + tc`` covers rows ``row0 + tr * side ..`` and columns
+    ``col0 + tc * side ..`` (clipped to ``rect``); its leaves are
+    ``leaf[start[t]:start[t + 1]]``, increasing. ``max_pixels`` is the most
+    leaf pixels (the sum of the clipped leaf rectangles) of any tile.
+    """
+
+    rect: tuple[int, int, int, int]
+    side: int
+    rows: int
+    cols: int
+    start: NDArray[np.int64]
+    leaf: NDArray[np.int32]
+    max_pixels: int
+
+    def tile(self, t: int) -> tuple[int, int, int, int]:
+        """Tile ``t`` as (col0, row0, col1, row1)."""
+        tr, tc = divmod(t, self.cols)
+        c0, r0 = self.rect[0] + tc * self.side, self.rect[1] + tr * self.side
+        return c0, r0, min(c0 + self.side, self.rect[2]), min(r0 + self.side, self.rect[3])
+
+
+def plan_tiles(rects: Rects, rect: tuple[int, int, int, int], instructions: int, max_bytes: float) -> TilePlan:
+    """The tile side of least estimated cost whose tiles' buffers fit ``max_bytes``.
+
+    ``rects`` must lie inside ``rect`` (empty ones are left out).
+
+    Each candidate side of :data:`TILE_SIDES` is costed from its tiles' leaf
+    counts and leaf pixels (a fixed cost per tile and per program
+    instruction pruned, per leaf in a tile, per pixel and leaf of a tile);
+    sides whose fullest tile needs more than ``max_bytes`` of per-pixel CSG
+    buffers (:data:`LEAF_PIXEL_BYTES` per leaf pixel) are not taken unless
+    none fits, and then the one needing the least.
+    """
+    ox, oy, x1, y1 = rect
+    inside = (rects[:, 0] >= ox) & (rects[:, 1] >= oy) & (rects[:, 2] <= x1) & (rects[:, 3] <= y1)
+    empty = (rects[:, 0] >= rects[:, 2]) | (rects[:, 1] >= rects[:, 3])
+    if not np.all(inside | empty):
+        raise ValueError("leaf rectangles must lie inside the tiled rectangle")
+    best: tuple[bool, float, int, NDArray[np.int64], int, int, int] | None = None
+    for side in TILE_SIDES:
+        ntr, ntc = -(-(y1 - oy) // side), -(-(x1 - ox) // side)
+        counts, pixels = _tile_counts(rects, ox, oy, side, ntr, ntc)
+        occupied = counts > 0
+        areas = (np.minimum(side, (y1 - oy) - side * np.arange(ntr))[:, None]
+                 * np.minimum(side, (x1 - ox) - side * np.arange(ntc))[None, :]).reshape(-1)
+        cost = (int(occupied.sum()) * (_COST_TILE + _COST_INSTRUCTION * instructions)
+                + int(counts.sum()) * _COST_PAIR + float(areas @ counts) * _COST_PIXEL_LEAF)
+        worst = int(pixels.max()) if len(pixels) else 0
+        fits = worst * LEAF_PIXEL_BYTES <= max_bytes
+        key = (not fits, cost if fits else float(worst), side, counts, worst, ntr, ntc)
+        if best is None or key[:2] < best[:2]:
+            best = key
+    assert best is not None
+    _, _, side, counts, worst, ntr, ntc = best
+    start, leaf = _tile_lists(rects, ox, oy, side, ntr, ntc, counts)
+    return TilePlan(rect, side, ntr, ntc, start, leaf, worst)
+
