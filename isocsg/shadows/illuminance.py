@@ -29,14 +29,18 @@ from numpy.typing import ArrayLike, NDArray
 from ..geometry.primitives import DEFAULT_RESOLUTION, Solid
 from .lambert import _prepare, edge_terms
 from .lights import AreaLight, PolyhedronLight, as_light_list
-from .occluders import convex_pieces
+from .occluders import ConvexPiece, occluder_list
+from .occluders import shadow_pieces
 from .visibility import UMBRA_TOL, PieceArrays, SourceArrays, blockers_single, visible_illuminance
 
-__all__ = ["illuminance", "shadow_state", "illuminance_and_state", "LIT", "PENUMBRA", "UMBRA"]
+__all__ = ["illuminance", "shadow_state", "illuminance_and_state", "receiver_tiles", "LIT", "PENUMBRA", "UMBRA"]
 
 LIT = 0
 PENUMBRA = 1
 UMBRA = 2
+
+TILE_POINTS = 2500  # receivers per group that gets its own occluder pieces
+MAX_TILES = 16
 
 
 def _sources(lights: list[AreaLight | PolyhedronLight]) -> SourceArrays:
@@ -50,7 +54,8 @@ def _sources(lights: list[AreaLight | PolyhedronLight]) -> SourceArrays:
 
 
 def _fallback_point(
-    p: NDArray[np.float64], n: NDArray[np.float64], sources: SourceArrays, pieces: PieceArrays, scale: float
+    p: NDArray[np.float64], n: NDArray[np.float64], sources: SourceArrays, pieces: PieceArrays, scale: float,
+    sel: NDArray[np.int64] | None = None,
 ) -> tuple[float, int]:
     """One point through the 2D Boolean path (shapely): many overlapping silhouettes."""
     import shapely
@@ -60,7 +65,7 @@ def _fallback_point(
     e = 0.0
     gstat = np.full(sources.ngroups, -1, dtype=np.int64)
     for s in range(len(sources.radiance)):
-        P2, blocked = blockers_single(p, n, s, sources, pieces, scale)
+        P2, blocked = blockers_single(p, n, s, sources, pieces, scale, sel)
         if len(P2) < 3:
             continue
         sp = Polygon(P2)
@@ -120,16 +125,65 @@ def illuminance_and_state(
     """
     p, n = _prepare(points, normals)
     light_list = as_light_list(lights)
-    pieces = convex_pieces(occluders, resolution=resolution)
+    solids = occluder_list(occluders, resolution)
     sources = _sources(light_list)
-    pa = PieceArrays(pieces)
-    ext = [p] + [sources.verts] + ([pa.verts] if len(pa.verts) else [])
+    ext = [p, sources.verts] + [np.asarray(o.bounds, dtype=np.float64) for o in solids]
     allpts = np.vstack(ext)
     scale = float(max(np.max(np.ptp(allpts, axis=0)), np.max(np.abs(allpts)), 1e-300))
-    E, state, overflow = visible_illuminance(p, n, sources, pa, scale)
+    # each group of nearby receivers gets the pieces its bounding box needs; one compiled pass for all
+    tiles = receiver_tiles(p) if solids else [np.arange(len(p), dtype=np.int64)]
+    ids: dict[int, int] = {}
+    pieces: list[ConvexPiece] = []
+    group = np.zeros(len(p), dtype=np.int64)
+    g_off, g_idx = [0], []
+    for t, idx in enumerate(tiles):
+        group[idx] = t
+        for pc in shadow_pieces(solids, p[idx], sources.verts, resolution=resolution) if solids else []:
+            g_idx.append(ids.setdefault(id(pc), len(pieces)))
+            if g_idx[-1] == len(pieces):
+                pieces.append(pc)
+        g_off.append(len(g_idx))
+    pa = PieceArrays(pieces)
+    groups = (group, np.asarray(g_off, dtype=np.int64), np.asarray(g_idx, dtype=np.int64))
+    E, state, overflow = visible_illuminance(p, n, sources, pa, scale, groups)
     for i in np.nonzero(overflow)[0]:
-        E[i], state[i] = _fallback_point(p[i], n[i], sources, pa, scale)
+        sel = groups[2][groups[1][group[i]] : groups[1][group[i] + 1]]
+        E[i], state[i] = _fallback_point(p[i], n[i], sources, pa, scale, sel)
     return E, state
+
+
+def receiver_tiles(points: NDArray[np.float64], *, per_tile: int = TILE_POINTS, max_tiles: int = MAX_TILES) -> list[NDArray[np.int64]]:
+    """Groups of nearby receivers (index arrays): the cells of a grid over their bounding box.
+
+    About ``len(points) / per_tile`` cells (at most ``max_tiles``), more along
+    the longer sides; empty cells are dropped. Each group gets its own
+    occluder pieces (:func:`~isocsg.shadows.occluders.shadow_pieces` leaves
+    out what its bounding box cannot see).
+
+    Examples
+    --------
+    >>> x, y = np.meshgrid(np.linspace(0, 2, 10), np.linspace(0, 1, 10))
+    >>> tiles = receiver_tiles(np.c_[x.ravel(), y.ravel(), 0 * x.ravel()], per_tile=30)
+    >>> [len(t) for t in tiles]
+    [25, 25, 25, 25]
+    """
+    n = len(points)
+    want = min(max_tiles, -(-n // max(per_tile, 1)))
+    if want <= 1:
+        return [np.arange(n, dtype=np.int64)]
+    lo, hi = points.min(axis=0), points.max(axis=0)
+    ext = hi - lo
+    cells = np.ones(3, dtype=np.int64)
+    while True:
+        ax = int(np.argmax(ext / cells))
+        if ext[ax] <= 0 or np.prod(cells) * (cells[ax] + 1) // cells[ax] > want:
+            break
+        cells[ax] += 1
+    ijk = np.minimum(((points - lo) / np.where(ext > 0, ext, 1.0) * cells).astype(np.int64), cells - 1)
+    key = (ijk[:, 0] * cells[1] + ijk[:, 1]) * cells[2] + ijk[:, 2]
+    order = np.argsort(key, kind="stable")
+    cuts = np.nonzero(np.diff(key[order]))[0] + 1
+    return np.split(order, cuts)
 
 
 def illuminance(

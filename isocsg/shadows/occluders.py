@@ -2,16 +2,45 @@
 
 Boxes and convex polyhedra are exact; spheres and frusta (truncus, cylinder,
 cone) are replaced by their inscribed tessellation ``to_polyhedron(resolution)``.
-CSG trees decompose into convex pieces:
 
-- a union is the list of its operands' pieces;
-- an intersection of convex pieces is convex (the union of their half-spaces);
-- A minus a convex B with faces f_1..f_k is the union over j of
-  A n (outside f_j) n (inside f_1..f_{j-1}) (disjoint up to boundaries);
-- nested trees recursively; empty (or flat) pieces are dropped.
+A CSG tree is first brought, through its flat program
+(:meth:`isocsg.csg.program.Program.evaluate`), into a union of *terms*
+``C - (D_1 u ... u D_m)`` with convex ``C`` and ``D_i``:
 
-Pieces of one solid may touch along shared faces: the visibility code only
-needs the union of their silhouettes, so touching is harmless.
+- a union is the list of its operands' terms;
+- ``(C - uD) n (C' - uD') = (C n C') - (uD u uD')``;
+- ``(C - uD) - (C' - uD') = (C - (uD u C')) u U_k ((C n C' n D'_k) - (uD u D'_1..D'_{k-1}))``
+  (disjoint terms).
+
+Each term is then cut into disjoint convex pieces one subtracted ``D`` at a
+time, with ``D``'s bounding box ``b`` (any box that contains ``D``):
+
+- ``C - D = (C - b) u ((C n b) - D)``; ``C - b`` is at most six slabs
+  ``C n outside(b_j) n inside(b_1..b_{j-1})`` over the box faces whose planes cut
+  ``C`` (the thinnest direction of ``C`` first, so the first slabs span all of
+  ``C``), and only the *local* region ``C n b`` sees ``D``;
+- ``(C n b) - D`` is the union over the faces ``f`` of ``D`` of
+  ``C n b n cone(f) n outside(f)``, ``cone(f)`` the cone from an interior
+  point of ``D`` over ``f`` (the cones partition space, and inside ``cone(f)``
+  a point is outside ``D`` exactly when it is beyond ``f``'s plane): every
+  piece has at most ``|C| + 6 + |f| + 1`` half-spaces.
+
+Pieces thinner than ``1e-9`` of the occluder's size are dropped (they cast no
+shadow), and a subtracted ``D`` whose box misses a region is not applied to it.
+
+For shadows the decomposition can stop early (:func:`shadow_pieces`): the
+illuminance only needs the union of the pieces' silhouettes, so a region
+(a local region before it is cut, or a finished piece) can be left out when
+every segment from the receivers to it, or from it to the sources, already
+crosses another piece that is kept. For convex sets the test is exact on
+vertices: with ``X``, ``Y`` and the receivers' box ``R`` convex, "the segment
+``r -> x`` meets ``Y``" holds for all ``r`` in ``R`` and ``x`` in ``X`` as
+soon as it holds for their vertices (for fixed ``x`` the ``r`` that qualify
+form a convex set, the shadow of ``Y`` from ``x``; the same for fixed ``r``).
+Regions outside the convex hull of the receivers and the sources are left
+out too (no segment from a receiver to the source meets them). Left-out
+regions are never cut, which is what makes a plate with pockets seen from
+below as cheap as a box.
 """
 
 from __future__ import annotations
@@ -21,6 +50,7 @@ from collections.abc import Sequence
 from dataclasses import dataclass, field
 from typing import Any
 
+import numba
 import numpy as np
 from numpy.typing import NDArray
 
@@ -28,10 +58,14 @@ from ..csg.program import OP_INTERSECTION, OP_UNION, compile_program
 from ..errors import InvalidGeometryError, InvalidParameterError
 from ..geometry.primitives import DEFAULT_RESOLUTION, Box, ConvexPolyhedron, Primitive, Solid
 
-__all__ = ["ConvexPiece", "convex_pieces", "halfspace_pieces", "DEFAULT_RESOLUTION"]
+__all__ = ["ConvexPiece", "convex_pieces", "halfspace_pieces", "shadow_pieces", "DEFAULT_RESOLUTION"]
 
 # A piece thinner than this (relative to the occluder's size) counts as empty.
 EMPTY_TOL = 1e-9
+# Hiding tests: the hiding piece is shrunk by this (relative to the scene's size) ...
+HIDE_TOL = 1e-9
+# ... and must be met by a receiver's segment at a parameter t >= HIDE_T0 (not only at the receiver).
+HIDE_T0 = 1e-6
 
 HalfSpaces = tuple[NDArray[np.float64], NDArray[np.float64]]  # (normals (k, 3), offsets (k,)): n . x <= d
 
@@ -89,9 +123,7 @@ class ConvexPiece:
         return np.all(p @ self.normals.T <= self.offsets + tol, axis=1)
 
 
-def _leaf_halfspaces(prim: Primitive, resolution: int) -> HalfSpaces:
-    poly = prim.to_polyhedron() if isinstance(prim, (Box, ConvexPolyhedron)) else prim.to_polyhedron(resolution)
-    return np.array(poly.face_normals, dtype=np.float64), np.array(poly.face_offsets, dtype=np.float64)
+# ----------------------------------------------------------------------------- convex regions
 
 
 def _chebyshev(hs: HalfSpaces) -> tuple[NDArray[np.float64], float]:
@@ -114,51 +146,309 @@ def _chebyshev(hs: HalfSpaces) -> tuple[NDArray[np.float64], float]:
     return res.x[:3], float(res.x[3])
 
 
-class _Decomposer:
-    def __init__(self, resolution: int, scale: float) -> None:
-        self.resolution = resolution
-        self.tol = EMPTY_TOL * scale
+class _Convex:
+    """A bounded convex region: unit half-spaces ``A x <= b``, its vertices and bounding box.
 
-    def nonempty(self, hs: HalfSpaces) -> bool:
-        return _chebyshev(hs)[1] > self.tol
+    A leaf (a primitive) is materialised lazily: until its half-spaces are
+    needed it only offers the primitive's bounding box, which contains its
+    tessellation.
+    """
 
-    def pieces(self, solid: Solid) -> list[HalfSpaces]:
-        if not isinstance(solid, Solid):
-            raise InvalidGeometryError(f"occluder must be a primitive or a CSG tree, got {type(solid).__name__}")
-        return compile_program(solid).evaluate(lambda _, p: [_leaf_halfspaces(p, self.resolution)], self.combine)
+    __slots__ = ("_A", "_b", "_verts", "lo", "hi", "_poly", "_piece", "_prim", "_res")
 
-    def combine(self, op: int, parts: list[list[HalfSpaces]]) -> list[HalfSpaces]:
+    def __init__(self, A=None, b=None, verts=None, *, prim=None, res=0) -> None:
+        self._A, self._b, self._verts = A, b, verts
+        self._poly = None
+        self._piece = None
+        self._prim, self._res = prim, res
+        if verts is not None:
+            self.lo, self.hi = verts.min(axis=0), verts.max(axis=0)
+        else:
+            bounds = np.asarray(prim.bounds, dtype=np.float64)
+            self.lo, self.hi = bounds[0].copy(), bounds[1].copy()
+
+    def _materialise(self) -> None:
+        if self._A is not None:
+            return
+        poly = _leaf_polyhedron(self._prim, self._res)
+        self._poly = poly
+        self._A = np.array(poly.face_normals, dtype=np.float64)
+        self._b = np.array(poly.face_offsets, dtype=np.float64)
+        self._verts = np.array(poly.hull_vertices, dtype=np.float64)
+        self.lo, self.hi = self._verts.min(axis=0), self._verts.max(axis=0)
+
+    @property
+    def A(self) -> NDArray[np.float64]:
+        self._materialise()
+        return self._A
+
+    @property
+    def b(self) -> NDArray[np.float64]:
+        self._materialise()
+        return self._b
+
+    @property
+    def verts(self) -> NDArray[np.float64]:
+        self._materialise()
+        return self._verts
+
+    @property
+    def poly(self) -> ConvexPolyhedron:
+        self._materialise()
+        if self._poly is None:
+            self._poly = ConvexPolyhedron(self._verts)
+        return self._poly
+
+    def piece(self) -> ConvexPiece | None:
+        if self._piece is None:
+            try:
+                self._piece = ConvexPiece.from_polyhedron(self.poly)
+            except InvalidGeometryError:  # flat: it casts no shadow
+                self._piece = False
+        return self._piece or None
+
+
+@functools.lru_cache(maxsize=1024)
+def _leaf_polyhedron(prim: Primitive, resolution: int) -> ConvexPolyhedron:
+    return prim.to_polyhedron() if isinstance(prim, (Box, ConvexPolyhedron)) else prim.to_polyhedron(resolution)
+
+
+def _overlap(a: _Convex, b: _Convex, tol: float) -> bool:
+    return bool(np.all(a.lo <= b.hi + tol) and np.all(b.lo <= a.hi + tol))
+
+
+def _make(A: NDArray[np.float64], b: NDArray[np.float64], tol: float) -> _Convex | None:
+    """The region ``A x <= b`` (unit rows) with its vertices; None when thinner than ``tol``."""
+    from scipy.spatial import HalfspaceIntersection, QhullError
+
+    centre, r = _chebyshev((A, b))
+    if r <= tol:
+        return None
+    try:
+        verts = HalfspaceIntersection(np.column_stack([A, -b]), centre).intersections
+    except QhullError:  # pragma: no cover - qhull failing on a region with a ball of radius > tol inside
+        return None
+    verts = np.unique(np.round(verts / (1e-3 * tol)), axis=0) * (1e-3 * tol)
+    # keep the facets (planes through at least three vertices): the rest are redundant
+    active = np.count_nonzero(np.abs(A @ verts.T - b[:, None]) <= 10 * tol, axis=1) >= 3
+    return _Convex(np.ascontiguousarray(A[active]), b[active].copy(), verts)
+
+
+def _meets(c: _Convex, d: _Convex, tol: float) -> bool:
+    """Whether ``d`` may cut ``c``: boxes overlap, and for materialised regions an inner ball wider than ``tol``."""
+    if not _overlap(c, d, -tol):
+        return False
+    if d._A is None:  # a lazy leaf: its box says it may (conservative: the split stays exact)
+        return True
+    return _chebyshev((np.vstack([c.A, d.A]), np.concatenate([c.b, d.b])))[1] > tol
+
+
+def _intersect(regions: Sequence[_Convex], tol: float) -> _Convex | None:
+    lo = np.max([r.lo for r in regions], axis=0)
+    hi = np.min([r.hi for r in regions], axis=0)
+    if np.any(lo > hi + tol):
+        return None
+    return _make(np.vstack([r.A for r in regions]), np.concatenate([r.b for r in regions]), tol)
+
+
+# ----------------------------------------------------------------------------- terms and their pieces
+
+
+class _Node:
+    """``region - (pend[0] u pend[1] u ...)``, expanded on demand (memoised)."""
+
+    __slots__ = ("region", "pend", "tol", "_step")
+
+    def __init__(self, region: _Convex, pend: tuple[_Convex, ...], tol: float) -> None:
+        self.region, self.tol, self._step = region, tol, None
+        self.pend = tuple(d for d in pend if _overlap(region, d, -tol))
+
+    def step(self) -> tuple[list[_Node], _Local | None] | None:
+        """None when the region is a finished piece; else the slabs and the local region."""
+        if self._step is None:
+            c, tol = self.region, self.tol
+            k = next((k for k, d in enumerate(self.pend) if _meets(c, d, tol)), None)
+            if k is None:
+                self._step = (None,)
+            else:
+                d, rest = self.pend[k], self.pend[k + 1 :]
+                slabs, local = _box_split(c, d, tol)
+                self._step = ([_Node(s, rest, tol) for s in slabs], None if local is None else _Local(local, d, rest, tol))
+        return None if self._step[0] is None else self._step
+
+
+class _Local:
+    """A local region ``L - (d u rest...)`` with ``L`` inside ``d``'s box; cut by ``d``'s face cones on demand."""
+
+    __slots__ = ("region", "d", "rest", "tol", "_pieces")
+
+    def __init__(self, region: _Convex, d: _Convex, rest: tuple[_Convex, ...], tol: float) -> None:
+        self.region, self.d, self.rest, self.tol, self._pieces = region, d, rest, tol, None
+
+    def pieces(self) -> list[_Node]:
+        if self._pieces is None:
+            self._pieces = [_Node(p, self.rest, self.tol) for p in _cone_split(self.region, self.d, self.tol)]
+        return self._pieces
+
+
+def _box_split(c: _Convex, d: _Convex, tol: float) -> tuple[list[_Convex], _Convex | None]:
+    """``c - box(d)`` as slabs, and ``c n box(d)``."""
+    A, b = [c.A], [c.b]
+    slabs = []
+    for ax in np.argsort(c.hi - c.lo, kind="stable"):
+        e = np.zeros(3)
+        e[ax] = 1.0
+        for n, off, beyond in ((-e, -d.lo[ax], c.lo[ax] < d.lo[ax] - tol), (e, d.hi[ax], c.hi[ax] > d.hi[ax] + tol)):
+            if not beyond:  # the plane does not cut c: the constraint is redundant
+                continue
+            s = _make(np.vstack(A + [-n[None, :]]), np.concatenate(b + [[-off]]), tol)
+            if s is not None:
+                slabs.append(s)
+            A.append(n[None, :])
+            b.append(np.array([off]))
+    if len(A) == 1:
+        return slabs, c
+    return slabs, _make(np.vstack(A), np.concatenate(b), tol)
+
+
+def _cone_split(L: _Convex, d: _Convex, tol: float) -> list[_Convex]:
+    """``L - d`` as pieces ``L n cone(f) n outside(f)`` over the faces f of ``d``."""
+    poly = d.poly
+    V = np.asarray(poly.hull_vertices)
+    g = V.mean(axis=0)
+    out = []
+    LA, Lb, LV = L.A, L.b, L.verts
+    # planes of L that g lies on or beyond (within tol)
+    near = LA @ g >= Lb - tol
+    gside, gdelta = LA[near], np.maximum(Lb[near] - LA[near] @ g, 0.0)
+    for f, nf, of in zip(poly.faces, poly.face_normals, poly.face_offsets):
+        if np.max(LV @ nf) <= of + tol:  # L lies inside f's plane
+            continue
+        loop = V[np.asarray(f)]
+        fc = loop.mean(axis=0)
+        axis = fc - g
+        axis /= np.linalg.norm(axis)
+        if len(gside) and _cone_misses(loop, g, axis, gside, gdelta, of - float(np.dot(nf, g))):
+            continue
+        m = np.cross(loop - g, np.roll(loop, -1, axis=0) - g)
+        m /= np.linalg.norm(m, axis=1, keepdims=True)
+        m[(m @ (fc - g)) > 0] *= -1.0  # inside: m . (x - g) <= 0
+        A = np.vstack([LA, -np.asarray(nf)[None, :], m])
+        b = np.concatenate([Lb, [-of], m @ g])
+        piece = _make(A, b, tol)
+        if piece is not None:
+            out.append(piece)
+    return out
+
+
+def _cone_misses(loop, g, axis, planes, delta, rho) -> bool:
+    """Whether ``L n cone(f) n outside(f)`` is empty by the directions from ``g``.
+
+    ``planes`` (unit rows a, with ``a . g >= b - delta``) bound ``L``: a point
+    ``x = g + t u`` of ``L`` has ``t (a . u) <= delta``. Every direction ``u``
+    of the cone over ``f`` lies in the cap around ``axis`` of half-angle
+    ``alpha``; where ``a . u >= mu > 0`` on the whole cap, ``t <= delta / mu``,
+    while points beyond ``f`` have ``t >= rho`` (the distance from ``g`` to
+    ``f``'s plane). Both cannot hold when ``delta / mu < rho``.
+    """
+    rays = loop - g
+    rays /= np.linalg.norm(rays, axis=1, keepdims=True)
+    alpha = float(np.arccos(np.clip(np.min(rays @ axis), -1.0, 1.0)))
+    theta = np.arccos(np.clip(planes @ axis, -1.0, 1.0))
+    mu = np.cos(np.minimum(theta + alpha, np.pi))
+    ok = (theta + alpha < 0.5 * np.pi - 1e-9) & (delta < 0.5 * rho * mu)
+    return bool(np.any(ok))
+
+
+def _terms(solid: Solid, resolution: int, tol: float) -> list[tuple[_Convex, tuple[_Convex, ...]]]:
+    """The solid as disjoint terms ``(C, (D_1, ..., D_m))`` meaning ``C - (D_1 u ... u D_m)``."""
+
+    def leaf(_: int, prim: Primitive) -> list:
+        if isinstance(prim, (Box, ConvexPolyhedron)):
+            return [(_Convex(prim=prim, res=resolution), ())]
+        return [(_Convex(prim=prim, res=resolution), ())]
+
+    def combine(op: int, parts: list[list]) -> list:
         if op == OP_UNION:
-            return [p for c in parts for p in c]
+            return [t for part in parts for t in part]
         cur = parts[0]
         if op == OP_INTERSECTION:
             for other in parts[1:]:
                 nxt = []
-                for p in cur:
-                    for q in other:
-                        hs = (np.vstack([p[0], q[0]]), np.concatenate([p[1], q[1]]))
-                        if self.nonempty(hs):
-                            nxt.append(hs)
+                for c1, d1 in cur:
+                    for c2, d2 in other:
+                        c = _intersect([c1, c2], tol)
+                        if c is not None:
+                            nxt.append((c, tuple(x for x in d1 + d2 if _overlap(c, x, -tol))))
                 cur = nxt
             return cur
         for other in parts[1:]:
-            for q in other:
-                cur = [r for p in cur for r in self.subtract(p, q)]
+            for c2, d2 in other:
+                nxt = []
+                for c, d in cur:
+                    if not _overlap(c, c2, -tol):
+                        nxt.append((c, d))
+                        continue
+                    nxt.append((c, d + (c2,)))
+                    for k, dk in enumerate(d2):
+                        if not _overlap(c, dk, -tol):
+                            continue
+                        ck = _intersect([c, c2, dk], tol)
+                        if ck is not None:
+                            nxt.append((ck, tuple(x for x in d + d2[:k] if _overlap(ck, x, -tol))))
+                cur = nxt
         return cur
 
-    def subtract(self, p: HalfSpaces, q: HalfSpaces) -> list[HalfSpaces]:
-        both = (np.vstack([p[0], q[0]]), np.concatenate([p[1], q[1]]))
-        if not self.nonempty(both):
-            return [p]
-        out = []
-        pa, pb = list(p[0]), list(p[1])
-        for n, d in zip(*q):
-            hs = (np.vstack(pa + [-n]), np.array(pb + [-d]))  # outside face j ...
-            if self.nonempty(hs):
-                out.append(hs)
-            pa.append(n)  # ... and inside the faces before it
-            pb.append(d)
-        return out
+    return compile_program(solid).evaluate(leaf, combine)
+
+
+@functools.lru_cache(maxsize=256)
+def _roots(solid: Solid, resolution: int) -> tuple[_Node, ...]:
+    b = np.asarray(solid.bounds, dtype=np.float64)
+    tol = EMPTY_TOL * max(float(np.max(b[1] - b[0])), 1e-300)
+    return tuple(_Node(c, d, tol) for c, d in _terms(solid, resolution, tol))
+
+
+def _expand(roots: Sequence[_Node], hide=None) -> list[_Convex]:
+    """Finished convex regions of the nodes; ``hide(region, finished)`` may leave local regions uncut."""
+    finals: list[_Convex] = []
+    work = list(reversed(roots))
+    deferred: list[_Local] = []
+    while work or deferred:
+        if work:
+            node = work.pop()
+            st = node.step()
+            if st is None:
+                finals.append(node.region)
+                continue
+            slabs, local = st
+            work.extend(reversed(slabs))
+            if local is not None:
+                deferred.append(local)
+            continue
+        loc = deferred.pop()
+        if hide is not None and hide(loc.region, finals):
+            continue
+        work.extend(reversed(loc.pieces()))
+    return finals
+
+
+# ----------------------------------------------------------------------------- public functions
+
+
+def occluder_list(occluders: Sequence[Solid] | Solid, resolution: Any) -> list[Solid]:
+    if isinstance(resolution, bool) or not isinstance(resolution, (int, np.integer)) or resolution < 3:
+        raise InvalidParameterError(f"resolution must be an integer >= 3, got {resolution!r}")
+    if isinstance(occluders, Solid):
+        occluders = [occluders]
+    try:
+        seq = list(occluders)
+    except TypeError:
+        raise InvalidGeometryError(f"occluders must be a sequence of solids, got {type(occluders).__name__}") from None
+    for i, o in enumerate(seq):
+        if not isinstance(o, Solid):
+            raise InvalidGeometryError(f"occluders[{i}] must be a primitive or a CSG tree, got {type(o).__name__}")
+    return seq
 
 
 def halfspace_pieces(solid: Solid, *, resolution: int = DEFAULT_RESOLUTION) -> list[HalfSpaces]:
@@ -170,33 +460,24 @@ def halfspace_pieces(solid: Solid, *, resolution: int = DEFAULT_RESOLUTION) -> l
     >>> len(halfspace_pieces(Box((0, 0, 0), (2, 2, 2)) - Box((1, 1, 1), (1, 1, 1))))
     3
     """
-    b = solid.bounds
-    scale = float(np.max(b[1] - b[0]))
-    return _Decomposer(resolution, max(scale, 1e-300)).pieces(solid)
+    if not isinstance(solid, Solid):
+        raise InvalidGeometryError(f"occluder must be a primitive or a CSG tree, got {type(solid).__name__}")
+    occluder_list([solid], resolution)
+    return [(r.A.copy(), r.b.copy()) for r in _expand(_roots(solid, int(resolution)))]
 
 
 @functools.lru_cache(maxsize=256)
 def _pieces_cached(solid: Solid, resolution: int) -> tuple[ConvexPiece, ...]:
-    from scipy.spatial import HalfspaceIntersection
-
-    if isinstance(solid, (Box, ConvexPolyhedron)):
-        return (ConvexPiece.from_polyhedron(solid.to_polyhedron()),)
-    if isinstance(solid, Primitive):
-        return (ConvexPiece.from_polyhedron(solid.to_polyhedron(resolution)),)
     out = []
-    for hs in halfspace_pieces(solid, resolution=resolution):
-        centre, _ = _chebyshev(hs)
-        inter = HalfspaceIntersection(np.column_stack([hs[0], -hs[1]]), centre)
-        try:
-            poly = ConvexPolyhedron(inter.intersections)
-        except InvalidGeometryError:  # flat piece: it casts no shadow
-            continue
-        out.append(ConvexPiece.from_polyhedron(poly))
+    for r in _expand(_roots(solid, resolution)):
+        pc = r.piece()
+        if pc is not None:
+            out.append(pc)
     return tuple(out)
 
 
 def convex_pieces(occluders: Sequence[Solid] | Solid, *, resolution: int = DEFAULT_RESOLUTION) -> list[ConvexPiece]:
-    """Decompose occluders (primitives or CSG trees) into convex pieces.
+    """Decompose occluders (primitives or CSG trees) into disjoint convex pieces.
 
     Parameters
     ----------
@@ -224,17 +505,193 @@ def convex_pieces(occluders: Sequence[Solid] | Solid, *, resolution: int = DEFAU
     >>> len(pieces)
     2
     """
-    if isinstance(resolution, bool) or not isinstance(resolution, (int, np.integer)) or resolution < 3:
-        raise InvalidParameterError(f"resolution must be an integer >= 3, got {resolution!r}")
-    if isinstance(occluders, Solid):
-        occluders = [occluders]
-    try:
-        seq = list(occluders)
-    except TypeError:
-        raise InvalidGeometryError(f"occluders must be a sequence of solids, got {type(occluders).__name__}") from None
     out: list[ConvexPiece] = []
-    for i, o in enumerate(seq):
-        if not isinstance(o, Solid):
-            raise InvalidGeometryError(f"occluders[{i}] must be a primitive or a CSG tree, got {type(o).__name__}")
+    for o in occluder_list(occluders, resolution):
         out.extend(_pieces_cached(o, int(resolution)))
+    return out
+
+
+# ----------------------------------------------------------------------------- pieces for shadows
+
+
+@numba.njit(cache=True)
+def _hider(X, Q, t_lo, t_hi, YA, Yb, Yoff, cand):
+    """First ``cand[i]`` whose region ``YA x <= Yb`` meets every segment ``Q[a] + t (X[j] - Q[a])``,
+    ``t`` in ``[t_lo, t_hi]``; -1 when none does."""
+    for ci in range(cand.shape[0]):
+        y = cand[ci]
+        ok = True
+        for a in range(Q.shape[0]):
+            for j in range(X.shape[0]):
+                t0 = t_lo
+                t1 = t_hi
+                for k in range(Yoff[y], Yoff[y + 1]):
+                    num = Yb[k] - (YA[k, 0] * Q[a, 0] + YA[k, 1] * Q[a, 1] + YA[k, 2] * Q[a, 2])
+                    den = (YA[k, 0] * (X[j, 0] - Q[a, 0]) + YA[k, 1] * (X[j, 1] - Q[a, 1])
+                           + YA[k, 2] * (X[j, 2] - Q[a, 2]))
+                    if den > 0.0:
+                        t1 = min(t1, num / den)
+                    elif den < 0.0:
+                        t0 = max(t0, num / den)
+                    elif num < 0.0:
+                        t0 = 1.0
+                        t1 = 0.0
+                    if t0 > t1:
+                        break
+                if t0 > t1:
+                    ok = False
+                    break
+            if not ok:
+                break
+        if ok:
+            return y
+    return -1
+
+
+class _Hiding:
+    """Which regions no receiver-to-source segment needs (see the module docstring)."""
+
+    def __init__(self, receivers: NDArray[np.float64], sources: NDArray[np.float64], scale: float) -> None:
+        from scipy.spatial import ConvexHull, QhullError
+
+        lo, hi = receivers.min(axis=0), receivers.max(axis=0)
+        self.R = np.array([[x, y, z] for x in (lo[0], hi[0]) for y in (lo[1], hi[1]) for z in (lo[2], hi[2])])
+        self.R = np.unique(self.R, axis=0)
+        self.S = np.unique(np.asarray(sources, dtype=np.float64).reshape(-1, 3), axis=0)
+        self.tol = HIDE_TOL * scale
+        pts = np.vstack([self.R, self.S])
+        self.rlo, self.rhi = self.R.min(axis=0), self.R.max(axis=0)
+        self.slo, self.shi = self.S.min(axis=0), self.S.max(axis=0)
+        try:
+            eq = ConvexHull(pts).equations
+            self.hull = (eq[:, :3], -eq[:, 3])
+        except (QhullError, ValueError):  # flat: no cheap hull test
+            self.hull = None
+        self.pts = pts
+        self.regions: list[_Convex] = []
+        self.A = np.zeros((0, 3))
+        self.b = np.zeros(0)
+        self.off = np.zeros(1, dtype=np.int64)
+        self.lo = np.zeros((0, 3))
+        self.hi = np.zeros((0, 3))
+
+    def _pack(self, regions: list[_Convex]) -> None:
+        new = regions[len(self.regions) :]
+        if not new:
+            return
+        self.regions = list(regions)
+        self.A = np.vstack([self.A] + [r.A for r in new])
+        self.b = np.concatenate([self.b] + [r.b - self.tol for r in new])  # shrunk: met means met inside
+        self.off = np.concatenate([self.off, self.off[-1] + np.cumsum([len(r.b) for r in new])])
+        self.lo = np.vstack([self.lo] + [r.lo[None, :] for r in new])
+        self.hi = np.vstack([self.hi] + [r.hi[None, :] for r in new])
+
+    def outside(self, X: _Convex) -> bool:
+        """No segment from a receiver to a source point meets X (separated by a plane)."""
+        if self.hull is None:
+            return False
+        a, b = self.hull
+        if np.any(np.min(X.verts @ a.T - b, axis=0) > self.tol):
+            return True
+        return bool(np.any(np.min(self.pts @ X.A.T - X.b, axis=0) > self.tol))
+
+    def hider(self, X: _Convex, present: NDArray[np.bool_] | None = None, skip: int = -1) -> int:
+        """Index of a packed region that hides X from the receivers or from the sources; -1 if none."""
+        V = X.verts
+        xlo, xhi = X.lo, X.hi
+        for Q, qlo, qhi, t0, t1 in ((self.R, self.rlo, self.rhi, HIDE_T0, 1.0), (self.S, self.slo, self.shi, 0.0, 1.0)):
+            lo, hi = np.minimum(xlo, qlo), np.maximum(xhi, qhi)
+            cand = np.all((self.lo <= hi) & (self.hi >= lo), axis=1)
+            if present is not None:
+                cand &= present
+            if 0 <= skip < len(cand):
+                cand[skip] = False
+            idx = np.nonzero(cand)[0]
+            if len(idx) == 0:
+                continue
+            y = _hider(V, Q, t0, t1, self.A, self.b, self.off, idx.astype(np.int64))
+            if y >= 0:
+                return int(y)
+        return -1
+
+    def hidden_local(self, X: _Convex, finals: list[_Convex]) -> bool:
+        if self.outside(X):
+            return True
+        self._pack(finals)
+        return self.hider(X) >= 0
+
+    def cull(self, finals: list[_Convex]) -> list[_Convex]:
+        """The finished regions that some segment may need (each left-out one is hidden by a kept one)."""
+        self._pack(finals)
+        present = np.ones(len(finals), dtype=bool)
+        vol = np.prod(self.hi - self.lo, axis=1) if len(finals) else np.zeros(0)
+        for i in np.argsort(vol, kind="stable"):
+            X = finals[i]
+            if self.outside(X) or self.hider(X, present, int(i)) >= 0:
+                present[i] = False
+        return [r for r, k in zip(finals, present) if k]
+
+
+def shadow_pieces(
+    occluders: Sequence[Solid] | Solid,
+    receivers: Any,
+    sources: Any,
+    *,
+    resolution: int = DEFAULT_RESOLUTION,
+) -> list[ConvexPiece]:
+    """Convex pieces of the occluders that the shadows of some receivers need.
+
+    The union of the silhouettes of the returned pieces, seen from any point
+    of the receivers' bounding box towards any point of the sources' convex
+    hull, is that of all the pieces of :func:`convex_pieces`; pieces (and
+    regions not yet cut) hidden behind a kept piece, or outside the convex
+    hull of the receivers' box and the sources, are left out (see the module
+    docstring).
+
+    Parameters
+    ----------
+    occluders : Solid or sequence of Solid
+    receivers : array_like, shape (n, 3)
+        Receiving points (only their bounding box is used).
+    sources : array_like, shape (m, 3)
+        Vertices of the emitting polygons.
+    resolution : int, keyword-only, default 64
+
+    Returns
+    -------
+    list of ConvexPiece
+
+    Raises
+    ------
+    InvalidGeometryError, InvalidParameterError
+        As :func:`convex_pieces`.
+
+    Examples
+    --------
+    A plate with a pocket on top, seen from the floor below: the pocket is
+    hidden by the plate's slab under it and never cut into pieces.
+
+    >>> from isocsg import Box, Sphere
+    >>> plate = Box((0, 0, 1), (1, 1, 0.1)) - Sphere((0, 0, 1.05), 0.03)
+    >>> floor = [(-2, -2, 0), (2, 2, 0)]
+    >>> lamp = [(-0.5, -0.5, 3), (0.5, -0.5, 3), (0.5, 0.5, 3), (-0.5, 0.5, 3)]
+    >>> len(convex_pieces(plate, resolution=16)) > len(shadow_pieces(plate, floor, lamp, resolution=16))
+    True
+    """
+    seq = occluder_list(occluders, resolution)
+    R = np.asarray(receivers, dtype=np.float64).reshape(-1, 3)
+    S = np.asarray(sources, dtype=np.float64).reshape(-1, 3)
+    if len(R) == 0 or len(S) == 0 or not seq:
+        return convex_pieces(seq, resolution=resolution)
+    bounds = np.vstack([np.asarray(o.bounds, dtype=np.float64) for o in seq])
+    allp = np.vstack([R.min(axis=0), R.max(axis=0), S, bounds])
+    scale = float(max(np.max(np.ptp(allp, axis=0)), np.max(np.abs(allp)), 1e-300))
+    hiding = _Hiding(R, S, scale)
+    roots = [node for o in seq for node in _roots(o, int(resolution))]
+    finals = _expand(roots, hiding.hidden_local)
+    out = []
+    for r in hiding.cull(finals):
+        pc = r.piece()
+        if pc is not None:
+            out.append(pc)
     return out
