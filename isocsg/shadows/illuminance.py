@@ -10,14 +10,16 @@ part of each source visible from p (:mod:`isocsg.shadows.visibility`):
   the seed's contour-line integral; occluders are handled face by face;
 - several lights add up.
 
-Shadow state of a point, per light: 0 (lit) when the part of the source in
-front of the receiving plane is fully visible, 1 (penumbra) when partly,
-2 (umbra) when none of it is. A point that has *nothing* of a source in front
-of its receiving plane (a face turned away from the light, the seed's type C,
-or a point behind an area source) is in no shadow of that light: it counts as
-0 for it, and its illuminance from it is 0. Over several lights the state is
-the worst (largest) one. Umbra means a visible area below ``1e-9`` of the
-source part in front of the plane.
+Shadow state of a point, per light (the conventions: 0 lit when the source is
+fully visible, 1 penumbra when partly, 2 umbra when not at all): 0 when the
+part of the source in front of the receiving plane is fully visible, 1 when
+partly, 2 when none of it is. A point that has *nothing* of a source in front
+of its receiving plane (its plane cuts the whole source away: a face turned
+away from the light, the seed's type C, or a point behind an area source or
+in its plane) receives none of the source: state 2 for that light, and
+illuminance 0 from it. Over several lights the state is the worst (largest)
+one. Umbra means a visible area below ``1e-9`` of the source part in front of
+the plane.
 """
 
 from __future__ import annotations
@@ -98,7 +100,7 @@ def _fallback_point(
         e += 0.5 * sources.radiance[s] * max(total, 0.0)
     worst = 0
     for st in gstat:
-        if st == 2:
+        if st == 2 or st < 0:
             worst = 2
         elif st == 3:
             worst = max(worst, 1)
@@ -248,8 +250,8 @@ def shadow_state(
 ) -> NDArray[np.int8]:
     """Shadow state of each point: 0 lit, 1 penumbra, 2 umbra (worst over the lights).
 
-    A point with nothing of a source in front of its receiving plane is in no
-    shadow of that source (state 0 for it); see the module docstring.
+    A point with nothing of a source in front of its receiving plane receives
+    none of it: state 2 for that source; see the module docstring.
 
     Parameters
     ----------

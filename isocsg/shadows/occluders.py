@@ -587,13 +587,17 @@ class _Hiding:
         self.hi = np.vstack([self.hi] + [r.hi[None, :] for r in new])
 
     def outside(self, X: _Convex) -> bool:
-        """No segment from a receiver to a source point meets X (separated by a plane)."""
+        """No segment from a receiver to a source point runs inside X (a plane keeps them apart).
+
+        X may touch the hull of the receivers' box and the sources (a pocket
+        opening in the plane of the receivers): segments can then only graze it.
+        """
         if self.hull is None:
             return False
         a, b = self.hull
-        if np.any(np.min(X.verts @ a.T - b, axis=0) > self.tol):
+        if np.any(np.min(X.verts @ a.T - b, axis=0) >= -self.tol):
             return True
-        return bool(np.any(np.min(self.pts @ X.A.T - X.b, axis=0) > self.tol))
+        return bool(np.any(np.min(self.pts @ X.A.T - X.b, axis=0) >= -self.tol))
 
     def hider(self, X: _Convex, present: NDArray[np.bool_] | None = None, skip: int = -1) -> int:
         """Index of a packed region that hides X from the receivers or from the sources; -1 if none."""
@@ -618,7 +622,50 @@ class _Hiding:
         if self.outside(X):
             return True
         self._pack(finals)
-        return self.hider(X) >= 0
+        return self.hider(X) >= 0 or self.enclosed(X, self.R) or self.enclosed(X, self.S)
+
+    def enclosed(self, X: _Convex, Q: NDArray[np.float64]) -> bool:
+        """Whether every face of X that a point of conv(Q) sees is covered by kept pieces beyond it.
+
+        A segment from a point of conv(Q) (outside X) into X enters through
+        such a face, and just before it runs inside a covering piece (the
+        piece contains the face and lies on its outer side); a segment from X
+        to conv(Q) leaves through one and runs inside a covering piece just
+        after. Up to segments through the faces' edges (a set of measure
+        zero) both are therefore blocked anyway.
+        """
+        import shapely
+
+        tol = 10 * self.tol
+        try:
+            poly = X.poly
+        except InvalidGeometryError:
+            return False
+        normals, offsets = np.asarray(poly.face_normals), np.asarray(poly.face_offsets)
+        side = Q @ normals.T - offsets  # > 0: outside that face's plane
+        if not np.any(np.all(side > tol, axis=0)):  # conv(Q) is not kept apart from X by one of its planes
+            return False
+        V = np.asarray(poly.hull_vertices)
+        near = np.all((self.lo <= X.hi + tol) & (self.hi >= X.lo - tol), axis=1)
+        cand = [self.regions[i] for i in np.nonzero(near)[0]]
+        for f, n, off in zip(poly.faces, normals, offsets):
+            if np.max(Q @ n) - off <= tol:
+                continue  # no point of conv(Q) sees this face
+            u = np.cross(n, [1.0, 0.0, 0.0] if abs(n[0]) < 0.9 else [0.0, 1.0, 0.0])
+            u /= np.linalg.norm(u)
+            w = np.cross(n, u)
+            face = shapely.Polygon(np.c_[V[f] @ u, V[f] @ w])
+            cover = []
+            for Y in cand:
+                h = Y.verts @ n - off
+                if np.min(h) < -tol:
+                    continue  # Y is not beyond this face
+                on = Y.verts[h <= tol]
+                if len(on) >= 3:
+                    cover.append(shapely.convex_hull(shapely.MultiPoint(np.c_[on @ u, on @ w])))
+            if not cover or face.difference(shapely.union_all(cover)).area > 1e-9 * face.area:
+                return False
+        return True
 
     def cull(self, finals: list[_Convex]) -> list[_Convex]:
         """The finished regions that some segment may need (each left-out one is hidden by a kept one)."""

@@ -463,7 +463,7 @@ def _kernel(P, NR, s_verts, s_off, s_normal, s_u, s_w, s_q0, s_L, s_group, ngrou
             E[i] = e
             worst = 0
             for g in range(ngroups):
-                if gstat[g] == 2:
+                if gstat[g] == 2 or gstat[g] < 0:  # none of the source reaches p (or none is in front of it)
                     worst = max(worst, 2)
                 elif gstat[g] == 3:
                     worst = max(worst, 1)
