@@ -165,9 +165,9 @@ def receiver_tiles(points: NDArray[np.float64], *, per_tile: int = TILE_POINTS, 
     Examples
     --------
     >>> x, y = np.meshgrid(np.linspace(0, 2, 10), np.linspace(0, 1, 10))
-    >>> tiles = receiver_tiles(np.c_[x.ravel(), y.ravel(), 0 * x.ravel()], per_tile=30)
+    >>> tiles = receiver_tiles(np.c_[x.ravel(), y.ravel(), 0 * x.ravel()], per_tile=50)
     >>> [len(t) for t in tiles]
-    [25, 25, 25, 25]
+    [50, 50]
     """
     n = len(points)
     want = min(max_tiles, -(-n // max(per_tile, 1)))
