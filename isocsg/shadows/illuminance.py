@@ -41,7 +41,8 @@ LIT = 0
 PENUMBRA = 1
 UMBRA = 2
 
-TILE_POINTS = 2500  # receivers per group that gets its own occluder pieces
+FEW_PIECES = 32  # up to this many pieces every receiver sees them all
+TILE_POINTS = 2500  # otherwise receivers per group that gets its own occluder pieces
 MAX_TILES = 16
 
 
@@ -132,15 +133,18 @@ def illuminance_and_state(
     ext = [p, sources.verts] + [np.asarray(o.bounds, dtype=np.float64) for o in solids]
     allpts = np.vstack(ext)
     scale = float(max(np.max(np.ptp(allpts, axis=0)), np.max(np.abs(allpts)), 1e-300))
-    # each group of nearby receivers gets the pieces its bounding box needs; one compiled pass for all
-    tiles = receiver_tiles(p) if solids else [np.arange(len(p), dtype=np.int64)]
+    # The pieces the receivers' bounding box needs; when they are many, each group of nearby
+    # receivers gets its own (fewer) pieces. One compiled pass for all.
+    whole = shadow_pieces(solids, p, sources.verts, resolution=resolution, scale=scale) if solids else []
+    tiles = receiver_tiles(p) if len(whole) > FEW_PIECES else [np.arange(len(p), dtype=np.int64)]
     ids: dict[int, int] = {}
     pieces: list[ConvexPiece] = []
     group = np.zeros(len(p), dtype=np.int64)
     g_off, g_idx = [0], []
     for t, idx in enumerate(tiles):
         group[idx] = t
-        for pc in shadow_pieces(solids, p[idx], sources.verts, resolution=resolution) if solids else []:
+        own = whole if len(tiles) == 1 else shadow_pieces(solids, p[idx], sources.verts, resolution=resolution, scale=scale)
+        for pc in own:
             g_idx.append(ids.setdefault(id(pc), len(pieces)))
             if g_idx[-1] == len(pieces):
                 pieces.append(pc)

@@ -27,6 +27,8 @@ time, with ``D``'s bounding box ``b`` (any box that contains ``D``):
 
 Pieces thinner than ``1e-9`` of the occluder's size are dropped (they cast no
 shadow), and a subtracted ``D`` whose box misses a region is not applied to it.
+The operands of a union are kept as they are: where they overlap, so do their
+pieces (harmless: shadows need only the union of the silhouettes).
 
 For shadows the decomposition can stop early (:func:`shadow_pieces`): the
 illuminance only needs the union of the pieces' silhouettes, so a region
@@ -58,7 +60,7 @@ from ..csg.program import OP_INTERSECTION, OP_UNION, compile_program
 from ..errors import InvalidGeometryError, InvalidParameterError
 from ..geometry.primitives import DEFAULT_RESOLUTION, Box, ConvexPolyhedron, Primitive, Solid
 
-__all__ = ["ConvexPiece", "convex_pieces", "halfspace_pieces", "shadow_pieces", "DEFAULT_RESOLUTION"]
+__all__ = ["ConvexPiece", "convex_pieces", "halfspace_pieces", "shadow_pieces", "clear_cache", "DEFAULT_RESOLUTION"]
 
 # A piece thinner than this (relative to the occluder's size) counts as empty.
 EMPTY_TOL = 1e-9
@@ -66,6 +68,8 @@ EMPTY_TOL = 1e-9
 HIDE_TOL = 1e-9
 # ... and must be met by a receiver's segment at a parameter t >= HIDE_T0 (not only at the receiver).
 HIDE_T0 = 1e-6
+# Regions with at most this many planes get their vertices from plane triples (no linear program).
+ENUM_PLANES = 40
 
 HalfSpaces = tuple[NDArray[np.float64], NDArray[np.float64]]  # (normals (k, 3), offsets (k,)): n . x <= d
 
@@ -219,6 +223,8 @@ def _overlap(a: _Convex, b: _Convex, tol: float) -> bool:
 
 def _make(A: NDArray[np.float64], b: NDArray[np.float64], tol: float) -> _Convex | None:
     """The region ``A x <= b`` (unit rows) with its vertices; None when thinner than ``tol``."""
+    if len(b) <= ENUM_PLANES:
+        return _make_small(A, b, tol)
     from scipy.spatial import HalfspaceIntersection, QhullError
 
     centre, r = _chebyshev((A, b))
@@ -232,6 +238,54 @@ def _make(A: NDArray[np.float64], b: NDArray[np.float64], tol: float) -> _Convex
     # keep the facets (planes through at least three vertices): the rest are redundant
     active = np.count_nonzero(np.abs(A @ verts.T - b[:, None]) <= 10 * tol, axis=1) >= 3
     return _Convex(np.ascontiguousarray(A[active]), b[active].copy(), verts)
+
+
+@functools.lru_cache(maxsize=64)
+def _triples(k: int) -> NDArray[np.int64]:
+    from itertools import combinations
+
+    return np.array(list(combinations(range(k), 3)), dtype=np.int64).reshape(-1, 3)
+
+
+def _make_small(A: NDArray[np.float64], b: NDArray[np.float64], tol: float) -> _Convex | None:
+    """:func:`_make` for few planes: the vertices are the feasible intersections of three planes.
+
+    A region is kept when its width along every facet normal exceeds ``2 tol``.
+    """
+    # one row per distinct plane
+    key = np.round(np.column_stack([A, b / max(tol * 1e6, 1e-300)]), 9)
+    _, first = np.unique(key, axis=0, return_index=True)
+    first = np.sort(first)
+    A, b = A[first], b[first]
+    t = _triples(len(b))
+    if len(t) == 0:
+        return None
+    M = A[t]
+    det = np.linalg.det(M)
+    ok = np.abs(det) > 1e-12
+    if np.count_nonzero(ok) < 4:
+        return None
+    X = np.linalg.solve(M[ok], b[t[ok]][..., None])[..., 0]
+    X = X[np.all(X @ A.T - b <= tol, axis=1)]
+    if len(X) < 4:
+        return None
+    q = 1e-2 * tol
+    _, keep = np.unique(np.round(X / q), axis=0, return_index=True)
+    V = X[np.sort(keep)]
+    inc = np.abs(A @ V.T - b[:, None]) <= 10 * tol  # (planes, vertices)
+    facet = np.count_nonzero(inc, axis=1) >= 3
+    if np.count_nonzero(facet) < 4:
+        return None
+    A, b, inc = A[facet], b[facet], inc[facet]
+    width = np.max(b[:, None] - A @ V.T, axis=1)
+    if np.min(width) <= 2 * tol:
+        return None
+    region = _Convex(np.ascontiguousarray(A), b.copy(), V)
+    # edges: vertex pairs on two common facets (a diagonal of a face may slip in: harmless for silhouettes)
+    common = inc.T.astype(np.int64) @ inc.astype(np.int64)
+    i, j = np.nonzero(np.triu(common >= 2, 1))
+    region._piece = ConvexPiece(region._A, region._b, V, np.column_stack([i, j]).astype(np.int64))
+    return region
 
 
 def _meets(c: _Convex, d: _Convex, tol: float) -> bool:
@@ -451,6 +505,13 @@ def occluder_list(occluders: Sequence[Solid] | Solid, resolution: Any) -> list[S
     return seq
 
 
+def clear_cache() -> None:
+    """Forget the decompositions kept for solids already seen (they are reused across calls)."""
+    _roots.cache_clear()
+    _pieces_cached.cache_clear()
+    _leaf_polyhedron.cache_clear()
+
+
 def halfspace_pieces(solid: Solid, *, resolution: int = DEFAULT_RESOLUTION) -> list[HalfSpaces]:
     """Convex pieces of one solid as half-space sets ``(normals, offsets)`` (``n . x <= d``).
 
@@ -477,7 +538,10 @@ def _pieces_cached(solid: Solid, resolution: int) -> tuple[ConvexPiece, ...]:
 
 
 def convex_pieces(occluders: Sequence[Solid] | Solid, *, resolution: int = DEFAULT_RESOLUTION) -> list[ConvexPiece]:
-    """Decompose occluders (primitives or CSG trees) into disjoint convex pieces.
+    """Decompose occluders (primitives or CSG trees) into convex pieces.
+
+    The pieces of one solid are disjoint (up to shared boundaries) except where
+    the operands of a union overlap; their union is the solid.
 
     Parameters
     ----------
@@ -685,6 +749,7 @@ def shadow_pieces(
     sources: Any,
     *,
     resolution: int = DEFAULT_RESOLUTION,
+    scale: float | None = None,
 ) -> list[ConvexPiece]:
     """Convex pieces of the occluders that the shadows of some receivers need.
 
@@ -703,6 +768,9 @@ def shadow_pieces(
     sources : array_like, shape (m, 3)
         Vertices of the emitting polygons.
     resolution : int, keyword-only, default 64
+    scale : float, keyword-only, optional
+        Size of the scene, for the tolerances of the tests (by default from
+        the receivers' box, the sources and the occluders' bounds).
 
     Returns
     -------
@@ -730,9 +798,10 @@ def shadow_pieces(
     S = np.asarray(sources, dtype=np.float64).reshape(-1, 3)
     if len(R) == 0 or len(S) == 0 or not seq:
         return convex_pieces(seq, resolution=resolution)
-    bounds = np.vstack([np.asarray(o.bounds, dtype=np.float64) for o in seq])
-    allp = np.vstack([R.min(axis=0), R.max(axis=0), S, bounds])
-    scale = float(max(np.max(np.ptp(allp, axis=0)), np.max(np.abs(allp)), 1e-300))
+    if scale is None:
+        bounds = np.vstack([np.asarray(o.bounds, dtype=np.float64) for o in seq])
+        allp = np.vstack([R.min(axis=0), R.max(axis=0), S, bounds])
+        scale = float(max(np.max(np.ptp(allp, axis=0)), np.max(np.abs(allp)), 1e-300))
     hiding = _Hiding(R, S, scale)
     roots = [node for o in seq for node in _roots(o, int(resolution))]
     finals = _expand(roots, hiding.hidden_local)
