@@ -365,53 +365,87 @@ def _box_split(c: _Convex, d: _Convex, tol: float) -> tuple[list[_Convex], _Conv
     return slabs, _make(np.vstack(A), np.concatenate(b), tol)
 
 
+class _Cones:
+    """The face cones of a convex region D from an interior point g (the mean of its vertices)."""
+
+    def __init__(self, d: _Convex) -> None:
+        poly = d.poly
+        V = np.asarray(poly.hull_vertices)
+        self.g = g = V.mean(axis=0)
+        self.normals = np.asarray(poly.face_normals, dtype=np.float64)
+        self.offsets = np.asarray(poly.face_offsets, dtype=np.float64)
+        self.rho = self.offsets - self.normals @ g  # distance from g to each face plane
+        nf = len(poly.faces)
+        self.axes, self.alpha = np.zeros((nf, 3)), np.zeros(nf)
+        self.planes: list[tuple[NDArray[np.float64], NDArray[np.float64]]] = [None] * nf  # type: ignore[list-item]
+        sizes = np.array([len(f) for f in poly.faces])
+        for k in np.unique(sizes):  # faces with k vertices at once
+            which = np.nonzero(sizes == k)[0]
+            loops = V[np.array([poly.faces[i] for i in which])] - g  # (faces, k, 3), from g
+            fc = loops.mean(axis=1)
+            axis = fc / np.linalg.norm(fc, axis=1, keepdims=True)
+            rays = loops / np.linalg.norm(loops, axis=2, keepdims=True)
+            cosmin = np.min(np.einsum("fkj,fj->fk", rays, axis), axis=1)
+            m = np.cross(loops, np.roll(loops, -1, axis=1))
+            m /= np.linalg.norm(m, axis=2, keepdims=True)
+            m *= np.where(np.einsum("fkj,fj->fk", m, fc) > 0, -1.0, 1.0)[..., None]  # inside: m . (x - g) <= 0
+            self.axes[which] = axis
+            self.alpha[which] = np.arccos(np.clip(cosmin, -1.0, 1.0))
+            mg = m @ g
+            for r, i in enumerate(which):
+                self.planes[i] = (m[r], mg[r])
+
+
+_CONES: dict[int, tuple[_Convex, _Cones]] = {}
+
+
+def _cones(d: _Convex) -> _Cones:
+    hit = _CONES.get(id(d))
+    if hit is None or hit[0] is not d:
+        if len(_CONES) > 4096:
+            _CONES.clear()
+        hit = _CONES[id(d)] = (d, _Cones(d))
+    return hit[1]
+
+
 def _cone_split(L: _Convex, d: _Convex, tol: float) -> list[_Convex]:
-    """``L - d`` as pieces ``L n cone(f) n outside(f)`` over the faces f of ``d``."""
-    poly = d.poly
-    V = np.asarray(poly.hull_vertices)
-    g = V.mean(axis=0)
-    out = []
+    """``L - d`` as pieces ``L n cone(f) n outside(f)`` over the faces f of ``d``.
+
+    Faces are skipped when ``L`` lies inside their plane, or when the
+    directions from g into ``L`` miss their cone (see :func:`_cone_misses`).
+    """
+    cones = _cones(d)
+    g = cones.g
     LA, Lb, LV = L.A, L.b, L.verts
-    # planes of L that g lies on or beyond (within tol)
-    near = LA @ g >= Lb - tol
-    gside, gdelta = LA[near], np.maximum(Lb[near] - LA[near] @ g, 0.0)
-    for f, nf, of in zip(poly.faces, poly.face_normals, poly.face_offsets):
-        if np.max(LV @ nf) <= of + tol:  # L lies inside f's plane
-            continue
-        loop = V[np.asarray(f)]
-        fc = loop.mean(axis=0)
-        axis = fc - g
-        axis /= np.linalg.norm(axis)
-        if len(gside) and _cone_misses(loop, g, axis, gside, gdelta, of - float(np.dot(nf, g))):
-            continue
-        m = np.cross(loop - g, np.roll(loop, -1, axis=0) - g)
-        m /= np.linalg.norm(m, axis=1, keepdims=True)
-        m[(m @ (fc - g)) > 0] *= -1.0  # inside: m . (x - g) <= 0
-        A = np.vstack([LA, -np.asarray(nf)[None, :], m])
-        b = np.concatenate([Lb, [-of], m @ g])
+    cand = np.max(LV @ cones.normals.T, axis=0) > cones.offsets + tol
+    near = LA @ g >= Lb - tol  # planes of L that g lies on or beyond (within tol)
+    if np.any(near):
+        cand &= ~_cone_misses(cones.axes, cones.alpha, LA[near], np.maximum(Lb[near] - LA[near] @ g, 0.0), cones.rho)
+    out = []
+    for j in np.nonzero(cand)[0]:
+        m, mg = cones.planes[j]
+        A = np.vstack([LA, -cones.normals[j][None, :], m])
+        b = np.concatenate([Lb, [-cones.offsets[j]], mg])
         piece = _make(A, b, tol)
         if piece is not None:
             out.append(piece)
     return out
 
 
-def _cone_misses(loop, g, axis, planes, delta, rho) -> bool:
-    """Whether ``L n cone(f) n outside(f)`` is empty by the directions from ``g``.
+def _cone_misses(axes, alpha, planes, delta, rho) -> NDArray[np.bool_]:
+    """For each face: whether ``L n cone(f) n outside(f)`` is empty by the directions from ``g``.
 
     ``planes`` (unit rows a, with ``a . g >= b - delta``) bound ``L``: a point
     ``x = g + t u`` of ``L`` has ``t (a . u) <= delta``. Every direction ``u``
-    of the cone over ``f`` lies in the cap around ``axis`` of half-angle
+    of the cone over ``f`` lies in the cap around its ``axis`` of half-angle
     ``alpha``; where ``a . u >= mu > 0`` on the whole cap, ``t <= delta / mu``,
     while points beyond ``f`` have ``t >= rho`` (the distance from ``g`` to
     ``f``'s plane). Both cannot hold when ``delta / mu < rho``.
     """
-    rays = loop - g
-    rays /= np.linalg.norm(rays, axis=1, keepdims=True)
-    alpha = float(np.arccos(np.clip(np.min(rays @ axis), -1.0, 1.0)))
-    theta = np.arccos(np.clip(planes @ axis, -1.0, 1.0))
-    mu = np.cos(np.minimum(theta + alpha, np.pi))
-    ok = (theta + alpha < 0.5 * np.pi - 1e-9) & (delta < 0.5 * rho * mu)
-    return bool(np.any(ok))
+    theta = np.arccos(np.clip(planes @ axes.T, -1.0, 1.0))  # (planes, faces)
+    edge = theta + alpha[None, :]
+    mu = np.cos(np.minimum(edge, np.pi))
+    return np.any((edge < 0.5 * np.pi - 1e-9) & (delta[:, None] < 0.5 * rho[None, :] * mu), axis=0)
 
 
 def _terms(solid: Solid, resolution: int, tol: float) -> list[tuple[_Convex, tuple[_Convex, ...]]]:
