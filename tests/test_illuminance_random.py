@@ -9,7 +9,10 @@ so that their plane cuts the source, or turned away). Judges:
 - the Monte Carlo estimator of ``mc_reference`` (exact ray tests against the
   primitives' own half-spaces; a CSG tree is rewritten by hand as unions of
   "plus minus minus" parts), re-estimated with finer strata where under 1 %
-  of the samples were visible (``mc_refined``): every point within 4 sigma;
+  of the samples were visible (``mc_refined``), and independently with four
+  times the samples where the first interval is crossed (``mc_recheck``: the
+  interval from 32 replicates is crossed by chance now and then, a real
+  discrepancy persists): every point within 4 sigma;
 - the independent shadow states of ``test_illuminance.expected_states``
   wherever a point is clear of a boundary;
 - closed forms: E = 0 where the state is 2; for a horizontal rectangle facing
@@ -37,7 +40,7 @@ from isocsg.shadows import AreaLight, PolyhedronLight, illuminance_and_state
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
-from mc_reference import MCOccluder, box_halfspaces, hull_halfspaces, mc_refined  # noqa: E402
+from mc_reference import MCOccluder, box_halfspaces, hull_halfspaces, mc_recheck, mc_refined  # noqa: E402
 from test_illuminance import expected_states  # noqa: E402
 
 RES = 8  # tessellation of curved primitives, shared with the reference
@@ -221,6 +224,7 @@ def test_random_scenes_against_monte_carlo_and_closed_forms(src, occs, rec):
     event(f"source {kind}")
     sources_ = [(light.emitting_polygons(), light.radiance)]
     mc = mc_refined(P, N, sources_, mc_occ, k=8, replicates=32)
+    mc = mc_recheck(P, N, sources_, mc_occ, E, mc)
     tol = 4 * mc.se + 1e-12 * np.maximum(1.0, np.abs(E))
     bad = np.abs(E - mc.mean) > tol
     assert not bad.any(), (
