@@ -452,9 +452,7 @@ def _terms(solid: Solid, resolution: int, tol: float) -> list[tuple[_Convex, tup
     """The solid as disjoint terms ``(C, (D_1, ..., D_m))`` meaning ``C - (D_1 u ... u D_m)``."""
 
     def leaf(_: int, prim: Primitive) -> list:
-        if isinstance(prim, (Box, ConvexPolyhedron)):
-            return [(_Convex(prim=prim, res=resolution), ())]
-        return [(_Convex(prim=prim, res=resolution), ())]
+        return [(_Convex(prim=prim, res=resolution), ())]  # lazy: tessellated only when cut or kept
 
     def combine(op: int, parts: list[list]) -> list:
         if op == OP_UNION:
@@ -525,6 +523,19 @@ def _expand(roots: Sequence[_Node], hide=None) -> list[_Convex]:
 
 
 def occluder_list(occluders: Sequence[Solid] | Solid, resolution: Any) -> list[Solid]:
+    """The occluders as a list of solids, validated (as :func:`convex_pieces` does).
+
+    Returns
+    -------
+    list of Solid
+
+    Raises
+    ------
+    InvalidGeometryError
+        If an occluder is not a solid (naming its index).
+    InvalidParameterError
+        If ``resolution`` is not an integer >= 3.
+    """
     if isinstance(resolution, bool) or not isinstance(resolution, (int, np.integer)) or resolution < 3:
         raise InvalidParameterError(f"resolution must be an integer >= 3, got {resolution!r}")
     if isinstance(occluders, Solid):
@@ -544,6 +555,7 @@ def clear_cache() -> None:
     _roots.cache_clear()
     _pieces_cached.cache_clear()
     _leaf_polyhedron.cache_clear()
+    _CONES.clear()
 
 
 def halfspace_pieces(solid: Solid, *, resolution: int = DEFAULT_RESOLUTION) -> list[HalfSpaces]:
