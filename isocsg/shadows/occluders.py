@@ -240,11 +240,82 @@ def _make(A: NDArray[np.float64], b: NDArray[np.float64], tol: float) -> _Convex
     return _Convex(np.ascontiguousarray(A[active]), b[active].copy(), verts)
 
 
-@functools.lru_cache(maxsize=64)
-def _triples(k: int) -> NDArray[np.int64]:
-    from itertools import combinations
-
-    return np.array(list(combinations(range(k), 3)), dtype=np.int64).reshape(-1, 3)
+@numba.njit(cache=True)
+def _enumerate(A, b, tol):
+    """Vertices of ``A x <= b`` from plane triples, facet mask, edges; no vertices when flat or empty."""
+    k = A.shape[0]
+    cap = max(k * (k - 1) * (k - 2) // 6, 1)
+    V = np.empty((cap, 3))
+    n = 0
+    merge = 1e-2 * tol
+    for i in range(k):
+        for j in range(i + 1, k):
+            c0 = A[i, 1] * A[j, 2] - A[i, 2] * A[j, 1]
+            c1 = A[i, 2] * A[j, 0] - A[i, 0] * A[j, 2]
+            c2 = A[i, 0] * A[j, 1] - A[i, 1] * A[j, 0]
+            for m in range(j + 1, k):
+                det = A[m, 0] * c0 + A[m, 1] * c1 + A[m, 2] * c2
+                if abs(det) <= 1e-12:
+                    continue
+                # Cramer: x = (b_i (a_j x a_m) + b_j (a_m x a_i) + b_m (a_i x a_j)) / det
+                x = np.empty(3)
+                for r in range(3):
+                    r1 = (r + 1) % 3
+                    r2 = (r + 2) % 3
+                    jm = A[j, r1] * A[m, r2] - A[j, r2] * A[m, r1]
+                    mi = A[m, r1] * A[i, r2] - A[m, r2] * A[i, r1]
+                    ij = A[i, r1] * A[j, r2] - A[i, r2] * A[j, r1]
+                    x[r] = (b[i] * jm + b[j] * mi + b[m] * ij) / det
+                ok = True
+                for q in range(k):
+                    if A[q, 0] * x[0] + A[q, 1] * x[1] + A[q, 2] * x[2] - b[q] > tol:
+                        ok = False
+                        break
+                if not ok:
+                    continue
+                for w in range(n):
+                    if abs(V[w, 0] - x[0]) <= merge and abs(V[w, 1] - x[1]) <= merge and abs(V[w, 2] - x[2]) <= merge:
+                        ok = False
+                        break
+                if ok:
+                    V[n] = x
+                    n += 1
+    facet = np.zeros(k, dtype=np.bool_)
+    empty = (V[:0].copy(), facet, np.zeros((0, 2), dtype=np.int64))
+    if n < 4:
+        return empty
+    inc = np.zeros((k, n), dtype=np.bool_)
+    nfacet = 0
+    for q in range(k):
+        c = 0
+        for w in range(n):
+            if abs(A[q, 0] * V[w, 0] + A[q, 1] * V[w, 1] + A[q, 2] * V[w, 2] - b[q]) <= 10 * tol:
+                inc[q, w] = True
+                c += 1
+        if c >= 3:
+            facet[q] = True
+            nfacet += 1
+            width = 0.0
+            for w in range(n):
+                width = max(width, b[q] - (A[q, 0] * V[w, 0] + A[q, 1] * V[w, 1] + A[q, 2] * V[w, 2]))
+            if width <= 2 * tol:
+                return empty
+    if nfacet < 4:
+        return empty
+    # edges: vertex pairs on two common facets (a diagonal of a face may slip in: harmless for silhouettes)
+    E = np.empty((n * (n - 1) // 2, 2), dtype=np.int64)
+    ne = 0
+    for v in range(n):
+        for w in range(v + 1, n):
+            c = 0
+            for q in range(k):
+                if facet[q] and inc[q, v] and inc[q, w]:
+                    c += 1
+            if c >= 2:
+                E[ne, 0] = v
+                E[ne, 1] = w
+                ne += 1
+    return V[:n].copy(), facet, E[:ne].copy()
 
 
 def _make_small(A: NDArray[np.float64], b: NDArray[np.float64], tol: float) -> _Convex | None:
@@ -252,39 +323,11 @@ def _make_small(A: NDArray[np.float64], b: NDArray[np.float64], tol: float) -> _
 
     A region is kept when its width along every facet normal exceeds ``2 tol``.
     """
-    # one row per distinct plane
-    key = np.round(np.column_stack([A, b / max(tol * 1e6, 1e-300)]), 9)
-    _, first = np.unique(key, axis=0, return_index=True)
-    first = np.sort(first)
-    A, b = A[first], b[first]
-    t = _triples(len(b))
-    if len(t) == 0:
+    V, facet, edges = _enumerate(np.ascontiguousarray(A, dtype=np.float64), np.ascontiguousarray(b, dtype=np.float64), tol)
+    if len(V) == 0:
         return None
-    M = A[t]
-    det = np.linalg.det(M)
-    ok = np.abs(det) > 1e-12
-    if np.count_nonzero(ok) < 4:
-        return None
-    X = np.linalg.solve(M[ok], b[t[ok]][..., None])[..., 0]
-    X = X[np.all(X @ A.T - b <= tol, axis=1)]
-    if len(X) < 4:
-        return None
-    q = 1e-2 * tol
-    _, keep = np.unique(np.round(X / q), axis=0, return_index=True)
-    V = X[np.sort(keep)]
-    inc = np.abs(A @ V.T - b[:, None]) <= 10 * tol  # (planes, vertices)
-    facet = np.count_nonzero(inc, axis=1) >= 3
-    if np.count_nonzero(facet) < 4:
-        return None
-    A, b, inc = A[facet], b[facet], inc[facet]
-    width = np.max(b[:, None] - A @ V.T, axis=1)
-    if np.min(width) <= 2 * tol:
-        return None
-    region = _Convex(np.ascontiguousarray(A), b.copy(), V)
-    # edges: vertex pairs on two common facets (a diagonal of a face may slip in: harmless for silhouettes)
-    common = inc.T.astype(np.int64) @ inc.astype(np.int64)
-    i, j = np.nonzero(np.triu(common >= 2, 1))
-    region._piece = ConvexPiece(region._A, region._b, V, np.column_stack([i, j]).astype(np.int64))
+    region = _Convex(np.ascontiguousarray(A[facet]), b[facet].copy(), V)
+    region._piece = ConvexPiece(region._A, region._b, V, edges)
     return region
 
 
