@@ -12,7 +12,15 @@ exact values, averaged over seeds; the count is searched over k x k grids),
 and the points per second where the source is fully visible (no occluders, and
 the lit points of the room).
 
-Run: ``python benchmarks/illuminance.py [--quick]``.
+With ``--scale``: the same room whose table carries a CSG plate (a box with
+six spherical pockets, spheres at resolution 64) over the 201 x 201 floor,
+beside the boxes-only room: the time of the first call (the decomposition of
+the plate included, caches emptied), of later calls (the decomposition
+reused), the convex pieces the receivers need (over all receiver groups), and
+points per second; and the plate alone (no table to hide it). ``--full`` adds
+the full convex decomposition of the plate (every piece, nothing left out).
+
+Run: ``python benchmarks/illuminance.py [--quick] [--scale [--full]]``.
 """
 
 from __future__ import annotations
@@ -31,6 +39,8 @@ from _common import fmt_rate, fmt_seconds, median_time, print_table  # noqa: E40
 
 import isocsg  # noqa: E402
 from isocsg.shadows import AreaLight, illuminance, illuminance_and_state  # noqa: E402
+from isocsg.shadows import occluders as occluder_module  # noqa: E402
+from isocsg.shadows.illuminance import FEW_PIECES, receiver_tiles  # noqa: E402
 
 RADIANCE = 1000.0
 
@@ -176,10 +186,76 @@ def run(quick: bool) -> None:
     )
 
 
+def pocket_plate():
+    """A 0.9 x 0.5 x 0.06 m plate on the table top with six spherical pockets (radius 5 cm) in its top."""
+    solid = isocsg.Box((0.3, 0.2, 0.78), (0.9, 0.5, 0.06))
+    for dx in (-0.27, 0.0, 0.27):
+        for dy in (-0.11, 0.11):
+            solid = solid - isocsg.Sphere((0.3 + dx, 0.2 + dy, 0.81), 0.05)
+    return solid
+
+
+def pieces_used(P, lamp, occluders, resolution):
+    """Distinct convex pieces over the receiver groups, and the largest count one group uses."""
+    whole = occluder_module.shadow_pieces(occluders, P, lamp.vertices_array, resolution=resolution)
+    if len(whole) <= FEW_PIECES:
+        return len(whole), len(whole)
+    ids, most = set(), 0
+    for idx in receiver_tiles(P):
+        pcs = occluder_module.shadow_pieces(occluders, P[idx], lamp.vertices_array, resolution=resolution)
+        ids.update(id(pc) for pc in pcs)
+        most = max(most, len(pcs))
+    return len(ids), most
+
+
+def run_scale(quick: bool, full: bool) -> None:
+    import time
+
+    lamp, boxes = room()
+    plate = pocket_plate()
+    res = 64
+    P = floor(201)
+    n = len(P)
+    repeats = 3 if quick else 5
+    illuminance_and_state(floor(3), [0, 0, 1], [lamp], boxes)  # compile
+    rows = []
+    for label, occ in (
+        ("boxes only (table)", boxes),
+        ("table + plate with 6 pockets (res 64)", [*boxes, plate]),
+        ("plate with 6 pockets alone (res 64)", [plate]),
+    ):
+        occluder_module.clear_cache()
+        t0 = time.perf_counter()
+        E, S = illuminance_and_state(P, [0, 0, 1], [lamp], occ, resolution=res)
+        t_first = time.perf_counter() - t0
+        t_again, _ = median_time(lambda: illuminance_and_state(P, [0, 0, 1], [lamp], occ, resolution=res), repeats)
+        used, most = pieces_used(P, lamp, occ, res)
+        counts = np.bincount(S, minlength=3)
+        rows.append((label, fmt_seconds(t_first), fmt_seconds(t_again), fmt_rate(n, t_again), f"{used} ({most})",
+                     f"{counts[0]}/{counts[1]}/{counts[2]}"))
+    print_table(
+        "CSG furniture at scale: 201 x 201 floor, exact E and states (first call: decomposition included)",
+        ["occluders", "first call", "later calls (median)", "points/s", "pieces used (most per group)", "lit/pen/umb"],
+        rows,
+    )
+    if full:
+        occluder_module.clear_cache()
+        t0 = time.perf_counter()
+        pcs = occluder_module.convex_pieces([plate], resolution=res)
+        print_table("Full convex decomposition of the plate (every piece)", ["pieces", "time"],
+                    [(len(pcs), fmt_seconds(time.perf_counter() - t0))])
+
+
 def main(argv: list[str] | None = None) -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--quick", action="store_true", help="fewer repeats and seeds")
-    run(ap.parse_args(argv).quick)
+    ap.add_argument("--scale", action="store_true", help="the room with a CSG plate on the table (201 x 201 floor)")
+    ap.add_argument("--full", action="store_true", help="with --scale: also the full decomposition of the plate")
+    args = ap.parse_args(argv)
+    if args.scale:
+        run_scale(args.quick, args.full)
+    else:
+        run(args.quick)
 
 
 if __name__ == "__main__":

@@ -10,6 +10,8 @@ expected shadow state is decided independently of the library:
   crossed more than 1e-6 deep by the segment from p to every source vertex
   (so by every segment to the convex source);
 - penumbra (1): some samples are visible and some are blocked (exact ray tests);
+- umbra (2) too where no part of the source lies in front of p's receiving
+  plane (the conventions: none of the source reaches p);
 - anything else is too close to a boundary to judge, and is skipped (few).
 """
 
@@ -100,8 +102,8 @@ def expected_states(points, normals, polygon_sets, mc_frac, hull_vertices, solid
         per_light = []
         for polys in polygon_sets:
             parts = _front_parts(p, n, polys)
-            if not parts:
-                per_light.append(0)
+            if not parts:  # the receiving plane cuts the whole source away: none of it reaches p
+                per_light.append(2)
                 continue
             radii = [_pyramid_meets(p, part, hs) for part in parts for hs in hulls]
             if all(r < -MARGIN for r in radii):
@@ -243,3 +245,42 @@ def test_table_top_points_and_several_lights():
     cs = [b.corners for b in boxes]
     E, S, _ = check(P, N, [lamp, lamp2], boxes, [convex(*h) for h in hs], cs, cs)
     assert np.all(S[: len(top)] == 0)
+
+
+def test_receiving_plane_cutting_away_the_whole_source_is_umbra():
+    """None of the source in front of the receiving plane: E = 0 and state 2 (the conventions)."""
+    lamp = square_light(0, 0, 3.0, 0.5, 0.5, 2.0)
+    cube = PolyhedronLight([(x, y, z) for x in (2.7, 3.3) for y in (-0.3, 0.3) for z in (1.7, 2.3)], 1.5)
+    box = isocsg.Box((0.2, 0.1, 1.2), (0.8, 0.6, 0.4))
+    hs = box_halfspaces(box.center, box.size)
+    P = np.array([
+        (-1.5, 0.0, 0.0), (0.0, 0.0, 0.0),  # facing +x (lit by the square), facing up (under the box)
+        (1.5, 1.5, 0.0),  # facing down, under the square source: type C
+        (0.3, -0.2, 3.5),  # above the square source, facing up: behind its emitting side
+        (0.2, 0.3, 3.0),  # in the source's plane, outside the polygon
+        (1.8, 0.0, 0.5),  # tilted so that its plane passes above every source vertex
+        (3.0, 0.0, 0.5),  # under the cube source, facing down
+        (3.0, 0.0, 0.0),  # under the cube, facing up: lit by the cube
+    ])
+    N = np.array([
+        (1.0, 0.0, 0.0), (0.0, 0.0, 1.0),
+        (0.0, 0.0, -1.0),
+        (0.0, 0.0, 1.0),
+        (1.0, 0.0, 0.0),
+        (0.9, 0.0, -0.1),
+        (0.0, 0.0, -1.0),
+        (0.0, 0.0, 1.0),
+    ])
+    N /= np.linalg.norm(N, axis=1, keepdims=True)
+    # the square alone: points 2..5 have nothing of it in front of their planes
+    E, S, exp = check(P[:6], N[:6], [lamp], [box], [convex(*hs)], [box.corners], [box.corners])
+    np.testing.assert_array_equal(S[2:6], 2)
+    np.testing.assert_array_equal(E[2:6], 0.0)
+    assert E[0] > 0 and S[0] == 0
+    # the cube alone: facing away from it is state 2, facing it is lit
+    E, S, _ = check(P[6:], N[6:], [cube], [], [], [], [])
+    assert S.tolist() == [2, 0] and E[0] == 0.0 and E[1] > 0
+    # both lights: the worst state over the lights; the square lights this point, the cube is behind its plane
+    p, n = np.array([(1.5, 0.0, 1.0)]), np.array([(-1.0, 0.0, 0.2)])
+    E, S, _ = check(p, n, [lamp, cube], [box], [convex(*hs)], [box.corners], [box.corners])
+    assert S.tolist() == [2] and E[0] > 0

@@ -35,7 +35,16 @@ SOLIDS = {
     "plate-minus-cylinder": Box((0, 0, 0), (2, 2, 0.2)) - Cylinder((0.2, 0, 0), (0, 0, 1), 0.4),
     "box-minus-two": Box((0, 0, 0), (2, 2, 2)) - Box((1, 1, 1), (1, 1, 1)) - Sphere((-1, -1, -1), 0.7),
     "nested": (Box((0, 0, 0), (2, 2, 2)) - Box((0, 0, 0), (1, 1, 3))) & Box((0.5, 0.5, 0), (2, 2, 1)),
+    # overlapping pockets: a region left by one pocket's box split is cut by the next
+    "pockets": Box((0, 0, 0), (2, 1, 0.3)) - Sphere((-0.5, 0, 0.15), 0.25) - Sphere((0.5, 0, 0.15), 0.25)
+    - Sphere((0.1, 0.2, 0.15), 0.3),
+    "minus-a-difference": Box((0, 0, 0), (2, 2, 2)) - (Box((0.5, 0, 0), (2, 1, 1)) - Sphere((0.8, 0, 0), 0.5)),
+    "union-minus": (Box((0, 0, 0), (1, 1, 1)) | Box((0.8, 0, 0), (1, 1, 0.6))) - Cylinder((0.4, 0, 0), (0, 0, 2), 0.3),
+    "intersection-minus": (Box((0, 0, 0), (2, 2, 2)) & Sphere((0.2, 0, 0), 1.2)) - Box((0.5, 0.5, 0.5), (1, 1, 1)),
 }
+
+
+UNION_OVERLAPS = {"union-minus"}  # the operands of a union overlap: so may their pieces
 
 
 @pytest.mark.parametrize("name", list(SOLIDS), ids=list(SOLIDS))
@@ -59,7 +68,8 @@ def test_pieces_cover_the_solid_without_overlap(name):
     # every point strictly inside a piece is in the solid; every point of the solid is in some piece
     assert not np.any((counts > 0) & ~inside)
     assert not np.any(inside & ~loose)
-    assert counts.max() <= 1  # interiors are disjoint
+    if name not in UNION_OVERLAPS:
+        assert counts.max() <= 1  # interiors are disjoint
 
 
 def test_volumes_add_up():

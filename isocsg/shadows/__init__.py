@@ -9,7 +9,7 @@ integral in :mod:`isocsg.shadows.lambert`; occluder decomposition in
 from .illuminance import LIT, PENUMBRA, UMBRA, illuminance, illuminance_and_state, shadow_state
 from .lambert import edge_terms, polygon_illuminance, rings_illuminance
 from .lights import AreaLight, PolyhedronLight
-from .occluders import ConvexPiece, convex_pieces
+from .occluders import ConvexPiece, convex_pieces, shadow_pieces
 
 __all__ = [
     "AreaLight",
@@ -25,4 +25,5 @@ __all__ = [
     "rings_illuminance",
     "ConvexPiece",
     "convex_pieces",
+    "shadow_pieces",
 ]

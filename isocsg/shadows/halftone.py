@@ -295,6 +295,9 @@ def shadow_codes(plan: _LightPlan, points: NDArray[np.float64], normals: NDArray
     if isinstance(plan.light, AreaLight):
         behind = (points - plan.vertices[0]) @ np.asarray(plan.light.normal) <= tol
         ftype = np.where(behind, 2, ftype).astype(np.int8)
+    # nothing of the source in front of the receiving plane (type C, or behind an area source):
+    # none of it reaches the point, state 2 (the conventions)
+    state = np.where(ftype == 2, 2, state).astype(np.int8)
     return state, member, ftype
 
 

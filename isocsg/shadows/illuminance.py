@@ -10,14 +10,16 @@ part of each source visible from p (:mod:`isocsg.shadows.visibility`):
   the seed's contour-line integral; occluders are handled face by face;
 - several lights add up.
 
-Shadow state of a point, per light: 0 (lit) when the part of the source in
-front of the receiving plane is fully visible, 1 (penumbra) when partly,
-2 (umbra) when none of it is. A point that has *nothing* of a source in front
-of its receiving plane (a face turned away from the light, the seed's type C,
-or a point behind an area source) is in no shadow of that light: it counts as
-0 for it, and its illuminance from it is 0. Over several lights the state is
-the worst (largest) one. Umbra means a visible area below ``1e-9`` of the
-source part in front of the plane.
+Shadow state of a point, per light (the conventions: 0 lit when the source is
+fully visible, 1 penumbra when partly, 2 umbra when not at all): 0 when the
+part of the source in front of the receiving plane is fully visible, 1 when
+partly, 2 when none of it is. A point that has *nothing* of a source in front
+of its receiving plane (its plane cuts the whole source away: a face turned
+away from the light, the seed's type C, or a point behind an area source or
+in its plane) receives none of the source: state 2 for that light, and
+illuminance 0 from it. Over several lights the state is the worst (largest)
+one. Umbra means a visible area below ``1e-9`` of the source part in front of
+the plane.
 """
 
 from __future__ import annotations
@@ -29,14 +31,19 @@ from numpy.typing import ArrayLike, NDArray
 from ..geometry.primitives import DEFAULT_RESOLUTION, Solid
 from .lambert import _prepare, edge_terms
 from .lights import AreaLight, PolyhedronLight, as_light_list
-from .occluders import convex_pieces
+from .occluders import ConvexPiece, occluder_list
+from .occluders import shadow_pieces
 from .visibility import UMBRA_TOL, PieceArrays, SourceArrays, blockers_single, visible_illuminance
 
-__all__ = ["illuminance", "shadow_state", "illuminance_and_state", "LIT", "PENUMBRA", "UMBRA"]
+__all__ = ["illuminance", "shadow_state", "illuminance_and_state", "receiver_tiles", "LIT", "PENUMBRA", "UMBRA"]
 
 LIT = 0
 PENUMBRA = 1
 UMBRA = 2
+
+FEW_PIECES = 32  # up to this many pieces every receiver sees them all
+TILE_POINTS = 2500  # otherwise receivers per group that gets its own occluder pieces
+MAX_TILES = 16
 
 
 def _sources(lights: list[AreaLight | PolyhedronLight]) -> SourceArrays:
@@ -50,7 +57,8 @@ def _sources(lights: list[AreaLight | PolyhedronLight]) -> SourceArrays:
 
 
 def _fallback_point(
-    p: NDArray[np.float64], n: NDArray[np.float64], sources: SourceArrays, pieces: PieceArrays, scale: float
+    p: NDArray[np.float64], n: NDArray[np.float64], sources: SourceArrays, pieces: PieceArrays, scale: float,
+    sel: NDArray[np.int64] | None = None,
 ) -> tuple[float, int]:
     """One point through the 2D Boolean path (shapely): many overlapping silhouettes."""
     import shapely
@@ -60,7 +68,7 @@ def _fallback_point(
     e = 0.0
     gstat = np.full(sources.ngroups, -1, dtype=np.int64)
     for s in range(len(sources.radiance)):
-        P2, blocked = blockers_single(p, n, s, sources, pieces, scale)
+        P2, blocked = blockers_single(p, n, s, sources, pieces, scale, sel)
         if len(P2) < 3:
             continue
         sp = Polygon(P2)
@@ -93,7 +101,7 @@ def _fallback_point(
         e += 0.5 * sources.radiance[s] * max(total, 0.0)
     worst = 0
     for st in gstat:
-        if st == 2:
+        if st == 2 or st < 0:
             worst = 2
         elif st == 3:
             worst = max(worst, 1)
@@ -120,16 +128,68 @@ def illuminance_and_state(
     """
     p, n = _prepare(points, normals)
     light_list = as_light_list(lights)
-    pieces = convex_pieces(occluders, resolution=resolution)
+    solids = occluder_list(occluders, resolution)
     sources = _sources(light_list)
-    pa = PieceArrays(pieces)
-    ext = [p] + [sources.verts] + ([pa.verts] if len(pa.verts) else [])
+    ext = [p, sources.verts] + [np.asarray(o.bounds, dtype=np.float64) for o in solids]
     allpts = np.vstack(ext)
     scale = float(max(np.max(np.ptp(allpts, axis=0)), np.max(np.abs(allpts)), 1e-300))
-    E, state, overflow = visible_illuminance(p, n, sources, pa, scale)
+    # The pieces the receivers' bounding box needs; when they are many, each group of nearby
+    # receivers gets its own (fewer) pieces. One compiled pass for all.
+    whole = shadow_pieces(solids, p, sources.verts, resolution=resolution, scale=scale) if solids else []
+    tiles = receiver_tiles(p) if len(whole) > FEW_PIECES else [np.arange(len(p), dtype=np.int64)]
+    ids: dict[int, int] = {}
+    pieces: list[ConvexPiece] = []
+    group = np.zeros(len(p), dtype=np.int64)
+    g_off, g_idx = [0], []
+    for t, idx in enumerate(tiles):
+        group[idx] = t
+        own = whole if len(tiles) == 1 else shadow_pieces(solids, p[idx], sources.verts, resolution=resolution, scale=scale)
+        for pc in own:
+            g_idx.append(ids.setdefault(id(pc), len(pieces)))
+            if g_idx[-1] == len(pieces):
+                pieces.append(pc)
+        g_off.append(len(g_idx))
+    pa = PieceArrays(pieces)
+    groups = (group, np.asarray(g_off, dtype=np.int64), np.asarray(g_idx, dtype=np.int64))
+    E, state, overflow = visible_illuminance(p, n, sources, pa, scale, groups)
     for i in np.nonzero(overflow)[0]:
-        E[i], state[i] = _fallback_point(p[i], n[i], sources, pa, scale)
+        sel = groups[2][groups[1][group[i]] : groups[1][group[i] + 1]]
+        E[i], state[i] = _fallback_point(p[i], n[i], sources, pa, scale, sel)
     return E, state
+
+
+def receiver_tiles(points: NDArray[np.float64], *, per_tile: int = TILE_POINTS, max_tiles: int = MAX_TILES) -> list[NDArray[np.int64]]:
+    """Groups of nearby receivers (index arrays): the cells of a grid over their bounding box.
+
+    About ``len(points) / per_tile`` cells (at most ``max_tiles``), more along
+    the longer sides; empty cells are dropped. Each group gets its own
+    occluder pieces (:func:`~isocsg.shadows.occluders.shadow_pieces` leaves
+    out what its bounding box cannot see).
+
+    Examples
+    --------
+    >>> x, y = np.meshgrid(np.linspace(0, 2, 10), np.linspace(0, 1, 10))
+    >>> tiles = receiver_tiles(np.c_[x.ravel(), y.ravel(), 0 * x.ravel()], per_tile=50)
+    >>> [len(t) for t in tiles]
+    [50, 50]
+    """
+    n = len(points)
+    want = min(max_tiles, -(-n // max(per_tile, 1)))
+    if want <= 1:
+        return [np.arange(n, dtype=np.int64)]
+    lo, hi = points.min(axis=0), points.max(axis=0)
+    ext = hi - lo
+    cells = np.ones(3, dtype=np.int64)
+    while True:
+        ax = int(np.argmax(ext / cells))
+        if ext[ax] <= 0 or np.prod(cells) * (cells[ax] + 1) // cells[ax] > want:
+            break
+        cells[ax] += 1
+    ijk = np.minimum(((points - lo) / np.where(ext > 0, ext, 1.0) * cells).astype(np.int64), cells - 1)
+    key = (ijk[:, 0] * cells[1] + ijk[:, 1]) * cells[2] + ijk[:, 2]
+    order = np.argsort(key, kind="stable")
+    cuts = np.nonzero(np.diff(key[order]))[0] + 1
+    return np.split(order, cuts)
 
 
 def illuminance(
@@ -194,8 +254,8 @@ def shadow_state(
 ) -> NDArray[np.int8]:
     """Shadow state of each point: 0 lit, 1 penumbra, 2 umbra (worst over the lights).
 
-    A point with nothing of a source in front of its receiving plane is in no
-    shadow of that source (state 0 for it); see the module docstring.
+    A point with nothing of a source in front of its receiving plane receives
+    none of it: state 2 for that source; see the module docstring.
 
     Parameters
     ----------

@@ -19,9 +19,10 @@ points there exactly (per-point visibility of the source) when asked to.
 
 Face types (eqs. 3, 4): a type-B face (its plane cuts the source) is shadowed
 with the part of the source in front of its plane, as the seed prescribes. A
-type-C face receives no light at all: it has no shadow regions (its
-illuminance is 0 everywhere, and :func:`isocsg.shadows.shadow_state` reports
-such points as lit, i.e. in no shadow).
+type-C face receives no light at all: it has no occluder shadow regions, its
+illuminance is 0 everywhere, and its points are in state 2 (none of the
+source reaches them), as :func:`isocsg.shadows.shadow_state` reports them and
+:meth:`FaceShadows.classify` returns.
 """
 
 from __future__ import annotations
@@ -155,6 +156,8 @@ class FaceShadows:
     def classify(self, points: ArrayLike, *, exact: bool = False) -> NDArray[np.int8]:
         """Shadow state of face points given in frame coordinates: 0 lit, 1 penumbra, 2 umbra.
 
+        Every point of a type-C face is in state 2 (none of the source reaches it).
+
         Parameters
         ----------
         points : array_like, shape (n, 2)
@@ -170,6 +173,8 @@ class FaceShadows:
         import shapely
 
         p = points_array("points", points, columns=2)
+        if self.face_type == FaceType.C:  # none of the source reaches the face
+            return np.full(len(p), 2, dtype=np.int8)
         pts = shapely.points(p)
         out = np.zeros(len(p), dtype=np.int8)
         out[shapely.covers(self.penumbra, pts)] = 1

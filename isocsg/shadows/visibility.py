@@ -260,8 +260,8 @@ def _source_polygon(p, nr, s, s_verts, s_off, s_normal, s_u, s_w, s_q0, scale, P
 
 @numba.njit(cache=True)
 def _blockers(p, nr, s, h, P2, n2, A0, s_normal, s_u, s_w, s_q0,
-              v_verts, v_voff, v_edges, v_eoff, v_center, v_radius, pts, hull, tmp, blk, blk_n):
-    """Blocked convex pieces C_V = S_p n B_V; returns their count (-1 when more than MAXB)."""
+              v_verts, v_voff, v_edges, v_eoff, v_center, v_radius, sel, pts, hull, tmp, blk, blk_n):
+    """Blocked convex pieces (of the pieces listed in ``sel``) C_V = S_p n B_V; returns their count (-1 when more than MAXB)."""
     N = s_normal[s]
     q0 = s_q0[s]
     u = s_u[s]
@@ -295,8 +295,8 @@ def _blockers(p, nr, s, h, P2, n2, A0, s_normal, s_u, s_w, s_q0,
     px = (p[0] - q0[0]) * u[0] + (p[1] - q0[1]) * u[1] + (p[2] - q0[2]) * u[2]
     py = (p[0] - q0[0]) * w[0] + (p[1] - q0[1]) * w[1] + (p[2] - q0[2]) * w[2]
     nb = 0
-    npieces = v_center.shape[0]
-    for j in range(npieces):
+    for jj in range(sel.shape[0]):
+        j = sel[jj]
         c = v_center[j]
         r = v_radius[j]
         sc = N[0] * (c[0] - q0[0]) + N[1] * (c[1] - q0[1]) + N[2] * (c[2] - q0[2])
@@ -361,7 +361,7 @@ def _blockers(p, nr, s, h, P2, n2, A0, s_normal, s_u, s_w, s_q0,
 
 @numba.njit(cache=True)
 def _evaluate(p, nr, s, s_verts, s_off, s_normal, s_u, s_w, s_q0, scale,
-              v_verts, v_voff, v_edges, v_eoff, v_center, v_radius,
+              v_verts, v_voff, v_edges, v_eoff, v_center, v_radius, sel,
               P2, pts, hull, tmp, blk, blk_n, stk, stk_n, stk_next):
     """(edge sum of the visible part, status) for one point and one source polygon."""
     n2, h, A0 = _source_polygon(p, nr, s, s_verts, s_off, s_normal, s_u, s_w, s_q0, scale, P2)
@@ -372,7 +372,7 @@ def _evaluate(p, nr, s, s_verts, s_off, s_normal, s_u, s_w, s_q0, scale,
     w = s_w[s]
     efull = _lambert2(P2, n2, p, nr, q0, u, w)
     nb = _blockers(p, nr, s, h, P2, n2, A0, s_normal, s_u, s_w, s_q0,
-                   v_verts, v_voff, v_edges, v_eoff, v_center, v_radius, pts, hull, tmp, blk, blk_n)
+                   v_verts, v_voff, v_edges, v_eoff, v_center, v_radius, sel, pts, hull, tmp, blk, blk_n)
     if nb < 0:
         return 0.0, ST_OVERFLOW
     if nb == 0:
@@ -419,10 +419,10 @@ def _evaluate(p, nr, s, s_verts, s_off, s_normal, s_u, s_w, s_q0, scale,
 
 @numba.njit(cache=True, parallel=True)
 def _kernel(P, NR, s_verts, s_off, s_normal, s_u, s_w, s_q0, s_L, s_group, ngroups, scale,
-            v_verts, v_voff, v_edges, v_eoff, v_center, v_radius, maxpts, vmax, E, state, overflow):
+            v_verts, v_voff, v_edges, v_eoff, v_center, v_radius, group, g_off, g_idx,
+            maxpts, vmax, nchunk, E, state, overflow):
     n = P.shape[0]
     ns = s_L.shape[0]
-    nchunk = min(n, 256)
     for c in prange(nchunk):
         P2 = np.empty((vmax, 2))
         pts = np.empty((maxpts, 2))
@@ -437,12 +437,13 @@ def _kernel(P, NR, s_verts, s_off, s_normal, s_u, s_w, s_q0, s_L, s_group, ngrou
         for i in range(c, n, nchunk):
             p = P[i]
             nr = NR[i]
+            sel = g_idx[g_off[group[i]]:g_off[group[i] + 1]]
             for g in range(ngroups):
                 gstat[g] = -1  # -1 nothing applicable; bit 1: some lit part, bit 2: some blocked part
             e = 0.0
             for s in range(ns):
                 val, st = _evaluate(p, nr, s, s_verts, s_off, s_normal, s_u, s_w, s_q0, scale,
-                                    v_verts, v_voff, v_edges, v_eoff, v_center, v_radius,
+                                    v_verts, v_voff, v_edges, v_eoff, v_center, v_radius, sel,
                                     P2, pts, hull, tmp, blk, blk_n, stk, stk_n, stk_next)
                 if st == ST_OVERFLOW:
                     overflow[i] = True
@@ -462,7 +463,7 @@ def _kernel(P, NR, s_verts, s_off, s_normal, s_u, s_w, s_q0, s_L, s_group, ngrou
             E[i] = e
             worst = 0
             for g in range(ngroups):
-                if gstat[g] == 2:
+                if gstat[g] == 2 or gstat[g] < 0:  # none of the source reaches p (or none is in front of it)
                     worst = max(worst, 2)
                 elif gstat[g] == 3:
                     worst = max(worst, 1)
@@ -481,8 +482,13 @@ def visible_illuminance(
     sources: SourceArrays,
     pieces: PieceArrays,
     scale: float,
+    groups: tuple[NDArray[np.int64], NDArray[np.int64], NDArray[np.int64]] | None = None,
 ) -> tuple[NDArray[np.float64], NDArray[np.int8], NDArray[np.bool_]]:
     """Compiled evaluation for many points: (E, state, overflow mask); see the module docstring.
+
+    ``groups`` (optional) restricts each point to some pieces: ``(group, off,
+    idx)``, point ``i`` sees the pieces ``idx[off[group[i]]:off[group[i] + 1]]``;
+    by default every point sees every piece.
 
     Points flagged in ``overflow`` still hold partial sums and must be
     recomputed by the 2D Boolean path.
@@ -493,19 +499,27 @@ def visible_illuminance(
     overflow = np.zeros(n, dtype=np.bool_)
     if n == 0 or len(sources.radiance) == 0:
         return E, state, overflow
+    if groups is None:
+        groups = _all_pieces(n, pieces)
+    group, g_off, g_idx = (np.ascontiguousarray(a, dtype=np.int64) for a in groups)
     _kernel(
         np.ascontiguousarray(points), np.ascontiguousarray(normals),
         sources.verts, sources.off, sources.normal, sources.u, sources.w, sources.q0, sources.radiance,
         sources.group, sources.ngroups, float(scale),
-        pieces.verts, pieces.voff, pieces.edges, pieces.eoff, pieces.center, pieces.radius, pieces.maxpts,
-        _vmax(sources, pieces), E, state, overflow,
+        pieces.verts, pieces.voff, pieces.edges, pieces.eoff, pieces.center, pieces.radius, group, g_off, g_idx,
+        pieces.maxpts, _vmax(sources, pieces), min(n, 8 * numba.get_num_threads()), E, state, overflow,
     )
     return E, state, overflow
 
 
+def _all_pieces(n: int, pieces: PieceArrays) -> tuple[NDArray[np.int64], NDArray[np.int64], NDArray[np.int64]]:
+    k = len(pieces.radius)
+    return np.zeros(n, dtype=np.int64), np.array([0, k], dtype=np.int64), np.arange(k, dtype=np.int64)
+
+
 @numba.njit(cache=True)
 def _single(p, nr, s, s_verts, s_off, s_normal, s_u, s_w, s_q0, scale,
-            v_verts, v_voff, v_edges, v_eoff, v_center, v_radius, maxpts, maxb, vmax):
+            v_verts, v_voff, v_edges, v_eoff, v_center, v_radius, sel, maxpts, maxb, vmax):
     P2 = np.empty((vmax, 2))
     pts = np.empty((maxpts, 2))
     hull = np.empty((maxpts + 1, 2))
@@ -516,20 +530,24 @@ def _single(p, nr, s, s_verts, s_off, s_normal, s_u, s_w, s_q0, scale,
     if n2 == 0 or A0 <= 0.0:
         return P2[:0].copy(), blk[:0].copy(), blk_n[:0].copy()
     nb = _blockers(p, nr, s, h, P2, n2, A0, s_normal, s_u, s_w, s_q0,
-                   v_verts, v_voff, v_edges, v_eoff, v_center, v_radius, pts, hull, tmp, blk, blk_n)
+                   v_verts, v_voff, v_edges, v_eoff, v_center, v_radius, sel, pts, hull, tmp, blk, blk_n)
     return P2[:n2].copy(), blk[:max(nb, 0)].copy(), blk_n[:max(nb, 0)].copy()
 
 
 def blockers_single(
     point: NDArray[np.float64], normal: NDArray[np.float64], s: int, sources: SourceArrays, pieces: PieceArrays,
-    scale: float,
+    scale: float, sel: NDArray[np.int64] | None = None,
 ) -> tuple[NDArray[np.float64], list[NDArray[np.float64]]]:
-    """S_p (2D, counter-clockwise) and the blocked convex polygons C_V for one point and source polygon."""
+    """S_p (2D, counter-clockwise) and the blocked convex polygons C_V for one point and source polygon.
+
+    ``sel``: the indices of the pieces to consider (default all).
+    """
     npieces = len(pieces.radius)
+    sel = np.arange(npieces, dtype=np.int64) if sel is None else np.ascontiguousarray(sel, dtype=np.int64)
     P2, blk, blk_n = _single(
         np.ascontiguousarray(point, dtype=np.float64), np.ascontiguousarray(normal, dtype=np.float64), s,
         sources.verts, sources.off, sources.normal, sources.u, sources.w, sources.q0, float(scale),
-        pieces.verts, pieces.voff, pieces.edges, pieces.eoff, pieces.center, pieces.radius, pieces.maxpts,
-        max(npieces, 1), 4 * _vmax(sources, pieces),
+        pieces.verts, pieces.voff, pieces.edges, pieces.eoff, pieces.center, pieces.radius, sel, pieces.maxpts,
+        max(len(sel), 1), 4 * _vmax(sources, pieces),
     )
     return P2, [blk[k, : blk_n[k]] for k in range(len(blk_n))]
