@@ -130,13 +130,22 @@ class CSGSurface:
         Only the vertices the part uses are kept (renumbered), so the parts of
         a surface of many leaves cost in total what the surface does.
         """
-        lo, hi = np.searchsorted(self.leaf, [i, i + 1])
+        # Same dtype as the leaf array: otherwise numpy converts all of it on every call.
+        lo, hi = np.searchsorted(self.leaf, np.array([i, i + 1], dtype=self.leaf.dtype))
         tri = self.triangles[lo:hi]
-        used, local = np.unique(tri, return_inverse=True)
+        if not len(tri):
+            return BandMesh(np.zeros((0, 3)), np.zeros((0, 3), np.int32), np.zeros(0), np.zeros(0), np.zeros(0, np.int32))
+        first, last = int(tri.min()), int(tri.max())
+        if last - first < 8 * len(tri):
+            # A leaf's vertices are mostly contiguous: renumber through a mask of the range.
+            mark = np.zeros(last - first + 1, bool)
+            mark[tri - first] = True
+            used = np.flatnonzero(mark) + first
+            local = (np.cumsum(mark, dtype=np.int32) - 1)[tri - first]
+        else:
+            used, local = np.unique(tri, return_inverse=True)
         shown = self.value[lo:hi]
-        return BandMesh(
-            self.vertices[used], local.reshape(-1, 3).astype(np.int32), shown, shown, self.source[lo:hi]
-        )
+        return BandMesh(self.vertices[used], local.reshape(-1, 3).astype(np.int32), shown, shown, self.source[lo:hi])
 
 
 def estimate_surface_triangles(bands: Sequence[BandMesh]) -> int:
@@ -233,11 +242,10 @@ def _close(
     src = np.arange(len(t), dtype=np.int64)
     if not len(t):
         return v, t, src, False
-    # Bit-equal vertices are one vertex.
-    rows = np.ascontiguousarray(v + 0.0).view(np.dtype((np.void, 24))).ravel()  # +0.0: -0.0 == 0.0
-    _, first, inverse = np.unique(rows, return_index=True, return_inverse=True)
+    # Bit-equal vertices are one vertex (+0.0: -0.0 == 0.0).
+    first, inverse = _equal_rows(np.ascontiguousarray(v + 0.0).view(np.int64))
     v = v[first]
-    t = inverse.reshape(-1)[t]
+    t = inverse[t]
     size = float(np.ptp(v, axis=0).max())
     magnitude = float(np.abs(v).max())
     tol = max(_ON_EDGE_RELATIVE * size, _ON_EDGE_ULPS * np.finfo(np.float64).eps * magnitude, 1e-300)
@@ -281,6 +289,36 @@ def _close(
     else:
         closed = not len(_open_half_edges(t))
     return v, t, src, closed
+@njit(cache=True)
+def _equal_rows(bits: NDArray[np.int64]) -> tuple[NDArray[np.int64], NDArray[np.int64]]:
+    """Rows of equal bits: the first of each kind (in order) and every row's kind (a hash table)."""
+    n = bits.shape[0]
+    size = 1
+    while size < 2 * n + 2:
+        size *= 2
+    table = np.full(size, -1, np.int64)
+    kind = np.empty(n, np.int64)
+    first = np.empty(n, np.int64)
+    count = 0
+    for r in range(n):
+        h = (bits[r, 0] * 0x9E3779B97F4A7C15) ^ (bits[r, 1] * 0xC2B2AE3D27D4EB4F) ^ (bits[r, 2] * 0x165667B19E3779F9)
+        slot = (h ^ (h >> 29)) & (size - 1)
+        while True:
+            k = table[slot]
+            if k < 0:
+                table[slot] = count
+                first[count] = r
+                kind[r] = count
+                count += 1
+                break
+            f = first[k]
+            if bits[f, 0] == bits[r, 0] and bits[f, 1] == bits[r, 1] and bits[f, 2] == bits[r, 2]:
+                kind[r] = k
+                break
+            slot = (slot + 1) & (size - 1)
+    return first[:count], kind
+
+
 def _open_half_edges(t: NDArray[np.int64]) -> NDArray[np.int64]:
     """Half-edges (corner j to j + 1 of each triangle, flattened) whose undirected edge is not used exactly twice."""
     tri_edge = mesh_edges(t)[1].ravel()
@@ -802,17 +840,25 @@ def _on_opposite_face(
 
 
 def _assemble(pieces: list[tuple[Any, ...]]) -> CSGSurface:
+    """One surface from its pieces (vertices, triangles, leaf, source, reversed, value), filled in place."""
     if not pieces:
         return _empty()
-    offsets = np.cumsum([0] + [len(p[0]) for p in pieces[:-1]])
-    if offsets[-1] + len(pieces[-1][0]) >= 2**31:
-        raise InvalidParameterError("the clipped CSG surface has more than 2**31 vertices")
-    verts = np.vstack([p[0] for p in pieces])
-    tris = np.vstack([p[1].astype(np.int32) + np.int32(o) for p, o in zip(pieces, offsets)])
-    cat = [np.concatenate([p[k] for p in pieces]) for k in range(2, 6)]
-    return CSGSurface(
-        verts, tris, cat[3].astype(np.float64), cat[0].astype(np.int32), cat[1].astype(np.int32), cat[2].astype(bool)
-    )
+    nv = np.cumsum([0] + [len(p[0]) for p in pieces])
+    nt = np.cumsum([0] + [len(p[1]) for p in pieces])
+    if nv[-1] >= 2**31:
+        raise InvalidParameterError(f"the clipped CSG surface has {nv[-1]} vertices, more than 2**31 - 1")
+    verts = np.empty((nv[-1], 3))
+    tris = np.empty((nt[-1], 3), np.int32)
+    leaf = np.empty(nt[-1], np.int32)
+    source = np.empty(nt[-1], np.int32)
+    rev = np.empty(nt[-1], bool)
+    value = np.empty(nt[-1])
+    for k, p in enumerate(pieces):
+        a, b = nt[k], nt[k + 1]
+        verts[nv[k] : nv[k + 1]] = p[0]
+        np.add(p[1], nv[k], out=tris[a:b], casting="unsafe")
+        leaf[a:b], source[a:b], rev[a:b], value[a:b] = p[2], p[3], p[4], p[5]
+    return CSGSurface(verts, tris, value, leaf, source, rev)
 
 
 def _empty() -> CSGSurface:
