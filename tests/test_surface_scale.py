@@ -141,11 +141,11 @@ def test_the_memory_budget_is_checked_before_the_booleans():
 
 # ------------------------------------------------------------------ coincident faces
 def test_a_leaf_added_and_subtracted_is_not_drawn():
-    """(S | C) - C is S - C. manifold3d left zero-volume fins on C's surface outside S
-    (2449 covered pixels instead of 2416 at 128 x 128: fails on the old code)."""
-    exact, shown = _images((S | C) - C, size=(128, 128), contours=64)
+    """(S | C) - C is S - C. manifold3d leaves zero-volume fins on C's surface outside S,
+    which the old code drew (IoU 0.982 with the per-pixel image: fails there; 0.9985 now)."""
+    exact, shown = _images((S | C) - C, size=(96, 96), contours=32)
     assert silhouette_iou(shown, exact) >= 0.995
-    ref_exact, _ = _images(S - C, size=(128, 128), contours=64)
+    ref_exact, _ = _images(S - C, size=(96, 96), contours=32)
     np.testing.assert_array_equal(np.isfinite(exact), np.isfinite(ref_exact))
 
 
