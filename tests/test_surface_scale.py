@@ -21,7 +21,7 @@ from isocsg import Box, Camera, Cylinder, Material, PointLight, RenderSettings, 
 from isocsg.csg import surface as surface_module
 from isocsg.csg.mesh import to_manifold
 from isocsg.csg.program import compile_program
-from isocsg.csg.surface import csg_surface, estimate_surface_bytes, estimate_surface_triangles, surface_from_bands
+from isocsg.csg.surface import estimate_surface_bytes, estimate_surface_triangles, surface_from_bands
 from isocsg.csg.tree import Difference, Intersection, Union
 from isocsg.errors import ResourceLimitError
 from isocsg.laminae import build_laminae

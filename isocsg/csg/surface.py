@@ -78,7 +78,6 @@ COINCIDENT_DISTANCE = 1e-9
 #: Mesh64 copies and the output arrays), and per triangle passed through unchanged.
 BYTES_PER_BOOLEAN_TRIANGLE = 1200
 BYTES_PER_PLAIN_TRIANGLE = 200
-_OPS = {OP_UNION: "Add", OP_INTERSECTION: "Intersect", OP_DIFFERENCE: "Subtract"}
 
 
 @dataclass(frozen=True, slots=True, eq=False)
@@ -369,7 +368,6 @@ class _Comp:
     lo: NDArray[np.float64]
     hi: NDArray[np.float64]
     ref: int
-    leaves: list[int]
 
 
 class _Plan:
@@ -386,7 +384,19 @@ class _Plan:
         self.nodes.append((op, [p.ref for p in parts]))
         lo = np.min([p.lo for p in parts], axis=0)
         hi = np.max([p.hi for p in parts], axis=0)
-        return _Comp(lo, hi, -len(self.nodes), [x for p in parts for x in p.leaves])
+        return _Comp(lo, hi, -len(self.nodes))
+
+    def leaves(self, ref: int) -> list[int]:
+        """The leaves a piece is made of (a walk of the nodes with a stack), sorted."""
+        out, todo, seen = set(), [ref], set()
+        while todo:
+            r = todo.pop()
+            if r >= 0:
+                out.add(r)
+            elif r not in seen:
+                seen.add(r)
+                todo.extend(self.nodes[-1 - r][1])
+        return sorted(out)
 
     def combine(self, op: int, args: list[list[_Comp]]) -> list[_Comp]:
         if len(args) == 1:
@@ -395,7 +405,9 @@ class _Plan:
             return self._union([c for a in args for c in a])
         if op == OP_DIFFERENCE:
             return self._difference(args[0], [c for a in args[1:] for c in a])
-        return self._intersection(args)
+        if op == OP_INTERSECTION:
+            return self._intersection(args)
+        raise InvalidParameterError(f"unknown CSG opcode {op}")
 
     def _union(self, comps: list[_Comp]) -> list[_Comp]:
         if len(comps) < 2:
@@ -429,7 +441,7 @@ class _Plan:
                 out.append(c)
                 continue
             d = self.node("Subtract", [c] + [cut[x] for x in hit])
-            out.append(_Comp(c.lo, c.hi, d.ref, d.leaves))
+            out.append(_Comp(c.lo, c.hi, d.ref))
         return out
 
     def _intersection(self, args: list[list[_Comp]]) -> list[_Comp]:
@@ -447,7 +459,7 @@ class _Plan:
             # The pieces of one operand are box-disjoint: joined without a Boolean.
             operands.append(kept[0] if len(kept) == 1 else self.node("compose", kept))
         inter = self.node("Intersect", operands)
-        return [_Comp(np.maximum(inter.lo, lo), np.minimum(inter.hi, hi), inter.ref, inter.leaves)]
+        return [_Comp(np.maximum(inter.lo, lo), np.minimum(inter.hi, hi), inter.ref)]
 
 
 def _overlapping(comps: list[_Comp]) -> tuple[NDArray[np.int64], NDArray[np.int64]]:
@@ -558,11 +570,12 @@ def surface_from_bands(program: Program, bands: Sequence[BandMesh]) -> CSGSurfac
 
     plan = _Plan()
     final = program.evaluate(
-        lambda i, _: [_Comp(box_lo[i], box_hi[i], i, [i])] if present[i] else [], plan.combine
+        lambda i, _: [_Comp(box_lo[i], box_hi[i], i)] if present[i] else [], plan.combine
     )
     if not final:
         return _empty()
-    boolean_leaves = {x for c in final if c.ref < 0 for x in c.leaves}
+    members = {c.ref: plan.leaves(c.ref) for c in final if c.ref < 0}
+    boolean_leaves = {x for m in members.values() for x in m}
     plain_leaves = [c.ref for c in final if c.ref >= 0]
     n_bool = sum(len(bands[i].triangles) for i in boolean_leaves)
     n_plain = sum(len(bands[i].triangles) for i in plain_leaves)
@@ -589,6 +602,7 @@ def surface_from_bands(program: Program, bands: Sequence[BandMesh]) -> CSGSurfac
             # Open edges left after welding: manifold3d merges nearly equal vertices
             # on them, or says the mesh is not closed.
             final[k] = plan.node("as is", [c])
+            members[final[k].ref] = [c.ref]
             continue
         vout = np.asarray(bands[c.ref].value_out, np.float64)
         pieces.append((v, t, np.full(len(t), c.ref, np.int32), src, np.zeros(len(t), bool), vout[src]))
@@ -603,12 +617,12 @@ def surface_from_bands(program: Program, bands: Sequence[BandMesh]) -> CSGSurfac
                 if r < 0:
                     needed[-1 - r] = True
     if needed.any():
-        pieces.extend(_booleans(plan, needed, final, bands, weld, centre, half))
+        pieces.extend(_booleans(plan, needed, final, members, bands, weld, centre, half))
     return _assemble(pieces)
 
 
 def _booleans(
-    plan: _Plan, needed: NDArray[np.bool_], final: list[_Comp], bands: Sequence[BandMesh],
+    plan: _Plan, needed: NDArray[np.bool_], final: list[_Comp], members: dict[int, list[int]], bands: Sequence[BandMesh],
     weld: Any, centre: NDArray[np.float64], half: float,
 ) -> list[tuple[Any, ...]]:
     """Build the planned Booleans (manifold3d, local frame) and read their results back."""
@@ -649,7 +663,7 @@ def _booleans(
             built.append(M.compose(parts))
         else:
             built.append(M.batch_boolean(parts, getattr(m3.OpType, op)))
-    shared = _shared_planes(bands, sorted({x for c in final if c.ref < 0 for x in c.leaves}), centre, half)
+    shared = _shared_planes(bands, sorted({x for m in members.values() for x in m}), centre, half)
     pieces = []
     for c in final:
         if c.ref >= 0:
@@ -664,15 +678,15 @@ def _booleans(
         run_leaf = np.asarray(out.run_original_id, dtype=np.int64) - first_id
         leaf = np.repeat(run_leaf, np.diff(run_index)).astype(np.int32)
         # The comp's leaves' band triangles, concatenated: global index base[leaf] + face.
-        members = sorted(set(c.leaves))
-        sizes = np.array([len(bands[i].triangles) for i in members], np.int64)
+        leaves_in = members[c.ref]
+        sizes = np.array([len(bands[i].triangles) for i in leaves_in], np.int64)
         base = np.zeros(len(bands), np.int64)
-        base[members] = np.concatenate([[0], np.cumsum(sizes)[:-1]])
+        base[leaves_in] = np.concatenate([[0], np.cumsum(sizes)[:-1]])
         g = base[leaf] + face
-        normals = np.vstack([_triangle_normals(np.asarray(bands[i].vertices, np.float64), np.asarray(bands[i].triangles, np.int64)) for i in members])
-        vin = np.concatenate([np.asarray(bands[i].value_in, np.float64) for i in members])
-        vout = np.concatenate([np.asarray(bands[i].value_out, np.float64) for i in members])
-        on_shared = np.concatenate([shared[i] for i in members])[g]
+        normals = np.vstack([_triangle_normals(np.asarray(bands[i].vertices, np.float64), np.asarray(bands[i].triangles, np.int64)) for i in leaves_in])
+        vin = np.concatenate([np.asarray(bands[i].value_in, np.float64) for i in leaves_in])
+        vout = np.concatenate([np.asarray(bands[i].value_out, np.float64) for i in leaves_in])
+        on_shared = np.concatenate([shared[i] for i in leaves_in])[g]
         if on_shared.any():
             drop = np.zeros(len(tris), bool)
             cand = np.flatnonzero(on_shared)
