@@ -170,12 +170,15 @@ def test_extreme_frames_give_the_same_surface(offset, scale):
 
 
 # Leaves from a small pool: repeats and shared faces (the boxes share their side
-# faces, the cylinder's ends lie in the boxes' top and bottom faces).
+# faces, the short cylinder's ends lie in the boxes' top and bottom faces, the long
+# one pierces the sphere S and the boxes).
 POOL = (
     Box((0, 0, 0), (1, 1, 1)),
     Box((0.5, 0, 0), (1, 1, 1)),
     Cylinder((0, 0, 0), (0, 0, 1), 0.4),
     Sphere((0.2, 0.1, 0), 0.6),
+    S,
+    C,
 )
 
 
