@@ -113,11 +113,11 @@ def test_a_minus_a_leaves_no_zero_volume_sheets(tree):
 
 
 def test_sheet_removal_keeps_thin_solids_and_other_parts():
-    """Only shells thinner than SHEET_THICKNESS of the leaves' size go: a 1e-4 thick
+    """Only faces within COINCIDENT_DISTANCE of an opposite face go: a 1e-4 thick
     slab stays, and so does B beside the sheets of A - A."""
-    from isocsg.csg.surface import SHEET_THICKNESS
+    from isocsg.csg.surface import COINCIDENT_DISTANCE
 
-    assert SHEET_THICKNESS <= 1e-8
+    assert COINCIDENT_DISTANCE <= 1e-8
     slab = Box((0, 0, 0), (1, 1, 1)) - Box((0, 0, -0.5001), (2, 2, 2))  # z in [0.4999, 0.5]
     surf = csg_surface(slab, LIGHTS, contours=8)
     mesh = trimesh.Trimesh(surf.vertices, surf.triangles, process=True)

@@ -62,16 +62,25 @@ def rotation_to_axis(axis: NDArray[np.float64]) -> NDArray[np.float64]:
     return np.column_stack([x, y, a])
 
 
-def _leaf(prim: Primitive, resolution: int) -> "manifold3d.Manifold":
+def _leaf(prim: Primitive, resolution: int, shapes: dict[tuple[Any, ...], Any] | None = None) -> "manifold3d.Manifold":
+    """A leaf as a manifold3d solid; ``shapes`` keeps the solids at the origin by their
+    dimensions, so that many equal spheres or cylinders are built once and moved."""
     m3 = _manifold3d()
     M = m3.Manifold
+    shapes = {} if shapes is None else shapes
     if isinstance(prim, Sphere):
         # manifold3d rounds the segment count up to a multiple of 4
-        return M.sphere(prim.radius, resolution).translate(tuple(prim.center))
+        key = ("sphere", prim.radius, resolution)
+        if key not in shapes:
+            shapes[key] = M.sphere(prim.radius, resolution)
+        return shapes[key].translate(tuple(prim.center))
     if isinstance(prim, Truncus):
         # manifold3d's cylinder runs from radius_low at z=-h/2 to radius_high at z=+h/2;
         # the truncus's E2 (r2) is at -axis/2 and E1 (r1) at +axis/2.
-        cyl = M.cylinder(prim.height, prim.r2, prim.r1, resolution, True)
+        key = ("truncus", prim.height, prim.r1, prim.r2, resolution)
+        if key not in shapes:
+            shapes[key] = M.cylinder(prim.height, prim.r2, prim.r1, resolution, True)
+        cyl = shapes[key]
         R = rotation_to_axis(prim.unit_axis)
         mat = np.column_stack([R, prim.center_array])
         return cyl.transform(mat.tolist())
@@ -102,7 +111,8 @@ def _build(solid: Solid, resolution: int, path: str) -> "manifold3d.Manifold":
         rest = parts[1] if len(parts) == 2 else M.batch_boolean(parts[1:], add)
         return M.batch_boolean([parts[0], rest], sub)
 
-    return compile_program(solid).evaluate(lambda _, p: _leaf(p, resolution), combine)
+    shapes: dict[tuple[Any, ...], Any] = {}
+    return compile_program(solid).evaluate(lambda _, p: _leaf(p, resolution, shapes), combine)
 
 
 def to_manifold(solid: Solid, resolution: int = 64) -> "manifold3d.Manifold":

@@ -14,9 +14,24 @@ This is the design notes' "clip contour-aligned surface bands" resolution of
 lamina ownership: each visible surface point takes the value of the leaf whose
 boundary it lies on, decided once in object space. The renderer then fills
 the result like any primitive (front faces, depth test), so a new viewpoint
-costs a plain fill. Coincident faces of different leaves are resolved by
-manifold3d's symbolic perturbation (regularised results); the zero-volume
-shells it can leave there are dropped (:data:`SHEET_THICKNESS`).
+costs a plain fill.
+
+Scale. The tree is evaluated on axis-aligned boxes first: operands whose
+boxes touch nothing they are combined with need no Boolean (a union keeps
+them as they are, a difference drops the subtracted operands that miss its
+first operand, an intersection drops what lies outside the common box), so
+a leaf enters manifold3d only where it meets another operand, and the
+Booleans that remain are manifold3d batch Booleans. All of it runs in a local
+frame (the leaves' box mapped to [-1, 1]^3), since manifold3d's tolerances are
+relative to the size and position of its meshes.
+
+Coincident faces. Regularised set operations leave no two coincident faces of
+opposite orientation on a boundary, but manifold3d can leave such pairs (zero
+volume fins and shells) where operands' faces coincide, e.g. in
+``(S | C) - C`` or ``A - A``. Where two leaves have band triangles in one
+plane, the result's triangles in those planes are tested, and those lying on
+an opposite-facing triangle of the result are dropped
+(:data:`COINCIDENT_DISTANCE`).
 """
 
 from __future__ import annotations
@@ -32,6 +47,7 @@ from numpy.typing import NDArray
 from ..errors import InvalidGeometryError, InvalidParameterError
 from ..laminae.model import BandMesh
 from ..laminae.split import mesh_edges
+from ..limits import check_memory
 from .mesh import _manifold3d
 from .program import OP_DIFFERENCE, OP_INTERSECTION, OP_UNION, Program
 from .tree import CSGNode
@@ -39,21 +55,38 @@ from .tree import CSGNode
 if TYPE_CHECKING:  # pragma: no cover
     from ..lighting.lights import Light, Material
 
-__all__ = ["CSGSurface", "close_mesh", "csg_surface", "surface_from_bands"]
+__all__ = [
+    "CSGSurface",
+    "close_mesh",
+    "csg_surface",
+    "estimate_surface_bytes",
+    "estimate_surface_triangles",
+    "surface_from_bands",
+]
 
 # Relative distance (to the mesh size) within which a vertex lies on an open edge.
 _ON_EDGE_RELATIVE = 1e-9
-#: Connected parts of a Boolean result whose mean thickness (2 volume / area) is
-#: below this fraction of the leaves' size are sheets, not solid: where faces of
-#: two operands coincide (``A - A``, flush cuts) manifold3d can leave closed
-#: shells of zero volume, which a fill would show from either side.
-SHEET_THICKNESS = 1e-9
-_OPS = {OP_UNION: "Add", OP_INTERSECTION: "Intersect", OP_DIFFERENCE: "Subtract"}
+# Coordinates of magnitude m carry rounding of about eps * m: a vertex on an edge
+# may be this many such units away from it (band meshes far from the origin).
+_ON_EDGE_ULPS = 64.0
+#: Distance, as a fraction of the tree's half-size, within which a triangle of
+#: the result lies on an opposite-facing triangle (a zero-volume fin or shell,
+#: which a regularised boundary cannot have; both sides are dropped).
+COINCIDENT_DISTANCE = 1e-9
+#: Peak working memory of the Booleans per band triangle that enters manifold3d
+#: (measured: manifold3d's half-edge meshes of the operands and the result, the
+#: Mesh64 copies and the output arrays), and per triangle passed through unchanged.
+BYTES_PER_BOOLEAN_TRIANGLE = 1200
+BYTES_PER_PLAIN_TRIANGLE = 200
 
 
 @dataclass(frozen=True, slots=True, eq=False)
 class CSGSurface:
     """The boundary of a CSG solid: triangles of constant value, each on one leaf.
+
+    Triangles are kept sorted by leaf (stably: construction sorts them if
+    needed), so that :meth:`leaf_bands` finds a leaf's part without a pass
+    over the whole surface.
 
     Attributes
     ----------
@@ -64,7 +97,7 @@ class CSGSurface:
         The value each triangle shows: its band's ``value_out``, or
         ``value_in`` where the triangle is reversed.
     leaf : ndarray, shape (T,), int32
-        Index of the leaf (in ``CSGNode.program()`` order) it lies on.
+        Index of the leaf (in ``CSGNode.program()`` order) it lies on; non-decreasing.
     source : ndarray, shape (T,), int32
         Index of the leaf's band triangle it lies in.
     reversed : ndarray, shape (T,), bool
@@ -78,6 +111,13 @@ class CSGSurface:
     source: NDArray[np.int32]
     reversed: NDArray[np.bool_]
 
+    def __post_init__(self) -> None:
+        leaf = np.asarray(self.leaf)
+        if len(leaf) > 1 and bool(np.any(leaf[1:] < leaf[:-1])):
+            order = np.argsort(leaf, kind="stable")
+            for name in ("triangles", "value", "leaf", "source", "reversed"):
+                object.__setattr__(self, name, np.asarray(getattr(self, name))[order])
+
     @property
     def n_triangles(self) -> int:
         """Number of triangles."""
@@ -86,11 +126,71 @@ class CSGSurface:
     def leaf_bands(self, i: int) -> BandMesh:
         """The part on leaf ``i`` as a :class:`BandMesh` (both values set to the shown value).
 
-        Vertices are shared with the whole surface (unused ones included).
+        Only the vertices the part uses are kept (renumbered), so the parts of
+        a surface of many leaves cost in total what the surface does.
         """
-        sel = self.leaf == i
-        shown = self.value[sel]
-        return BandMesh(self.vertices, self.triangles[sel], shown, shown, self.source[sel])
+        # Same dtype as the leaf array: otherwise numpy converts all of it on every call.
+        lo, hi = np.searchsorted(self.leaf, np.array([i, i + 1], dtype=self.leaf.dtype))
+        tri = self.triangles[lo:hi]
+        if not len(tri):
+            return BandMesh(np.zeros((0, 3)), np.zeros((0, 3), np.int32), np.zeros(0), np.zeros(0), np.zeros(0, np.int32))
+        first, last = int(tri.min()), int(tri.max())
+        if last - first < 8 * len(tri):
+            # A leaf's vertices are mostly contiguous: renumber through a mask of the range.
+            mark = np.zeros(last - first + 1, bool)
+            mark[tri - first] = True
+            used = np.flatnonzero(mark) + first
+            local = (np.cumsum(mark, dtype=np.int32) - 1)[tri - first]
+        else:
+            used, local = np.unique(tri, return_inverse=True)
+        shown = self.value[lo:hi]
+        return BandMesh(self.vertices[used], local.reshape(-1, 3).astype(np.int32), shown, shown, self.source[lo:hi])
+
+
+def estimate_surface_triangles(bands: Sequence[BandMesh]) -> int:
+    """About how many triangles the clipped surface of these band meshes has at most.
+
+    The leaves' band triangles: the result keeps at most all of them (each
+    split where other operands cut it, which adds about as many as a cut
+    removes), so the sum sizes the Booleans' input and a bound for their
+    output, known before anything is built.
+
+    Parameters
+    ----------
+    bands : sequence of BandMesh
+        One per leaf.
+
+    Returns
+    -------
+    int
+
+    Examples
+    --------
+    >>> from isocsg import PointLight, Sphere
+    >>> from isocsg.laminae import build_laminae
+    >>> from isocsg.lighting.lights import Material
+    >>> b = build_laminae(Sphere((0, 0, 0), 1), (PointLight((0, -4, 3)),), Material(), 8).bands
+    >>> estimate_surface_triangles([b, b]) == 2 * b.n_triangles
+    True
+    """
+    return int(sum(int(len(b.triangles)) for b in bands))
+
+
+def estimate_surface_bytes(bands: Sequence[BandMesh]) -> int:
+    """An upper estimate of the working memory of :func:`surface_from_bands`, in bytes.
+
+    Every band triangle is counted as if it entered the Booleans
+    (:data:`BYTES_PER_BOOLEAN_TRIANGLE`); leaves that meet no other operand
+    cost less (:data:`BYTES_PER_PLAIN_TRIANGLE`), which
+    :func:`surface_from_bands` takes into account when it checks the memory
+    budget.
+
+    Examples
+    --------
+    >>> estimate_surface_bytes([]) == 0
+    True
+    """
+    return estimate_surface_triangles(bands) * BYTES_PER_BOOLEAN_TRIANGLE
 
 
 def close_mesh(
@@ -102,7 +202,9 @@ def close_mesh(
     vertex of one face may lie inside an edge of its neighbour (a
     T-junction). Repeated vertices are merged, and each open edge with such
     vertices inside is split at them (its triangle becomes a fan, in the same
-    plane, so the surface and the orientation are unchanged).
+    plane, so the surface and the orientation are unchanged). A vertex lies on
+    an edge within 1e-9 of the mesh size, or within the rounding of its
+    coordinates where they are large (a mesh far from the origin).
 
     Parameters
     ----------
@@ -126,22 +228,33 @@ def close_mesh(
     >>> len(t2), sorted(src.tolist())
     (6, [0, 0, 1, 2, 3, 4])
     """
+    v, t, src, _ = _close(vertices, triangles)
+    return v, t, src
+
+
+def _close(
+    vertices: NDArray[np.float64], triangles: NDArray[np.int64]
+) -> tuple[NDArray[np.float64], NDArray[np.int64], NDArray[np.int64], bool]:
+    """:func:`close_mesh`, and whether every edge of the result is used by exactly two triangles."""
     v = np.ascontiguousarray(vertices, dtype=np.float64).reshape(-1, 3)
     t = np.asarray(triangles, dtype=np.int64).reshape(-1, 3)
     src = np.arange(len(t), dtype=np.int64)
     if not len(t):
-        return v, t, src
-    # Bit-equal vertices are one vertex.
-    rows = np.ascontiguousarray(v + 0.0).view(np.dtype((np.void, 24))).ravel()  # +0.0: -0.0 == 0.0
-    _, first, inverse = np.unique(rows, return_index=True, return_inverse=True)
+        return v, t, src, False
+    # Bit-equal vertices are one vertex (+0.0: -0.0 == 0.0).
+    first, inverse = _equal_rows(np.ascontiguousarray(v + 0.0).view(np.int64))
     v = v[first]
-    t = inverse.reshape(-1)[t]
-    tol = _ON_EDGE_RELATIVE * max(float(np.ptp(v, axis=0).max()), 1e-300)
+    t = inverse[t]
+    size = float(np.ptp(v, axis=0).max())
+    magnitude = float(np.abs(v).max())
+    tol = max(_ON_EDGE_RELATIVE * size, _ON_EDGE_ULPS * np.finfo(np.float64).eps * magnitude, 1e-300)
+    closed = False
     for _ in range(8):  # each pass splits one open edge per triangle
         u = t.ravel()
         w = t[:, [1, 2, 0]].ravel()
         open_h = _open_half_edges(t)
         if not len(open_h):
+            closed = True
             break
         ends = np.unique(np.concatenate([u[open_h], w[open_h]]))
         split_e, split_v, split_s = _points_on_edges(v, u[open_h], w[open_h], ends, tol)
@@ -172,7 +285,37 @@ def close_mesh(
         drop[eh // 3] = True
         t = np.vstack([t[~drop], fan])
         src = np.concatenate([src[~drop], src[link_t]])
-    return v, t, src
+    else:
+        closed = not len(_open_half_edges(t))
+    return v, t, src, closed
+@njit(cache=True)
+def _equal_rows(bits: NDArray[np.int64]) -> tuple[NDArray[np.int64], NDArray[np.int64]]:
+    """Rows of equal bits: the first of each kind (in order) and every row's kind (a hash table)."""
+    n = bits.shape[0]
+    size = 1
+    while size < 2 * n + 2:
+        size *= 2
+    table = np.full(size, -1, np.int64)
+    kind = np.empty(n, np.int64)
+    first = np.empty(n, np.int64)
+    count = 0
+    for r in range(n):
+        h = (bits[r, 0] * 0x9E3779B97F4A7C15) ^ (bits[r, 1] * 0xC2B2AE3D27D4EB4F) ^ (bits[r, 2] * 0x165667B19E3779F9)
+        slot = (h ^ (h >> 29)) & (size - 1)
+        while True:
+            k = table[slot]
+            if k < 0:
+                table[slot] = count
+                first[count] = r
+                kind[r] = count
+                count += 1
+                break
+            f = first[k]
+            if bits[f, 0] == bits[r, 0] and bits[f, 1] == bits[r, 1] and bits[f, 2] == bits[r, 2]:
+                kind[r] = k
+                break
+            slot = (slot + 1) & (size - 1)
+    return first[:count], kind
 
 
 def _open_half_edges(t: NDArray[np.int64]) -> NDArray[np.int64]:
@@ -215,8 +358,173 @@ def _points_on_edges(
     return np.array(out_e, np.int64), np.array(out_v, np.int64), np.array(out_s, np.float64)
 
 
+
+
+@dataclass(slots=True)
+class _Comp:
+    """A box-disjoint piece of an operand's value: a leaf as it is (``ref >= 0``: leaf
+    ``ref``) or a planned Boolean (``ref < 0``: node ``-1 - ref``), with its local box."""
+
+    lo: NDArray[np.float64]
+    hi: NDArray[np.float64]
+    ref: int
+
+
+class _Plan:
+    """The tree evaluated on boxes: which Booleans are needed, and on which operands.
+
+    Nodes are created operands first, so building them in order never needs
+    a node that is not built yet.
+    """
+
+    def __init__(self) -> None:
+        self.nodes: list[tuple[str, list[int]]] = []  # (manifold3d operation or "compose", operand refs)
+
+    def node(self, op: str, parts: list[_Comp]) -> _Comp:
+        self.nodes.append((op, [p.ref for p in parts]))
+        lo = np.min([p.lo for p in parts], axis=0)
+        hi = np.max([p.hi for p in parts], axis=0)
+        return _Comp(lo, hi, -len(self.nodes))
+
+    def leaves(self, ref: int) -> list[int]:
+        """The leaves a piece is made of (a walk of the nodes with a stack), sorted."""
+        out, todo, seen = set(), [ref], set()
+        while todo:
+            r = todo.pop()
+            if r >= 0:
+                out.add(r)
+            elif r not in seen:
+                seen.add(r)
+                todo.extend(self.nodes[-1 - r][1])
+        return sorted(out)
+
+    def combine(self, op: int, args: list[list[_Comp]]) -> list[_Comp]:
+        if len(args) == 1:
+            return args[0]
+        if op == OP_UNION:
+            return self._union([c for a in args for c in a])
+        if op == OP_DIFFERENCE:
+            return self._difference(args[0], [c for a in args[1:] for c in a])
+        if op == OP_INTERSECTION:
+            return self._intersection(args)
+        raise InvalidParameterError(f"unknown CSG opcode {op}")
+
+    def _union(self, comps: list[_Comp]) -> list[_Comp]:
+        if len(comps) < 2:
+            return comps
+        label = _groups(len(comps), *_overlapping(comps))
+        out: list[_Comp] = []
+        members: dict[int, list[_Comp]] = {}
+        for c, g in zip(comps, label.tolist()):
+            members.setdefault(g, []).append(c)
+        for group in members.values():
+            # manifold3d's batch union composes the members whose boxes do not overlap.
+            out.append(group[0] if len(group) == 1 else self.node("Add", group))
+        return out
+
+    def _difference(self, first: list[_Comp], cut: list[_Comp]) -> list[_Comp]:
+        if not first or not cut:
+            return first
+        i, j = _overlapping(first + cut)
+        nf = len(first)
+        # Pairs (piece of the first operand, subtracted piece) whose boxes meet.
+        a, b = np.minimum(i, j), np.maximum(i, j)
+        sel = (a < nf) & (b >= nf)
+        a, b = a[sel], b[sel] - nf
+        order = np.argsort(a, kind="stable")
+        a, b = a[order], b[order]
+        starts = np.searchsorted(a, np.arange(nf + 1))
+        out: list[_Comp] = []
+        for k, c in enumerate(first):
+            hit = b[starts[k] : starts[k + 1]].tolist()
+            if not hit:
+                out.append(c)
+                continue
+            d = self.node("Subtract", [c] + [cut[x] for x in hit])
+            out.append(_Comp(c.lo, c.hi, d.ref))
+        return out
+
+    def _intersection(self, args: list[list[_Comp]]) -> list[_Comp]:
+        if any(not a for a in args):
+            return []
+        lo = np.max([np.min([c.lo for c in a], axis=0) for a in args], axis=0)
+        hi = np.min([np.max([c.hi for c in a], axis=0) for a in args], axis=0)
+        if np.any(lo > hi):
+            return []
+        operands = []
+        for a in args:
+            kept = [c for c in a if np.all(c.lo <= hi) and np.all(c.hi >= lo)]
+            if not kept:
+                return []
+            # The pieces of one operand are box-disjoint: joined without a Boolean.
+            operands.append(kept[0] if len(kept) == 1 else self.node("compose", kept))
+        inter = self.node("Intersect", operands)
+        return [_Comp(np.maximum(inter.lo, lo), np.minimum(inter.hi, hi), inter.ref)]
+
+
+def _overlapping(comps: list[_Comp]) -> tuple[NDArray[np.int64], NDArray[np.int64]]:
+    """Pairs of pieces whose (closed) boxes meet."""
+    lo = np.array([c.lo for c in comps])
+    hi = np.array([c.hi for c in comps])
+    # Sweep along the axis where the boxes are spread widest relative to their size.
+    spread = np.ptp(lo + hi, axis=0) / np.maximum((hi - lo).mean(axis=0), 1e-300)
+    return _box_pairs(lo, hi, int(np.argmax(spread)))
+
+
+@njit(cache=True)
+def _box_pairs(
+    lo: NDArray[np.float64], hi: NDArray[np.float64], axis: int
+) -> tuple[NDArray[np.int64], NDArray[np.int64]]:
+    """Sort and sweep: every pair (i, j) of boxes that meet."""
+    n = len(lo)
+    order = np.argsort(lo[:, axis])
+    out_i = []
+    out_j = []
+    for a in range(n):
+        i = order[a]
+        for b in range(a + 1, n):
+            j = order[b]
+            if lo[j, axis] > hi[i, axis]:
+                break
+            if (
+                lo[j, 0] <= hi[i, 0] and lo[i, 0] <= hi[j, 0] and lo[j, 1] <= hi[i, 1]
+                and lo[i, 1] <= hi[j, 1] and lo[j, 2] <= hi[i, 2] and lo[i, 2] <= hi[j, 2]
+            ):
+                out_i.append(i)
+                out_j.append(j)
+    return np.array(out_i, np.int64), np.array(out_j, np.int64)
+
+
+@njit(cache=True)
+def _groups(n: int, i: NDArray[np.int64], j: NDArray[np.int64]) -> NDArray[np.int64]:
+    """Connected groups of ``n`` items joined by the pairs ``(i, j)`` (union-find): a label per item."""
+    parent = np.arange(n)
+    for k in range(len(i)):
+        a, b = i[k], j[k]
+        while parent[a] != a:
+            parent[a] = parent[parent[a]]
+            a = parent[a]
+        while parent[b] != b:
+            parent[b] = parent[parent[b]]
+            b = parent[b]
+        if a != b:
+            parent[max(a, b)] = min(a, b)
+    for k in range(n):
+        r = k
+        while parent[r] != r:
+            r = parent[r]
+        parent[k] = r
+    return parent
+
+
 def surface_from_bands(program: Program, bands: Sequence[BandMesh]) -> CSGSurface:
     """Clip the leaves' band meshes against each other along a CSG program.
+
+    The tree is first evaluated on the leaves' boxes (see the module
+    docstring): leaves that meet no operand they are combined with are kept
+    as they are, the others go through manifold3d batch Booleans in a local
+    frame. The memory that needs is checked against the budget
+    (:func:`isocsg.limits.check_memory`) before any Boolean starts.
 
     Parameters
     ----------
@@ -236,59 +544,342 @@ def surface_from_bands(program: Program, bands: Sequence[BandMesh]) -> CSGSurfac
         If a band mesh cannot be welded into a closed manifold surface.
     InvalidParameterError
         If the program and the band meshes do not match.
+    ResourceLimitError
+        If the Booleans would need more than the memory budget.
     """
-    m3 = _manifold3d()
     if not isinstance(program, Program) or program.n_leaves != len(bands):
         raise InvalidParameterError(f"{program!r} does not match {len(bands)} band meshes")
-    solids, normals = [], []
-    # One original id per leaf: manifold3d tags each result triangle with it.
-    first_id = int(m3.Manifold.reserve_ids(len(bands)))
+    n = len(bands)
+    raw_lo = np.full((n, 3), np.inf)
+    raw_hi = np.full((n, 3), -np.inf)
     for i, bm in enumerate(bands):
-        v, t, src = close_mesh(bm.vertices, bm.triangles)
-        mesh = m3.Mesh64(
-            vert_properties=np.ascontiguousarray(v),
-            tri_verts=np.ascontiguousarray(t, dtype=np.uint64),
-            face_id=np.ascontiguousarray(src, dtype=np.uint64),
-            run_index=np.array([0, 3 * len(t)], dtype=np.uint64),
-            run_original_id=np.array([first_id + i], dtype=np.uint32),
-        )
-        mesh.merge()  # nearly equal vertices on open edges (rounding of the cuts)
-        solid = m3.Manifold(mesh)
-        if solid.status() != m3.Error.NoError:
-            raise InvalidGeometryError(f"the band mesh of leaf {i} is not a closed surface ({solid.status()})")
-        solids.append(solid)
-        normals.append(_triangle_normals(np.asarray(bm.vertices, np.float64), np.asarray(bm.triangles, np.int64)))
-    result = program.evaluate(
-        lambda i, _: solids[i],
-        lambda op, args: args[0] if len(args) == 1 else m3.Manifold.batch_boolean(args, getattr(m3.OpType, _OPS[op])),
+        if len(bm.triangles):
+            v = np.asarray(bm.vertices, np.float64).reshape(-1, 3)
+            raw_lo[i], raw_hi[i] = v.min(axis=0), v.max(axis=0)
+    present = np.isfinite(raw_lo[:, 0])
+    if not present.any():
+        return _empty()
+    # Local frame: the leaves' box mapped to [-1, 1]^3 (manifold3d's tolerances are
+    # relative to its meshes' size and distance from the origin).
+    glo, ghi = raw_lo[present].min(axis=0), raw_hi[present].max(axis=0)
+    centre = (glo + ghi) / 2
+    half = float((ghi - glo).max()) / 2
+    half = half if half > 0 else 1.0
+    pad = COINCIDENT_DISTANCE  # boxes that nearly touch meet: their faces may coincide
+    box_lo, box_hi = (raw_lo - centre) / half - pad, (raw_hi - centre) / half + pad
+
+    plan = _Plan()
+    final = program.evaluate(
+        lambda i, _: [_Comp(box_lo[i], box_hi[i], i)] if present[i] else [], plan.combine
     )
-    size = max(float(np.ptp(np.asarray(bm.vertices, np.float64), axis=0).max(initial=0.0)) for bm in bands)
-    out = _without_sheets(result, size).to_mesh64()  # type: ignore[attr-defined]
-    verts = np.asarray(out.vert_properties, dtype=np.float64)[:, :3].reshape(-1, 3)
-    tris = np.asarray(out.tri_verts, dtype=np.int64).reshape(-1, 3)
-    face = np.asarray(out.face_id, dtype=np.int64).reshape(-1)
-    leaf = np.empty(len(tris), np.int32)
-    run_index = np.asarray(out.run_index, dtype=np.int64) // 3
-    for r, oid in enumerate(np.asarray(out.run_original_id, dtype=np.int64)):
-        leaf[run_index[r] : run_index[r + 1]] = int(oid) - first_id
-    value = np.empty(len(tris))
-    rev = np.zeros(len(tris), bool)
-    mine = _triangle_normals(verts, tris)
-    for i, bm in enumerate(bands):
-        sel = np.flatnonzero(leaf == i)
-        s = face[sel]
-        rev[sel] = np.einsum("ij,ij->i", mine[sel], normals[i][s]) < 0
-        value[sel] = np.where(rev[sel], np.asarray(bm.value_in)[s], np.asarray(bm.value_out)[s])
-    return CSGSurface(verts, tris.astype(np.int32), value, leaf, face.astype(np.int32), rev)
+    if not final:
+        return _empty()
+    members = {c.ref: plan.leaves(c.ref) for c in final if c.ref < 0}
+    boolean_leaves = {x for m in members.values() for x in m}
+    plain_leaves = [c.ref for c in final if c.ref >= 0]
+    n_bool = sum(len(bands[i].triangles) for i in boolean_leaves)
+    n_plain = sum(len(bands[i].triangles) for i in plain_leaves)
+    check_memory(
+        f"the clipped CSG surface ({n_bool} band triangles in Booleans, {n_plain} kept as they are)",
+        n_bool * BYTES_PER_BOOLEAN_TRIANGLE + n_plain * BYTES_PER_PLAIN_TRIANGLE,
+    )
+
+    closed: dict[int, tuple[NDArray[np.float64], NDArray[np.int64], NDArray[np.int64], bool]] = {}
+
+    def weld(i: int) -> tuple[NDArray[np.float64], NDArray[np.int64], NDArray[np.int64], bool]:
+        bm = bands[i]
+        key = id(bm)  # a repeated leaf shares its band mesh: weld it once
+        if key not in closed:
+            closed[key] = _close(bm.vertices, bm.triangles)
+        return closed[key]
+
+    pieces: list[tuple[Any, ...]] = []
+    for k, c in enumerate(final):
+        if c.ref < 0:
+            continue
+        v, t, src, ok = weld(c.ref)
+        if not ok:
+            # Open edges left after welding: manifold3d merges nearly equal vertices
+            # on them, or says the mesh is not closed.
+            final[k] = plan.node("as is", [c])
+            members[final[k].ref] = [c.ref]
+            continue
+        vout = np.asarray(bands[c.ref].value_out, np.float64)
+        pieces.append((v, t, np.full(len(t), c.ref, np.int32), src, np.zeros(len(t), bool), vout[src]))
+    # The nodes the result needs.
+    needed = np.zeros(len(plan.nodes), bool)
+    for c in final:
+        if c.ref < 0:
+            needed[-1 - c.ref] = True
+    for k in range(len(plan.nodes) - 1, -1, -1):
+        if needed[k]:
+            for r in plan.nodes[k][1]:
+                if r < 0:
+                    needed[-1 - r] = True
+    if needed.any():
+        pieces.extend(_booleans(plan, needed, final, members, bands, weld, centre, half))
+    return _assemble(pieces)
 
 
-def _without_sheets(solid: Any, size: float) -> Any:
-    """``solid`` without its connected parts thinner than :data:`SHEET_THICKNESS` times ``size``."""
-    parts = solid.decompose()
-    keep = [p for p in parts if 2.0 * abs(p.volume()) >= SHEET_THICKNESS * size * p.surface_area()]
-    if len(keep) == len(parts):
-        return solid
-    return type(solid).compose(keep) if keep else type(solid)()
+def _booleans(
+    plan: _Plan, needed: NDArray[np.bool_], final: list[_Comp], members: dict[int, list[int]], bands: Sequence[BandMesh],
+    weld: Any, centre: NDArray[np.float64], half: float,
+) -> list[tuple[Any, ...]]:
+    """Build the planned Booleans (manifold3d, local frame) and read their results back."""
+    m3 = _manifold3d()
+    M = m3.Manifold
+    # One original id per leaf: manifold3d tags each result triangle with it.
+    first_id = int(M.reserve_ids(len(bands)))
+    leaf_solid: dict[int, Any] = {}
+
+    def solid(ref: int) -> Any:
+        if ref < 0:
+            return built[-1 - ref]
+        if ref not in leaf_solid:
+            v, t, src, _ = weld(ref)
+            mesh = m3.Mesh64(
+                vert_properties=np.ascontiguousarray((v - centre) / half),
+                tri_verts=np.ascontiguousarray(t, dtype=np.uint64),
+                face_id=np.ascontiguousarray(src, dtype=np.uint64),
+                run_index=np.array([0, 3 * len(t)], dtype=np.uint64),
+                run_original_id=np.array([first_id + ref], dtype=np.uint32),
+            )
+            mesh.merge()  # nearly equal vertices on open edges (rounding of the cuts)
+            s = M(mesh)
+            if s.status() != m3.Error.NoError:
+                raise InvalidGeometryError(f"the band mesh of leaf {ref} is not a closed surface ({s.status()})")
+            leaf_solid[ref] = s
+        return leaf_solid[ref]
+
+    built: list[Any] = []
+    for k, (op, refs) in enumerate(plan.nodes):
+        if not needed[k]:
+            built.append(None)
+            continue
+        parts = [solid(r) for r in refs]
+        if op == "as is":
+            built.append(parts[0])
+        elif op == "compose":
+            built.append(M.compose(parts))
+        else:
+            built.append(M.batch_boolean(parts, getattr(m3.OpType, op)))
+    shared = _shared_planes(bands, sorted({x for m in members.values() for x in m}), centre, half)
+    pieces = []
+    for c in final:
+        if c.ref >= 0:
+            continue
+        out = built[-1 - c.ref].to_mesh64()
+        tris = np.asarray(out.tri_verts, dtype=np.int64).reshape(-1, 3)
+        if not len(tris):
+            continue
+        verts = np.asarray(out.vert_properties, dtype=np.float64).reshape(len(out.vert_properties), -1)[:, :3]
+        face = np.asarray(out.face_id, dtype=np.int64).reshape(-1)
+        run_index = np.asarray(out.run_index, dtype=np.int64) // 3
+        run_leaf = np.asarray(out.run_original_id, dtype=np.int64) - first_id
+        leaf = np.repeat(run_leaf, np.diff(run_index)).astype(np.int32)
+        # The comp's leaves' band triangles, concatenated: global index base[leaf] + face.
+        leaves_in = members[c.ref]
+        sizes = np.array([len(bands[i].triangles) for i in leaves_in], np.int64)
+        base = np.zeros(len(bands), np.int64)
+        base[leaves_in] = np.concatenate([[0], np.cumsum(sizes)[:-1]])
+        g = base[leaf] + face
+        normals = np.vstack([_triangle_normals(np.asarray(bands[i].vertices, np.float64), np.asarray(bands[i].triangles, np.int64)) for i in leaves_in])
+        vin = np.concatenate([np.asarray(bands[i].value_in, np.float64) for i in leaves_in])
+        vout = np.concatenate([np.asarray(bands[i].value_out, np.float64) for i in leaves_in])
+        on_shared = np.concatenate([shared[i] for i in leaves_in])[g]
+        if on_shared.any():
+            drop = np.zeros(len(tris), bool)
+            cand = np.flatnonzero(on_shared)
+            drop[cand] = _on_opposite_face(verts, tris, cand, COINCIDENT_DISTANCE)
+            if drop.any():
+                keep = ~drop
+                tris, leaf, face, g = tris[keep], leaf[keep], face[keep], g[keep]
+        rev = np.einsum("ij,ij->i", _triangle_normals(verts, tris), normals[g]) < 0
+        pieces.append((verts * half + centre, tris, leaf, face, rev, np.where(rev, vin[g], vout[g])))
+    return pieces
+
+
+def _shared_planes(
+    bands: Sequence[BandMesh], leaves: list[int], centre: NDArray[np.float64], half: float
+) -> dict[int, NDArray[np.bool_]]:
+    """For each of ``leaves``, which band triangles lie in a plane (either orientation)
+    that a band triangle of another of ``leaves`` lies in too: only there can faces coincide."""
+    keys, owner, flat = [], [], []
+    for i in leaves:
+        v = (np.asarray(bands[i].vertices, np.float64) - centre) / half
+        t = np.asarray(bands[i].triangles, np.int64)
+        n = _triangle_normals(v, t)
+        length = np.linalg.norm(n, axis=1)
+        ok = length > 0
+        n = n / np.where(ok, length, 1.0)[:, None]
+        # One orientation per plane: the first clearly non-zero component positive.
+        q = np.round(n * 2.0**20)
+        lead = np.where(q[:, 0] != 0, q[:, 0], np.where(q[:, 1] != 0, q[:, 1], q[:, 2]))
+        sign = np.where(lead < 0, -1.0, 1.0)
+        q *= sign[:, None]
+        d = np.einsum("ij,ij->i", n, v[t[:, 0]]) * sign * 2.0**30
+        keys.append(np.column_stack([q, np.floor(d), np.floor(d + 0.5)]).astype(np.int64))
+        flat.append(ok)
+        owner.append(np.full(len(t), i, np.int64))
+    allk = np.vstack(keys) if keys else np.zeros((0, 5), np.int64)
+    who = np.concatenate(owner) if owner else np.zeros(0, np.int64)
+    shared = np.zeros(len(allk), bool)
+    degenerate = ~np.concatenate(flat) if flat else np.zeros(0, bool)
+    for col in (3, 4):  # two roundings of the offset: planes closer than a step share one
+        rows = np.ascontiguousarray(np.column_stack([allk[:, :3], allk[:, col], who]))
+        kv = rows.view(np.dtype((np.void, 40))).ravel()
+        _, first, inv = np.unique(kv, return_index=True, return_inverse=True)
+        plane_rows = np.ascontiguousarray(rows[first, :4]).view(np.dtype((np.void, 32))).ravel()
+        _, pinv, pcount = np.unique(plane_rows, return_inverse=True, return_counts=True)
+        # pcount: how many distinct leaves have this plane
+        shared |= (pcount[pinv] > 1)[inv.reshape(-1)]
+    shared[degenerate] = False  # no plane
+    out, start = {}, 0
+    for i, k in zip(leaves, keys):
+        out[i] = shared[start : start + len(k)]
+        start += len(k)
+    return out
+
+
+@njit(cache=True)
+def _on_opposite_face(
+    v: NDArray[np.float64], t: NDArray[np.int64], cand: NDArray[np.int64], tol: float
+) -> NDArray[np.bool_]:
+    """Which candidate triangles to drop: those whose centroid lies, within ``tol``,
+    on candidate triangles facing the opposite way that cancel it.
+
+    At a point of a plane where ``a`` layers face one way and ``b`` the other,
+    ``min(a, b)`` of each cancel; one of what is left is kept (the layer of
+    lowest index). The candidates are found through a uniform grid over their boxes.
+    """
+    m = len(cand)
+    nrm = np.zeros((m, 3))
+    off = np.zeros(m)
+    cen = np.zeros((m, 3))
+    blo = np.zeros((m, 3))
+    bhi = np.zeros((m, 3))
+    ok = np.zeros(m, np.bool_)
+    ext = np.zeros(m)
+    for k in range(m):
+        a, b, c = t[cand[k], 0], t[cand[k], 1], t[cand[k], 2]
+        e1 = v[b] - v[a]
+        e2 = v[c] - v[a]
+        n = np.array([e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2], e1[0] * e2[1] - e1[1] * e2[0]])
+        length = np.sqrt(n[0] ** 2 + n[1] ** 2 + n[2] ** 2)
+        for x in range(3):
+            cen[k, x] = (v[a, x] + v[b, x] + v[c, x]) / 3.0
+            blo[k, x] = min(v[a, x], v[b, x], v[c, x]) - tol
+            bhi[k, x] = max(v[a, x], v[b, x], v[c, x]) + tol
+        ext[k] = max(bhi[k, 0] - blo[k, 0], bhi[k, 1] - blo[k, 1], bhi[k, 2] - blo[k, 2])
+        if length > 0.0:
+            ok[k] = True
+            nrm[k] = n / length
+            off[k] = nrm[k, 0] * v[a, 0] + nrm[k, 1] * v[a, 1] + nrm[k, 2] * v[a, 2]
+    out = np.zeros(m, np.bool_)
+    if m < 2:
+        return out
+    g0 = np.array([blo[:, 0].min(), blo[:, 1].min(), blo[:, 2].min()])
+    span = max(bhi[:, 0].max() - g0[0], bhi[:, 1].max() - g0[1], bhi[:, 2].max() - g0[2])
+    h = max(np.median(ext), span / 2.0**20, 1e-300)
+    while True:  # coarser cells until the entries stay in proportion to the triangles
+        count = 0
+        for k in range(m):
+            c = 1
+            for x in range(3):
+                c *= int((bhi[k, x] - g0[x]) / h) - int((blo[k, x] - g0[x]) / h) + 1
+            count += c
+        if count <= 16 * m + 1_000_000:
+            break
+        h *= 2.0
+    dims = int(span / h) + 2
+    keys = np.empty(count, np.int64)
+    tri = np.empty(count, np.int64)
+    e = 0
+    for k in range(m):
+        i0, j0, l0 = int((blo[k, 0] - g0[0]) / h), int((blo[k, 1] - g0[1]) / h), int((blo[k, 2] - g0[2]) / h)
+        i1, j1, l1 = int((bhi[k, 0] - g0[0]) / h), int((bhi[k, 1] - g0[1]) / h), int((bhi[k, 2] - g0[2]) / h)
+        for i in range(i0, i1 + 1):
+            for j in range(j0, j1 + 1):
+                for l in range(l0, l1 + 1):
+                    keys[e] = (i * dims + j) * dims + l
+                    tri[e] = k
+                    e += 1
+    order = np.argsort(keys)
+    keys = keys[order]
+    tri = tri[order]
+    for k in range(m):
+        if not ok[k]:
+            continue
+        i, j, l = int((cen[k, 0] - g0[0]) / h), int((cen[k, 1] - g0[1]) / h), int((cen[k, 2] - g0[2]) / h)
+        key = (i * dims + j) * dims + l
+        start = np.searchsorted(keys, key)
+        p = cen[k]
+        same = 1  # layers over p facing like k (k included), facing the other way,
+        other = 0  # and those of the first kind numbered below k
+        below = 0
+        for e in range(start, len(keys)):
+            if keys[e] != key:
+                break
+            q = tri[e]
+            if q == k or not ok[q]:
+                continue
+            cos = nrm[k, 0] * nrm[q, 0] + nrm[k, 1] * nrm[q, 1] + nrm[k, 2] * nrm[q, 2]
+            if abs(cos) < 0.999999:
+                continue
+            if abs(nrm[q, 0] * p[0] + nrm[q, 1] * p[1] + nrm[q, 2] * p[2] - off[q]) > tol:
+                continue
+            inside = True
+            for s in range(3):
+                va = v[t[cand[q], s]]
+                vb = v[t[cand[q], (s + 1) % 3]]
+                ex, ey, ez = vb[0] - va[0], vb[1] - va[1], vb[2] - va[2]
+                rx, ry, rz = p[0] - va[0], p[1] - va[1], p[2] - va[2]
+                # (edge x (p - a)) . n: how far p is inside the edge, times its length
+                side = (ey * rz - ez * ry) * nrm[q, 0] + (ez * rx - ex * rz) * nrm[q, 1] + (ex * ry - ey * rx) * nrm[q, 2]
+                if side < -tol * np.sqrt(ex * ex + ey * ey + ez * ez):
+                    inside = False
+                    break
+            if not inside:
+                continue
+            if cos > 0:
+                same += 1
+                if q < k:
+                    below += 1
+            else:
+                other += 1
+        # Opposite layers cancel in pairs (the winding number changes by their
+        # difference across the plane); of the layers left, one is kept.
+        out[k] = other > 0 and below >= min(same - other, 1)
+    return out
+
+
+def _assemble(pieces: list[tuple[Any, ...]]) -> CSGSurface:
+    """One surface from its pieces (vertices, triangles, leaf, source, reversed, value), filled in place."""
+    if not pieces:
+        return _empty()
+    nv = np.cumsum([0] + [len(p[0]) for p in pieces])
+    nt = np.cumsum([0] + [len(p[1]) for p in pieces])
+    if nv[-1] >= 2**31:
+        raise InvalidParameterError(f"the clipped CSG surface has {nv[-1]} vertices, more than 2**31 - 1")
+    verts = np.empty((nv[-1], 3))
+    tris = np.empty((nt[-1], 3), np.int32)
+    leaf = np.empty(nt[-1], np.int32)
+    source = np.empty(nt[-1], np.int32)
+    rev = np.empty(nt[-1], bool)
+    value = np.empty(nt[-1])
+    for k, p in enumerate(pieces):
+        a, b = nt[k], nt[k + 1]
+        verts[nv[k] : nv[k + 1]] = p[0]
+        np.add(p[1], nv[k], out=tris[a:b], casting="unsafe")
+        leaf[a:b], source[a:b], rev[a:b], value[a:b] = p[2], p[3], p[4], p[5]
+    return CSGSurface(verts, tris, value, leaf, source, rev)
+
+
+def _empty() -> CSGSurface:
+    return CSGSurface(
+        np.zeros((0, 3)), np.zeros((0, 3), np.int32), np.zeros(0), np.zeros(0, np.int32), np.zeros(0, np.int32),
+        np.zeros(0, bool),
+    )
 
 
 def _triangle_normals(v: NDArray[np.float64], t: NDArray[np.int64]) -> NDArray[np.float64]:

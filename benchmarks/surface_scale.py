@@ -1,0 +1,117 @@
+"""Time and peak memory of the clipped CSG surface (``surface_from_bands``) at scale.
+
+One case per process (peak memory is that process's resident set, sampled
+every 5 ms while the surface is built, minus what it held before):
+
+    python benchmarks/surface_scale.py spheres 40 128     # K disjoint unit spheres, N contours
+    python benchmarks/surface_scale.py plate 100 64       # a plate minus H through holes
+    python benchmarks/surface_scale.py all                # the table of docs/csg.md, one process per case
+
+``--module path/to/surface.py`` times another implementation of
+``surface_from_bands`` (e.g. an older version) on the same band meshes.
+"""
+
+from __future__ import annotations
+
+import argparse
+import importlib.util
+import json
+import os
+import subprocess
+import sys
+import threading
+import time
+
+import numpy as np
+
+
+def _tree(kind: str, count: int):  # type: ignore[no-untyped-def]
+    from isocsg import Box, Cylinder, Sphere, union_all
+
+    side = int(np.ceil(np.sqrt(count)))
+    if kind == "spheres":
+        return union_all([Sphere((3.0 * (i % side), 3.0 * (i // side), 0.0), 1.0) for i in range(count)])
+    pitch = 0.5
+    plate = Box(((side - 1) * pitch / 2, (side - 1) * pitch / 2, 0.0), (side * pitch, side * pitch, 0.2))
+    holes = [Cylinder((pitch * (i % side), pitch * (i // side), 0.0), (0.0, 0.0, 0.4), 0.15) for i in range(count)]
+    out = plate
+    for h in holes:  # a modelling loop: one difference per hole
+        out = out - h
+    return out
+
+
+def _peak_rss(fn):  # type: ignore[no-untyped-def]
+    import psutil
+
+    proc = psutil.Process()
+    base = proc.memory_info().rss
+    peak = [base]
+    done = threading.Event()
+
+    def sample() -> None:
+        while not done.is_set():
+            peak[0] = max(peak[0], proc.memory_info().rss)
+            time.sleep(0.005)
+
+    th = threading.Thread(target=sample, daemon=True)
+    th.start()
+    t0 = time.perf_counter()
+    out = fn()
+    elapsed = time.perf_counter() - t0
+    done.set()
+    th.join()
+    return out, elapsed, max(peak[0], proc.memory_info().rss) - base
+
+
+def run(kind: str, count: int, contours: int, module: str | None) -> dict:
+    from isocsg import PointLight
+    from isocsg.laminae import build_laminae
+    from isocsg.lighting.lights import Material
+
+    if module:
+        spec = importlib.util.spec_from_file_location("other_surface", module)
+        mod = importlib.util.module_from_spec(spec)  # type: ignore[arg-type]
+        sys.modules["other_surface"] = mod
+        spec.loader.exec_module(mod)  # type: ignore[union-attr]
+    else:
+        import isocsg.csg.surface as mod
+    tree = _tree(kind, count)
+    prog = tree.program()
+    lights = (PointLight((3.0, -4.0, 5.0)),)
+    bands = [build_laminae(p, lights, Material(), contours).bands for p in prog.leaves]
+    # Warm the compiled kernels on a small case first.
+    small = _tree(kind, 2).program()
+    mod.surface_from_bands(small, [build_laminae(p, lights, Material(), 8).bands for p in small.leaves])
+    surf, seconds, peak = _peak_rss(lambda: mod.surface_from_bands(prog, bands))
+    # What the renderer then does with it: one part per leaf.
+    t0 = time.perf_counter()
+    parts = [surf.leaf_bands(int(i)) for i in np.unique(surf.leaf)]
+    split = time.perf_counter() - t0
+    return {
+        "case": kind, "count": count, "contours": contours, "band_triangles": int(sum(len(b.triangles) for b in bands)),
+        "surface_triangles": surf.n_triangles, "seconds": round(seconds, 3), "peak_mb": round(peak / 2**20),
+        "split_seconds": round(split, 3), "parts": len(parts),
+    }
+
+
+def main() -> None:
+    ap = argparse.ArgumentParser()
+    ap.add_argument("case", choices=["spheres", "plate", "all"])
+    ap.add_argument("count", type=int, nargs="?", default=0)
+    ap.add_argument("contours", type=int, nargs="?", default=64)
+    ap.add_argument("--module", default=None)
+    args = ap.parse_args()
+    if args.case != "all":
+        print(json.dumps(run(args.case, args.count, args.contours, args.module)), flush=True)
+        return
+    cases = [("spheres", k, n) for n in (64, 128) for k in (5, 10, 20, 40, 100, 200)]
+    cases += [("plate", h, n) for n in (64, 128) for h in (10, 100, 1000)]
+    if args.count > 0:  # with a count: only the cases up to that many leaves
+        cases = [c for c in cases if c[1] <= args.count]
+    for kind, count, n in cases:
+        cmd = [sys.executable, __file__, kind, str(count), str(n)] + (["--module", args.module] if args.module else [])
+        subprocess.run(cmd, check=False, env=os.environ.copy())
+
+
+if __name__ == "__main__":
+    main()
