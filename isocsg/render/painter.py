@@ -48,7 +48,7 @@ from ..camera import Camera
 from ..csg.surface import surface_from_bands
 from ..csg.program import Program, evaluate_mask
 from ..csg.tree import CSGNode
-from ..errors import InvalidParameterError
+from ..errors import InvalidGeometryError, InvalidParameterError, ResourceLimitError
 from ..geometry.primitives import Primitive, Sphere
 from ..laminae.model import BandMesh
 from ..limits import check_memory, memory_budget
@@ -656,7 +656,15 @@ class Renderer:
         # The ids of band meshes that were dropped may be reused: compare the objects too.
         if hit is not None and all(x is y for x, y in zip(hit[0], bands)):
             return hit[1]
-        surface = surface_from_bands(program, bands)
+        try:
+            surface = surface_from_bands(program, bands)
+        except (InvalidGeometryError, ResourceLimitError):
+            if self.csg != "auto":
+                raise
+            # Bands that do not close (extreme frames) or a surface over the memory budget:
+            # this object stays per pixel, and the failure is remembered so no view retries it.
+            self._surfaces.put(key, (bands, None), 64 * len(bands))
+            return None
         parts = [(int(i), self._prepare(surface.leaf_bands(int(i)), True)) for i in np.unique(surface.leaf)]
         if not view_dependent:
             nbytes = sum(p.nbytes for _, p in parts) + sum(b.vertices.nbytes + 28 * len(b.triangles) for b in bands)
