@@ -892,12 +892,7 @@ API_CASES += [
 
 # Cases that need a change in a module another change owns; they pass once it lands.
 # (reason, run): cases that could exhaust memory before the change are not run.
-PENDING: dict[str, tuple[str, bool]] = {
-    "illuminance-resolution-million": (
-        "isocsg/shadows/occluders.py: convex_pieces must bound resolution with isocsg._validation.resolution (3 .. 512)", True),
-    "render-lights-x-contours": (
-        "isocsg/render/painter.py: Renderer._render must call isocsg._validation.light_budget with the contours override", False),
-}
+PENDING: dict[str, tuple[str, bool]] = {}
 
 
 def _pending(case_id: str) -> list[Any]:
@@ -927,11 +922,6 @@ def test_area_light_inside_an_occluder_lights_nothing_outside() -> None:
     assert value.tolist() == [0.0, 0.0]
 
 
-@pytest.mark.xfail(
-    reason="isocsg/shadows/halftone.py: _plan must not fail when a source vertex lies inside an occluder piece "
-    "(InvalidGeometryError from shadow_volumes); such a piece is decided by the exact visibility for every point",
-    strict=False,
-)
 def test_halftone_agrees_with_illuminance_for_an_enclosed_light() -> None:
     from isocsg.shadows.halftone import render_halftone
 

@@ -43,13 +43,14 @@ import numpy as np
 from numba import njit
 from numpy.typing import NDArray
 
-from .._validation import integer
+from .._validation import integer, light_budget
 from ..camera import Camera
 from ..csg.surface import surface_from_bands
 from ..csg.program import Program, evaluate_mask
 from ..csg.tree import CSGNode
 from ..errors import InvalidGeometryError, InvalidParameterError, ResourceLimitError
 from ..geometry.primitives import Primitive, Sphere
+from ..lighting.lights import DirectionalLight, PointLight
 from ..laminae.model import BandMesh
 from ..limits import check_memory, memory_budget
 from ..scene.model import MAX_CONTOURS, Scene
@@ -768,6 +769,9 @@ class Renderer:
             raise InvalidParameterError(f"camera must be a Camera, got {type(cam).__name__}")
         n_contours = scene.render.contours if contours is None else contours
         n_contours = integer("contours", n_contours, low=1, high=MAX_CONTOURS, error=InvalidParameterError)
+        # The scene checked its own contour count; an override is checked here.
+        families = sum(isinstance(li, (PointLight, DirectionalLight)) for li in scene.lights)
+        light_budget(len(scene.lights), families, n_contours)
 
         t0 = time.perf_counter()
         H, W = cam.height, cam.width

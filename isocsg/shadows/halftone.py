@@ -45,7 +45,7 @@ from .._validation import integer
 from ..camera import Camera
 from ..csg.program import combine_masks, compile_program
 from ..csg.tree import CSGNode
-from ..errors import InvalidLightError, InvalidParameterError
+from ..errors import InvalidGeometryError, InvalidLightError, InvalidParameterError
 from ..geometry.primitives import DEFAULT_RESOLUTION, Box, ConvexPolyhedron, Primitive, Truncus
 from .lights import AreaLight, PolyhedronLight
 
@@ -251,6 +251,16 @@ class _LightPlan:
     piece_vertices: tuple[NDArray[np.float64], ...]
 
 
+class _Everywhere:
+    """A shadow volume holding every point (``contains`` is all True), or none of them."""
+
+    def __init__(self, inside: bool) -> None:
+        self.inside = inside
+
+    def contains(self, points: NDArray[np.float64]) -> NDArray[np.bool_]:
+        return np.full(len(points), self.inside)
+
+
 def _plan(lights: list[Any], pieces: list[Any], bounds: NDArray[np.float64]) -> list[_LightPlan]:
     from .volumes import SourceGeometry, shadow_volumes
 
@@ -259,7 +269,17 @@ def _plan(lights: list[Any], pieces: list[Any], bounds: NDArray[np.float64]) -> 
         src = SourceGeometry.from_light(light)
         idx, pen, umb, pv = [], [], [], []
         for i, pc in enumerate(pieces):
-            sv = shadow_volumes(src, pc)
+            try:
+                sv = shadow_volumes(src, pc)
+            except InvalidGeometryError:
+                # The source reaches into the piece (a lamp inside an object): no shadow
+                # volumes exist. Every point is then decided by the exact visibility.
+                sv = None
+                idx.append(i)
+                pen.append(_Everywhere(True))
+                umb.append(_Everywhere(False))
+                pv.append(np.asarray(pc.vertices, dtype=np.float64))
+                continue
             if sv is None:
                 continue
             sv = sv.reduced(bounds)

@@ -56,6 +56,7 @@ import numba
 import numpy as np
 from numpy.typing import NDArray
 
+from .. import _validation
 from ..csg.program import OP_INTERSECTION, OP_UNION, compile_program
 from ..errors import InvalidGeometryError, InvalidParameterError
 from ..geometry.primitives import DEFAULT_RESOLUTION, Box, ConvexPolyhedron, Primitive, Solid
@@ -577,10 +578,9 @@ def occluder_list(occluders: Sequence[Solid] | Solid, resolution: Any) -> list[S
     InvalidGeometryError
         If an occluder is not a solid (naming its index).
     InvalidParameterError
-        If ``resolution`` is not an integer >= 3.
+        If ``resolution`` is not an integer in 3 .. 512.
     """
-    if isinstance(resolution, bool) or not isinstance(resolution, (int, np.integer)) or resolution < 3:
-        raise InvalidParameterError(f"resolution must be an integer >= 3, got {resolution!r}")
+    resolution = _validation.resolution("resolution", resolution)
     if isinstance(occluders, Solid):
         occluders = [occluders]
     try:
