@@ -180,8 +180,8 @@ class Program:
         --------
         >>> from isocsg import Box
         >>> prog = compile_program(Box((0, 0, 0), (2, 2, 2)) - Box((1, 0, 0), (2, 2, 2)))
-        >>> prog.contains([[0.0, 0, 0], [-1e-13, 0, 0], [1e-13, 0, 0], [0.5, 0, 0]]).tolist()
-        [True, True, False, False]
+        >>> prog.contains([[0.0, 0, 0], [-1e-13, 0, 0], [1e-13, 0, 0], [1e-9, 0, 0]]).tolist()
+        [True, True, True, False]
         >>> prog.contains([[1e-6, 0, 0]], tol=1e-5).tolist()
         [True]
         """
