@@ -337,35 +337,50 @@ def _truncus_section(t: Truncus, F: NDArray[np.float64], resolution: int, area_e
     if breaks:
         b = np.sort(np.mod(np.asarray(breaks) - phi0, two_pi)) + phi0
         b = np.append(b, b[0] + two_pi)
-        for lo, hi in zip(b[:-1], b[1:]):
-            if hi - lo <= 1e-15:
-                continue
-            _, ok_mid = sigma(np.array([0.5 * (lo + hi)]))
-            if not ok_mid[0]:
-                continue
-            m = max(int(math.ceil(resolution * (hi - lo) / two_pi)), 2)
-            if area_exact:
-                # segments of the curve between corners, each with its midpoint pushed out
-                ph = np.linspace(lo, hi, 2 * (m // 2 + 1) + 1)
-                s, _ = sigma(ph)
-                s = np.clip(s, -h2, h2)
-                pts.append(_simpson_points(surface(s, ph), closed=False))
-                continue
-            ph = np.linspace(lo, hi, m + 1)[1:-1]
-            s, ok = sigma(ph)
-            if ok.any():
-                pts.append(surface(s[ok], ph[ok]))
+        intervals = [(lo, hi) for lo, hi in zip(b[:-1], b[1:]) if hi - lo > 1e-15]
     else:
-        m = resolution + (resolution % 2)
-        ph = np.linspace(0.0, two_pi, m, endpoint=False)
-        s, ok = sigma(ph)
-        if ok.all() and area_exact:
-            pts.append(_simpson_points(surface(s, ph), closed=True))
-        elif ok.any():
-            pts.append(surface(s[ok], ph[ok]))
+        intervals = [(phi0, phi0 + two_pi)]
+    for lo, hi in intervals:
+        _, ok_mid = sigma(np.array([0.5 * (lo + hi)]))
+        if not ok_mid[0]:
+            continue
+        if not breaks:
+            _, ok_all = sigma(np.linspace(lo, hi, 16))
+            if not ok_all.all():
+                continue
+        m = max(int(math.ceil(resolution * (hi - lo) / two_pi / 2)), 2)
+        ph = _refined_parameters(lambda x: surface(np.clip(sigma(x)[0], -h2, h2), x), lo, hi, m, 4 * math.pi / resolution)
+        P = surface(np.clip(sigma(ph)[0], -h2, h2), ph)
+        pts.append(_simpson_points(P, closed=False) if area_exact else P)
     if not pts:
         return _EMPTY
     return _hull_polygon(_to2d(np.vstack(pts), F))
+
+
+def _refined_parameters(curve, lo: float, hi: float, m: int, angle: float) -> NDArray[np.float64]:
+    """Parameters ``2 k + 1`` of ``k >= m`` curve segments (ends and midpoints) on ``[lo, hi]``.
+
+    A segment is halved while its two halves turn by more than ``angle`` / 2
+    or its midpoint falls off the middle of its chord (the parametrisation
+    is far from uniform there: plane cuts of a cone near its asymptotes).
+    """
+    ph = np.linspace(lo, hi, 2 * m + 1)
+    for _ in range(40):
+        P = curve(ph)
+        p0, pm, p1 = P[0:-1:2], P[1::2], P[2::2]
+        d0, d1, ch = pm - p0, p1 - pm, p1 - p0
+        l0, l1 = np.linalg.norm(d0, axis=1), np.linalg.norm(d1, axis=1)
+        cos = np.einsum("ij,ij->i", d0, d1) / np.maximum(l0 * l1, 1e-300)
+        ll = np.einsum("ij,ij->i", ch, ch)
+        t = np.einsum("ij,ij->i", pm - p0, ch) / np.maximum(ll, 1e-300)
+        size = max(float(np.max(ll)), 1e-300) ** 0.5
+        bad = ((cos < math.cos(0.75 * angle)) | (np.abs(t - 0.5) > 0.1)) & (np.sqrt(ll) > 1e-9 * size)
+        if not bad.any():
+            break
+        a, c = ph[0:-1:2][bad], ph[2::2][bad]
+        q = (c - a) / 4
+        ph = np.sort(np.concatenate([ph, a + q, a + 3 * q]))
+    return ph
 
 
 def _simpson_points(P: NDArray[np.float64], closed: bool) -> NDArray[np.float64]:
