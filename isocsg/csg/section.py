@@ -587,7 +587,23 @@ def leaf_sections(
         rings = _circle_ring(c2, rad[good], resolution, area_exact)
         for j, g in zip(good.tolist(), shapely.polygons(rings)):
             out[j] = g
-    for j in np.nonzero(~(sph | circ))[0].tolist():
+    # boxes cut across a coordinate axis: rectangles (faces in the plane count, see coplanar_sides)
+    rect = np.zeros(len(idx), dtype=bool)
+    if float(np.max(np.abs(n))) >= 1.0 - 1e-13:
+        rect = k == 2
+        r_idx = np.nonzero(rect)[0]
+        if len(r_idx):
+            half = tab.half[idx[r_idx]]
+            size = 2 * half.max(axis=1)
+            hit = np.abs(d[r_idx]) <= half @ np.abs(n) + 1e-12 * size
+            u, v = F[:3, 0], F[:3, 1]
+            cu, cv = (tab.center[idx[r_idx]] - o) @ u, (tab.center[idx[r_idx]] - o) @ v
+            hu, hv = half @ np.abs(u), half @ np.abs(v)
+            boxes = shapely.box(cu - hu, cv - hv, cu + hu, cv + hv)
+            for j, g, h in zip(r_idx.tolist(), boxes, hit.tolist()):
+                if h:
+                    out[j] = g
+    for j in np.nonzero(~(sph | circ | rect))[0].tolist():
         out[j] = primitive_section(prog.leaves[int(idx[j])], F, resolution, area_exact=area_exact)
     return out
 
