@@ -57,6 +57,9 @@ __all__ = ["signed_distance", "default_tolerance", "check_tolerance", "contains_
 #: Probed directions are counted inside a tangent cone when they clear each of
 #: its faces by this much (cosine of the angle to the face, unit vectors).
 DIRECTION_MARGIN = 1e-9
+#: Points near a boundary are resolved this many at a time (memory: about 1.2 kB each per leaf
+#: whose tangent cone or inside set reaches them).
+NEAR_CHUNK = 16384
 #: The relative size of the default tolerance.
 RELATIVE_TOLERANCE = 1e-12
 
@@ -271,7 +274,16 @@ def _union(xs: list[NDArray[np.int64]]) -> NDArray[np.int64]:
         return np.zeros(0, np.int64)
     if len(xs) == 1:
         return xs[0]
-    return np.unique(np.concatenate(xs))
+    return _sorted_unique(np.concatenate(xs))
+
+
+def _sorted_unique(x: NDArray[np.int64]) -> NDArray[np.int64]:
+    """``np.unique`` of integers by sorting (faster here than hashing)."""
+    x.sort(kind="stable" if len(x) < 64 else "quicksort")
+    keep = np.empty(len(x), dtype=bool)
+    keep[:1] = True
+    np.not_equal(x[1:], x[:-1], out=keep[1:])
+    return x[keep]
 
 
 def _combine_sets(op: int, xs: list[NDArray[np.int64]]) -> NDArray[np.int64]:
@@ -322,6 +334,41 @@ class _PointGrid:
         self.sorted_pts = pts[self.order]
         self.start = np.searchsorted(lin[self.order], np.arange(int(np.prod(dims)) + 1))
 
+    def _cell_ranges(self, lo: NDArray[np.float64], hi: NDArray[np.float64]) -> tuple[NDArray[np.int64], NDArray[np.int64], NDArray[np.bool_]]:
+        d = self.dims
+        c0 = np.floor((lo - self.lo) * self.scale).astype(np.int64)
+        c1 = np.floor((hi - self.lo) * self.scale).astype(np.int64)
+        valid = np.all(c1 >= 0, axis=-1) & np.all(c0 <= d - 1, axis=-1)
+        return np.clip(c0, 0, d - 1), np.clip(c1, 0, d - 1), valid
+
+    def pair_counts(self, lo: NDArray[np.float64], hi: NDArray[np.float64]) -> NDArray[np.int64]:
+        """Number of grid columns (x, y cells) that each box ``lo[i], hi[i]`` meets."""
+        c0, c1, valid = self._cell_ranges(lo, hi)
+        return np.where(valid, (c1[:, 0] - c0[:, 0] + 1) * (c1[:, 1] - c0[:, 1] + 1), 0)
+
+    def query_many(
+        self, ids: NDArray[np.int64], lo: NDArray[np.float64], hi: NDArray[np.float64]
+    ) -> tuple[NDArray[np.int64], NDArray[np.int64]]:
+        """Sorted positions of the points in the cells each box ``ids`` meets, and the box of each."""
+        d = self.dims
+        c0, c1, valid = self._cell_ranges(lo[ids], hi[ids])
+        ny = c1[:, 1] - c0[:, 1] + 1
+        npairs = np.where(valid, (c1[:, 0] - c0[:, 0] + 1) * ny, 0)
+        total = int(npairs.sum())
+        if total == 0:
+            return np.zeros(0, np.int64), np.zeros(0, np.int64)
+        rep = np.repeat(np.arange(len(ids)), npairs)
+        k = np.arange(total) - np.repeat(np.cumsum(npairs) - npairs, npairs)
+        ix = c0[rep, 0] + k // ny[rep]
+        iy = c0[rep, 1] + k % ny[rep]
+        base = (ix * d[1] + iy) * d[2]
+        st = self.start[base + c0[rep, 2]]
+        en = self.start[base + c1[rep, 2] + 1]
+        lengths = en - st
+        n = int(lengths.sum())
+        pos = np.repeat(st - (np.cumsum(lengths) - lengths), lengths) + np.arange(n)
+        return pos, np.repeat(ids[rep], lengths)
+
     def query(self, lo: NDArray[np.float64], hi: NDArray[np.float64]) -> NDArray[np.int64]:
         """Sorted positions of the points in the cells that the box [lo, hi] meets."""
         d = self.dims
@@ -349,6 +396,62 @@ class _PointGrid:
 # ----------------------------------------------------------------------------- programs
 
 
+def _batched_distance(tab, prog: Program, leaf_of: NDArray[np.int64], q: NDArray[np.float64]) -> NDArray[np.float64]:
+    """Signed distances of points ``q`` to the leaves ``leaf_of`` (one leaf per point), vectorised by kind."""
+    out = np.empty(len(q))
+    kind = tab.kind[leaf_of]
+    sel = np.nonzero(kind == 0)[0]
+    if len(sel):
+        L = leaf_of[sel]
+        d = q[sel] - tab.center[L]
+        out[sel] = np.sqrt(np.einsum("ij,ij->i", d, d)) - tab.radius[L]
+    sel = np.nonzero(kind == 2)[0]
+    if len(sel):
+        L = leaf_of[sel]
+        e = np.abs(q[sel] - tab.center[L]) - tab.half[L]
+        pos = np.maximum(e, 0.0)
+        out[sel] = np.sqrt(np.einsum("ij,ij->i", pos, pos)) + np.minimum(e.max(axis=1), 0.0)
+    sel = np.nonzero(kind == 1)[0]
+    if len(sel):
+        L = leaf_of[sel]
+        a = tab.axis[L]
+        rel = q[sel] - tab.center[L]
+        s = np.einsum("ij,ij->i", rel, a)
+        radial = rel - s[:, None] * a
+        rho = np.sqrt(np.einsum("ij,ij->i", radial, radial))
+        h2, r1, r2 = tab.height[L] / 2, tab.r1[L], tab.r2[L]
+        length = np.hypot(2 * h2, r1 - r2)
+        r_s = r2 + (r1 - r2) * (s + h2) / (2 * h2)
+        side = (rho - r_s) * (2 * h2) / length
+        d = np.maximum(np.maximum(s - h2, -s - h2), side)
+        o = d > 0.0
+        if o.any():
+            so, ro, h, a1, a2 = s[o], rho[o], h2[o], r1[o], r2[o]
+            d1 = _segment_distance_v(so, ro, h, -a1, h, a1)
+            d2 = _segment_distance_v(so, ro, -h, -a2, -h, a2)
+            d3 = _segment_distance_v(so, ro, -h, a2, h, a1)
+            d[o] = np.minimum(np.minimum(d1, d2), d3)
+        out[sel] = d
+    sel = np.nonzero(kind == 3)[0]
+    if len(sel):
+        L = leaf_of[sel]
+        order = np.argsort(L, kind="stable")
+        Ls = L[order]
+        cuts = np.nonzero(np.diff(Ls))[0] + 1
+        for grp in np.split(order, cuts):
+            out[sel[grp]] = signed_distance(prog.leaves[int(L[grp[0]])], q[sel[grp]])
+    return out
+
+
+def _segment_distance_v(px, py, ax, ay, bx, by):
+    """Distance of points to segments (one segment per point)."""
+    dx, dy = bx - ax, by - ay
+    ll = dx * dx + dy * dy
+    t = np.clip(((px - ax) * dx + (py - ay) * dy) / np.where(ll > 0, ll, 1.0), 0.0, 1.0)
+    t = np.where(ll > 0, t, 0.0)
+    return np.hypot(px - (ax + t * dx), py - (ay + t * dy))
+
+
 def contains_program(prog: Program, points: NDArray[np.float64], tol: float | None = None) -> NDArray[np.bool_]:
     """Membership of points in the regularised, closed result of a program (module docstring).
 
@@ -364,35 +467,65 @@ def contains_program(prog: Program, points: NDArray[np.float64], tol: float | No
     -------
     ndarray of bool, shape (n,)
     """
+    from .section import leaf_table
+
     n = len(points)
     if n == 0 or len(prog.leaves) == 0:
         return np.zeros(n, dtype=bool)
-    boxes = np.array([np.asarray(p.bounds, dtype=np.float64) for p in prog.leaves]).reshape(-1, 2, 3)
+    tab = leaf_table(prog)
+    lo_all = np.empty((len(prog.leaves), 3))
+    hi_all = np.empty((len(prog.leaves), 3))
+    for j, e in enumerate(np.eye(3)):
+        lo_all[:, j], hi_all[:, j] = tab.extents(e)
+    boxes = np.stack([lo_all, hi_all], axis=1)
     t = check_tolerance("contains(tol)", tol, default_tolerance(boxes))
     grid = _PointGrid(points)
     P = grid.sorted_pts
-    inside: list[NDArray[np.int64]] = []
-    near: list[NDArray[np.int64]] = []
-    empty = np.zeros(0, np.int64)
-    for leaf, box in zip(prog.leaves, boxes):
-        lo, hi = box[0] - t, box[1] + t
-        cand = grid.query(lo, hi)
-        if len(cand):
-            q = P[cand]
-            cand = cand[np.all((q >= lo) & (q <= hi), axis=1)]
-        if not len(cand):
-            inside.append(empty)
-            near.append(empty)
-            continue
-        f = signed_distance(leaf, P[cand])
-        inside.append(cand[f < -t])
-        near.append(cand[np.abs(f) <= t])
+    N = len(prog.leaves)
+    lo_t, hi_t = boxes[:, 0] - t, boxes[:, 1] + t
+    pairs = grid.pair_counts(lo_t, hi_t)
+    in_parts: list[tuple[NDArray[np.int64], NDArray[np.int64]]] = []
+    near_parts: list[tuple[NDArray[np.int64], NDArray[np.int64]]] = []
+    # leaves in chunks of about 100 000 grid columns: candidates, distances, classes
+    cum = np.concatenate([[0], np.cumsum(pairs)])
+    i0 = 0
+    while i0 < N:
+        i1 = max(int(np.searchsorted(cum, cum[i0] + 100_000, side="right")) - 1, i0 + 1)
+        pos, leaf_of = grid.query_many(np.arange(i0, i1), lo_t, hi_t)
+        if len(pos):
+            q = P[pos]
+            keep = np.all((q >= lo_t[leaf_of]) & (q <= hi_t[leaf_of]), axis=1)
+            pos, leaf_of, q = pos[keep], leaf_of[keep], q[keep]
+            f = _batched_distance(tab, prog, leaf_of, q)
+            m_in = f < -t
+            m_near = np.abs(f) <= t
+            in_parts.append((pos[m_in], leaf_of[m_in]))
+            near_parts.append((pos[m_near], leaf_of[m_near]))
+        i0 = i1
+
+    def split(parts: list[tuple[NDArray[np.int64], NDArray[np.int64]]]) -> list[NDArray[np.int64]]:
+        if not parts:
+            return [np.zeros(0, np.int64)] * N
+        pos = np.concatenate([p for p, _ in parts])
+        lf = np.concatenate([leaf for _, leaf in parts])
+        counts = np.bincount(lf, minlength=N)
+        return np.split(pos, np.cumsum(counts)[:-1])  # leaf_of is non-decreasing, positions sorted per leaf
+
+    inside = split(in_parts)
+    near = split(near_parts)
     result = prog.evaluate(lambda i, _: inside[i], _combine_sets)
     near_all = _union(near)
     out_sorted = np.zeros(n, dtype=bool)
     out_sorted[result] = True
-    if len(near_all):
-        out_sorted[near_all] = _resolve_near(prog, P, near_all, inside, near, t)
+    for k in range(0, len(near_all), NEAR_CHUNK):
+        chunk = near_all[k : k + NEAR_CHUNK]
+        if k or len(chunk) < len(near_all):
+            lo, hi = chunk[0], chunk[-1]
+            sub_in = [x[np.searchsorted(x, lo) : np.searchsorted(x, hi, side="right")] for x in inside]
+            sub_near = [x[np.searchsorted(x, lo) : np.searchsorted(x, hi, side="right")] for x in near]
+        else:
+            sub_in, sub_near = inside, near
+        out_sorted[chunk] = _resolve_near(prog, P, chunk, sub_in, sub_near, t)
     out = np.zeros(n, dtype=bool)
     out[grid.order] = out_sorted
     return out
@@ -453,5 +586,5 @@ def _resolve_near(
 
     res = prog.evaluate(leaf_set, _combine_sets)
     out = np.zeros(m, dtype=bool)
-    out[np.unique(res // K)] = True
+    out[res // K] = True
     return out
