@@ -351,7 +351,7 @@ def section_areas(
     >>> section_areas(Box((0, 0, 0), (1, 2, 3)), [0.0, 1.4, 2.0]).tolist()
     [2.0, 2.0, 0.0]
     >>> a = section_areas(Sphere((0, 0, 0), 1), [0.6], resolution=64)[0]
-    >>> abs(a / (math.pi * 0.64) - 1) < 1e-14
+    >>> bool(abs(a / (math.pi * 0.64) - 1) < 1e-14)
     True
     """
     from .section import program_section
