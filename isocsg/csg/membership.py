@@ -245,8 +245,10 @@ _FIXED = _fixed_directions()
 _SEEDS = 4
 
 
-def _probe_directions(seeds: NDArray[np.float64], nseed: NDArray[np.int64]) -> NDArray[np.float64]:
-    """Probe directions per point ``(m, K, 3)``: the fixed set plus combinations of the point's seeds."""
+def _probe_directions(seeds: NDArray[np.float64]) -> NDArray[np.float64]:
+    """Probe directions per point ``(m, K, 3)``: the fixed set plus combinations of the point's seeds
+    (the faces of its tangent cones, unused slots zero): the seeds and their opposites, and for each
+    pair their sum, difference, cross product and the cross product tilted inwards."""
     m = len(seeds)
     extra = []
     for j in range(_SEEDS):
@@ -261,7 +263,6 @@ def _probe_directions(seeds: NDArray[np.float64], nseed: NDArray[np.int64]) -> N
     nrm = np.linalg.norm(E, axis=2, keepdims=True)
     ok = nrm[..., 0] > 1e-9
     E = np.where(ok[..., None], E / np.maximum(nrm, 1e-300), _FIXED[0])
-    del nseed
     return np.concatenate([np.broadcast_to(_FIXED, (m, len(_FIXED), 3)), E], axis=1)
 
 
@@ -312,7 +313,8 @@ def _combine_sets(op: int, xs: list[NDArray[np.int64]]) -> NDArray[np.int64]:
 
 
 class _PointGrid:
-    """Points sorted into a uniform grid of cells; queries return sorted positions."""
+    """Points sorted into a uniform grid of cells (about ``per_cell`` points each); box queries
+    return positions in the sorted order, ascending within each box."""
 
     def __init__(self, pts: NDArray[np.float64], per_cell: int = 8, max_cells: int = 1 << 21) -> None:
         n = len(pts)
@@ -368,29 +370,6 @@ class _PointGrid:
         n = int(lengths.sum())
         pos = np.repeat(st - (np.cumsum(lengths) - lengths), lengths) + np.arange(n)
         return pos, np.repeat(ids[rep], lengths)
-
-    def query(self, lo: NDArray[np.float64], hi: NDArray[np.float64]) -> NDArray[np.int64]:
-        """Sorted positions of the points in the cells that the box [lo, hi] meets."""
-        d = self.dims
-        c0 = np.floor((lo - self.lo) * self.scale).astype(np.int64)
-        c1 = np.floor((hi - self.lo) * self.scale).astype(np.int64)
-        if np.any(c1 < 0) or np.any(c0 > d - 1):
-            return np.zeros(0, np.int64)
-        c0 = np.clip(c0, 0, d - 1)
-        c1 = np.clip(c1, 0, d - 1)
-        ix = np.arange(c0[0], c1[0] + 1)
-        iy = np.arange(c0[1], c1[1] + 1)
-        base = ((ix[:, None] * d[1] + iy[None, :]) * d[2]).ravel()
-        starts = self.start[base + c0[2]]
-        ends = self.start[base + c1[2] + 1]
-        lengths = ends - starts
-        total = int(lengths.sum())
-        if total == 0:
-            return np.zeros(0, np.int64)
-        if len(starts) == 1:
-            return np.arange(starts[0], ends[0])
-        offs = np.repeat(starts - np.concatenate([[0], np.cumsum(lengths)[:-1]]), lengths)
-        return offs + np.arange(total)
 
 
 # ----------------------------------------------------------------------------- programs
@@ -557,12 +536,10 @@ def _resolve_near(
             r = rows[sel]
             slot = nseed[r]
             ok = slot < _SEEDS
-            # several entries for one row in this batch: only distinct rows are written per pass
-            r, slot, vv = r[ok], slot[ok], V[sel[ok], j]
-            _, first = np.unique(r, return_index=True)
-            seeds[r[first], slot[first]] = vv[first]
-            nseed[r[first]] += 1
-    D = _probe_directions(seeds, nseed)  # (m, K, 3)
+            r, slot = r[ok], slot[ok]  # rows are distinct within one leaf
+            seeds[r, slot] = V[sel[ok], j]
+            nseed[r] += 1
+    D = _probe_directions(seeds)  # (m, K, 3)
     K = D.shape[1]
     allk = np.arange(K)
 
