@@ -274,6 +274,28 @@ def test_plate_volume_is_exact(plate_1000, depths):
     assert volume(tree) == pytest.approx(exact, rel=1e-12)
 
 
+def test_plate_10000_holes_of_random_depths_volume_is_exact():
+    """10 000 blind holes of 10 000 different depths: one closed form per hole, not 20 000 pieces."""
+    depths = tuple(np.random.default_rng(4).uniform(1.0, 12.0, 10_000))
+    tree, x, y, z0, z1 = plate(100, depths=depths)
+    exact = 100 * 100 * 10 - math.pi * R_HOLE**2 * (np.minimum(z1, 5.0) - np.maximum(z0, -5.0)).sum()
+    assert volume(tree) == pytest.approx(exact, rel=1e-12)
+
+
+def test_prism_minus_prisms_agrees_with_the_integrator():
+    """Holes crossing the plate's outline (half circles, boxes over an edge): the closed form of
+    prisms minus disjoint prisms and the sections integrated piece by piece agree."""
+    from isocsg.csg.section import solid_program
+    from isocsg.csg.volume import _integrate, _resolution
+
+    holes = [Cylinder((50, y, 0), (0, 0, 20), 1.0) for y in (-20.0, 0.3, 20.0)]
+    holes += [Box((-50, 0, 0), (4, 4, 6)), Box((0, 50, 4), (3, 3, 3)), Cylinder((10, 10, 4), (0, 0, 3), 2.0)]
+    tree = Box((0, 0, 0), (100, 100, 10)) - union_all(holes)
+    integrated = _integrate(solid_program(tree), np.array([0.0, 0.0, 1.0]), 1e-6, _resolution(1e-4), None)
+    assert volume(tree) == pytest.approx(integrated, rel=1e-13)
+    assert volume(tree) == pytest.approx(1e5 - 1.5 * math.pi * 10 - 2 * 4 * 6 - 1.5 * 3 * 2.5 - 4 * math.pi * 2.5, rel=1e-12)
+
+
 def test_plate_10000_volume_is_exact(plate_10000):
     tree, x, *_ = plate_10000
     exact = 100 * 100 * 10 - math.pi * R_HOLE**2 * 10 * len(x)

@@ -8,8 +8,12 @@
    whose subtracted operands have pairwise non-overlapping boxes, each inside
    its convex first operand (all eight corners of its box), is the first
    operand's volume minus theirs; subtracted operands whose boxes miss the
-   first operand's box drop out. When the whole tree reduces this way the
-   result is exact to rounding.
+   first operand's box drop out. A prism along the axis minus prisms along
+   it (boxes, cylinders) with non-overlapping boxes, holes of any depths in a
+   plate, is the prism minus the overlap of each hole's section with the
+   plate's times the overlap of their extents. When the whole tree reduces
+   this way the result is exact to rounding (the holes' sections are exact-
+   area polygons where they cross the plate's outline).
 2. **Integration over sections.** The axis is split at every leaf's
    breakpoints (its extent, the heights of its vertices and end centres), so
    that no leaf starts, ends or turns a corner inside a piece. Each piece
@@ -429,11 +433,64 @@ def volume(
     w = _unit(axis)
     prog = solid_program(solid)
     exact = _closed_form(prog)
+    if exact is None:
+        exact = _prism_minus_disjoint_prisms(prog, w, res)
     if exact is not None:
         if progress is not None:
             progress(1, 1)
         return exact
     return _integrate(prog, w, tol_, res, progress)
+
+
+def _prism_minus_disjoint_prisms(prog: Program, w: NDArray[np.float64], res: int) -> float | None:
+    """``P - Q1 - ... - Qn`` of prisms along ``w`` (boxes, cylinders along it) whose boxes do not
+    overlap each other: ``V(P) - sum V(P & Qi)``, each ``V(P & Qi)`` the area of the two sections'
+    overlap times the overlap of their extents (holes of any depths in a plate, all at once).
+    None when the tree is not of that form."""
+    n = len(prog.leaves)
+    if n < 3 or prog.op[-1] != OP_DIFFERENCE or int(prog.arg[-1]) != n or np.any(prog.op[:-1] != OP_LEAF):
+        return None
+    tab = leaf_table(prog)
+    prism = _prismatic(prog, w)
+    kind = tab.kind
+    cyl = (kind == 1) & prism
+    if not prism[0] or not np.all(cyl[1:] | (kind[1:] == 2) & prism[1:]):
+        return None
+    boxes = _boxes(prog)
+    order = np.asarray(prog.arg[:-1])  # leaf index of each operand, first operand first
+    first, rest = int(order[0]), order[1:]
+    meet = np.all((boxes[rest, 0] < boxes[first, 1]) & (boxes[rest, 1] > boxes[first, 0]), axis=1)
+    rest = rest[meet]
+    if not _disjoint_boxes(boxes[rest, 0], boxes[rest, 1]):
+        return None
+    lo, hi = tab.extents(w)
+    F = plane_frame(0.5 * (lo[first] + hi[first]) * w, w)
+    base = leaf_sections(prog, F, res, area_exact=True, ids=np.array([first]))[0]
+    length = np.minimum(hi[rest], hi[first]) - np.maximum(lo[rest], lo[first])
+    # each hole's section, built in a plane through the middle of its own extent
+    u, v = F[:3, 0], F[:3, 1]
+    c2 = np.column_stack([tab.center[rest] @ u, tab.center[rest] @ v])
+    area = np.zeros(len(rest))
+    rc = cyl[rest]
+    if rc.any():
+        from .section import _circle_ring
+
+        r = tab.r1[rest][rc]
+        circles = shapely.polygons(_circle_ring(c2[rc], r, res, True))
+        shapely.prepare(base)
+        inner = shapely.contains_properly(base, circles)
+        cut = np.where(inner, math.pi * r * r, 0.0)
+        if (~inner).any():
+            cut[~inner] = shapely.area(shapely.intersection(base, circles[~inner]))
+        area[rc] = cut
+    rb = ~rc
+    if rb.any():
+        half = tab.half[rest][rb]
+        hu, hv = half @ np.abs(u), half @ np.abs(v)
+        rects = shapely.box(c2[rb, 0] - hu, c2[rb, 1] - hv, c2[rb, 0] + hu, c2[rb, 1] + hv)
+        area[rb] = shapely.area(shapely.intersection(base, rects))
+    total = float(base.area) * float(hi[first] - lo[first]) - float(np.sum(area * np.maximum(length, 0.0)))
+    return max(total, 0.0)
 
 
 def _integrate(
