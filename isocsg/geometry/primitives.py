@@ -208,7 +208,8 @@ class Sphere(Primitive):
         from ..csg.membership import check_tolerance, primitive_tolerance, signed_distance
 
         p = self._points(points)
-        return signed_distance(self, p) <= check_tolerance(f"{type(self).__name__}.contains(tol)", tol, primitive_tolerance(self))
+        limit = check_tolerance(f"{type(self).__name__}.contains(tol)", tol, primitive_tolerance(self))
+        return signed_distance(self, p) <= limit
 
     @property
     def bounds(self) -> NDArray[np.float64]:
@@ -359,14 +360,16 @@ class Truncus(Primitive):
     def contains(self, points: ArrayLike, *, tol: float | None = None) -> NDArray[np.bool_]:
         """Boolean mask of the points inside or on the truncus, within ``tol``.
 
-        A point is inside when its signed distance to the boundary
-        (exact: the distance to its trapezoid in the meridian half-plane) is at most ``tol`` metres (>= 0; default 1e-12 of the
-        truncus's size or coordinate magnitude, whichever is larger).
+        A point is inside when its signed distance to the boundary (exact:
+        the distance to its trapezoid in the meridian half-plane) is at most
+        ``tol`` metres (>= 0; default 1e-12 of the truncus's size or
+        coordinate magnitude, whichever is larger).
         """
         from ..csg.membership import check_tolerance, primitive_tolerance, signed_distance
 
         p = self._points(points)
-        return signed_distance(self, p) <= check_tolerance(f"{type(self).__name__}.contains(tol)", tol, primitive_tolerance(self))
+        limit = check_tolerance(f"{type(self).__name__}.contains(tol)", tol, primitive_tolerance(self))
+        return signed_distance(self, p) <= limit
 
     @property
     def bounds(self) -> NDArray[np.float64]:
@@ -690,14 +693,16 @@ class ConvexPolyhedron(Primitive):
     def contains(self, points: ArrayLike, *, tol: float | None = None) -> NDArray[np.bool_]:
         """Boolean mask of the points inside or on the polyhedron, within ``tol``.
 
-        A point is inside when its signed distance to the boundary
-        (the largest signed distance to its face planes) is at most ``tol`` metres (>= 0; default 1e-12 of the
-        polyhedron's size or coordinate magnitude, whichever is larger).
+        A point is inside when its signed distance to the boundary (the
+        largest signed distance to its face planes) is at most ``tol``
+        metres (>= 0; default 1e-12 of the polyhedron's size or coordinate
+        magnitude, whichever is larger).
         """
         from ..csg.membership import check_tolerance, primitive_tolerance, signed_distance
 
         p = self._points(points)
-        return signed_distance(self, p) <= check_tolerance(f"{type(self).__name__}.contains(tol)", tol, primitive_tolerance(self))
+        limit = check_tolerance(f"{type(self).__name__}.contains(tol)", tol, primitive_tolerance(self))
+        return signed_distance(self, p) <= limit
 
     @property
     def bounds(self) -> NDArray[np.float64]:
@@ -798,7 +803,8 @@ class Box(Primitive):
         from ..csg.membership import check_tolerance, primitive_tolerance, signed_distance
 
         p = self._points(points)
-        return signed_distance(self, p) <= check_tolerance(f"{type(self).__name__}.contains(tol)", tol, primitive_tolerance(self))
+        limit = check_tolerance(f"{type(self).__name__}.contains(tol)", tol, primitive_tolerance(self))
+        return signed_distance(self, p) <= limit
 
     @property
     def bounds(self) -> NDArray[np.float64]:
