@@ -39,7 +39,7 @@ from shapely.geometry.base import BaseGeometry
 from .._validation import integer, nonzero_vector3, points_array, vector3
 from ..errors import InvalidGeometryError, InvalidParameterError
 from ..geometry.primitives import Box, ConvexPolyhedron, Primitive, Solid, Sphere, Truncus
-from .program import OP_INTERSECTION, OP_UNION, Program, compile_program
+from .program import OP_DIFFERENCE, OP_INTERSECTION, OP_UNION, Program, compile_program
 from .tree import CSGNode
 
 __all__ = [
@@ -715,10 +715,17 @@ def combine_sections(
     min_width = SLIVER_WIDTH * float(max(bounds[2] - bounds[0], bounds[3] - bounds[1]))
     n_ops = int(np.count_nonzero(np.asarray(program.op) != 0))
     calls = [0]
+    struct = _Structure()
 
     def combine(op: int, args: list[BaseGeometry]) -> BaseGeometry:
         calls[0] += 1
         last = area_only and calls[0] == n_ops
+        keys = struct.pop(len(args))
+        args, empty = struct.simplify(op, keys, args)
+        if empty:
+            return _Area(0.0) if last else _EMPTY
+        if len(args) == 1:
+            return _Area(float(args[0].area)) if last else args[0]
         if op == OP_UNION:
             parts = [g for g in args if not g.is_empty]
             if len(parts) >= DISJOINT_CHECK and _pairwise_disjoint(parts):
@@ -749,11 +756,59 @@ def combine_sections(
                     res = shapely.difference(first, shapely.union_all(rest))
         return polygonal(res, min_width)
 
-    out = program.evaluate(lambda i, _: leaf_geoms[i], combine)
+    def leaf(i: int, p: Primitive) -> BaseGeometry:
+        struct.push_leaf(p)
+        return leaf_geoms[i]
+
+    out = program.evaluate(leaf, combine)
     if isinstance(out, _Area):
         return max(out.value, 0.0)
     out = polygonal(out, min_width)
     return float(out.area) if area_only else out
+
+
+class _Structure:
+    """Interned keys of the subtrees met while a program is evaluated, so that equal operands are
+    recognised: ``A | A`` and ``A & A`` keep one ``A``; ``A - A`` is empty in each of its flattened
+    forms (``A - ... - A``; ``(b | c) - b - c``; ``A - S.. - (A - S..)``). Exact where the 2D
+    Booleans would leave slivers."""
+
+    def __init__(self) -> None:
+        self.ids: dict[object, int] = {}
+        self.nodes: dict[int, tuple[int, tuple[int, ...]]] = {}
+        self.stack: list[int] = []
+
+    def _key(self, k: object) -> int:
+        return self.ids.setdefault(k, len(self.ids))
+
+    def push_leaf(self, prim: object) -> None:
+        self.stack.append(self._key(("leaf", prim)))
+
+    def pop(self, n: int) -> list[int]:
+        keys = self.stack[len(self.stack) - n :]
+        del self.stack[len(self.stack) - n :]
+        return keys
+
+    def simplify(self, op: int, keys: list[int], args: list) -> tuple[list, bool]:
+        """Drop repeated operands; push the node's key; True when the result is empty by structure."""
+        if op != OP_DIFFERENCE:
+            seen: set[int] = set()
+            keep = [i for i, k in enumerate(keys) if not (k in seen or seen.add(k))]
+            keys, args = [keys[i] for i in keep], [args[i] for i in keep]
+            empty = False
+        else:
+            first, rest = keys[0], set(keys[1:])
+            fn = self.nodes.get(first, (None, ()))
+            empty = first in rest or (fn[0] == OP_UNION and set(fn[1]) <= rest) or any(
+                self.nodes.get(k, (None, ()))[0] == OP_DIFFERENCE
+                and self.nodes[k][1][0] == first
+                and set(self.nodes[k][1][1:]) <= rest
+                for k in keys[1:]
+            )
+        key = keys[0] if len(keys) == 1 else self._key((op, tuple(keys)))
+        self.nodes.setdefault(key, (op, tuple(keys)))
+        self.stack.append(key)
+        return args, empty
 
 
 def _subtract_disjoint(first: BaseGeometry, rest: list[BaseGeometry]) -> BaseGeometry:

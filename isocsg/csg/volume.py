@@ -264,6 +264,7 @@ def _closed_form(prog: Program) -> float | None:
     leaves = prog.leaves
     # operands are compared by interned keys: equal subtrees get the same integer
     keys: dict[object, int] = {}
+    nodes: dict[int, tuple[int, tuple[int, ...]]] = {}
 
     def key(k: object) -> int:
         return keys.setdefault(k, len(keys))
@@ -278,6 +279,7 @@ def _closed_form(prog: Program) -> float | None:
             if len(xs) == 1:
                 return xs[0]
         k = key((op, tuple(x[4] for x in xs)))
+        nodes.setdefault(k, (op, tuple(x[4] for x in xs)))
         lo = np.array([x[1] for x in xs])
         hi = np.array([x[2] for x in xs])
         if op == OP_UNION:
@@ -285,8 +287,15 @@ def _closed_form(prog: Program) -> float | None:
             return (sum(x[0] for x in xs) if ok else None, lo.min(axis=0), hi.max(axis=0), -1, k)
         if op == OP_DIFFERENCE:
             first = xs[0]
-            if any(x[4] == first[4] for x in xs[1:]):
-                return (0.0, first[1], first[2], -1, k)  # A - A - ... is empty
+            rest_keys = {x[4] for x in xs[1:]}
+            fn = nodes.get(first[4], (None, ()))
+            if first[4] in rest_keys or (fn[0] == OP_UNION and set(fn[1]) <= rest_keys) or any(
+                nodes.get(x[4], (None, ()))[0] == OP_DIFFERENCE
+                and nodes[x[4]][1][0] == first[4]
+                and set(nodes[x[4]][1][1:]) <= rest_keys
+                for x in xs[1:]
+            ):
+                return (0.0, first[1], first[2], -1, k)  # A - A (any flattening of it) is empty
             meet = np.all((lo[1:] < first[2]) & (hi[1:] > first[1]), axis=1)
             rest = [x for x, m in zip(xs[1:], meet) if m]
             if not rest:
