@@ -147,22 +147,55 @@ class Program:
                 stack.append(combine(o, args))
         return stack[-1]
 
-    def contains(self, points: ArrayLike) -> NDArray[np.bool_]:
-        """Point membership of the closed operands combined by the program.
+    def contains(self, points: ArrayLike, *, tol: float | None = None) -> NDArray[np.bool_]:
+        """Point membership of the closed, regularised result, within ``tol``.
 
-        Each leaf tests only the points inside its bounding box.
+        The result is ``closure(interior(R))`` of the Boolean ``R`` of the
+        closed leaves: a point on the cut face of ``A - B`` is inside (on the
+        result's boundary), a point where ``A & B`` only touch is outside, and
+        points within ``tol`` of a leaf's boundary count as on it (the leaf is
+        replaced by its tangent cone there). See
+        :mod:`isocsg.csg.membership` for the full statement.
+
+        Parameters
+        ----------
+        points : array_like, shape (n, 3) or (3,)
+        tol : float, optional
+            Absolute tolerance in metres, >= 0. Default
+            :meth:`default_tolerance`: 1e-12 of the largest extent or
+            coordinate magnitude of the leaves' boxes.
+
+        Returns
+        -------
+        ndarray of bool, shape (n,)
+
+        Raises
+        ------
+        InvalidGeometryError
+            If ``points`` is not an (n, 3) array of finite numbers.
+        InvalidParameterError
+            If ``tol`` is negative or not a finite number.
+
+        Examples
+        --------
+        >>> from isocsg import Box
+        >>> prog = compile_program(Box((0, 0, 0), (2, 2, 2)) - Box((1, 0, 0), (2, 2, 2)))
+        >>> prog.contains([[0.0, 0, 0], [-1e-13, 0, 0], [1e-13, 0, 0], [1e-9, 0, 0]]).tolist()
+        [True, True, True, False]
+        >>> prog.contains([[1e-6, 0, 0]], tol=1e-5).tolist()
+        [True]
         """
+        from .membership import contains_program
+
         pts = points_array("contains(points)", points)
+        return contains_program(self, pts, tol)
 
-        def leaf(_: int, p: Primitive) -> NDArray[np.bool_]:
-            lo, hi = p.bounds
-            near = np.nonzero(np.all((pts >= lo) & (pts <= hi), axis=1))[0]
-            out = np.zeros(len(pts), dtype=bool)
-            if len(near):
-                out[near] = p.contains(pts[near])
-            return out
+    def default_tolerance(self) -> float:
+        """The default ``tol`` of :meth:`contains`: 1e-12 of the largest extent or
+        coordinate magnitude of the leaves' boxes (metres)."""
+        from .membership import default_tolerance
 
-        return self.evaluate(leaf, combine_masks)
+        return default_tolerance(np.array([np.asarray(p.bounds, dtype=np.float64) for p in self.leaves]).reshape(-1, 2, 3))
 
     def bounds(self) -> NDArray[np.float64]:
         """A conservative axis-aligned box ``(2, 3)``: unions take the hull,

@@ -161,13 +161,12 @@ class CSGNode(Solid):
             object.__setattr__(self, "_program", compile_program(self))
         return self._program  # type: ignore[return-value]
 
-    def contains(self, points: ArrayLike) -> NDArray[np.bool_]:
-        """Point membership of the (closed) result solid.
+    def contains(self, points: ArrayLike, *, tol: float | None = None) -> NDArray[np.bool_]:
+        """Point membership of the closed, regularised result within ``tol`` (metres, >= 0).
 
-        Regularisation only matters on measure-zero sets (shared boundaries);
-        points exactly there are classified by the closed operands.
+        See :meth:`isocsg.csg.program.Program.contains` for the boundary semantics and the default tolerance.
         """
-        return self.program().contains(points)
+        return self.program().contains(points, tol=tol)
 
     @property
     def bounds(self) -> NDArray[np.float64]:

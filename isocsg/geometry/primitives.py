@@ -209,10 +209,18 @@ class Sphere(Primitive):
         """The centre as a float64 array."""
         return np.asarray(self.center, dtype=np.float64)
 
-    def contains(self, points: ArrayLike) -> NDArray[np.bool_]:
-        """Boolean mask of the points inside or on the sphere."""
+    def contains(self, points: ArrayLike, *, tol: float | None = None) -> NDArray[np.bool_]:
+        """Boolean mask of the points inside or on the sphere, within ``tol``.
+
+        A point is inside when its signed distance to the boundary
+        (exact) is at most ``tol`` metres (>= 0; default 1e-12 of the
+        sphere's size or coordinate magnitude, whichever is larger).
+        """
+        from ..csg.membership import check_tolerance, primitive_tolerance, signed_distance
+
         p = self._points(points)
-        return np.einsum("ij,ij->i", p - self.center_array, p - self.center_array) <= self.radius**2 * (1 + 1e-12)
+        limit = check_tolerance(f"{type(self).__name__}.contains(tol)", tol, primitive_tolerance(self))
+        return signed_distance(self, p) <= limit
 
     @property
     def bounds(self) -> NDArray[np.float64]:
@@ -383,13 +391,19 @@ class Truncus(Primitive):
         er = np.divide(radial, rho[:, None], out=np.zeros_like(radial), where=rho[:, None] > 0)
         return s, rho, er
 
-    def contains(self, points: ArrayLike) -> NDArray[np.bool_]:
-        """Boolean mask of the points inside or on the truncus."""
+    def contains(self, points: ArrayLike, *, tol: float | None = None) -> NDArray[np.bool_]:
+        """Boolean mask of the points inside or on the truncus, within ``tol``.
+
+        A point is inside when its signed distance to the boundary (exact:
+        the distance to its trapezoid in the meridian half-plane) is at most
+        ``tol`` metres (>= 0; default 1e-12 of the truncus's size or
+        coordinate magnitude, whichever is larger).
+        """
+        from ..csg.membership import check_tolerance, primitive_tolerance, signed_distance
+
         p = self._points(points)
-        s, rho, _ = self._local(p)
-        h2 = self.height / 2
-        eps = 1e-12 * max(self.height, self.r1, self.r2)
-        return (np.abs(s) <= h2 + eps) & (rho <= self.radius_at(np.clip(s, -h2, h2)) + eps)
+        limit = check_tolerance(f"{type(self).__name__}.contains(tol)", tol, primitive_tolerance(self))
+        return signed_distance(self, p) <= limit
 
     @property
     def bounds(self) -> NDArray[np.float64]:
@@ -716,11 +730,19 @@ class ConvexPolyhedron(Primitive):
         """Each face as a (k, 3) array, counter-clockwise seen from outside."""
         return [self.hull_vertices[f] for f in self.faces]
 
-    def contains(self, points: ArrayLike) -> NDArray[np.bool_]:
-        """Boolean mask of the points inside or on the polyhedron."""
+    def contains(self, points: ArrayLike, *, tol: float | None = None) -> NDArray[np.bool_]:
+        """Boolean mask of the points inside or on the polyhedron, within ``tol``.
+
+        A point is inside when its signed distance to the boundary (the
+        largest signed distance to its face planes) is at most ``tol``
+        metres (>= 0; default 1e-12 of the polyhedron's size or coordinate
+        magnitude, whichever is larger).
+        """
+        from ..csg.membership import check_tolerance, primitive_tolerance, signed_distance
+
         p = self._points(points)
-        scale = float(np.max(np.ptp(self.hull_vertices, axis=0)))
-        return np.all(p @ self.face_normals.T <= self.face_offsets + 1e-12 * scale, axis=1)
+        limit = check_tolerance(f"{type(self).__name__}.contains(tol)", tol, primitive_tolerance(self))
+        return signed_distance(self, p) <= limit
 
     @property
     def bounds(self) -> NDArray[np.float64]:
@@ -821,11 +843,18 @@ class Box(Primitive):
         """Each face as a (4, 3) array, counter-clockwise seen from outside."""
         return self.to_polyhedron().face_polygons()
 
-    def contains(self, points: ArrayLike) -> NDArray[np.bool_]:
-        """Boolean mask of the points inside or on the box."""
+    def contains(self, points: ArrayLike, *, tol: float | None = None) -> NDArray[np.bool_]:
+        """Boolean mask of the points inside or on the box, within ``tol``.
+
+        A point is inside when its signed distance to the boundary
+        (exact) is at most ``tol`` metres (>= 0; default 1e-12 of the
+        box's size or coordinate magnitude, whichever is larger).
+        """
+        from ..csg.membership import check_tolerance, primitive_tolerance, signed_distance
+
         p = self._points(points)
-        tol = 1e-12 * max(self.size)
-        return np.all(np.abs(p - self.center_array) <= self.half_size + tol, axis=1)
+        limit = check_tolerance(f"{type(self).__name__}.contains(tol)", tol, primitive_tolerance(self))
+        return signed_distance(self, p) <= limit
 
     @property
     def bounds(self) -> NDArray[np.float64]:
