@@ -90,5 +90,5 @@ def test_empty_results_are_dropped():
 def test_bad_occluders():
     with pytest.raises(isocsg.InvalidGeometryError, match=re.escape("occluders[1] must be a primitive or a CSG tree, got str")):
         convex_pieces([Box((0, 0, 0), (1, 1, 1)), "box"])
-    with pytest.raises(isocsg.InvalidParameterError, match=re.escape("resolution must be an integer >= 3, got 2")):
+    with pytest.raises(isocsg.InvalidParameterError, match=re.escape("resolution must be between 3 and 512, got 2")):
         convex_pieces([Sphere((0, 0, 0), 1)], resolution=2)
