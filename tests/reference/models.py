@@ -144,7 +144,9 @@ def random_tree(n_leaves: int, seed: int, *, weights: tuple[float, float, float]
     number (the density stays the same) and sorted along a space-filling
     order, so that neighbours in the list overlap; each level combines runs of
     2 to 4 consecutive items with a union, intersection or difference
-    (probabilities ``weights``).
+    (probabilities ``weights`` for the first level; above it, where groups
+    of neighbours rarely overlap, unions and differences only, 0.7 and 0.3,
+    so that most trees are not empty).
     """
     rng = np.random.default_rng(seed)
     side = 0.9 * n_leaves ** (1 / 3)
@@ -157,6 +159,7 @@ def random_tree(n_leaves: int, seed: int, *, weights: tuple[float, float, float]
             key |= ((q[:, axis] >> bit) & 1) << (3 * bit + axis)
     items: list[Any] = [_random_primitive(rng, centres[i]) for i in np.argsort(key, kind="stable")]
     ops = (Union, Intersection, Difference)
+    p = np.asarray(weights, dtype=np.float64) / sum(weights)
     while len(items) > 1:
         nxt: list[Any] = []
         i = 0
@@ -164,8 +167,9 @@ def random_tree(n_leaves: int, seed: int, *, weights: tuple[float, float, float]
             k = int(rng.integers(2, 5))
             group = items[i : i + k]
             i += k
-            nxt.append(group[0] if len(group) == 1 else ops[rng.choice(3, p=weights)](*group))
+            nxt.append(group[0] if len(group) == 1 else ops[rng.choice(3, p=p)](*group))
         items = nxt
+        p = np.array([0.7, 0.0, 0.3])
     return items[0]
 
 
