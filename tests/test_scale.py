@@ -251,6 +251,15 @@ def _lens_volume(r: float, d: float) -> float:
     return math.pi * (4 * r + d) * (2 * r - d) ** 2 / 12
 
 
+PLATE_SEGMENTS = 64
+
+
+@lru_cache(maxsize=4)
+def _plate_mesh(n: int):
+    """manifold3d's plate minus n holes (every form of the plate is this set: one mesh per n)."""
+    return manifold_of(plate_with_holes(n).flat(), PLATE_SEGMENTS)
+
+
 @pytest.mark.parametrize("form", ["loop", "grouped"], ids=str)
 @pytest.mark.parametrize("n", [10, 100, 1000], ids=lambda n: f"{n}holes")
 def test_plate_volume_and_sections(n: int, form: str) -> None:
@@ -266,9 +275,11 @@ def test_plate_volume_and_sections(n: int, form: str) -> None:
     deficit = n * math.pi * plate.radius**2 * (2 * math.pi / 1024) ** 2 / 6
     assert abs(mid.area - plate.area_mid) <= 1e-9 * plate.area_mid + 2 * deficit, (mid.area, plate.area_mid)
     # against manifold3d's Boolean of the same model, sliced by the same planes
-    mesh = manifold_of(solid, 128)
+    mesh = _plate_mesh(n)
     sx, sy, sz = plate.size
-    assert abs(v - mesh.volume()) <= 2 * tol * plate.volume + n * math.pi * plate.radius**2 * sz * 1e-3
+    # the mesh's inscribed 64-gons remove (2 pi / 64)^2 / 6 less of each hole than the cylinders
+    sag = n * math.pi * plate.radius**2 * sz * (2 * math.pi / PLATE_SEGMENTS) ** 2 / 6
+    assert abs(v - mesh.volume()) <= 2 * tol * plate.volume + 1.5 * sag
     pitch = sx / math.ceil(math.sqrt(n * 4 / 3))
     for origin, normal in (((0.0, 0.0, 0.05), (0, 0, 1)),  # parallel to the faces
                            ((-sx / 2 + 0.5 * pitch + 0.1 * plate.radius, 0.0, 0.0), (1, 0, 0)),  # through a column of holes
@@ -290,13 +301,16 @@ def test_lattice_volume_and_sections() -> None:
     tol = 1e-3
     v = volume(solid, tol=tol)
     assert abs(v - exact) <= 2 * tol * exact, (v, exact)
-    mesh = manifold_of(solid, 64)
     for origin, normal in (((0.0, 0.0, 0.1), (0, 0, 1)), ((0.05, 0.0, 0.0), (0.3, 0.9, -0.3))):
         s = section(solid, origin, normal, resolution=1024)
-        ref = manifold_slice(mesh, s.frame)
-        # 64-gon circles of the mesh: they lose up to (2 pi / 64)^2 / 6 = 0.16 % of a disc's area
+        # manifold3d's union of the spheres the plane meets (the others do not change the cut)
+        unit = np.asarray(normal, dtype=np.float64) / np.linalg.norm(normal)
+        near = [c for c in solid.children if abs(float(np.dot(np.subtract(c.center, origin), unit))) < c.radius]
+        assert 50 < len(near) < len(solid.children)
+        ref = manifold_slice(manifold_of(union_all(near), 128), s.frame)
+        # 128-gon circles of the mesh lose up to (2 pi / 128)^2 / 6 = 0.04 % of a disc's area
         assert abs(s.area - ref.area) <= 5e-3 * ref.area, (origin, s.area, ref.area)
-        assert s.geometry.symmetric_difference(ref).area <= 1.5e-2 * ref.area, origin
+        assert s.geometry.symmetric_difference(ref).area <= 1e-2 * ref.area, origin
 
 
 @pytest.mark.parametrize("n,seed", [(200, 11), (800, 12)], ids=["200leaves", "800leaves"])
@@ -333,13 +347,22 @@ def _plate_membership(plate, pts: np.ndarray) -> np.ndarray:
     return inside & ~in_hole
 
 
-def test_loop_of_100000_operations_has_no_recursion_limit() -> None:
+@pytest.mark.parametrize(
+    "distinct",
+    [10_000, pytest.param(None, marks=[pytest.mark.slow, pytest.mark.skipif(
+        not FULL, reason="the largest sizes run with ISOCSG_SCALE_FULL=1")])],
+    ids=["10000distinct", "100000distinct"],
+)
+def test_loop_of_100000_operations_has_no_recursion_limit(distinct) -> None:
+    # 100 000 differences, nesting 100 000 deep, cycling through ``distinct`` holes
     limit = sys.getrecursionlimit()
     n = 100_000
-    solid, plate = loop_tree(n)
+    solid, plate = loop_tree(n, distinct=distinct)
     assert sys.getrecursionlimit() == limit
     # hash, equality with an equal tree built separately, pickle round trip
-    again, _ = loop_tree(n)
+    again = plate.plate
+    for i in range(n):
+        again = again - plate.holes[i % plate.n]
     assert hash(solid) == hash(again) and solid == again
     back = pickle.loads(pickle.dumps(solid))
     assert back == solid and hash(back) == hash(solid)
@@ -349,19 +372,19 @@ def test_loop_of_100000_operations_has_no_recursion_limit() -> None:
     # contains, against the closed form, on random points and on points near hole walls
     rng = np.random.default_rng(1)
     sx, sy, sz = plate.size
-    pts = rng.uniform(-0.5, 0.5, (4000, 3)) * np.array([sx * 1.05, sy * 1.05, sz * 1.2])
-    near = np.array([h.center for h in plate.holes[:: n // 500]]) + plate.radius * np.array([0.97, 0.0, 0.0])
+    pts = rng.uniform(-0.5, 0.5, (600, 3)) * np.array([sx * 1.05, sy * 1.05, sz * 1.2])
+    near = np.array([h.center for h in plate.holes[:: plate.n // 200]]) + plate.radius * np.array([0.97, 0.0, 0.0])
     pts = np.vstack([pts, near, near + np.array([0.06 * plate.radius, 0, 0])])
     np.testing.assert_array_equal(solid.contains(pts), _plate_membership(plate, pts))
     repr(solid)
     solid.to_dict()
     # a section across a row of holes: the plate's strip minus the holes' chords, exactly
-    y0 = -sy / 2 + 0.5 * (sx / math.ceil(math.sqrt(n * 4 / 3))) + 0.4 * plate.radius
+    y0 = -sy / 2 + 0.5 * (sx / math.ceil(math.sqrt(plate.n * 4 / 3))) + 0.4 * plate.radius
     s = section(solid, (0.0, y0, 0.0), (0, 1, 0), resolution=256)
     cut = [h for h in plate.holes if abs(h.center[1] - y0) < plate.radius]
     chords = sum(2 * math.sqrt(plate.radius**2 - (h.center[1] - y0) ** 2) for h in cut)
     exact = (sx - chords) * sz
-    assert len(cut) > 100
+    assert len(cut) > 50
     assert abs(s.area - exact) <= 1e-3 * exact, (s.area, exact)
 
 
