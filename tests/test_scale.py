@@ -188,7 +188,7 @@ def test_nested_1000_operand_nodes_match_reference() -> None:
 
 def _random_eyes(n: int) -> tuple[tuple[float, float, float], tuple[float, float, float]]:
     side = 0.9 * n ** (1 / 3)
-    d = 1.6 * side + 2.5
+    d = 1.2 * side + 1.2
     return (0.8 * d, -1.0 * d, 0.6 * d), (-0.9 * d, -0.7 * d, 0.5 * d)
 
 

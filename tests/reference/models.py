@@ -137,7 +137,7 @@ def _random_primitive(rng: np.random.Generator, centre: np.ndarray) -> Any:
     return ConvexPolyhedron(centre + s * (octa + 0.3 * rng.uniform(-1, 1, (6, 3))))
 
 
-def random_tree(n_leaves: int, seed: int, *, weights: tuple[float, float, float] = (0.5, 0.2, 0.3)) -> Any:
+def random_tree(n_leaves: int, seed: int, *, weights: tuple[float, float, float] = (0.6, 0.15, 0.25)) -> Any:
     """A random tree of ``n_leaves`` primitives of every kind, built bottom up.
 
     The primitives are scattered in a cube whose volume grows with their
