@@ -7,7 +7,7 @@ import time
 from collections.abc import Callable, Sequence
 from typing import Any
 
-__all__ = ["median_time", "format_table", "print_table", "fmt_seconds", "fmt_rate"]
+__all__ = ["median_time", "format_table", "print_table", "fmt_seconds", "fmt_rate", "run_child"]
 
 
 def median_time(fn: Callable[[], Any], repeats: int, *, warmup: int = 0) -> tuple[float, Any]:
@@ -54,3 +54,54 @@ def print_table(title: str, headers: Sequence[str], rows: Sequence[Sequence[Any]
     print(title)
     print(format_table(headers, rows))
     print()
+
+
+def run_child(argv: Sequence[str], timeout: float, *, env: dict[str, str] | None = None,
+              poll: float = 0.1, max_rss_mb: float | None = None) -> tuple[list[dict[str, Any]], str, float]:
+    """Run ``argv`` in a fresh process that prints one JSON object per line; stop it after ``timeout`` s
+    (or once its resident set passes ``max_rss_mb``).
+
+    Returns the objects read, a status (``"ok"``, ``"timeout"``, ``"over N MB"`` or
+    ``"exit N"`` with the last line of its stderr) and the peak resident set of the
+    process in MB, polled with psutil while it runs (each object may also report the
+    child's own peak).
+    """
+    import json
+    import subprocess
+    import tempfile
+
+    import psutil
+
+    with tempfile.TemporaryFile(mode="w+") as out, tempfile.TemporaryFile(mode="w+") as err:
+        proc = subprocess.Popen(list(argv), stdout=out, stderr=err, env=env, text=True)
+        ps = psutil.Process(proc.pid)
+        peak = 0.0
+        t0 = time.perf_counter()
+        status = "ok"
+        while proc.poll() is None:
+            try:
+                peak = max(peak, ps.memory_info().rss / 2**20)
+            except psutil.Error:
+                pass
+            if time.perf_counter() - t0 > timeout:
+                status = "timeout"
+            elif max_rss_mb is not None and peak > max_rss_mb:
+                status = f"over {max_rss_mb:.0f} MB"
+            if status != "ok":
+                proc.kill()
+                proc.wait()
+                break
+            time.sleep(poll)
+        if status == "ok" and proc.returncode != 0:
+            err.seek(0)
+            lines = [ln for ln in err.read().splitlines() if ln.strip()]
+            status = f"exit {proc.returncode}: {lines[-1][:160] if lines else ''}"
+        out.seek(0)
+        records = []
+        for line in out.read().splitlines():
+            try:
+                records.append(json.loads(line))
+            except ValueError:
+                continue
+    peak = max([peak] + [float(r.get("maxrss_mb", 0.0)) for r in records])
+    return records, status, peak

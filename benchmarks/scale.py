@@ -1,0 +1,374 @@
+"""Scale benchmark: CSG trees of 10 to 10 000 primitives, isocsg versus manifold3d + pyvista.
+
+Run from the repository root::
+
+    python benchmarks/scale.py            # n = 10, 100, 1000, 10 000 at 1024 x 1024, 3 repeats
+    python benchmarks/scale.py --quick    # the same cases, 1 repeat and a shorter time limit per case
+
+Models (``tests/reference/models.py``), for each n:
+
+- a plate with n holes; isocsg gets it as built by a modelling loop
+  (``for h in holes: part = part - h``), manifold3d as one batch Boolean
+  (plate minus the batch union of the holes), its most favourable form;
+- the union of n spheres on a lattice (``union_all``; one batch union).
+
+Every case runs in a fresh process, so that its peak resident set (polled
+with psutil, and the process's own ``ru_maxrss``) is its own and one slow
+case cannot hang the run (``--timeout`` per case; stages finished before a
+timeout are kept).
+
+- isocsg: first render of a new ``Renderer`` (caches cleared; per-pixel CSG),
+  the second render from a new viewpoint (builds the clipped CSG surface under
+  ``csg="auto"``), a re-render from new viewpoints (surface cached),
+  ``volume(tol=1e-3)`` and one ``section()``;
+- peer: manifold3d's Boolean of the leaves tessellated at 64 segments
+  (``Manifold.batch_boolean``, then ``to_mesh``), pyvista's off-screen first
+  render of that mesh (upload, plotter, first frame) and re-render (camera
+  moved), manifold3d's ``volume()`` and ``slice()``.
+
+Printed: medians over repeats, ratios, time per leaf (which must not grow
+with n), and the targets with whether each is met.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import math
+import os
+import resource
+import statistics
+import sys
+import time
+from pathlib import Path
+
+os.environ.setdefault("VTK_DEFAULT_OPENGL_WINDOW", "vtkEGLRenderWindow")
+HERE = Path(__file__).resolve().parent
+sys.path.insert(0, str(HERE))
+sys.path.insert(0, str(HERE.parent / "tests"))
+
+from _common import fmt_seconds, print_table, run_child  # noqa: E402
+
+NS = (10, 100, 1000, 10_000)
+MODELS = ("plate", "spheres")
+SEGMENTS = 64
+VIEWS = {
+    "plate": ((2.5, -4.5, 4.0), (-3.5, -3.0, 4.5), (4.0, 2.5, 4.0)),
+    "spheres": ((5.0, -7.0, 5.0), (-6.5, -5.0, 4.0), (6.0, 4.5, 4.5)),
+}
+SECTION = {"plate": ((0.0, 0.0, 0.05), (0.0, 0.0, 1.0)), "spheres": ((0.0, 0.0, 0.1), (0.0, 0.0, 1.0))}
+LIGHT = (3.0, -4.0, 6.0)
+FOV = 40.0
+
+
+# ----------------------------------------------------------------------------- models
+
+
+def build(model: str, n: int, form: str):
+    """The model with n leaves besides the plate: ``form`` "loop" (isocsg) or "batch" (manifold3d)."""
+    from reference.models import plate_with_holes
+
+    from isocsg import Sphere, union_all
+
+    if model == "plate":
+        plate = plate_with_holes(n)
+        return plate.loop() if form == "loop" else plate
+    side = math.ceil(n ** (1 / 3) - 1e-9)
+    extent = 3.0
+    pitch = extent / side
+    c = [(i - (side - 1) / 2) * pitch for i in range(side)]
+    centres = [(x, y, z) for x in c for y in c for z in c][:n]
+    spheres = [Sphere(p, 0.6 * pitch) for p in centres]
+    return union_all(spheres) if form == "loop" else spheres
+
+
+def _emit(stage: str, seconds: list[float] | float | None, **extra) -> None:
+    rec = {"stage": stage, "maxrss_mb": resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024}
+    if seconds is not None:
+        rec["seconds"] = seconds if isinstance(seconds, list) else [seconds]
+    rec.update(extra)
+    print(json.dumps(rec), flush=True)
+
+
+def _timed(fn):
+    t0 = time.perf_counter()
+    out = fn()
+    return time.perf_counter() - t0, out
+
+
+# ----------------------------------------------------------------------------- the two sides, in a child process
+
+
+def child_isocsg(model: str, n: int, size: int, repeats: int, contours: int) -> None:
+    import isocsg.laminae as lam
+    import numpy as np
+    from isocsg import Camera, Cylinder, PointLight, RenderSettings, Scene, Sphere
+    from isocsg.csg.section import section
+    from isocsg.csg.volume import volume
+    from isocsg.render import Renderer
+
+    def clear() -> None:
+        fn = getattr(lam, "clear_cache", None) or getattr(lam, "clear_caches", None)
+        if callable(fn):
+            fn()
+
+    lights = (PointLight(LIGHT),)
+    # JIT compilation is a one-off per process: warm up on a small CSG object, both paths
+    warm = Sphere((0, 0, 0), 1.0) - Cylinder((0, 0, 0), (0, 0, 3), 0.4)
+    wcam = Camera((3, -3, 2), (0, 0, 0), width=32, height=32)
+    r = Renderer()
+    r.render(Scene(wcam, lights, [warm], RenderSettings(contours=contours)))
+    r.render(Scene(wcam.with_view((-3, -3, 2)), lights, [warm], RenderSettings(contours=contours)))
+    del r
+    _emit("warmup", None)
+
+    t, solid = _timed(lambda: build(model, n, "loop"))
+    _emit("build", t)
+    eyes = VIEWS[model]
+    cams = [Camera(e, (0, 0, 0), fov=FOV, width=size, height=size) for e in eyes]
+    scene = Scene(cams[0], lights, [solid], RenderSettings(contours=contours))
+
+    times, renderer = [], None
+    for _ in range(repeats):
+        clear()
+        renderer = Renderer()
+        t, res = _timed(lambda: renderer.render(scene))
+        times.append(t)
+    _emit("iso_first", times, object_pixels=int(np.isfinite(res.image).sum()))
+    times = []
+    for k in range(repeats):
+        if k:
+            clear()
+            renderer = Renderer()
+            renderer.render(scene)
+        t, _ = _timed(lambda: renderer.render(scene, camera=cams[1]))
+        times.append(t)
+        if t > 20:
+            break
+    _emit("iso_second", times)
+    views = [cams[2], cams[1]] * repeats
+    times = [_timed(lambda c=c: renderer.render(scene, camera=c))[0] for c in views[: max(1, repeats)]]
+    _emit("iso_re", times)
+    t, v = _timed(lambda: volume(solid, tol=1e-3))
+    _emit("iso_volume", t, value=v)
+    o, nrm = SECTION[model]
+    times = [_timed(lambda: section(solid, o, nrm))[0] for _ in range(repeats)]
+    _emit("iso_section", times)
+
+
+def child_peer(model: str, n: int, size: int, repeats: int) -> None:
+    import manifold3d as m3
+    import numpy as np
+    from reference.meshes import manifold_leaf
+
+    from isocsg import Camera
+
+    def boolean():
+        if model == "plate":
+            plate = build(model, n, "batch")
+            holes = [manifold_leaf(h, SEGMENTS) for h in plate.holes]
+            cut = m3.Manifold.batch_boolean(holes, m3.OpType.Add)
+            solid = m3.Manifold.batch_boolean([manifold_leaf(plate.plate, SEGMENTS), cut], m3.OpType.Subtract)
+        else:
+            solid = m3.Manifold.batch_boolean([manifold_leaf(s, SEGMENTS) for s in build(model, n, "batch")],
+                                              m3.OpType.Add)
+        return solid, solid.to_mesh()
+
+    times = []
+    for _ in range(repeats):
+        t, (solid, mesh) = _timed(boolean)
+        times.append(t)
+    _emit("m3_boolean", times, triangles=int(len(mesh.tri_verts)))
+
+    cams = [Camera(e, (0, 0, 0), fov=FOV, width=size, height=size) for e in VIEWS[model]]
+    try:
+        import pyvista as pv
+
+        # the OpenGL context is a one-off per process, like isocsg's JIT: made before timing
+        warm = pv.Plotter(off_screen=True, window_size=(16, 16))
+        warm.add_mesh(pv.Sphere())
+        warm.screenshot(return_img=True)
+        warm.close()
+
+        def first():
+            verts = np.asarray(mesh.vert_properties, dtype=np.float64)[:, :3]
+            tris = np.asarray(mesh.tri_verts, dtype=np.int64)
+            poly = pv.PolyData.from_regular_faces(verts, tris)
+            pl = pv.Plotter(off_screen=True, window_size=(size, size), lighting="none")
+            pl.render_window.SetMultiSamples(0)
+            pl.background_color = "black"
+            pl.add_mesh(poly, color="white", ambient=0.1, diffuse=0.8, specular=0.0, smooth_shading=True,
+                        split_sharp_edges=True)
+            light = pv.Light(position=LIGHT, light_type="scene light", positional=True, cone_angle=180.0)
+            light.attenuation_values = (1.0, 0.0, 0.0)
+            pl.add_light(light)
+            _set_camera(pl, cams[0])
+            pl.screenshot(return_img=True)
+            return pl
+
+        def again(pl, cam):
+            _set_camera(pl, cam)
+            pl.render()
+            pl.screenshot(return_img=True)
+
+        times, plotters = [], []
+        for _ in range(repeats):
+            t, pl = _timed(first)
+            times.append(t)
+            plotters.append(pl)
+        _emit("pv_first", times)
+        pl = plotters[-1]
+        views = [cams[1], cams[2]] * repeats
+        times = [_timed(lambda c=c: again(pl, c))[0] for c in views[: max(1, repeats)]]
+        _emit("pv_re", times)
+        for p in plotters:
+            p.close()
+    except Exception as exc:  # noqa: BLE001 - report why pyvista could not render
+        _emit("pv_unavailable", None, reason=f"{type(exc).__name__}: {exc}"[:200])
+    times = [_timed(solid.volume)[0] for _ in range(repeats)]
+    _emit("m3_volume", times)
+    o, nrm = SECTION[model]
+    times = [_timed(lambda: solid.translate((-o[0], -o[1], -o[2])).slice(0.0))[0] for _ in range(repeats)]
+    _emit("m3_slice", times)
+
+
+def _set_camera(pl, cam) -> None:
+    pl.camera.position = cam.eye
+    pl.camera.focal_point = cam.target
+    pl.camera.up = cam.up
+    pl.camera.view_angle = cam.fov
+    pl.reset_camera_clipping_range()
+
+
+# ----------------------------------------------------------------------------- the parent
+
+
+def _median(records: dict, stage: str) -> float | None:
+    rec = records.get(stage)
+    return statistics.median(rec["seconds"]) if rec and rec.get("seconds") else None
+
+
+def _ratio(a: float | None, b: float | None) -> str:
+    return f"{a / b:.2f}x" if a and b else "-"
+
+
+def main(argv: list[str] | None = None) -> int:
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--n", type=int, nargs="+", default=list(NS), help="leaf counts (holes, spheres)")
+    ap.add_argument("--models", nargs="+", default=list(MODELS), choices=MODELS)
+    ap.add_argument("--size", type=int, default=1024, help="image side in pixels")
+    ap.add_argument("--repeats", type=int, default=3)
+    ap.add_argument("--contours", type=int, default=64)
+    ap.add_argument("--timeout", type=float, default=1200.0, help="seconds per case and side")
+    ap.add_argument("--max-rss", type=float, default=4096.0,
+                    help="MB: a case whose resident set passes this is stopped (the machine is shared)")
+    ap.add_argument("--quick", action="store_true", help="1 repeat, 150 s per case and side")
+    ap.add_argument("--child", help=argparse.SUPPRESS)
+    args = ap.parse_args(argv)
+    if args.child:
+        spec = json.loads(args.child)
+        if spec["side"] == "isocsg":
+            child_isocsg(spec["model"], spec["n"], spec["size"], spec["repeats"], spec["contours"])
+        else:
+            child_peer(spec["model"], spec["n"], spec["size"], spec["repeats"])
+        return 0
+    repeats, timeout = (1, 150.0) if args.quick else (args.repeats, args.timeout)
+    env = dict(os.environ)
+    # isocsg plans its working memory against this budget (it splits work or refuses, see isocsg.limits)
+    env.setdefault("ISOCSG_MEMORY_BUDGET", "3G")
+
+    print(f"scale benchmark: {args.size} x {args.size} px, N = {args.contours} contours, {repeats} repeat(s), "
+          f"{timeout:.0f} s per case and side, manifold3d at {SEGMENTS} segments")
+    print("isocsg gets the plate as built by a loop (part = part - h), manifold3d as one batch Boolean\n")
+    rows, results = [], {}
+    stopped: dict[tuple[str, str], str] = {}  # a side that failed at some n is not run at larger n
+    for model in args.models:
+        for n in args.n:
+            out = {}
+            for side in ("isocsg", "peer"):
+                spec = json.dumps({"side": side, "model": model, "n": n, "size": args.size, "repeats": repeats,
+                                   "contours": args.contours})
+                t0 = time.perf_counter()
+                if (model, side) in stopped:
+                    records, status, peak = [], f"skipped ({stopped[(model, side)]} at a smaller n)", 0.0
+                else:
+                    records, status, peak = run_child([sys.executable, __file__, "--child", spec], timeout, env=env,
+                                                      max_rss_mb=args.max_rss)
+                    if status != "ok":
+                        stopped[(model, side)] = status
+                wall = time.perf_counter() - t0
+                out[side] = ({r["stage"]: r for r in records}, status, peak)
+                print(f"  {model:7s} n={n:<6d} {side:6s} {status[:40]:8s} peak {peak:7.0f} MB  wall {wall:6.1f} s  "
+                      + " ".join(f"{r['stage']}={fmt_seconds(statistics.median(r['seconds']))}"
+                                 for r in records if r.get("seconds")), flush=True)
+                for r in records:
+                    if r["stage"] == "pv_unavailable":
+                        print(f"    pyvista skipped: {r['reason']}")
+            results[(model, n)] = out
+            iso, iso_status, iso_peak = out["isocsg"]
+            peer, _, peer_peak = out["peer"]
+            first, second, re = (_median(iso, s) for s in ("iso_first", "iso_second", "iso_re"))
+            boolean, pv1, pv2 = (_median(peer, s) for s in ("m3_boolean", "pv_first", "pv_re"))
+            peer_first = boolean + pv1 if boolean is not None and pv1 is not None else None
+            rows.append([
+                model, n, fmt_seconds(first), fmt_seconds(second), fmt_seconds(re), _peak(iso_peak, iso_status),
+                fmt_seconds(_median(iso, "iso_volume")), fmt_seconds(_median(iso, "iso_section")),
+                fmt_seconds(boolean), fmt_seconds(pv1), fmt_seconds(pv2), _peak(peer_peak, out["peer"][1]),
+                fmt_seconds(_median(peer, "m3_volume")), fmt_seconds(_median(peer, "m3_slice")),
+                _ratio(peer_first, first), _ratio(pv2, re),
+                fmt_seconds(first / n if first else None), fmt_seconds(second / n if second else None),
+                iso_status[:40],
+            ])
+    print()
+    print_table(
+        "medians (first/second/re: isocsg renders; bool: manifold3d Boolean + to_mesh; pv: pyvista; "
+        "peak: resident set of the case's process, MB; ratios > 1: isocsg faster)",
+        ["model", "n", "first", "second", "re", "peak", "volume", "section", "bool", "pv first", "pv re",
+         "peer peak", "m3 vol", "m3 slice", "(bool+pv1)/first", "pv re/re", "first/leaf", "second/leaf",
+         "isocsg status"],
+        rows,
+    )
+
+    # targets
+    lines = []
+    for model in args.models:
+        if (model, 1000) in results:
+            iso, status, peak = results[(model, 1000)]["isocsg"]
+            peer = results[(model, 1000)]["peer"][0]
+            first, re = _median(iso, "iso_first"), _median(iso, "iso_re")
+            boolean, pv1, pv2 = (_median(peer, s) for s in ("m3_boolean", "pv_first", "pv_re"))
+            met = first is not None and boolean is not None and pv1 is not None and first <= boolean + pv1
+            lines.append([model, 1000, "first render <= Boolean + pyvista first render",
+                          f"{fmt_seconds(first)} vs {fmt_seconds((boolean or 0) + (pv1 or 0))}", _yes(met)])
+            met = re is not None and pv2 is not None and re <= pv2
+            lines.append([model, 1000, "re-render <= pyvista re-render (64 segments)",
+                          f"{fmt_seconds(re)} vs {fmt_seconds(pv2)}", _yes(met)])
+            lines.append([model, 1000, "peak memory <= 1.5 GB", f"{_peak(peak, status)} MB ({status[:40]})",
+                          _yes(peak <= 1536 and status == "ok")])
+        if (model, 10_000) in results:
+            iso, status, peak = results[(model, 10_000)]["isocsg"]
+            done = status == "ok" and all(s in iso for s in ("iso_first", "iso_second", "iso_re", "iso_volume", "iso_section"))
+            lines.append([model, 10_000, "completes", status, _yes(done)])
+            lines.append([model, 10_000, "peak memory <= 3 GB", f"{_peak(peak, status)} MB", _yes(peak <= 3072 and done)])
+        per_leaf = [(n, _median(results[(model, n)]["isocsg"][0], "iso_first")) for n in args.n if (model, n) in results]
+        per_leaf = [(n, t / n) for n, t in per_leaf if t]
+        grows = [f"{a}->{b}" for (a, ta), (b, tb) in zip(per_leaf, per_leaf[1:]) if tb > 1.25 * ta]
+        lines.append([model, "all", "first render time per leaf does not grow with n",
+                      ", ".join(f"{n}: {fmt_seconds(t)}" for n, t in per_leaf) or "-",
+                      _yes(bool(per_leaf) and not grows and len(per_leaf) == len(args.n))])
+    print_table("targets", ["model", "n", "target", "measured", "met"], lines)
+    return 0
+
+
+def _peak(mb: float, status: str) -> str:
+    if status.startswith("skipped"):
+        return "-"
+    return f">{mb:.0f}" if status.startswith("over") else f"{mb:.0f}"
+
+
+def _yes(ok: bool) -> str:
+    return "yes" if ok else "NO"
+
+
+if __name__ == "__main__":
+    sys.exit(main())
