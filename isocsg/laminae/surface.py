@@ -4,6 +4,10 @@ Vertices lie exactly on the primitive's surface and carry its exact outward
 normal (so the shading fields are exact at every vertex); triangles are
 counter-clockwise seen from outside. Each primitive module builds one with
 its contour lines for the first light already on mesh edges.
+
+Vertices are kept relative to a local origin (the primitive's centre): far
+from the world origin, absolute coordinates would leave only a few
+significant digits for face normals, cut points and areas.
 """
 
 from __future__ import annotations
@@ -16,7 +20,7 @@ from numpy.typing import NDArray
 
 from ..lighting.lights import PointLight
 
-__all__ = ["Surface", "orient_outward", "light_reference_distance", "refinement"]
+__all__ = ["Surface", "orient_outward", "light_reference_distance", "refinement", "specular_refinement", "eye_reference_distance"]
 
 
 @dataclass(frozen=True, slots=True, eq=False)
@@ -25,13 +29,22 @@ class Surface:
 
     Attributes
     ----------
-    vertices, normals : ndarray, shape (V, 3)
+    vertices : ndarray, shape (V, 3)
+        Positions relative to ``origin``.
+    normals : ndarray, shape (V, 3)
     triangles : ndarray, shape (T, 3), int64
+    origin : ndarray, shape (3,)
+        The local origin (world position of local ``(0, 0, 0)``).
+    parts : ndarray, shape (V,), int64
+        Smooth part of each vertex (a truncus's side and ends, a polyhedron's
+        faces). Parts share no vertex; every triangle lies in one part.
     """
 
     vertices: NDArray[np.float64]
     normals: NDArray[np.float64]
     triangles: NDArray[np.int64]
+    origin: NDArray[np.float64]
+    parts: NDArray[np.int64]
 
 
 def orient_outward(vertices: NDArray[np.float64], normals: NDArray[np.float64], triangles: NDArray[np.int64]) -> NDArray[np.int64]:
@@ -84,3 +97,27 @@ def refinement(size: float, distance: float, per_distance: float = 16.0, cap: in
     if not np.isfinite(distance):
         return 1
     return int(np.clip(np.ceil(per_distance * size / distance), 1, cap))
+
+
+def specular_refinement(size: float, eye_distance: float, shininess: float, contours: int, cap: int = 64) -> int:
+    """Subdivisions of a flat length ``size`` for a Phong term seen from ``eye_distance``.
+
+    On a plane (fixed ``rf``), ``rf . v`` turns with the view direction, at
+    most ``1 / d`` per unit length; the term ``(rf . v) ** s`` then bends by
+    about ``s / d**2``, and a linear interpolant over a length ``h`` misses it
+    by ``s h**2 / (8 d**2)`` (in units of ``ks``). Keeping that below a
+    quarter of a band step ``1 / N`` gives ``h <= d sqrt(2 / (s N))``: finer
+    for sharper highlights and more contours, so that the error keeps
+    shrinking with N (up to ``cap``).
+    """
+    if not (np.isfinite(eye_distance) and size > 0):
+        return 1
+    h = eye_distance * np.sqrt(2.0 / (max(shininess, 1.0) * contours))
+    return int(np.clip(np.ceil(size / h), 1, cap))
+
+
+def eye_reference_distance(eye: NDArray[np.float64] | None, center: NDArray[np.float64], radius: float) -> float:
+    """Distance from the eye to the bounding sphere (at least 5 % of its radius; ``inf`` without an eye)."""
+    if eye is None:
+        return np.inf
+    return max(float(np.linalg.norm(np.asarray(eye, dtype=np.float64) - center)) - radius, 0.05 * radius)

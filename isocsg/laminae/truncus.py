@@ -29,15 +29,18 @@ from numpy.typing import NDArray
 
 from ..geometry.primitives import Truncus
 from ..lighting.lights import DirectionalLight, PointLight
-from .surface import Surface, light_reference_distance, orient_outward, refinement
+from .families import diffuse_levels
+from .surface import Surface, eye_reference_distance, light_reference_distance, orient_outward, refinement, specular_refinement
 
 __all__ = [
     "light_frame", "side_cosine_coefficients", "paper_levels", "appendix_normal",
-    "truncus_laminae", "truncus_surface", "GENERATORS",
+    "truncus_laminae", "truncus_surface", "side_levels", "GENERATORS",
 ]
 
 #: Uniform generators around the axis added to the contour generators (for the silhouette).
 GENERATORS = 128
+#: Most contour generators added for a point light (its level lines are not generators).
+POINT_LIGHT_CONTOURS = 64
 #: Least ratio of consecutive ring radii towards a truncus's small end (see ``_graded_rings``).
 RING_RATIO = 0.6
 #: Smallest graded ring radius next to a cone's apex, as a fraction of the larger end radius.
@@ -180,6 +183,18 @@ def truncus_laminae(
     return out
 
 
+def side_levels(truncus: Truncus, light: Light, contours: int) -> NDArray[np.float64]:
+    """The diffuse cut levels of the lateral surface for ``light`` seen from the centre.
+
+    The side's incidence cosine ``B + A cos(theta)`` spans ``[B - A, B + A]``
+    (exactly, for a directional light); the levels cut that range into ``N``
+    equal steps on each side of the terminator (see
+    :func:`~isocsg.laminae.families.diffuse_levels`).
+    """
+    A, B = side_cosine_coefficients(truncus, _to_light(light, truncus.center_array))
+    return diffuse_levels(np.array([B - A, B + A]), contours)
+
+
 def _generator_angles(truncus: Truncus, light: Light | None, levels: NDArray[np.float64]) -> NDArray[np.float64]:
     th = 2.0 * np.pi * np.arange(GENERATORS) / GENERATORS
     if light is not None:
@@ -231,14 +246,29 @@ def _graded_rings(zs: list[float], truncus: Truncus) -> list[float]:
 
 
 def truncus_surface(
-    truncus: Truncus, lights: list[Light], levels: NDArray[np.float64], *, specular: bool = False
+    truncus: Truncus,
+    lights: list[Light],
+    contours: int,
+    *,
+    eye: NDArray[np.float64] | None = None,
+    shininess: float = 1.0,
 ) -> Surface:
-    """Band mesh base of a truncus: generators at the first light's contour angles.
+    """Band mesh base of a truncus, relative to its centre.
+
+    Generators run at the first light's contour angles when it is directional
+    (its level lines are generators: that family then cuts nothing), plus
+    ``GENERATORS`` uniform ones. For a point light the level lines bend, the
+    family cuts the mesh anyway, and at most ``POINT_LIGHT_CONTOURS`` contour
+    generators are added (so that thousands of contours stay affordable).
 
     Rings along the axis and on the ends are added for near point lights,
-    whose level lines are not straight generators. Towards a small end the
-    rings are graded (``_graded_rings``) whenever some field is not constant
-    along the generators: several lights, a point light or ``specular``.
+    whose level lines are not straight generators, and for a specular
+    material seen from ``eye`` (:func:`~isocsg.laminae.surface.specular_refinement`).
+    Towards a small end the rings are graded (``_graded_rings``) whenever some
+    field is not constant along the generators: several lights, a point light
+    or a specular material.
+
+    Parts: 0 the lateral surface, 1 the end E1, 2 the end E2.
     """
     first = lights[0] if lights else None
     a = truncus.unit_axis
@@ -247,24 +277,31 @@ def truncus_surface(
     ln = _to_light(first, ct) if first is not None else np.array([1.0, 0.0, 0.0])
     e1, e2 = light_frame(a, ln)
     e2 = -e2  # right-handed (e1, e2, a): angles grow counter-clockwise about a
+    if first is None:
+        levels = np.zeros(0)
+    else:
+        n_gen = contours if isinstance(first, DirectionalLight) else min(contours, POINT_LIGHT_CONTOURS)
+        levels = side_levels(truncus, first, n_gen)
     th = _generator_angles(truncus, first, levels)
     m = len(th)
     radial = np.cos(th)[:, None] * e1 + np.sin(th)[:, None] * e2  # (m, 3)
     size = 0.5 * float(np.linalg.norm(truncus.bounds[1] - truncus.bounds[0]))
     dist = light_reference_distance(lights, ct, size)
-    n_ax = refinement(h, dist)
+    d_eye = eye_reference_distance(eye, np.zeros(3), size)
+    slant = float(np.hypot(h, truncus.r1 - truncus.r2))
+    n_ax = max(refinement(h, dist), specular_refinement(slant, d_eye, shininess, contours))
     k = truncus.slope
     side_normal = (radial - k * a) / np.hypot(1.0, k)
 
     def ring(z: float, r: float) -> NDArray[np.float64]:
-        return ct + z * a + r * radial
+        return z * a + r * radial
 
-    verts, norms, tris = [], [], []
+    verts, norms, tris, parts = [], [], [], []
     count = 0
     # Lateral surface: rings from E1 (z = +h/2) to E2 (z = -h/2).
     zs = [0.5 * h - j * h / n_ax for j in range(n_ax + 1)]
     zs[-1] = -0.5 * h
-    if specular or len(lights) > 1 or any(isinstance(light, PointLight) for light in lights):
+    if eye is not None or len(lights) > 1 or any(isinstance(light, PointLight) for light in lights):
         zs = _graded_rings(zs, truncus)
         n_ax = len(zs) - 1
     jj = np.arange(m)
@@ -278,12 +315,13 @@ def truncus_surface(
         tris.append(np.stack([p + jj, q + jj, q + jn], axis=1))
         tris.append(np.stack([p + jj, q + jn, p + jn], axis=1))
     count += (n_ax + 1) * m
+    parts.append(np.zeros(count, np.int64))
     # Ends: centre and concentric rings; the outer ring repeats the rim positions exactly.
-    for z, r, n in ((0.5 * h, truncus.r1, a), (-0.5 * h, truncus.r2, -a)):
+    for part, (z, r, n) in enumerate(((0.5 * h, truncus.r1, a), (-0.5 * h, truncus.r2, -a)), start=1):
         if r <= 0:
             continue
-        n_rad = refinement(r, dist)
-        centre = ct + z * a
+        n_rad = max(refinement(r, dist), specular_refinement(r, d_eye, shininess, contours))
+        centre = z * a
         verts.append(centre[None, :])
         rings = [ring(z, r * i / n_rad) if i < n_rad else ring(z, r) for i in range(1, n_rad + 1)]
         verts.extend(rings)
@@ -294,7 +332,8 @@ def truncus_surface(
             tris.append(np.stack([p + jj, q + jj, q + jn], axis=1))
             tris.append(np.stack([p + jj, q + jn, p + jn], axis=1))
         count += 1 + n_rad * m
+        parts.append(np.full(1 + n_rad * m, part, np.int64))
     vertices = np.vstack(verts)
     normals = np.vstack(norms)
     triangles = np.vstack(tris).astype(np.int64)
-    return Surface(vertices, normals, orient_outward(vertices, normals, triangles))
+    return Surface(vertices, normals, orient_outward(vertices, normals, triangles), ct.copy(), np.concatenate(parts))
