@@ -300,12 +300,21 @@ def _cut(surf: Surface, fams: list[FieldFamily], mat: Material, n: int) -> BandM
     offsets = np.zeros(k, np.int64)
     pieces_v, pieces_f, pieces_t, pieces_b, pieces_p = [], [], [], [], []
     n_v = 0
-    for part in np.unique(tri_part):
-        tri = triangles[tri_part == part]
-        used = np.unique(tri)
-        remap = np.full(len(local), -1, np.int64)
-        remap[used] = np.arange(len(used))
-        vertices, values, tri = local[used], fields[used], remap[tri]
+    counts = np.bincount(tri_part)
+    single = np.count_nonzero(counts) == 1
+    order = np.argsort(tri_part, kind="stable")
+    ends = np.cumsum(counts)
+    remap = np.full(len(local), -1, np.int64)
+    for part in np.flatnonzero(counts):
+        if single:
+            vertices, values, tri = local, fields, triangles
+        else:
+            tri = triangles[order[ends[part] - counts[part]: ends[part]]]
+            used = np.zeros(len(local), bool)
+            used[tri.reshape(-1)] = True
+            used = np.flatnonzero(used)
+            remap[used] = np.arange(len(used))
+            vertices, values, tri = local[used], fields[used], remap[tri]
         band = np.zeros((len(tri), k), np.int64)
         for i, fam in enumerate(fams):
             col = values[:, i]
@@ -353,8 +362,13 @@ def _cut(surf: Surface, fams: list[FieldFamily], mat: Material, n: int) -> BandM
     if k == 1:
         composite = band[:, 0]
     else:
-        rows = np.column_stack([part_of[kept[:m]], band])
-        composite = np.unique(rows, axis=0, return_inverse=True)[1].reshape(-1)
+        # One id per distinct (part, band of each family), built column by column
+        # with 1-d uniques (much faster than a unique over rows).
+        composite = part_of[kept[:m]]
+        for i in range(k):
+            key = np.unique(composite, return_inverse=True)[1].reshape(-1).astype(np.int64) * int(offsets[i]) + band[:, i]
+            composite = key
+        composite = np.unique(composite, return_inverse=True)[1].reshape(-1)
     return BandMesh(surf.origin + vertices, tri32[:m], v_out[:m], v_in[:m], composite.astype(np.int32))
 
 
