@@ -44,7 +44,7 @@ from .families import FieldFamily, diffuse_family, diffuse_levels, incidence, sp
 from .model import BandMesh, ContourFamily, Lamina, LaminaSet
 from .polyhedron import face_laminae, polyhedron_surface
 from .sphere import contour_heights, light_axis, sphere_laminae, sphere_surface
-from .split import split_by_levels
+from .split import MAX_PIECES, split_by_levels
 from .surface import Surface
 from .truncus import light_frame, paper_levels, truncus_laminae, truncus_surface
 
@@ -161,6 +161,7 @@ def build_laminae(
         if eye is None:
             raise InvalidParameterError("eye is needed for a specular material (ks > 0)")
         eye_t = tuple(vector3("eye", eye, error=InvalidParameterError))
+    _check_size(n, len(lights_t), specular)
     key = (primitive, lights_t, mat, n, eye_t)
     with _LOCK:
         hit = _CACHE.get(key)
@@ -175,6 +176,26 @@ def build_laminae(
         while len(_CACHE) > _CACHE_SIZE:
             _CACHE.popitem(last=False)
     return out
+
+
+def _check_size(n: int, n_lights: int, specular: bool) -> None:
+    """Refuse, before building anything, a request whose composite pieces cannot fit.
+
+    One family (one diffuse light) works up to :data:`MAX_CONTOURS` on every
+    kind. Two families crossing on a part cut it into about ``2 N**2``
+    triangles (each family has ``N`` levels across every part it varies on),
+    so ``F`` families (a diffuse one per light, and two Phong ones per light
+    for a specular material) need about ``F (F - 1) N**2`` of them.
+    """
+    fams = n_lights * (3 if specular else 1)
+    pairs = fams * (fams - 1) // 2
+    if pairs and 2 * n * n * pairs > MAX_PIECES:
+        most = int(math.isqrt(MAX_PIECES // (2 * pairs)))
+        raise InvalidParameterError(
+            f"contours: {n} contours with {n_lights} light(s){' and a specular material' if specular else ''} "
+            f"would cut about {2 * n * n * pairs} band triangles (more than {MAX_PIECES}); "
+            f"use at most {most} contours, fewer lights or a diffuse material"
+        )
 
 
 # ----------------------------------------------------------------------------- per primitive

@@ -99,6 +99,10 @@ def refinement(size: float, distance: float, per_distance: float = 16.0, cap: in
     return int(np.clip(np.ceil(per_distance * size / distance), 1, cap))
 
 
+#: Contours beyond which :func:`specular_refinement` refines no further.
+SPECULAR_CONTOURS = 256
+
+
 def specular_refinement(size: float, eye_distance: float, shininess: float, contours: int, cap: int = 64) -> int:
     """Subdivisions of a flat length ``size`` for a Phong term seen from ``eye_distance``.
 
@@ -112,7 +116,9 @@ def specular_refinement(size: float, eye_distance: float, shininess: float, cont
     """
     if not (np.isfinite(eye_distance) and size > 0):
         return 1
-    h = eye_distance * np.sqrt(2.0 / (max(shininess, 1.0) * contours))
+    # Beyond SPECULAR_CONTOURS the mesh stays put: thousands of contours would
+    # otherwise multiply an already fine mesh.
+    h = eye_distance * np.sqrt(2.0 / (max(shininess, 1.0) * min(contours, SPECULAR_CONTOURS)))
     return int(np.clip(np.ceil(size / h), 1, cap))
 
 
