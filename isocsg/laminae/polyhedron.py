@@ -13,7 +13,10 @@ from numpy.typing import NDArray
 
 from ..geometry.primitives import Box, ConvexPolyhedron
 from ..lighting.lights import DirectionalLight, PointLight
-from .surface import Surface, eye_reference_distance, light_reference_distance, orient_outward, refinement, specular_refinement
+from .surface import (
+    Surface, curvature_spacing, eye_reference_distance, light_reference_distance, orient_outward, pieces, refinement,
+    specular_refinement,
+)
 
 __all__ = ["face_laminae", "polyhedron_surface"]
 
@@ -103,14 +106,22 @@ def polyhedron_surface(
     for face, (f, n) in enumerate(_faces(poly, origin)):
         diam = float(np.max(np.linalg.norm(f - f.mean(axis=0), axis=1))) * 2.0
         s = max(refinement(diam, dist, cap=16), specular_refinement(diam, d_eye, shininess, contours))
+        if lights:
+            # Sample lines from the centroid to each corner and along each edge: the fields' bending there.
+            g = f.mean(axis=0)
+            t = np.linspace(0.0, 1.0, 17)[None, :, None]
+            lines = np.concatenate([g + t * (f - g)[:, None, :], f[:, None, :] + t * (np.roll(f, -1, axis=0) - f)[:, None, :]])
+            spacing = curvature_spacing(lines, np.broadcast_to(n, lines.shape), lights, origin, contours,
+                                        eye=eye, shininess=shininess)
+            s = max(s, pieces(diam, spacing))
         if s == 1:
             fv = f
             ft = np.stack([np.zeros(len(f) - 2, np.int64), np.arange(1, len(f) - 1), np.arange(2, len(f))], axis=1)
         else:
-            pieces = [_subdivided_triangle(f[0], f[i], f[i + 1], s) for i in range(1, len(f) - 1)]
-            allp = np.vstack([p for p, _ in pieces])
-            offs = np.cumsum([0] + [len(p) for p, _ in pieces[:-1]])
-            allt = np.vstack([t + o for (_, t), o in zip(pieces, offs)])
+            fan = [_subdivided_triangle(f[0], f[i], f[i + 1], s) for i in range(1, len(f) - 1)]
+            allp = np.vstack([p for p, _ in fan])
+            offs = np.cumsum([0] + [len(p) for p, _ in fan[:-1]])
+            allt = np.vstack([t + o for (_, t), o in zip(fan, offs)])
             # Points shared by neighbouring fan triangles are bitwise equal: merge them.
             fv, inv = np.unique(allp, axis=0, return_inverse=True)
             ft = inv.reshape(-1)[allt]

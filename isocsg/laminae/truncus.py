@@ -30,7 +30,10 @@ from numpy.typing import NDArray
 from ..geometry.primitives import Truncus
 from ..lighting.lights import DirectionalLight, PointLight
 from .families import diffuse_levels
-from .surface import Surface, eye_reference_distance, light_reference_distance, orient_outward, refinement, specular_refinement
+from .surface import (
+    Surface, curvature_spacing, eye_reference_distance, light_reference_distance, orient_outward, pieces, refinement,
+    specular_refinement,
+)
 
 __all__ = [
     "light_frame", "side_cosine_coefficients", "paper_levels", "appendix_normal",
@@ -233,8 +236,9 @@ def _graded_rings(zs: list[float], truncus: Truncus) -> list[float]:
         ra, rb = float(truncus.radius_at(za)), float(truncus.radius_at(zb))
         lo, hi = min(ra, rb), max(ra, rb)
         floor = max(lo, APEX_FLOOR * r_max)
-        if hi > 0 and floor < RING_RATIO * hi:
-            k = int(np.ceil(np.log(floor / hi) / np.log(RING_RATIO)))
+        if hi > 0 and floor < hi:
+            # a ring at the floor too when fine uniform rings already come close to an apex
+            k = int(np.ceil(np.log(floor / hi) / np.log(RING_RATIO))) if floor < RING_RATIO * hi else 1
             radii = hi * (floor / hi) ** (np.arange(1, k) / k)  # geometric, hi -> floor
             if lo < floor:
                 radii = np.append(radii, floor)
@@ -292,6 +296,15 @@ def truncus_surface(
     n_ax = max(refinement(h, dist), specular_refinement(slant, d_eye, shininess, contours))
     k = truncus.slope
     side_normal = (radial - k * a) / np.hypot(1.0, k)
+    # The fields' bending along 16 generators and 8 radii of each end (see curvature_spacing).
+    t = np.linspace(0.0, 1.0, 17)[None, :, None]
+    probe = radial[np.linspace(0, m - 1, 16).astype(np.int64)]
+    top, bottom = 0.5 * h * a + truncus.r1 * probe, -0.5 * h * a + truncus.r2 * probe
+    lines = top[:, None, :] + t * (bottom - top)[:, None, :]
+    nrm = np.broadcast_to(((probe - k * a) / np.hypot(1.0, k))[:, None, :], lines.shape)
+    origin = ct
+    if lights:
+        n_ax = max(n_ax, pieces(slant, curvature_spacing(lines, nrm, lights, origin, contours, eye=eye, shininess=shininess)))
 
     def ring(z: float, r: float) -> NDArray[np.float64]:
         return z * a + r * radial
@@ -322,6 +335,11 @@ def truncus_surface(
             continue
         n_rad = max(refinement(r, dist), specular_refinement(r, d_eye, shininess, contours))
         centre = z * a
+        if lights:
+            spokes = centre + t * (r * probe[::2])[:, None, :]
+            spacing = curvature_spacing(spokes, np.broadcast_to(n, spokes.shape), lights, origin, contours,
+                                        eye=eye, shininess=shininess)
+            n_rad = max(n_rad, pieces(r, spacing))
         verts.append(centre[None, :])
         rings = [ring(z, r * i / n_rad) if i < n_rad else ring(z, r) for i in range(1, n_rad + 1)]
         verts.extend(rings)
