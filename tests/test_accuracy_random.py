@@ -16,7 +16,10 @@ hypothesis draws
 renders the scene with ``isocsg.render.render`` at N = 64 and judges it with
 the ray caster of ``tests/reference`` and the catalogue's bars: silhouette
 IoU >= 0.99 and >= 98 % of the compared pixels within 5 % of the exact image's
-intensity range (``tests/reference/metrics.py``). The mean error at N = 16
+intensity range (``tests/reference/metrics.py``). Only where that range is
+below what a float32 image resolves (5 % of it under 4 float32 steps of the
+intensity, e.g. a single face whose Phong term varies by 1e-8) is the
+tolerance those 4 steps instead. The mean error at N = 16
 must be larger than at N = 64 (unless both are at rounding level).
 
 Under ``CI`` the examples are derandomized (``tests/conftest.py``). The number
@@ -63,6 +66,8 @@ MIN_IOU = 0.99
 MIN_FRACTION = 0.98
 CONTOURS = 64
 COARSE = 16
+#: The image is float32 (the conventions): intensities are resolved to about this many of its steps.
+FLOAT32_ULPS = 4
 EXAMPLES = int(os.environ.get("ISOCSG_SEARCH_EXAMPLES", "10"))
 #: A file that gets one line per example that passed (for counting a long search).
 LOG = os.environ.get("ISOCSG_SEARCH_LOG")
@@ -180,7 +185,7 @@ def general_light(draw, radius, kind, face_normal=None):
     if kind == "far":
         return PointLight(tuple(draw(directions) * radius * draw(st.floats(20.0, 1000.0))))
     if kind == "grazing" and face_normal is not None:
-        d = unit(np.cross(face_normal, draw(directions)))
+        d = perpendicular(unit(face_normal), draw(angles))
         return DirectionalLight(tuple(d + draw(st.floats(-0.08, 0.08)) * face_normal))
     if kind == "middle":
         return PointLight(tuple(draw(directions) * radius * draw(st.floats(1.6, 20.0))))
@@ -303,7 +308,15 @@ def check(make_primitive, lights, cam, material, placement, kind=""):
     note(f"N = {CONTOURS}: {result.summary()}")
     # (a disc seen edge-on may fall between pixel centres: then both images must be empty, IoU 1)
     assert result.iou >= MIN_IOU, result.summary()
-    assert result.fraction >= MIN_FRACTION, result.summary()
+    fraction = result.fraction
+    floor = FLOAT32_ULPS * np.finfo(np.float32).eps * float(np.nanmax(np.abs(ref.image))) if result.hit_ref else 0.0
+    if result.tol < floor:
+        # The exact image varies by less than float32 resolves (a single face, its Phong term
+        # ~1e-8): no float32 image can be within 5 % of that; judge it at a few float32 steps.
+        keep = comparison_mask(img, ref)
+        fraction = float(np.mean(np.abs(img[keep] - ref.image[keep]) <= floor)) if keep.any() else 1.0
+        note(f"range below float32 resolution: within {floor:.2e}: {fraction:.4f}")
+    assert fraction >= MIN_FRACTION, result.summary()
     coarse = render_image(build_scene(make_primitive, lights, cam, material, origin, scale, COARSE))
     keep = comparison_mask(coarse, ref) & comparison_mask(img, ref)
     if keep.sum() > 0:
