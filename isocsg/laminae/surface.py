@@ -160,6 +160,7 @@ def curvature_spacing(
     *,
     eye: NDArray[np.float64] | None = None,
     shininess: float = 1.0,
+    step: float | None = None,
 ) -> float:
     """The longest mesh spacing along sample lines that follows every field within a quarter band step.
 
@@ -172,6 +173,9 @@ def curvature_spacing(
     lights, origin, contours, eye, shininess
         The families' lights, the local origin, N, and the eye (relative to
         ``origin``) and shininess of a specular material.
+    step : float, optional
+        The distance between samples along the surface (curved lines such as
+        a truncus's rings); by default the chord of each straight line over ``m - 1``.
 
     Returns
     -------
@@ -184,7 +188,10 @@ def curvature_spacing(
         ``SPECULAR_CONTOURS``.
     """
     n_lines, m, _ = lines.shape
-    step = np.linalg.norm(lines[:, -1] - lines[:, 0], axis=1) / max(m - 1, 1)
+    if step is None:
+        step = np.linalg.norm(lines[:, -1] - lines[:, 0], axis=1) / max(m - 1, 1)
+    else:
+        step = np.full(n_lines, float(step))
     if m < 3 or not np.all(step > 0):
         return np.inf
     n = min(contours, SPECULAR_CONTOURS)

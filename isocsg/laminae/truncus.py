@@ -42,6 +42,10 @@ __all__ = [
 
 #: Uniform generators around the axis added to the contour generators (for the silhouette).
 GENERATORS = 128
+#: Samples around a ring when measuring how the fields bend about the axis.
+RING_SAMPLES = 720
+#: Most uniform generators (a point light very close to the side).
+MAX_GENERATORS = 2048
 #: Most contour generators added for a point light (its level lines are not generators).
 POINT_LIGHT_CONTOURS = 64
 #: Least ratio of consecutive ring radii towards a truncus's small end (see ``_graded_rings``).
@@ -198,8 +202,10 @@ def side_levels(truncus: Truncus, light: Light, contours: int) -> NDArray[np.flo
     return diffuse_levels(np.array([B - A, B + A]), contours)
 
 
-def _generator_angles(truncus: Truncus, light: Light | None, levels: NDArray[np.float64]) -> NDArray[np.float64]:
-    th = 2.0 * np.pi * np.arange(GENERATORS) / GENERATORS
+def _generator_angles(
+    truncus: Truncus, light: Light | None, levels: NDArray[np.float64], uniform: int = GENERATORS
+) -> NDArray[np.float64]:
+    th = 2.0 * np.pi * np.arange(uniform) / uniform
     if light is not None:
         A, B = side_cosine_coefficients(truncus, _to_light(light, truncus.center_array))
         if A > 1e-12:
@@ -286,7 +292,26 @@ def truncus_surface(
     else:
         n_gen = contours if isinstance(first, DirectionalLight) else min(contours, POINT_LIGHT_CONTOURS)
         levels = side_levels(truncus, first, n_gen)
-    th = _generator_angles(truncus, first, levels)
+    uniform = GENERATORS
+    if lights:
+        # The fields' bending around three rings (a point light close to the side turns the
+        # incidence within a few degrees): enough uniform generators to follow it.
+        k_ = truncus.slope
+        ang = 2.0 * np.pi * np.arange(RING_SAMPLES + 1) / RING_SAMPLES
+        circle = np.cos(ang)[:, None] * e1 - np.sin(ang)[:, None] * light_frame(a, ln)[1]
+        spacing = np.inf
+        for z in (0.5 * h, 0.0, -0.5 * h):
+            r = float(truncus.radius_at(z))
+            if r <= 0:
+                continue
+            ring_pts = (z * a + r * circle)[None]
+            ring_nrm = ((circle - k_ * a) / np.hypot(1.0, k_))[None]
+            gap = curvature_spacing(ring_pts, ring_nrm, lights, ct, contours, eye=eye, shininess=shininess,
+                                    step=2.0 * np.pi * r / RING_SAMPLES)
+            spacing = min(spacing, gap / r)  # as an angle
+        if np.isfinite(spacing) and spacing > 0:
+            uniform = int(np.clip(np.ceil(2.0 * np.pi / spacing), GENERATORS, MAX_GENERATORS))
+    th = _generator_angles(truncus, first, levels, uniform)
     m = len(th)
     radial = np.cos(th)[:, None] * e1 + np.sin(th)[:, None] * e2  # (m, 3)
     size = 0.5 * float(np.linalg.norm(truncus.bounds[1] - truncus.bounds[0]))
