@@ -131,6 +131,9 @@ def diffuse_levels(values: NDArray[np.float64], contours: int) -> NDArray[np.flo
             parts.append(np.linspace(max(lo, 0.0), hi, contours + 1))
         if lo < 0:
             parts.append(np.linspace(lo, min(hi, 0.0), contours + 1))
+        # A range narrower than the merging tolerance must still be closed by levels at its ends
+        # and at 0: an open outer band would take the middle of [hi, 1].
+        return np.unique(np.concatenate([_dedupe(np.concatenate(parts)), [lo, hi, 0.0]]))
     return _dedupe(np.concatenate(parts))
 
 
@@ -143,14 +146,16 @@ def specular_levels(values: NDArray[np.float64], shininess: float, contours: int
 
     Examples
     --------
-    >>> specular_levels([-1.0, 0.0, 1.0], 1.0, 4).tolist()
-    [0.0, 0.25, 0.5, 0.75, 1.0]
+    >>> specular_levels([-1.0, 0.5, 1.0], 1.0, 2).tolist()
+    [0.0, 0.5, 0.75, 1.0]
     """
     x = np.asarray(values, dtype=np.float64)
     s = np.maximum(x[x > 0], 0.0) ** shininess
     parts = [np.zeros(1)]
     if len(s):
         parts.append(np.linspace(float(s.min()), float(s.max()), contours + 1) ** (1.0 / shininess))
+        ends = np.clip(np.array([x[x > 0].min(), x.max()]), 0.0, 1.0)  # closed however narrow
+        return np.unique(np.concatenate([_dedupe(np.clip(np.concatenate(parts), 0.0, 1.0)), ends]))
     return _dedupe(np.clip(np.concatenate(parts), 0.0, 1.0))
 
 
