@@ -388,10 +388,10 @@ def test_band_values_are_within_half_a_band_of_the_exact_shading(name):
     tri = b.vertices[b.triangles]
     area = 0.5 * np.linalg.norm(np.cross(tri[:, 1] - tri[:, 0], tri[:, 2] - tri[:, 0]), axis=1)
     ends = end_sign(prim, tri)
-    # The band step of each term: a sphere's diffuse levels are 1/N apart in cosine; a truncus's
-    # are the cosines B + A cos(i pi / N) of its quads' generators, at most A pi / N <= pi / N
-    # apart; the Phong levels split ks * (rf . v)^n into steps of ks / N.
-    d_step = 1.0 if isinstance(prim, Sphere) else np.pi
+    # The band step of each term: on every part of every kind the diffuse levels cut the lit range
+    # (at most [0, 1]) into N equal steps, so they are at most 1/N apart in cosine; the Phong levels
+    # split ks * (rf . v)^n into steps of at most ks / N.
+    d_step = 1.0
     half = 0.5 * sum(light.intensity * (mat.kd * d_step + mat.ks) / n_contours for light in lights)
     for side, value in ((1.0, b.value_out), (-1.0, b.value_in)):
         pc, nc = project(prim, tri.mean(axis=1), ends)

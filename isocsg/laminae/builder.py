@@ -45,7 +45,7 @@ from .families import FieldFamily, diffuse_family, diffuse_levels, incidence, sp
 from .model import BandMesh, ContourFamily, Lamina, LaminaSet
 from .polyhedron import face_laminae, polyhedron_surface
 from .sphere import contour_heights, light_axis, sphere_laminae, sphere_surface
-from .split import split_by_levels
+from .split import MAX_PIECES, split_by_levels
 from .surface import Surface
 from .truncus import light_frame, paper_levels, truncus_laminae, truncus_surface
 
@@ -185,6 +185,7 @@ def build_laminae(
         if eye is None:
             raise InvalidParameterError("eye is needed for a specular material (ks > 0)")
         eye_t = tuple(vector3("eye", eye, error=InvalidParameterError))
+    _check_size(n, len(lights_t), specular)
     key = (primitive, lights_t, mat, n, eye_t)
     with _LOCK:
         hit = _CACHE.get(key)
@@ -205,22 +206,45 @@ def build_laminae(
     return out
 
 
+def _check_size(n: int, n_lights: int, specular: bool) -> None:
+    """Refuse, before building anything, a request whose composite pieces cannot fit.
+
+    One family (one diffuse light) works up to :data:`MAX_CONTOURS` on every
+    kind. Two families crossing on a part cut it into about ``2 N**2``
+    triangles (each family has ``N`` levels across every part it varies on),
+    so ``F`` families (a diffuse one per light, and two Phong ones per light
+    for a specular material) need about ``F (F - 1) N**2`` of them.
+    """
+    fams = n_lights * (3 if specular else 1)
+    pairs = fams * (fams - 1) // 2
+    if pairs and 2 * n * n * pairs > MAX_PIECES:
+        most = int(math.isqrt(MAX_PIECES // (2 * pairs)))
+        raise InvalidParameterError(
+            f"contours: {n} contours with {n_lights} light(s){' and a specular material' if specular else ''} "
+            f"would cut about {2 * n * n * pairs} band triangles (more than {MAX_PIECES}); "
+            f"use at most {most} contours, fewer lights or a diffuse material"
+        )
+
+
 # ----------------------------------------------------------------------------- per primitive
 
 
-def _core_levels(primitive: Primitive, light: Light, n: int) -> NDArray[np.float64]:
-    """The primitive's own contour cosines for one light (before mirroring and the grid)."""
-    if isinstance(primitive, Truncus):
-        return paper_levels(primitive, light, n)
-    return np.arange(n + 1) / n  # sphere circles and face subdivisions: the cosine distribution
+def _origin(primitive: Primitive) -> NDArray[np.float64]:
+    """The local origin the band mesh is built around (the primitive's centre)."""
+    if isinstance(primitive, (Sphere, Truncus, Box)):
+        return primitive.center_array.copy()
+    lo, hi = primitive.bounds
+    return 0.5 * (lo + hi)
 
 
-def _surface(primitive: Primitive, lights: tuple[Light, ...], first_levels: NDArray[np.float64], specular: bool) -> Surface:
+def _surface(
+    primitive: Primitive, lights: tuple[Light, ...], n: int, eye: NDArray[np.float64] | None, shininess: float
+) -> Surface:
     if isinstance(primitive, Sphere):
-        return sphere_surface(primitive, lights[0] if lights else None, first_levels)
+        return sphere_surface(primitive, lights[0] if lights else None, diffuse_levels(np.array([-1.0, 1.0]), n))
     if isinstance(primitive, Truncus):
-        return truncus_surface(primitive, list(lights), first_levels, specular=specular)
-    return polyhedron_surface(primitive, list(lights))
+        return truncus_surface(primitive, list(lights), n, eye=eye, shininess=shininess)
+    return polyhedron_surface(primitive, list(lights), n, eye=eye, shininess=shininess)
 
 
 def _paper_laminae(primitive: Primitive, light: Light, n: int) -> list[tuple[NDArray[np.float64], NDArray[np.float64], float, str]]:
@@ -272,14 +296,15 @@ def _virtual_light(primitive: Primitive, light: Light, eye: NDArray[np.float64])
 
 
 def _build(primitive: Primitive, lights: tuple[Light, ...], mat: Material, n: int, eye: NDArray[np.float64] | None) -> LaminaSet:
-    levels = [diffuse_levels(_core_levels(primitive, light, n), n) for light in lights]
-    surf = _surface(primitive, lights, levels[0] if lights else np.zeros(0), eye is not None)
+    origin = _origin(primitive)
+    eye_local = None if eye is None else eye - origin
+    surf = _surface(primitive, lights, n, eye_local, float(mat.shininess))
     fams: list[FieldFamily] = []
     for j, light in enumerate(lights):
-        fams.append(diffuse_family(j, light, mat, incidence(light, surf.vertices, surf.normals), levels[j]))
-        if eye is not None:
-            fams.extend(specular_families(j, light, mat, surf.vertices, surf.normals, eye, n))
-    bands = _cut(surf, fams, mat)
+        fams.append(diffuse_family(j, light, mat, incidence(light, surf.vertices, surf.normals, surf.origin)))
+        if eye_local is not None:
+            fams.extend(specular_families(j, light, mat, surf.vertices, surf.normals, eye - surf.origin, surf.origin))
+    bands = _cut(surf, fams, mat, n)
 
     laminae: list[Lamina] = []
     for j, light in enumerate(lights):
@@ -300,26 +325,79 @@ def _build(primitive: Primitive, lights: tuple[Light, ...], mat: Material, n: in
     return LaminaSet(primitive, tuple(laminae), families, bands, view_dependent=eye is not None)
 
 
-def _cut(surf: Surface, fams: list[FieldFamily], mat: Material) -> BandMesh:
-    """Cut the surface along every family's levels and give each piece its value."""
-    vertices, triangles = surf.vertices, surf.triangles
+def _cut(surf: Surface, fams: list[FieldFamily], mat: Material, n: int) -> BandMesh:
+    """Cut the surface along every family's levels and give each piece its value.
+
+    Each smooth part (sphere, truncus side or end, polyhedron face) is cut at
+    its own levels (:meth:`FieldFamily.levels`, from the field's range on the
+    part), so that a part whose field spans a narrow range still gets ``N``
+    steps across it. Parts share no vertex, so cutting them apart changes
+    nothing along their common rims (the fields differ there anyway). Work
+    is done relative to the surface's origin; the output is in world
+    coordinates.
+    """
+    local, triangles = surf.vertices, surf.triangles
     if not fams:
         t = len(triangles)
         amb = np.full(t, mat.ambient)
-        return BandMesh(vertices, triangles.astype(np.int32), amb, amb.copy(), np.zeros(t, np.int32))
-    values = np.stack([f.field for f in fams], axis=1)
-    band = np.zeros((len(triangles), len(fams)), np.int64)
-    for i, fam in enumerate(fams):
-        out = split_by_levels(vertices, triangles, values, i, fam.levels)
-        vertices, values, triangles = out.vertices, out.values, out.triangles
-        band = band[out.parent]
-        band[:, i] = out.band
+        return BandMesh(surf.origin + local, triangles.astype(np.int32), amb, amb.copy(), np.zeros(t, np.int32))
+    fields = np.stack([f.field for f in fams], axis=1)
+    tri_part = surf.parts[triangles[:, 0]]
+    k = len(fams)
+    tables_out: list[list[NDArray[np.float64]]] = [[] for _ in fams]
+    tables_in: list[list[NDArray[np.float64]]] = [[] for _ in fams]
+    offsets = np.zeros(k, np.int64)
+    pieces_v, pieces_f, pieces_t, pieces_b, pieces_p = [], [], [], [], []
+    n_v = 0
+    counts = np.bincount(tri_part)
+    single = np.count_nonzero(counts) == 1
+    order = np.argsort(tri_part, kind="stable")
+    ends = np.cumsum(counts)
+    remap = np.full(len(local), -1, np.int64)
+    for part in np.flatnonzero(counts):
+        if single:
+            vertices, values, tri = local, fields, triangles
+        else:
+            tri = triangles[order[ends[part] - counts[part]: ends[part]]]
+            used = np.zeros(len(local), bool)
+            used[tri.reshape(-1)] = True
+            used = np.flatnonzero(used)
+            remap[used] = np.arange(len(used))
+            vertices, values, tri = local[used], fields[used], remap[tri]
+        band = np.zeros((len(tri), k), np.int64)
+        for i, fam in enumerate(fams):
+            col = values[:, i]
+            if float(col.max() - col.min()) <= 1e-12:
+                # Constant on the part: every piece takes the exact value (see _pieces).
+                lv = np.zeros(0)
+            else:
+                lv = fam.levels(col, n)
+                out = split_by_levels(vertices, tri, values, i, lv)
+                vertices, values, tri = out.vertices, out.values, out.triangles
+                band = band[out.parent]
+                band[:, i] = out.band
+            t_out, t_in = fam.tables(lv) if len(lv) else (np.zeros(1), np.zeros(1))
+            band[:, i] += offsets[i]
+            offsets[i] += len(t_out)
+            tables_out[i].append(t_out)
+            tables_in[i].append(t_in)
+        pieces_v.append(vertices)
+        pieces_f.append(values)
+        pieces_t.append(tri + n_v)
+        pieces_b.append(band)
+        pieces_p.append(np.full(len(tri), part, np.int64))
+        n_v += len(vertices)
+    vertices = np.vstack(pieces_v)
+    values = np.vstack(pieces_f)
+    triangles = np.vstack(pieces_t)
+    band = np.vstack(pieces_b)
+    part_of = np.concatenate(pieces_p)
     # Each family's band values side by side, padded to the longest table.
-    width = max(len(f.table_out) for f in fams)
-    tables = np.zeros((2, len(fams), width))
-    for i, f in enumerate(fams):
-        tables[0, i, : len(f.table_out)] = f.table_out
-        tables[1, i, : len(f.table_in)] = f.table_in
+    width = int(offsets.max())
+    tables = np.zeros((2, k, width))
+    for i in range(k):
+        tables[0, i, : offsets[i]] = np.concatenate(tables_out[i])
+        tables[1, i, : offsets[i]] = np.concatenate(tables_in[i])
     kinds = np.array([_KIND_CODES[f.kind] for f in fams], np.int64)
     laws = np.array([(f.exponent, f.weight_out, f.weight_in) for f in fams], np.float64)
     scale = float(np.max(np.abs(vertices))) if len(vertices) else 1.0
@@ -328,10 +406,19 @@ def _cut(surf: Surface, fams: list[FieldFamily], mat: Material) -> BandMesh:
     v_in = np.empty(len(triangles))
     kept = np.empty(len(triangles), np.int64)
     m = _pieces(vertices, triangles, values, band, tables, kinds, laws, float(mat.ambient),
-                1e-24 * max(scale, 1.0) ** 2, tri32, v_out, v_in, kept)
+                1e-24 * scale**2, tri32, v_out, v_in, kept)
     band = band[kept[:m]]
-    composite = band[:, 0] if band.shape[1] == 1 else np.unique(band, axis=0, return_inverse=True)[1].reshape(-1)
-    return BandMesh(vertices, tri32[:m], v_out[:m], v_in[:m], composite.astype(np.int32))
+    if k == 1:
+        composite = band[:, 0]
+    else:
+        # One id per distinct (part, band of each family), built column by column
+        # with 1-d uniques (much faster than a unique over rows).
+        composite = part_of[kept[:m]]
+        for i in range(k):
+            key = np.unique(composite, return_inverse=True)[1].reshape(-1).astype(np.int64) * int(offsets[i]) + band[:, i]
+            composite = key
+        composite = np.unique(composite, return_inverse=True)[1].reshape(-1)
+    return BandMesh(surf.origin + vertices, tri32[:m], v_out[:m], v_in[:m], composite.astype(np.int32))
 
 
 _KIND_CODES = {"diffuse": 0, "specular_out": 1, "specular_in": 2}

@@ -13,19 +13,36 @@ from numpy.typing import NDArray
 
 from ..geometry.primitives import Box, ConvexPolyhedron
 from ..lighting.lights import DirectionalLight, PointLight
-from .surface import Surface, light_reference_distance, orient_outward, refinement
+from .surface import (
+    Surface, curvature_spacing, eye_reference_distance, light_reference_distance, orient_outward, pieces, refinement,
+    specular_refinement,
+)
 
 __all__ = ["face_laminae", "polyhedron_surface"]
 
 Light = PointLight | DirectionalLight
 
 
-def _faces(poly: Box | ConvexPolyhedron) -> list[tuple[NDArray[np.float64], NDArray[np.float64]]]:
+def _origin(poly: Box | ConvexPolyhedron) -> NDArray[np.float64]:
+    """The local origin: the centre of the bounds."""
+    if isinstance(poly, Box):
+        return poly.center_array.copy()
+    lo, hi = poly.bounds
+    return 0.5 * (lo + hi)
+
+
+def _faces(poly: Box | ConvexPolyhedron, origin: NDArray[np.float64]) -> list[tuple[NDArray[np.float64], NDArray[np.float64]]]:
+    """Faces relative to ``origin`` (counter-clockwise from outside) and their unit outward normals."""
+    if isinstance(poly, Box):
+        # The same box about the origin: no hull of far-off absolute coordinates.
+        polys = [np.asarray(f, dtype=np.float64) for f in Box((0.0, 0.0, 0.0), poly.size).face_polygons()]
+    else:
+        polys = [np.asarray(f, dtype=np.float64) - origin for f in poly.face_polygons()]
     out = []
-    for f in poly.face_polygons():
-        f = np.asarray(f, dtype=np.float64)
-        # Newell's normal of the counter-clockwise (outward) face.
-        n = np.sum(np.cross(f, np.roll(f, -1, axis=0)), axis=0)
+    for f in polys:
+        # Newell's normal of the counter-clockwise (outward) face, about the face's own centroid.
+        g = f - f.mean(axis=0)
+        n = np.sum(np.cross(g, np.roll(g, -1, axis=0)), axis=0)
         out.append((f, n / np.linalg.norm(n)))
     return out
 
@@ -33,14 +50,15 @@ def _faces(poly: Box | ConvexPolyhedron) -> list[tuple[NDArray[np.float64], NDAr
 def face_laminae(poly: Box | ConvexPolyhedron, light: Light) -> list[tuple[NDArray[np.float64], NDArray[np.float64], float]]:
     """One lamina per face: (vertices, outward normal, incidence cosine at the face centroid)."""
     out = []
-    for f, n in _faces(poly):
+    origin = _origin(poly)
+    for f, n in _faces(poly, origin):
         centroid = f.mean(axis=0)
         if isinstance(light, DirectionalLight):
             ln = light.unit_direction
         else:
-            d = np.asarray(light.position) - centroid
+            d = (np.asarray(light.position) - origin) - centroid
             ln = d / max(float(np.linalg.norm(d)), 1e-300)
-        out.append((f, n, float(n @ ln)))
+        out.append((origin + f, n, float(n @ ln)))
     return out
 
 
@@ -62,31 +80,57 @@ def _subdivided_triangle(a: NDArray[np.float64], b: NDArray[np.float64], c: NDAr
     return np.array(pts), np.array(tris, dtype=np.int64)
 
 
-def polyhedron_surface(poly: Box | ConvexPolyhedron, lights: list[Light]) -> Surface:
-    """Faces as fans of triangles, subdivided for point lights."""
+def polyhedron_surface(
+    poly: Box | ConvexPolyhedron,
+    lights: list[Light],
+    contours: int = 64,
+    *,
+    eye: NDArray[np.float64] | None = None,
+    shininess: float = 1.0,
+) -> Surface:
+    """Faces as fans of triangles relative to the centre, subdivided for point lights and highlights.
+
+    A near point light turns the incidence across a face, and a specular
+    material seen from ``eye`` (relative to the centre) makes the Phong term
+    vary across it: both need subdivisions
+    (:func:`~isocsg.laminae.surface.refinement`,
+    :func:`~isocsg.laminae.surface.specular_refinement`). Each face is a part.
+    """
+    origin = _origin(poly)
     lo, hi = poly.bounds
     size = 0.5 * float(np.linalg.norm(hi - lo))
     dist = light_reference_distance(lights, 0.5 * (lo + hi), size)
-    verts, norms, tris = [], [], []
+    d_eye = eye_reference_distance(eye, np.zeros(3), size)
+    verts, norms, tris, parts = [], [], [], []
     count = 0
-    for f, n in _faces(poly):
+    for face, (f, n) in enumerate(_faces(poly, origin)):
         diam = float(np.max(np.linalg.norm(f - f.mean(axis=0), axis=1))) * 2.0
-        s = refinement(diam, dist, cap=16)
+        s = max(refinement(diam, dist, cap=16), specular_refinement(diam, d_eye, shininess, contours))
+        if lights:
+            # Sample lines from the centroid to each corner and along each edge: the fields' bending there.
+            g = f.mean(axis=0)
+            t = np.linspace(0.0, 1.0, 17)[None, :, None]
+            lines = np.concatenate([g + t * (f - g)[:, None, :], f[:, None, :] + t * (np.roll(f, -1, axis=0) - f)[:, None, :]])
+            spacing = curvature_spacing(lines, np.broadcast_to(n, lines.shape), lights, origin, contours,
+                                        eye=eye, shininess=shininess)
+            s = max(s, pieces(diam, spacing))
         if s == 1:
             fv = f
             ft = np.stack([np.zeros(len(f) - 2, np.int64), np.arange(1, len(f) - 1), np.arange(2, len(f))], axis=1)
         else:
-            pieces = [_subdivided_triangle(f[0], f[i], f[i + 1], s) for i in range(1, len(f) - 1)]
-            allp = np.vstack([p for p, _ in pieces])
-            offs = np.cumsum([0] + [len(p) for p, _ in pieces[:-1]])
-            allt = np.vstack([t + o for (_, t), o in zip(pieces, offs)])
+            fan = [_subdivided_triangle(f[0], f[i], f[i + 1], s) for i in range(1, len(f) - 1)]
+            allp = np.vstack([p for p, _ in fan])
+            offs = np.cumsum([0] + [len(p) for p, _ in fan[:-1]])
+            allt = np.vstack([t + o for (_, t), o in zip(fan, offs)])
             # Points shared by neighbouring fan triangles are bitwise equal: merge them.
             fv, inv = np.unique(allp, axis=0, return_inverse=True)
             ft = inv.reshape(-1)[allt]
         verts.append(fv)
         norms.append(np.tile(n, (len(fv), 1)))
         tris.append(ft + count)
+        parts.append(np.full(len(fv), face, np.int64))
         count += len(fv)
     vertices = np.vstack(verts)
     normals = np.vstack(norms)
-    return Surface(vertices, normals, orient_outward(vertices, normals, np.vstack(tris).astype(np.int64)))
+    triangles = orient_outward(vertices, normals, np.vstack(tris).astype(np.int64))
+    return Surface(vertices, normals, triangles, origin, np.concatenate(parts))

@@ -120,7 +120,7 @@ def sphere_surface(sphere: Sphere, light: Light | None, levels: NDArray[np.float
     ring = np.cos(phi)[:, None] * e1 + np.sin(phi)[:, None] * e2  # (M, 3)
     dirs = (t[:, None, None] * w + s[:, None, None] * ring[None]).reshape(-1, 3)
     normals = np.vstack([w, dirs, -w])
-    vertices = c + r * normals
+    vertices = r * normals  # relative to the centre
     m, n_rings = LONGITUDES, len(t)
     j = np.arange(m)
     jn = (j + 1) % m
@@ -134,7 +134,7 @@ def sphere_surface(sphere: Sphere, light: Light | None, levels: NDArray[np.float
         quads.reshape(-1, 3),
         np.stack([np.full(m, south), last + jn, last + j], axis=1),
     ]).astype(np.int64)
-    return Surface(vertices, normals, orient_outward(vertices, normals, triangles))
+    return Surface(vertices, normals, orient_outward(vertices, normals, triangles), c.copy(), np.zeros(len(vertices), np.int64))
 
 
 def sphere_laminae(

@@ -4,6 +4,10 @@ Vertices lie exactly on the primitive's surface and carry its exact outward
 normal (so the shading fields are exact at every vertex); triangles are
 counter-clockwise seen from outside. Each primitive module builds one with
 its contour lines for the first light already on mesh edges.
+
+Vertices are kept relative to a local origin (the primitive's centre): far
+from the world origin, absolute coordinates would leave only a few
+significant digits for face normals, cut points and areas.
 """
 
 from __future__ import annotations
@@ -15,8 +19,9 @@ from numba import njit
 from numpy.typing import NDArray
 
 from ..lighting.lights import PointLight
+from .families import light_direction_at
 
-__all__ = ["Surface", "orient_outward", "light_reference_distance", "refinement"]
+__all__ = ["Surface", "orient_outward", "light_reference_distance", "refinement", "specular_refinement", "eye_reference_distance", "curvature_spacing", "pieces"]
 
 
 @dataclass(frozen=True, slots=True, eq=False)
@@ -25,13 +30,22 @@ class Surface:
 
     Attributes
     ----------
-    vertices, normals : ndarray, shape (V, 3)
+    vertices : ndarray, shape (V, 3)
+        Positions relative to ``origin``.
+    normals : ndarray, shape (V, 3)
     triangles : ndarray, shape (T, 3), int64
+    origin : ndarray, shape (3,)
+        The local origin (world position of local ``(0, 0, 0)``).
+    parts : ndarray, shape (V,), int64
+        Smooth part of each vertex (a truncus's side and ends, a polyhedron's
+        faces). Parts share no vertex; every triangle lies in one part.
     """
 
     vertices: NDArray[np.float64]
     normals: NDArray[np.float64]
     triangles: NDArray[np.int64]
+    origin: NDArray[np.float64]
+    parts: NDArray[np.int64]
 
 
 def orient_outward(vertices: NDArray[np.float64], normals: NDArray[np.float64], triangles: NDArray[np.int64]) -> NDArray[np.int64]:
@@ -84,3 +98,117 @@ def refinement(size: float, distance: float, per_distance: float = 16.0, cap: in
     if not np.isfinite(distance):
         return 1
     return int(np.clip(np.ceil(per_distance * size / distance), 1, cap))
+
+
+#: Contours beyond which :func:`specular_refinement` refines no further.
+SPECULAR_CONTOURS = 256
+
+
+def specular_refinement(size: float, eye_distance: float, shininess: float, contours: int, cap: int = 64) -> int:
+    """Subdivisions of a flat length ``size`` for a Phong term seen from ``eye_distance``.
+
+    On a plane (fixed ``rf``), ``rf . v`` turns with the view direction, at
+    most ``1 / d`` per unit length; the term ``(rf . v) ** s`` then bends by
+    about ``s / d**2``, and a linear interpolant over a length ``h`` misses it
+    by ``s h**2 / (8 d**2)`` (in units of ``ks``). Keeping that below a
+    quarter of a band step ``1 / N`` gives ``h <= d sqrt(2 / (s N))``: finer
+    for sharper highlights and more contours, so that the error keeps
+    shrinking with N (up to ``cap``).
+    """
+    if not (np.isfinite(eye_distance) and size > 0):
+        return 1
+    # Beyond SPECULAR_CONTOURS the mesh stays put: thousands of contours would
+    # otherwise multiply an already fine mesh.
+    h = eye_distance * np.sqrt(2.0 / (max(shininess, 1.0) * min(contours, SPECULAR_CONTOURS)))
+    return int(np.clip(np.ceil(size / h), 1, cap))
+
+
+def eye_reference_distance(eye: NDArray[np.float64] | None, center: NDArray[np.float64], radius: float) -> float:
+    """Distance from the eye to the bounding sphere (at least 5 % of its radius; ``inf`` without an eye)."""
+    if eye is None:
+        return np.inf
+    return max(float(np.linalg.norm(np.asarray(eye, dtype=np.float64) - center)) - radius, 0.05 * radius)
+
+
+def _terms(
+    points: NDArray[np.float64], normals: NDArray[np.float64], lights: list, origin: NDArray[np.float64],
+    eye: NDArray[np.float64] | None, shininess: float,
+) -> list[NDArray[np.float64]]:
+    """Each family's field in the units its levels are uniform in (points and ``eye`` relative to
+    ``origin``): ``n . l`` per light, and ``(rf . v) ** s`` on each lit side with an eye."""
+    out = []
+    for light in lights:
+        ldir = light_direction_at(light, points, origin)
+        ndl = np.einsum("ij,ij->i", normals, ldir)
+        out.append(ndl)
+        if eye is not None:
+            rf = 2.0 * ndl[:, None] * normals - ldir
+            v = eye - points
+            v /= np.maximum(np.linalg.norm(v, axis=1, keepdims=True), 1e-300)
+            rv = np.einsum("ij,ij->i", rf, v)
+            out.append(np.where(ndl > 0, np.maximum(rv, 0.0) ** shininess, 0.0))
+            out.append(np.where(ndl < 0, np.maximum(rv, 0.0) ** shininess, 0.0))
+    return out
+
+
+def curvature_spacing(
+    lines: NDArray[np.float64],
+    normals: NDArray[np.float64],
+    lights: list,
+    origin: NDArray[np.float64],
+    contours: int,
+    *,
+    eye: NDArray[np.float64] | None = None,
+    shininess: float = 1.0,
+    step: float | None = None,
+) -> float:
+    """The longest mesh spacing along sample lines that follows every field within a quarter band step.
+
+    Parameters
+    ----------
+    lines : ndarray, shape (L, m, 3)
+        Straight, evenly sampled segments across one smooth part, relative to ``origin``.
+    normals : ndarray, shape (L, m, 3)
+        The exact normals at the samples.
+    lights, origin, contours, eye, shininess
+        The families' lights, the local origin, N, and the eye (relative to
+        ``origin``) and shininess of a specular material.
+    step : float, optional
+        The distance between samples along the surface (curved lines such as
+        a truncus's rings); by default the chord of each straight line over ``m - 1``.
+
+    Returns
+    -------
+    float
+        ``inf`` when no field bends. A field whose range on the samples is ``R``
+        has levels ``R / N`` apart (see :mod:`~isocsg.laminae.families`); a
+        linear interpolant over a length ``h`` misses it by ``|f''| h**2 / 8``
+        (``f''`` from second differences of the samples). Keeping that below
+        ``R / (4 N)`` gives ``h = sqrt(2 R / (N |f''|))``, with N taken up to
+        ``SPECULAR_CONTOURS``.
+    """
+    n_lines, m, _ = lines.shape
+    if step is None:
+        step = np.linalg.norm(lines[:, -1] - lines[:, 0], axis=1) / max(m - 1, 1)
+    else:
+        step = np.full(n_lines, float(step))
+    if m < 3 or not np.all(step > 0):
+        return np.inf
+    n = min(contours, SPECULAR_CONTOURS)
+    best = np.inf
+    for f in _terms(lines.reshape(-1, 3), normals.reshape(-1, 3), lights, origin, eye, shininess):
+        f = f.reshape(n_lines, m)
+        r = float(f.max() - f.min())
+        if not r > 1e-12:
+            continue
+        d2 = float(np.max(np.abs(f[:, :-2] - 2.0 * f[:, 1:-1] + f[:, 2:]) / (step[:, None] ** 2)))
+        if d2 > 0:
+            best = min(best, float(np.sqrt(2.0 * r / (n * d2))))
+    return best
+
+
+def pieces(length: float, spacing: float, cap: int = 64) -> int:
+    """Equal pieces of ``length`` no longer than ``spacing`` (1 .. ``cap``)."""
+    if not np.isfinite(spacing) or spacing <= 0:
+        return 1
+    return int(np.clip(np.ceil(length / spacing), 1, cap))

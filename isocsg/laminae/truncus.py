@@ -29,15 +29,25 @@ from numpy.typing import NDArray
 
 from ..geometry.primitives import Truncus
 from ..lighting.lights import DirectionalLight, PointLight
-from .surface import Surface, light_reference_distance, orient_outward, refinement
+from .families import diffuse_levels
+from .surface import (
+    Surface, curvature_spacing, eye_reference_distance, light_reference_distance, orient_outward, pieces, refinement,
+    specular_refinement,
+)
 
 __all__ = [
     "light_frame", "side_cosine_coefficients", "paper_levels", "appendix_normal",
-    "truncus_laminae", "truncus_surface", "GENERATORS",
+    "truncus_laminae", "truncus_surface", "side_levels", "GENERATORS",
 ]
 
 #: Uniform generators around the axis added to the contour generators (for the silhouette).
 GENERATORS = 128
+#: Samples around a ring when measuring how the fields bend about the axis.
+RING_SAMPLES = 720
+#: Most uniform generators (a point light very close to the side).
+MAX_GENERATORS = 2048
+#: Most contour generators added for a point light (its level lines are not generators).
+POINT_LIGHT_CONTOURS = 64
 #: Least ratio of consecutive ring radii towards a truncus's small end (see ``_graded_rings``).
 RING_RATIO = 0.6
 #: Smallest graded ring radius next to a cone's apex, as a fraction of the larger end radius.
@@ -180,8 +190,22 @@ def truncus_laminae(
     return out
 
 
-def _generator_angles(truncus: Truncus, light: Light | None, levels: NDArray[np.float64]) -> NDArray[np.float64]:
-    th = 2.0 * np.pi * np.arange(GENERATORS) / GENERATORS
+def side_levels(truncus: Truncus, light: Light, contours: int) -> NDArray[np.float64]:
+    """The diffuse cut levels of the lateral surface for ``light`` seen from the centre.
+
+    The side's incidence cosine ``B + A cos(theta)`` spans ``[B - A, B + A]``
+    (exactly, for a directional light); the levels cut that range into ``N``
+    equal steps on each side of the terminator (see
+    :func:`~isocsg.laminae.families.diffuse_levels`).
+    """
+    A, B = side_cosine_coefficients(truncus, _to_light(light, truncus.center_array))
+    return diffuse_levels(np.array([B - A, B + A]), contours)
+
+
+def _generator_angles(
+    truncus: Truncus, light: Light | None, levels: NDArray[np.float64], uniform: int = GENERATORS
+) -> NDArray[np.float64]:
+    th = 2.0 * np.pi * np.arange(uniform) / uniform
     if light is not None:
         A, B = side_cosine_coefficients(truncus, _to_light(light, truncus.center_array))
         if A > 1e-12:
@@ -218,8 +242,9 @@ def _graded_rings(zs: list[float], truncus: Truncus) -> list[float]:
         ra, rb = float(truncus.radius_at(za)), float(truncus.radius_at(zb))
         lo, hi = min(ra, rb), max(ra, rb)
         floor = max(lo, APEX_FLOOR * r_max)
-        if hi > 0 and floor < RING_RATIO * hi:
-            k = int(np.ceil(np.log(floor / hi) / np.log(RING_RATIO)))
+        if hi > 0 and floor < hi:
+            # a ring at the floor too when fine uniform rings already come close to an apex
+            k = int(np.ceil(np.log(floor / hi) / np.log(RING_RATIO))) if floor < RING_RATIO * hi else 1
             radii = hi * (floor / hi) ** (np.arange(1, k) / k)  # geometric, hi -> floor
             if lo < floor:
                 radii = np.append(radii, floor)
@@ -231,14 +256,29 @@ def _graded_rings(zs: list[float], truncus: Truncus) -> list[float]:
 
 
 def truncus_surface(
-    truncus: Truncus, lights: list[Light], levels: NDArray[np.float64], *, specular: bool = False
+    truncus: Truncus,
+    lights: list[Light],
+    contours: int,
+    *,
+    eye: NDArray[np.float64] | None = None,
+    shininess: float = 1.0,
 ) -> Surface:
-    """Band mesh base of a truncus: generators at the first light's contour angles.
+    """Band mesh base of a truncus, relative to its centre.
+
+    Generators run at the first light's contour angles when it is directional
+    (its level lines are generators: that family then cuts nothing), plus
+    ``GENERATORS`` uniform ones. For a point light the level lines bend, the
+    family cuts the mesh anyway, and at most ``POINT_LIGHT_CONTOURS`` contour
+    generators are added (so that thousands of contours stay affordable).
 
     Rings along the axis and on the ends are added for near point lights,
-    whose level lines are not straight generators. Towards a small end the
-    rings are graded (``_graded_rings``) whenever some field is not constant
-    along the generators: several lights, a point light or ``specular``.
+    whose level lines are not straight generators, and for a specular
+    material seen from ``eye`` (:func:`~isocsg.laminae.surface.specular_refinement`).
+    Towards a small end the rings are graded (``_graded_rings``) whenever some
+    field is not constant along the generators: several lights, a point light
+    or a specular material.
+
+    Parts: 0 the lateral surface, 1 the end E1, 2 the end E2.
     """
     first = lights[0] if lights else None
     a = truncus.unit_axis
@@ -247,24 +287,59 @@ def truncus_surface(
     ln = _to_light(first, ct) if first is not None else np.array([1.0, 0.0, 0.0])
     e1, e2 = light_frame(a, ln)
     e2 = -e2  # right-handed (e1, e2, a): angles grow counter-clockwise about a
-    th = _generator_angles(truncus, first, levels)
+    if first is None:
+        levels = np.zeros(0)
+    else:
+        n_gen = contours if isinstance(first, DirectionalLight) else min(contours, POINT_LIGHT_CONTOURS)
+        levels = side_levels(truncus, first, n_gen)
+    uniform = GENERATORS
+    if lights:
+        # The fields' bending around three rings (a point light close to the side turns the
+        # incidence within a few degrees): enough uniform generators to follow it.
+        k_ = truncus.slope
+        ang = 2.0 * np.pi * np.arange(RING_SAMPLES + 1) / RING_SAMPLES
+        circle = np.cos(ang)[:, None] * e1 - np.sin(ang)[:, None] * light_frame(a, ln)[1]
+        spacing = np.inf
+        for z in (0.5 * h, 0.0, -0.5 * h):
+            r = float(truncus.radius_at(z))
+            if r <= 0:
+                continue
+            ring_pts = (z * a + r * circle)[None]
+            ring_nrm = ((circle - k_ * a) / np.hypot(1.0, k_))[None]
+            gap = curvature_spacing(ring_pts, ring_nrm, lights, ct, contours, eye=eye, shininess=shininess,
+                                    step=2.0 * np.pi * r / RING_SAMPLES)
+            spacing = min(spacing, gap / r)  # as an angle
+        if np.isfinite(spacing) and spacing > 0:
+            uniform = int(np.clip(np.ceil(2.0 * np.pi / spacing), GENERATORS, MAX_GENERATORS))
+    th = _generator_angles(truncus, first, levels, uniform)
     m = len(th)
     radial = np.cos(th)[:, None] * e1 + np.sin(th)[:, None] * e2  # (m, 3)
     size = 0.5 * float(np.linalg.norm(truncus.bounds[1] - truncus.bounds[0]))
     dist = light_reference_distance(lights, ct, size)
-    n_ax = refinement(h, dist)
+    d_eye = eye_reference_distance(eye, np.zeros(3), size)
+    slant = float(np.hypot(h, truncus.r1 - truncus.r2))
+    n_ax = max(refinement(h, dist), specular_refinement(slant, d_eye, shininess, contours))
     k = truncus.slope
     side_normal = (radial - k * a) / np.hypot(1.0, k)
+    # The fields' bending along 16 generators and 8 radii of each end (see curvature_spacing).
+    t = np.linspace(0.0, 1.0, 17)[None, :, None]
+    probe = radial[np.linspace(0, m - 1, 16).astype(np.int64)]
+    top, bottom = 0.5 * h * a + truncus.r1 * probe, -0.5 * h * a + truncus.r2 * probe
+    lines = top[:, None, :] + t * (bottom - top)[:, None, :]
+    nrm = np.broadcast_to(((probe - k * a) / np.hypot(1.0, k))[:, None, :], lines.shape)
+    origin = ct
+    if lights:
+        n_ax = max(n_ax, pieces(slant, curvature_spacing(lines, nrm, lights, origin, contours, eye=eye, shininess=shininess)))
 
     def ring(z: float, r: float) -> NDArray[np.float64]:
-        return ct + z * a + r * radial
+        return z * a + r * radial
 
-    verts, norms, tris = [], [], []
+    verts, norms, tris, parts = [], [], [], []
     count = 0
     # Lateral surface: rings from E1 (z = +h/2) to E2 (z = -h/2).
     zs = [0.5 * h - j * h / n_ax for j in range(n_ax + 1)]
     zs[-1] = -0.5 * h
-    if specular or len(lights) > 1 or any(isinstance(light, PointLight) for light in lights):
+    if eye is not None or len(lights) > 1 or any(isinstance(light, PointLight) for light in lights):
         zs = _graded_rings(zs, truncus)
         n_ax = len(zs) - 1
     jj = np.arange(m)
@@ -278,12 +353,18 @@ def truncus_surface(
         tris.append(np.stack([p + jj, q + jj, q + jn], axis=1))
         tris.append(np.stack([p + jj, q + jn, p + jn], axis=1))
     count += (n_ax + 1) * m
+    parts.append(np.zeros(count, np.int64))
     # Ends: centre and concentric rings; the outer ring repeats the rim positions exactly.
-    for z, r, n in ((0.5 * h, truncus.r1, a), (-0.5 * h, truncus.r2, -a)):
+    for part, (z, r, n) in enumerate(((0.5 * h, truncus.r1, a), (-0.5 * h, truncus.r2, -a)), start=1):
         if r <= 0:
             continue
-        n_rad = refinement(r, dist)
-        centre = ct + z * a
+        n_rad = max(refinement(r, dist), specular_refinement(r, d_eye, shininess, contours))
+        centre = z * a
+        if lights:
+            spokes = centre + t * (r * probe[::2])[:, None, :]
+            spacing = curvature_spacing(spokes, np.broadcast_to(n, spokes.shape), lights, origin, contours,
+                                        eye=eye, shininess=shininess)
+            n_rad = max(n_rad, pieces(r, spacing))
         verts.append(centre[None, :])
         rings = [ring(z, r * i / n_rad) if i < n_rad else ring(z, r) for i in range(1, n_rad + 1)]
         verts.extend(rings)
@@ -294,7 +375,8 @@ def truncus_surface(
             tris.append(np.stack([p + jj, q + jj, q + jn], axis=1))
             tris.append(np.stack([p + jj, q + jn, p + jn], axis=1))
         count += 1 + n_rad * m
+        parts.append(np.full(1 + n_rad * m, part, np.int64))
     vertices = np.vstack(verts)
     normals = np.vstack(norms)
     triangles = np.vstack(tris).astype(np.int64)
-    return Surface(vertices, normals, orient_outward(vertices, normals, triangles))
+    return Surface(vertices, normals, orient_outward(vertices, normals, triangles), ct.copy(), np.concatenate(parts))
