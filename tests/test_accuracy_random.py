@@ -39,8 +39,10 @@ import sys
 from pathlib import Path
 
 import numpy as np
+
+from isocsg._validation import MIN_LENGTH
 import pytest
-from hypothesis import HealthCheck, given, note, settings
+from hypothesis import HealthCheck, assume, given, note, settings
 from hypothesis import strategies as st
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
@@ -238,6 +240,10 @@ def placements(draw):
     # float64 keeps about 1e-5 of the object's size at an offset 1e11 times its size
     low = max(-5.0, math.log10(offset * 1e-11)) if offset else -5.0
     scale = 10 ** draw(st.floats(low, 3.0 if offset < 1e11 else 1.0))
+    # The smallest accepted length is MIN_LENGTH times the largest coordinate (README, Limits):
+    # placements where the smallest parts drawn (tiny cone tops, about 1e-3 of the scale) would
+    # fall below it are not valid scenes.
+    assume(scale * 1e-3 >= 10 * MIN_LENGTH * max(1.0, offset + 2 * scale))
     return origin, scale
 
 

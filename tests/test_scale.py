@@ -152,13 +152,16 @@ def _plate_refs(n: int, size: int):
 
 
 @pytest.mark.parametrize("form", ["loop", "flat", "grouped"], ids=str)
-@pytest.mark.parametrize("n", [10, 100, 1000], ids=lambda n: f"{n}holes")
+@pytest.mark.parametrize("n", [10, 100, pytest.param(1000, marks=[pytest.mark.slow, pytest.mark.skipif(
+    not FULL, reason="the largest sizes run with ISOCSG_SCALE_FULL=1")])], ids=lambda n: f"{n}holes")
 def test_plate_with_holes_matches_reference(n: int, form: str) -> None:
     plate = plate_with_holes(n)
     size = PLATE_SIZES[n]
     _check_views(getattr(plate, form)(), PLATE_EYES, size, f"plate, {n} holes ({form})", refs=_plate_refs(n, size))
 
 
+@pytest.mark.slow
+@pytest.mark.skipif(not FULL, reason="the largest sizes run with ISOCSG_SCALE_FULL=1")
 def test_plate_10000_holes_matches_reference() -> None:
     # 10 000 holes at 128 px: holes of about one pixel; the whole plate in view
     plate = plate_with_holes(10_000)
@@ -179,6 +182,8 @@ def test_plate_10000_holes_full_size(form: str, size: int) -> None:
 
 def test_lattice_of_1000_spheres_matches_reference() -> None:
     _check_views(sphere_lattice(10), ((5.0, -7.0, 5.0), (-6.5, -5.0, 4.0)), 128, "lattice of 1000 spheres")
+@pytest.mark.slow
+@pytest.mark.skipif(not FULL, reason="the largest sizes run with ISOCSG_SCALE_FULL=1")
 
 
 def test_nested_1000_operand_nodes_match_reference() -> None:
@@ -195,6 +200,8 @@ def _random_eyes(n: int) -> tuple[tuple[float, float, float], tuple[float, float
 RANDOM_SETTINGS = settings(max_examples=4, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 
 
+@pytest.mark.slow
+@pytest.mark.skipif(not FULL, reason="the largest sizes run with ISOCSG_SCALE_FULL=1")
 @RANDOM_SETTINGS
 @given(st.integers(2, 2000), st.integers(0, 2**31 - 1))
 def test_random_trees_match_reference(n: int, seed: int) -> None:
@@ -212,6 +219,8 @@ def _renders(solid, eyes, size: int = 80) -> list[np.ndarray]:
     return [renderer.render(_scene(solid, e, size)).image for e in eyes]
 
 
+@pytest.mark.slow
+@pytest.mark.skipif(not FULL, reason="the largest sizes run with ISOCSG_SCALE_FULL=1")
 @IDENTITY_SETTINGS
 @given(st.integers(50, 600), st.integers(0, 2**31 - 1))
 def test_a_minus_a_renders_empty_on_large_trees(n: int, seed: int) -> None:
@@ -220,6 +229,8 @@ def test_a_minus_a_renders_empty_on_large_trees(n: int, seed: int) -> None:
         assert np.isnan(image).all(), f"view {k + 1}: {np.count_nonzero(np.isfinite(image))} object pixels"
 
 
+@pytest.mark.slow
+@pytest.mark.skipif(not FULL, reason="the largest sizes run with ISOCSG_SCALE_FULL=1")
 @IDENTITY_SETTINGS
 @given(st.integers(50, 600), st.integers(0, 2**31 - 1))
 def test_a_union_a_renders_as_a_on_large_trees(n: int, seed: int) -> None:
@@ -231,6 +242,8 @@ def test_a_union_a_renders_as_a_on_large_trees(n: int, seed: int) -> None:
         assert result.fraction >= MIN_FRACTION, f"view {k + 1}: A | A vs A: {result.summary()}"
 
 
+@pytest.mark.slow
+@pytest.mark.skipif(not FULL, reason="the largest sizes run with ISOCSG_SCALE_FULL=1")
 @IDENTITY_SETTINGS
 @given(st.integers(50, 600), st.integers(0, 2**31 - 1))
 def test_intersection_commutes_on_large_trees(n: int, seed: int) -> None:
