@@ -99,7 +99,7 @@ class Camera:
         object.__setattr__(self, "orthographic", bool(self.orthographic))
         height_m = scalar("camera.height_m", self.height_m, low=0.0, high=MAX_ABS_COORD, error=err)
         floor = length_floor(eye)
-        if height_m < floor:
+        if self.orthographic and height_m < floor:  # only an orthographic view uses it
             raise err(f"camera.height_m must be >= {floor:g} (the smallest length at this position), got {height_m:g}")
         object.__setattr__(self, "height_m", height_m)
 

@@ -253,11 +253,13 @@ _MEMORY_SCRIPT = textwrap.dedent(
     from test_render_scale import plate_scene
     from isocsg.render import Renderer
     scene = plate_scene(32, 1024, 1024, contours=64)
-    base = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss
+    def hwm():  # this process's own high-water mark (ru_maxrss would include the parent's, kept across exec)
+        return next(int(l.split()[1]) for l in open("/proc/self/status") if l.startswith("VmHWM:"))
+    base = hwm()
     t = time.perf_counter()
     res = Renderer().render(scene)
     seconds = time.perf_counter() - t
-    peak = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss
+    peak = hwm()
     print(json.dumps({{"base_mb": base / 1024, "peak_mb": peak / 1024, "seconds": seconds,
                       "covered": int((res.image == res.image).sum())}}))
     """
