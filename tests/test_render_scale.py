@@ -236,7 +236,7 @@ def test_small_leaves_get_fewer_contours():
         return build_laminae(primitive, lights, material, contours, eye=eye)
 
     scene = plate_scene(6, 160, 128, contours=64)
-    Renderer(build_laminae=build).render(scene)
+    Renderer(adaptive_contours=True, build_laminae=build).render(scene)
     tree = scene.objects[0].shape
     assert asked[tree.children[0]] == 64
     holes = [asked[h] for h in tree.children[1:]]
@@ -257,7 +257,7 @@ _MEMORY_SCRIPT = textwrap.dedent(
         return next(int(l.split()[1]) for l in open("/proc/self/status") if l.startswith("VmHWM:"))
     base = hwm()
     t = time.perf_counter()
-    res = Renderer().render(scene)
+    res = Renderer(adaptive_contours=True).render(scene)
     seconds = time.perf_counter() - t
     peak = hwm()
     print(json.dumps({{"base_mb": base / 1024, "peak_mb": peak / 1024, "seconds": seconds,

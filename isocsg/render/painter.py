@@ -504,12 +504,14 @@ class Renderer:
         :data:`SURFACE_MAX_TRIANGLES` triangles (larger trees stay per pixel).
         Objects with view-dependent (specular) bands use ``"pixel"`` under
         ``"auto"``.
-    adaptive_contours : bool, default True
-        Build primitives under 64 pixels across on screen with fewer contours
-        (:func:`screen_contours`: bands about two pixels apart, at least
-        :data:`MIN_CONTOURS`, never more than requested), so that leaves of a
-        few pixels cost little. ``False``: every primitive gets the
-        requested count.
+    adaptive_contours : bool, default False
+        ``True``: build primitives under 64 pixels across on screen with
+        fewer contours (:func:`screen_contours`: bands about two pixels
+        apart, at least :data:`MIN_CONTOURS`, never more than requested), so
+        that the leaves of a large model cost little; the 0.05 accuracy bar
+        still holds, but the error of such a leaf no longer shrinks as the
+        requested N grows. ``False`` (the default, as the conventions ask):
+        every primitive gets the requested count.
 
     Examples
     --------
@@ -533,7 +535,7 @@ class Renderer:
     """
 
     def __init__(
-        self, build_laminae: BandBuilder | None = None, *, csg: str = "auto", adaptive_contours: bool = True,
+        self, build_laminae: BandBuilder | None = None, *, csg: str = "auto", adaptive_contours: bool = False,
     ) -> None:
         if csg not in CSG_METHODS:
             raise InvalidParameterError(f"csg must be one of {', '.join(CSG_METHODS)}, got {csg!r}")
