@@ -288,8 +288,6 @@ def test_oversized_composite_request_is_refused_before_building(monkeypatch):
             assert time.perf_counter() - t < 0.5
 
 
-@pytest.mark.xfail(strict=True, reason="known: a polyhedron under a point light just above a vertex keeps an "
-                   "error of 0.003 that does not shrink with N (face subdivision for near lights does not follow N)")
 def test_polyhedron_under_a_point_light_just_above_a_vertex_converges():
     import sys
     from pathlib import Path
