@@ -9,7 +9,8 @@ first view (resolved per pixel) and on a later one (through the clipped band
 surface) and judged by the analytic ray caster with the catalogue's bars.
 
 ``ISOCSG_SEARCH_EXAMPLES=2000 python -m pytest tests/test_csg_random_views.py``
-runs a longer search than the fixed set CI draws.
+runs a longer search than the fixed set CI draws; ``ISOCSG_SEARCH_LOG=file``
+appends one line per judged example.
 """
 
 from __future__ import annotations
@@ -44,6 +45,7 @@ from isocsg import (  # noqa: E402
 from isocsg.render import Renderer  # noqa: E402
 
 EXAMPLES = int(os.environ.get("ISOCSG_SEARCH_EXAMPLES", "12"))
+LOG = os.environ.get("ISOCSG_SEARCH_LOG")
 VIEW_SETTINGS = settings(max_examples=EXAMPLES, deadline=None, suppress_health_check=list(HealthCheck))
 SIZE = 96
 CONTOURS = 64
@@ -152,3 +154,6 @@ def test_random_trees_match_the_ray_caster_on_first_and_later_views(tree, camera
         result = compare(image, ref)
         assert result.iou >= MIN_IOU, f"{method}: {result.summary()}"
         assert result.fraction >= MIN_FRACTION, f"{method}: {result.summary()}"
+        if LOG:
+            with open(LOG, "a") as fh:
+                fh.write(f"{method}\t{len(tree.leaves()) if hasattr(tree, 'leaves') else 1}\t{result.summary()}\n")
