@@ -25,8 +25,12 @@ from isocsg import (
     DirectionalLight,
     Material,
     PointLight,
+    Scene,
+    SceneObject,
     Sphere,
     Truncus,
+    intersection,
+    union,
 )
 # the shared helpers live next to the tests (pytest runs with --import-mode=importlib)
 sys.path.insert(0, str(Path(__file__).resolve().parent))
@@ -391,3 +395,26 @@ def test_catalogue_scenes_render_and_only_the_empty_one_is_empty() -> None:
         ref = raycast(scene.camera, [(o.shape, o.material) for o in scene.objects], scene.lights)
         assert ref.image.shape == (scene.camera.height, scene.camera.width)
         assert ref.mask.any() == (name != "difference_leaves_nothing"), name
+
+
+@pytest.mark.parametrize("orthographic", [False, True], ids=["perspective", "orthographic"])
+def test_tiled_reference_equals_untiled_first_hits(orthographic: bool) -> None:
+    # Leaves spread over the image, so that screen tiles cull most of them; parallel rays
+    # (orthographic) must be culled by a slab, not by the perspective pyramid.
+    from reference import raycast_scene
+
+    grid = [Sphere((x, 0.0, z), 0.22) for x in (-1.2, -0.4, 0.4, 1.2) for z in (-1.2, -0.4, 0.4, 1.2)]
+    solid = union(
+        *grid, Box((-1.0, 0.2, -0.7), (0.5, 0.6, 0.4)),
+        intersection(Cylinder((0.3, -0.9, -1.0), (0.2, 0.1, 1.4), 0.5), Box((0.3, -0.9, 0.0), (1.2, 1.2, 1.0))),
+    )
+    if orthographic:
+        cam = Camera((0.8, -7.2, -3.1), (0, 0, 0), (0, 0, 1), width=96, height=96, orthographic=True, height_m=3.2)
+    else:
+        cam = Camera((0.8, -7.2, -3.1), (0, 0, 0), (0, 0, 1), fov=26.0, width=96, height=96)
+    scene = Scene(cam, (PointLight((5.0, -6.0, 4.0)),), (SceneObject(solid, Material()),))
+    o, d = camera_rays(cam)
+    direct = first_hit(solid, o.reshape(-1, 3), d.reshape(-1, 3)).hit.reshape(96, 96)
+    ref = raycast_scene(scene)
+    assert direct.sum() > 500
+    assert np.array_equal(ref.mask, direct)

@@ -898,7 +898,7 @@ def _pixel_coords(camera: Camera) -> tuple[F64, F64, F64, F64, F64, F64]:
     r /= np.linalg.norm(r)
     u = np.cross(r, f)
     w, h = int(camera.width), int(camera.height)
-    t = np.tan(np.radians(camera.fov) / 2)
+    t = camera.height_m / 2 if camera.orthographic else np.tan(np.radians(camera.fov) / 2)
     x = (2 * (np.arange(w) + 0.5) / w - 1) * t * (w / h)
     y = (1 - 2 * (np.arange(h) + 0.5) / h) * t
     return eye, f, r, u, x, y
@@ -910,11 +910,13 @@ TILE_OVERHEAD = 3000
 
 
 def _tile_hits(camera: Camera, solid: Any, o: F64, d: F64, *, t_min: float = 0.0) -> FirstHit:
-    """:func:`first_hit` for every pixel of a pinhole camera, by screen tiles.
+    """:func:`first_hit` for every pixel of a camera, by screen tiles.
 
     A tile's rays leave the eye inside the pyramid spanned by its corner
     pixels' rays: ``x_min <= X/Z <= x_max``, ``y_min <= Y/Z <= y_max``,
-    ``Z >= 0`` in the camera frame. A leaf whose bounding box lies entirely
+    ``Z >= 0`` in the camera frame; for an orthographic camera (parallel rays
+    from the image plane) inside the slab ``x_min <= X <= x_max``,
+    ``y_min <= Y <= y_max``, ``Z >= 0``. A leaf whose bounding box lies entirely
     outside one of those half-spaces is met by no ray of the tile at t >= 0,
     so it is the empty set there (what it does behind the eye changes no
     segment beyond ``t_min >= 0``) and the tree is pruned accordingly. Tiles
@@ -939,6 +941,8 @@ def _tile_hits(camera: Camera, solid: Any, o: F64, d: F64, *, t_min: float = 0.0
         x0, x1 = xs[j0] - slack, xs[j1 - 1] + slack
         y0, y1 = ys[i1 - 1] - slack, ys[i0] + slack
         Xs, Ys, Zs = X[ids], Y[ids], Z[ids]
+        if camera.orthographic:  # parallel rays: the bounds do not scale with depth
+            Zs = np.ones_like(Zs) * np.where(np.all(Z[ids] < 0, axis=1), -1.0, 1.0)[:, None]
         out = (
             np.all(Xs > x1 * Zs, axis=1) | np.all(Xs < x0 * Zs, axis=1)
             | np.all(Ys > y1 * Zs, axis=1) | np.all(Ys < y0 * Zs, axis=1) | np.all(Zs < 0, axis=1) | void[ids]
