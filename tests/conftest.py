@@ -5,7 +5,9 @@ profile), so that each run searches further. With ``CI`` set in the
 environment they run the ``ci`` profile instead: the same derandomized
 examples on every machine, so that a continuous-integration result depends
 on the commit alone. A failing example prints the ``@reproduce_failure``
-blob to replay it.
+blob to replay it. ``ISOCSG_SEARCH_NOSHRINK=1`` reports failures as found,
+without shrinking them (long local searches, where shrinking a slow example
+can take longer than the search).
 """
 
 import os
@@ -16,9 +18,16 @@ from hypothesis import settings
 os.environ.setdefault("VTK_DEFAULT_OPENGL_WINDOW", "vtkEGLRenderWindow")
 os.environ.setdefault("NUMBA_NUM_THREADS", "2")
 
+from hypothesis import Phase
+
+_SEARCH_PHASES = tuple(p for p in Phase if p not in (Phase.shrink, Phase.explain))
 settings.register_profile("explore", print_blob=True)
+settings.register_profile("search", print_blob=True, phases=_SEARCH_PHASES)
 settings.register_profile("ci", derandomize=True, print_blob=True)
-settings.load_profile("ci" if os.environ.get("CI") else "explore")
+if os.environ.get("CI"):
+    settings.load_profile("ci")
+else:
+    settings.load_profile("search" if os.environ.get("ISOCSG_SEARCH_NOSHRINK") else "explore")
 
 
 def pytest_sessionfinish(session, exitstatus):
