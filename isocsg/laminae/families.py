@@ -25,7 +25,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from ..lighting.lights import DirectionalLight, PointLight
-from ..lighting.shading import Material
+from ..lighting.shading import TERMINATOR_COSINE, Material
 
 __all__ = [
     "FieldFamily", "diffuse_levels", "specular_levels", "incidence", "diffuse_family", "specular_families",
@@ -213,6 +213,7 @@ def specular_families(
     rv = np.einsum("ij,ij->i", rf, v)
     n = float(material.shininess)
     w = float(material.ks * light.intensity)
-    out = FieldFamily(light_index, "specular_out", np.where(ndotl > 0, rv, -1.0), n, w, w)
-    inn = FieldFamily(light_index, "specular_in", np.where(ndotl < 0, rv, -1.0), n, w, w)
+    # Lit beyond rounding only: on the terminator the highlight is off (see lighting.shading).
+    out = FieldFamily(light_index, "specular_out", np.where(ndotl > TERMINATOR_COSINE, rv, -1.0), n, w, w)
+    inn = FieldFamily(light_index, "specular_in", np.where(ndotl < -TERMINATOR_COSINE, rv, -1.0), n, w, w)
     return [out, inn]
