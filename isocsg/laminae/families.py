@@ -202,7 +202,8 @@ def specular_families(
     """The two Phong families of one light (outward and reversed normal).
 
     The field is ``rf . v`` (``rf = 2 (n . l) n - l``, ``v`` towards the eye)
-    where that side of the surface is lit, and -1 elsewhere. ``points`` and
+    where that side of the surface is lit or on the terminator (within
+    ``TERMINATOR_COSINE``), and -1 elsewhere. ``points`` and
     ``eye`` are relative to ``origin``.
     """
     lvec = light_direction_at(light, points, origin)
@@ -213,7 +214,8 @@ def specular_families(
     rv = np.einsum("ij,ij->i", rf, v)
     n = float(material.shininess)
     w = float(material.ks * light.intensity)
-    # Lit beyond rounding only: on the terminator the highlight is off (see lighting.shading).
-    out = FieldFamily(light_index, "specular_out", np.where(ndotl > TERMINATOR_COSINE, rv, -1.0), n, w, w)
-    inn = FieldFamily(light_index, "specular_in", np.where(ndotl < -TERMINATOR_COSINE, rv, -1.0), n, w, w)
+    # Vertices on the terminator keep the lit side's limit, so that the highlight reaches it;
+    # the pieces beyond it take no highlight (the band builder checks the diffuse field's side).
+    out = FieldFamily(light_index, "specular_out", np.where(ndotl >= -TERMINATOR_COSINE, rv, -1.0), n, w, w)
+    inn = FieldFamily(light_index, "specular_in", np.where(ndotl <= TERMINATOR_COSINE, rv, -1.0), n, w, w)
     return [out, inn]
