@@ -74,6 +74,18 @@ def test_version(capsys: pytest.CaptureFixture[str]) -> None:
     assert capsys.readouterr().out.strip() == f"isocsg {isocsg.__version__}"
 
 
+@pytest.mark.parametrize("how", ["python -m isocsg", "console script"])
+def test_version_from_a_shell(how: str) -> None:
+    import isocsg
+
+    if how == "console script" and not SCRIPT.exists():
+        pytest.skip("the isocsg console script is not installed next to this interpreter")
+    cmd = [sys.executable, "-m", "isocsg"] if how == "python -m isocsg" else [str(SCRIPT)]
+    env = dict(os.environ, PYTHONPATH=str(Path(isocsg.__file__).resolve().parents[1]))
+    proc = subprocess.run(cmd + ["--version"], capture_output=True, text=True, timeout=120, env=env)
+    assert (proc.returncode, proc.stdout, proc.stderr) == (0, f"isocsg {isocsg.__version__}\n", "")
+
+
 def test_no_command_prints_help_and_fails(capsys: pytest.CaptureFixture[str]) -> None:
     assert main([]) == 2
     assert "usage: isocsg" in capsys.readouterr().err
@@ -171,6 +183,29 @@ def test_progress_bar_can_be_silenced() -> None:
     assert buf.getvalue() == ""
 
 
+class _Stream(io.StringIO):
+    def __init__(self, terminal: bool) -> None:
+        super().__init__()
+        self.terminal = terminal
+
+    def isatty(self) -> bool:
+        return self.terminal
+
+
+@pytest.mark.parametrize("terminal", [True, False], ids=["terminal", "pipe"])
+def test_progress_bar_is_drawn_on_a_terminal_only(monkeypatch: pytest.MonkeyPatch, terminal: bool) -> None:
+    """A bar redrawn with carriage returns would litter a log: stderr that is no terminal gets none."""
+    err = _Stream(terminal)
+    monkeypatch.setattr(sys, "stderr", err)
+    with progress_bar("render", delay=0) as progress:
+        for done in range(0, 11):
+            progress(done, 10)
+    if terminal:
+        assert "\r" in err.getvalue() and "10/10" in err.getvalue()
+    else:
+        assert err.getvalue() == ""
+
+
 # ----------------------------------------------------------------------------- end to end
 
 
@@ -253,3 +288,42 @@ def test_halftone_png_applies_the_scene_exposure(tmp_path: Path) -> None:
     expected = np.clip(E[lit] * 0.002, 0, 1) * 255
     assert np.abs(shown[lit] - expected).max() <= 1.0
     assert (shown[lit] < 255).mean() > 0.9  # not washed out
+
+
+class _Stdin:
+    """Standard input holding bytes (``sys.stdin.buffer`` is what the command line reads)."""
+
+    def __init__(self, data: bytes) -> None:
+        self.buffer = io.BytesIO(data)
+
+
+@needs_renderer
+@pytest.mark.parametrize("fmt", ["json", "toml"])
+def test_render_reads_the_scene_from_standard_input(tmp_path: Path, monkeypatch: pytest.MonkeyPatch, fmt: str) -> None:
+    from isocsg.scene import dumps_scene
+
+    scene_path = _write_scene(tmp_path)
+    text = json.dumps(SMALL_SCENE) if fmt == "json" else dumps_scene(load_scene(scene_path))
+    from_file, from_stdin = tmp_path / "file.npy", tmp_path / "stdin.npy"
+    assert main(["render", str(scene_path), "-o", str(tmp_path / "f.png"), "--npy", str(from_file), "--no-progress"]) == 0
+    monkeypatch.setattr(sys, "stdin", _Stdin(text.encode()))
+    assert main(["render", "-", "-o", str(tmp_path / "s.png"), "--npy", str(from_stdin), "--no-progress"]) == 0
+    np.testing.assert_array_equal(np.load(from_stdin), np.load(from_file))
+
+
+@pytest.mark.parametrize(
+    "data, message",
+    [
+        (b"[camera\n", "isocsg render: error: <stdin>: invalid TOML: "),
+        (b"{\"camera\": 1", "isocsg render: error: <stdin>: invalid JSON: "),
+        (b"\xff\xfe", "isocsg render: error: <stdin>: not a UTF-8 text file (byte 0xff at offset 0)"),
+    ],
+    ids=["toml", "json", "binary"],
+)
+def test_bad_standard_input_is_one_line_naming_stdin(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture[str], data: bytes, message: str
+) -> None:
+    monkeypatch.setattr(sys, "stdin", _Stdin(data))
+    assert main(["render", "-", "-o", str(tmp_path / "s.png"), "--no-progress"]) == 2
+    err = capsys.readouterr().err
+    assert err.startswith(message) and err.count("\n") == 1

@@ -120,3 +120,17 @@ def test_bad_outputs_and_missing_file(tmp_path, capsys):
     assert "must end in .png" in capsys.readouterr().err
     assert main(["illuminance", str(tmp_path / "nope.toml"), "-o", str(tmp_path / "x.png")]) == 2
     assert "cannot read the file" in capsys.readouterr().err
+
+
+def test_scene_and_table_from_standard_input(tmp_path, monkeypatch):
+    import io
+    import sys
+
+    doc = dict(DOC, illuminance={"origin": [-1, -1, 0.5], "u": [2, 0, 0], "v": [0, 2, 0], "nx": 5, "ny": 4})
+    scene = _write(tmp_path, doc)
+    from_file, from_stdin = tmp_path / "f.npy", tmp_path / "s.npy"
+    assert main(["illuminance", str(scene), "-o", str(tmp_path / "f.png"), "--npy", str(from_file), "--no-progress"]) == 0
+    monkeypatch.setattr(sys, "stdin", type("Stdin", (), {"buffer": io.BytesIO(json.dumps(doc).encode())})())
+    assert main(["illuminance", "-", "-o", str(tmp_path / "s.png"), "--npy", str(from_stdin), "--no-progress"]) == 0
+    np.testing.assert_array_equal(np.load(from_stdin), np.load(from_file))
+    assert np.load(from_stdin).shape == (4, 5)  # the [illuminance] table was read from standard input

@@ -98,14 +98,7 @@ _BITTEN = Cylinder((-0.546586355479198, 2.220446049250313e-16, 0.0), (0.0, 0.0, 
 )
 
 
-_STRADDLE = pytest.mark.xfail(
-    strict=True,
-    reason="known: with the finer band meshes of the per-part levels, one band triangle that straddles the edge "
-    "of the coincident region is kept by its centre (the cancellation of coincident faces does not split it)",
-)
-
-
-@pytest.mark.parametrize("tree", [_CYL - _CYL, pytest.param(_BITTEN - _BITTEN, marks=_STRADDLE)],
+@pytest.mark.parametrize("tree", [_CYL - _CYL, _BITTEN - _BITTEN],
                          ids=["cylinder", "bitten-cylinder"])
 def test_a_minus_a_leaves_no_zero_volume_sheets(tree):
     """Where faces coincide manifold3d can leave closed shells of zero volume (the

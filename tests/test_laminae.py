@@ -566,3 +566,13 @@ def test_bad_input_is_reported(kwargs, error, field):
     args.update(kwargs)
     with pytest.raises(error, match=field):
         build_laminae(args["primitive"], args["lights"], args["material"], args["contours"], eye=args["eye"])
+
+
+def test_repr_is_one_short_line_of_counts():
+    """A 64-contour set of two lights printed its arrays (about 300 000 characters)."""
+    ls = build_laminae(Sphere((0, 0, 0), 1.0), (PointLight((3, -4, 5)), PointLight((-4, 1, 2), 0.5)), Material(), 64)
+    text = repr(ls)
+    assert "\n" not in text and len(text) < 200
+    assert text == (f"<LaminaSet(Sphere, {len(ls.laminae)} laminae, 2 families, {ls.bands.n_triangles} band triangles, "
+                    "view-independent)>")
+    assert repr(ls.bands) == f"<BandMesh(vertices.shape={ls.bands.vertices.shape}, triangles.shape={ls.bands.triangles.shape})>"

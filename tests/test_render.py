@@ -352,6 +352,26 @@ def test_png_and_npy_round_trip(tmp_path):
     np.testing.assert_array_equal(back[~np.isnan(back)], res.image[~np.isnan(res.image)])
 
 
+def test_png_goes_to_a_binary_file_object(tmp_path):
+    import io
+
+    from PIL import Image
+
+    from isocsg.render.image import save_png, to_uint8
+
+    res = renderer().render(Scene(CAM, LIGHTS, [Sphere((0, 0, 0), 1)]), contours=8)
+    buf = io.BytesIO()
+    save_png(buf, res.image)
+    np.testing.assert_array_equal(np.asarray(Image.open(io.BytesIO(buf.getvalue()))), to_uint8(res.image))
+    with open(tmp_path / "b.png", "wb") as fh:  # an open file, as for standard output
+        save_png(fh, res.image)
+    np.testing.assert_array_equal(np.asarray(Image.open(tmp_path / "b.png")), to_uint8(res.image))
+    with pytest.raises(InvalidParameterError, match=re.escape("path must be a path or a binary file object, got the text stream")):
+        save_png(io.StringIO(), res.image)
+    with pytest.raises(InvalidParameterError, match=re.escape("path must be a path or a binary file object, got int")):
+        save_png(3, res.image)
+
+
 def test_svg_keeps_order_colour_and_fixed_decimals(tmp_path):
     import xml.etree.ElementTree as ET
 

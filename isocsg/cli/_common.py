@@ -17,6 +17,7 @@ __all__ = [
     "ArgumentParser",
     "parse_size",
     "progress_bar",
+    "load_scene_argument",
     "apply_overrides",
     "render_scene",
     "check_outputs",
@@ -56,18 +57,25 @@ def progress_bar(desc: str, *, enabled: bool = True, file: IO[str] | None = None
     """A ``progress(done, total)`` callable that drives a tqdm bar on stderr.
 
     The bar appears only when the work lasts longer than ``delay`` seconds,
-    so quick renders stay silent.
+    so quick renders stay silent, and only on a terminal: redrawn with
+    carriage returns, it would litter a log or a pipe. ``file`` is written to
+    whatever it is (for tests).
     """
     from tqdm import tqdm
 
     bar: Any = None
+    if file is None:
+        stream = sys.stderr
+        enabled = enabled and stream is not None and _is_terminal(stream)
+    else:
+        stream = file
 
     def update(done: int, total: int) -> None:
         nonlocal bar
         if not enabled:
             return
         if bar is None:
-            bar = tqdm(total=total, desc=desc, file=file if file is not None else sys.stderr, delay=delay, leave=False, unit="step")
+            bar = tqdm(total=total, desc=desc, file=stream, delay=delay, leave=False, unit="step")
         if bar.total != total:
             bar.total = total
         if done > bar.n:
@@ -80,6 +88,33 @@ def progress_bar(desc: str, *, enabled: bool = True, file: IO[str] | None = None
     finally:
         if bar is not None:
             bar.close()
+
+
+def _is_terminal(stream: Any) -> bool:
+    try:
+        return bool(stream.isatty())
+    except (AttributeError, ValueError, OSError):  # no isatty, or a closed stream
+        return False
+
+
+def load_scene_argument(path: str) -> Scene:
+    """The scene a command line names: a ``.toml`` or ``.json`` file, or ``-`` for standard input.
+
+    Standard input is read as a file is (UTF-8, at most
+    :data:`~isocsg.scene.io.MAX_SCENE_FILE_BYTES` bytes); it is JSON when its
+    first character other than white space is ``{``, TOML otherwise.
+
+    Raises
+    ------
+    SceneFileError
+        Naming the file (``<stdin>``) and what is wrong.
+    """
+    from ..scene.io import load_scene, loads_scene, read_scene_stream
+
+    if path != "-":
+        return load_scene(path)
+    text, fmt = read_scene_stream(sys.stdin.buffer, source="<stdin>")
+    return loads_scene(text, format=fmt, source="<stdin>")
 
 
 def apply_overrides(scene: Scene, *, size: tuple[int, int] | None = None, contours: int | None = None) -> Scene:

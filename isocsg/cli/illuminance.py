@@ -21,6 +21,7 @@ from __future__ import annotations
 import argparse
 import math
 import re
+import sys
 from pathlib import Path
 from typing import Any
 
@@ -29,7 +30,7 @@ import numpy as np
 from .._validation import MAX_RESOLUTION, integer, resolution, show
 from ..errors import InvalidLightError, InvalidParameterError, SceneFileError
 from ..geometry.primitives import Box
-from ..scene.io import decode_scene_text, read_scene_file, scene_from_dict
+from ..scene.io import decode_scene_text, read_scene_file, read_scene_stream, scene_from_dict
 from ..scene.model import Scene
 from ..shadows.lights import AreaLight, PolyhedronLight
 from ..shadows.luxmap import LuxGrid, illuminance_map, save_luxmap_png
@@ -55,7 +56,7 @@ DEFAULT_NODES = 64
 def register(subparsers: Any) -> argparse.ArgumentParser:
     """Add the ``illuminance`` sub-command."""
     p = subparsers.add_parser("illuminance", help="illuminance map with isolux lines", description=DESCRIPTION)
-    p.add_argument("scene", metavar="SCENE", help="scene file, .toml or .json")
+    p.add_argument("scene", metavar="SCENE", help="scene file, .toml or .json, or - to read it from standard input")
     p.add_argument("-o", "--output", required=True, metavar="MAP.png", help="PNG map to write")
     p.add_argument("--npy", metavar="E.npy", help="also write E (ny, nx) as .npy")
     p.add_argument("--grid", nargs=2, type=int, metavar=("NX", "NY"), help="grid nodes along u and v (default 64 64)")
@@ -95,11 +96,17 @@ def floor_grid(scene: Scene, nx: int = 64, ny: int = 64) -> LuxGrid:
     return LuxGrid.from_bounds(lo[0], lo[1], hi[0], hi[1], lo[2], nx, ny)
 
 
+def _name(path: str | Path) -> str:
+    """The file's name in messages; ``<stdin>`` for ``-``."""
+    return "<stdin>" if str(path) == "-" else Path(path).name
+
+
 def load_scene_and_grid(path: str | Path) -> tuple[Scene, dict[str, Any] | None]:
     """Read a scene file and its optional ``[illuminance]`` table (raw mapping).
 
     The file is read as :func:`isocsg.scene.load_scene` reads it: ``.toml``
-    or ``.json`` only, a regular UTF-8 file of at most 16 MiB. The table's
+    or ``.json`` only, a regular UTF-8 file of at most 16 MiB; ``-`` reads
+    standard input (:func:`isocsg.scene.io.read_scene_stream`). The table's
     ``nx``, ``ny`` and ``levels`` are checked here.
 
     Raises
@@ -107,8 +114,12 @@ def load_scene_and_grid(path: str | Path) -> tuple[Scene, dict[str, Any] | None]
     SceneFileError
         On unreadable files or a malformed ``[illuminance]`` table.
     """
-    p = Path(path)
-    text, fmt = read_scene_file(p)
+    if str(path) == "-":  # standard input, read as a file is
+        p: Any = "<stdin>"
+        text, fmt = read_scene_stream(sys.stdin.buffer, source=p)
+    else:
+        p = Path(path)
+        text, fmt = read_scene_file(p)
     doc = decode_scene_text(text, format=fmt, source=p)
     table = None
     if isinstance(doc, dict) and "illuminance" in doc:
@@ -130,7 +141,7 @@ def load_scene_and_grid(path: str | Path) -> tuple[Scene, dict[str, Any] | None]
         except InvalidParameterError as exc:
             field, _, rest = str(exc).partition(" ")
             raise SceneFileError(f"{p}: {field}: {rest}") from None
-    return scene_from_dict(doc, source=p.name), table
+    return scene_from_dict(doc, source=p if isinstance(p, str) else p.name), table
 
 
 def _levels(name: str, value: Any) -> int | list[float]:
@@ -166,8 +177,8 @@ def _grid_from_table(path: str, table: dict[str, Any], nx: int | None, ny: int |
         text = str(exc)
         one_field = re.match(r"^grid\.(\w+) (must .*)$", text, flags=re.DOTALL)
         if one_field is not None:
-            raise SceneFileError(f"{Path(path).name}: illuminance.{one_field.group(1)}: {one_field.group(2)}") from None
-        raise SceneFileError(f"{Path(path).name}: illuminance: {text.replace('grid.', '')}") from None
+            raise SceneFileError(f"{_name(path)}: illuminance.{one_field.group(1)}: {one_field.group(2)}") from None
+        raise SceneFileError(f"{_name(path)}: illuminance: {text.replace('grid.', '')}") from None
 
 
 def run(args: argparse.Namespace) -> int:
@@ -190,7 +201,7 @@ def run(args: argparse.Namespace) -> int:
     scene, table = load_scene_and_grid(args.scene)
     lights = [li for li in scene.lights if isinstance(li, (AreaLight, PolyhedronLight))]
     if not lights:
-        raise InvalidLightError(f"{Path(args.scene).name} has no area or polyhedron light")
+        raise InvalidLightError(f"{_name(args.scene)} has no area or polyhedron light")
     if all(given):
         grid = LuxGrid(args.origin, args.u, args.v, DEFAULT_NODES if nx is None else nx, DEFAULT_NODES if ny is None else ny)
     elif table is not None:

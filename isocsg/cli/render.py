@@ -8,11 +8,11 @@ from typing import Any
 
 from ..errors import InvalidParameterError
 from ..geometry.primitives import Primitive
-from ..scene.io import load_scene
 from ._common import (
     add_common_render_options,
     apply_overrides,
     check_outputs,
+    load_scene_argument,
     progress_bar,
     render_scene,
     write_outputs,
@@ -30,7 +30,7 @@ or "halftone" (exact illuminance and soft shadows from area and polyhedron light
 def register(subparsers: Any) -> argparse.ArgumentParser:
     """Add the ``render`` sub-command."""
     p = subparsers.add_parser("render", help="render a scene file to PNG", description=DESCRIPTION)
-    p.add_argument("scene", metavar="SCENE", help="scene file, .toml or .json")
+    p.add_argument("scene", metavar="SCENE", help="scene file, .toml or .json, or - to read it from standard input")
     p.add_argument("-o", "--output", required=True, metavar="OUT.png", help="PNG file to write")
     p.add_argument("--npy", metavar="OUT.npy", help="also write the float32 image (NaN background) as .npy")
     p.add_argument(
@@ -49,7 +49,7 @@ def run(args: argparse.Namespace) -> int:
         raise InvalidParameterError(f"--svg must name a .svg file, got {args.svg!r}")
     if args.svg is not None and Path(args.svg).is_dir():
         raise InvalidParameterError(f"--svg {args.svg!r} is a directory")
-    scene = apply_overrides(load_scene(args.scene), size=args.size, contours=args.contours)
+    scene = apply_overrides(load_scene_argument(args.scene), size=args.size, contours=args.contours)
     if args.svg is not None:
         if scene.render.mode != "isoluminance":
             raise InvalidParameterError("--svg needs render.mode = \"isoluminance\"")

@@ -828,6 +828,9 @@ def _on_opposite_face(
                 continue
             if abs(nrm[q, 0] * p[0] + nrm[q, 1] * p[1] + nrm[q, 2] * p[2] - off[q]) > tol:
                 continue
+            # Opposite layers count within the tolerance; layers facing like k only
+            # where p is strictly inside them: the centroid of a sliver lies within the
+            # tolerance of its neighbour's edge, and the neighbour is no second layer.
             inside = True
             for s in range(3):
                 va = v[t[cand[q], s]]
@@ -836,7 +839,8 @@ def _on_opposite_face(
                 rx, ry, rz = p[0] - va[0], p[1] - va[1], p[2] - va[2]
                 # (edge x (p - a)) . n: how far p is inside the edge, times its length
                 side = (ey * rz - ez * ry) * nrm[q, 0] + (ez * rx - ex * rz) * nrm[q, 1] + (ex * ry - ey * rx) * nrm[q, 2]
-                if side < -tol * np.sqrt(ex * ex + ey * ey + ez * ez):
+                outside = side < -tol * np.sqrt(ex * ex + ey * ey + ez * ez) if cos < 0 else side <= 0.0
+                if outside:
                     inside = False
                     break
             if not inside:

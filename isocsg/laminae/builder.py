@@ -39,7 +39,7 @@ from .._validation import integer, vector3
 from ..errors import InvalidLightError, InvalidParameterError
 from ..geometry.primitives import Box, ConvexPolyhedron, Primitive, Sphere, Truncus
 from ..lighting.lights import DirectionalLight, PointLight
-from ..lighting.shading import Material
+from ..lighting.shading import TERMINATOR_COSINE, Material
 from ..limits import memory_budget
 from .families import FieldFamily, diffuse_family, diffuse_levels, incidence, specular_families
 from .model import BandMesh, ContourFamily, Lamina, LaminaSet
@@ -399,13 +399,16 @@ def _cut(surf: Surface, fams: list[FieldFamily], mat: Material, n: int) -> BandM
         tables[0, i, : offsets[i]] = np.concatenate(tables_out[i])
         tables[1, i, : offsets[i]] = np.concatenate(tables_in[i])
     kinds = np.array([_KIND_CODES[f.kind] for f in fams], np.int64)
+    # The diffuse family of each specular family's light: it says which side of the terminator a piece is on.
+    diffuse_of = {f.light_index: i for i, f in enumerate(fams) if f.kind == "diffuse"}
+    partner = np.array([-1 if f.kind == "diffuse" else diffuse_of.get(f.light_index, -1) for f in fams], np.int64)
     laws = np.array([(f.exponent, f.weight_out, f.weight_in) for f in fams], np.float64)
     scale = float(np.max(np.abs(vertices))) if len(vertices) else 1.0
     tri32 = np.empty((len(triangles), 3), np.int32)
     v_out = np.empty(len(triangles))
     v_in = np.empty(len(triangles))
     kept = np.empty(len(triangles), np.int64)
-    m = _pieces(vertices, triangles, values, band, tables, kinds, laws, float(mat.ambient),
+    m = _pieces(vertices, triangles, values, band, tables, kinds, laws, partner, float(mat.ambient),
                 1e-24 * scale**2, tri32, v_out, v_in, kept)
     band = band[kept[:m]]
     if k == 1:
@@ -425,9 +428,18 @@ _KIND_CODES = {"diffuse": 0, "specular_out": 1, "specular_in": 2}
 
 
 @njit(cache=True, nogil=True)
+def _lit(values: NDArray[np.float64], a: int, b: int, c: int, diffuse: int, side: float) -> bool:
+    """Whether a piece is lit on ``side`` (+1 outward, -1 reversed) by its diffuse family's light."""
+    if diffuse < 0:
+        return True
+    return side * (values[a, diffuse] + values[b, diffuse] + values[c, diffuse]) / 3.0 > TERMINATOR_COSINE
+
+
+@njit(cache=True, nogil=True)
 def _pieces(
     vertices: NDArray[np.float64], triangles: NDArray[np.int64], values: NDArray[np.float64], band: NDArray[np.int64],
-    tables: NDArray[np.float64], kinds: NDArray[np.int64], laws: NDArray[np.float64], ambient: float, min_area2: float,
+    tables: NDArray[np.float64], kinds: NDArray[np.int64], laws: NDArray[np.float64], partner: NDArray[np.int64],
+    ambient: float, min_area2: float,
     tri_out: NDArray[np.int32], v_out: NDArray[np.float64], v_in: NDArray[np.float64], kept: NDArray[np.int64],
 ) -> int:
     """The pieces that cover pixels and their values; returns their number.
@@ -437,7 +449,11 @@ def _pieces(
     where the family's field is constant ``c`` on it (within 1e-12), the exact
     value: diffuse ``weight_out * max(0, c)`` outward and ``weight_in *
     max(0, -c)`` reversed; specular ``weight_out * max(0, c) ** exponent`` on
-    the family's own side (see :class:`FieldFamily`).
+    the family's own side (see :class:`FieldFamily`). A specular family counts
+    only on pieces lit on its side: the mean of its light's diffuse field
+    (``partner``) over the piece beyond ``TERMINATOR_COSINE``. Every piece lies
+    on one side of the terminator (0 is a diffuse level), so the highlight
+    ends exactly there, and a part on the terminator shows none.
     """
     m = 0
     for t in range(triangles.shape[0]):
@@ -457,10 +473,12 @@ def _pieces(
                     o += laws[i, 1] * p
                     n += laws[i, 2] * max(-f0, 0.0)
                 elif kinds[i] == 1:
-                    o += laws[i, 1] * p ** laws[i, 0]
+                    if _lit(values, a, b, c, partner[i], 1.0):
+                        o += laws[i, 1] * p ** laws[i, 0]
                 else:
-                    n += laws[i, 1] * p ** laws[i, 0]
-            else:
+                    if _lit(values, a, b, c, partner[i], -1.0):
+                        n += laws[i, 1] * p ** laws[i, 0]
+            elif kinds[i] == 0 or _lit(values, a, b, c, partner[i], 1.0 if kinds[i] == 1 else -1.0):
                 o += tables[0, i, band[t, i]]
                 n += tables[1, i, band[t, i]]
         tri_out[m, 0], tri_out[m, 1], tri_out[m, 2] = a, b, c

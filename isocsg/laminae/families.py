@@ -25,7 +25,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from ..lighting.lights import DirectionalLight, PointLight
-from ..lighting.shading import Material
+from ..lighting.shading import TERMINATOR_COSINE, Material
 
 __all__ = [
     "FieldFamily", "diffuse_levels", "specular_levels", "incidence", "diffuse_family", "specular_families",
@@ -202,7 +202,8 @@ def specular_families(
     """The two Phong families of one light (outward and reversed normal).
 
     The field is ``rf . v`` (``rf = 2 (n . l) n - l``, ``v`` towards the eye)
-    where that side of the surface is lit, and -1 elsewhere. ``points`` and
+    where that side of the surface is lit or on the terminator (within
+    ``TERMINATOR_COSINE``), and -1 elsewhere. ``points`` and
     ``eye`` are relative to ``origin``.
     """
     lvec = light_direction_at(light, points, origin)
@@ -213,6 +214,8 @@ def specular_families(
     rv = np.einsum("ij,ij->i", rf, v)
     n = float(material.shininess)
     w = float(material.ks * light.intensity)
-    out = FieldFamily(light_index, "specular_out", np.where(ndotl > 0, rv, -1.0), n, w, w)
-    inn = FieldFamily(light_index, "specular_in", np.where(ndotl < 0, rv, -1.0), n, w, w)
+    # Vertices on the terminator keep the lit side's limit, so that the highlight reaches it;
+    # the pieces beyond it take no highlight (the band builder checks the diffuse field's side).
+    out = FieldFamily(light_index, "specular_out", np.where(ndotl >= -TERMINATOR_COSINE, rv, -1.0), n, w, w)
+    inn = FieldFamily(light_index, "specular_in", np.where(ndotl <= TERMINATOR_COSINE, rv, -1.0), n, w, w)
     return [out, inn]

@@ -64,7 +64,7 @@ class ContourFamily:
     light_index: int
 
 
-@dataclass(frozen=True, slots=True, eq=False)
+@dataclass(frozen=True, slots=True, eq=False, repr=False)
 class BandMesh:
     """Planar triangles on the surface, each of one constant value.
 
@@ -93,6 +93,16 @@ class BandMesh:
         """Number of triangles."""
         return int(len(self.triangles))
 
+    def __repr__(self) -> str:
+        """One line with the array shapes (the arrays themselves are long).
+
+        Examples
+        --------
+        >>> BandMesh(np.zeros((3, 3)), np.array([[0, 1, 2]], np.int32), np.ones(1), np.ones(1), np.zeros(1, np.int32))
+        <BandMesh(vertices.shape=(3, 3), triangles.shape=(1, 3))>
+        """
+        return f"<BandMesh(vertices.shape={np.shape(self.vertices)}, triangles.shape={np.shape(self.triangles)})>"
+
     @staticmethod
     def concatenate(meshes: "list[BandMesh]") -> "BandMesh":
         """Join several band meshes into one."""
@@ -108,7 +118,7 @@ class BandMesh:
         )
 
 
-@dataclass(frozen=True, slots=True, eq=False)
+@dataclass(frozen=True, slots=True, eq=False, repr=False)
 class LaminaSet:
     """The isoluminance representation of one primitive.
 
@@ -127,6 +137,21 @@ class LaminaSet:
     families: tuple[ContourFamily, ...]
     bands: BandMesh
     view_dependent: bool = False
+
+    def __repr__(self) -> str:
+        """One line of counts (the laminae and bands can be millions of numbers).
+
+        Examples
+        --------
+        >>> from isocsg import PointLight, Sphere, build_laminae
+        >>> build_laminae(Sphere((0, 0, 0), 1), [PointLight((0, 0, 5))], contours=8)  # doctest: +ELLIPSIS
+        <LaminaSet(Sphere, 8 laminae, 1 families, ... band triangles, view-independent)>
+        """
+        kind = "view-dependent" if self.view_dependent else "view-independent"
+        return (
+            f"<LaminaSet({type(self.primitive).__name__}, {len(self.laminae)} laminae, {len(self.families)} families, "
+            f"{len(self.bands.triangles)} band triangles, {kind})>"
+        )
 
     def painter_order(self, eye: NDArray[np.float64]) -> list[int]:
         """Indices of ``laminae`` back to front as seen from ``eye`` (the paper's painter's order).

@@ -27,6 +27,7 @@ from __future__ import annotations
 import numpy as np
 from numpy.typing import NDArray
 
+from ..errors import InvalidGeometryError
 from ..geometry.primitives import Truncus
 from ..lighting.lights import DirectionalLight, PointLight
 from .families import diffuse_levels
@@ -111,14 +112,28 @@ def _slices(truncus: Truncus, light: Light) -> list[Truncus]:
     k = refinement(truncus.height, d, per_distance=4.0, cap=32)
     if k == 1:
         return [truncus]
+    while k > 1:
+        try:
+            return _sliced(truncus, k)
+        except InvalidGeometryError:
+            # Slices below the documented smallest lengths (a tiny or flat truncus
+            # far from the origin): fewer of them.
+            k //= 2
+    return [truncus]
+
+
+def _sliced(truncus: Truncus, k: int) -> list[Truncus]:
+    """``k`` trunci stacked along the axis, E1 first."""
     a = np.asarray(truncus.axis, dtype=np.float64)
     zs = np.linspace(0.5, -0.5, k + 1)
-    out = []
-    for z0, z1 in zip(zs[:-1], zs[1:]):
-        r0 = max(float(truncus.radius_at(z0 * truncus.height)), 0.0)
-        r1 = max(float(truncus.radius_at(z1 * truncus.height)), 0.0)
-        out.append(Truncus(truncus.center_array + 0.5 * (z0 + z1) * a, a * (z0 - z1), r0, r1))
-    return out
+    radii = np.maximum(truncus.radius_at(zs * truncus.height), 0.0)
+    # An apex stays an apex: the interpolation at an end of radius 0 may round to 1e-17.
+    radii[0] = truncus.r1 if truncus.r1 == 0.0 else radii[0]
+    radii[-1] = truncus.r2 if truncus.r2 == 0.0 else radii[-1]
+    return [
+        Truncus(truncus.center_array + 0.5 * (z0 + z1) * a, a * (z0 - z1), float(r0), float(r1))
+        for z0, z1, r0, r1 in zip(zs[:-1], zs[1:], radii[:-1], radii[1:])
+    ]
 
 
 def truncus_laminae(

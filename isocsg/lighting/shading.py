@@ -4,6 +4,12 @@
 with ``cos_i = max(0, n . l)`` and ``rf = 2 (n . l) n - l``. No shadows, no
 distance attenuation. This is the quantity that isoluminance laminae
 approximate band by band.
+
+The specular term jumps at the terminator (from 0 to ``ks max(0, -l . v)^s``),
+so a cosine of incidence within rounding of 0 must not switch it on: a point
+is lit where ``n . l > TERMINATOR_COSINE``. Otherwise a surface that lies on the
+terminator (a cylinder's side under a light along its axis) shows the
+highlight wherever rounding makes ``n . l`` positive.
 """
 
 from __future__ import annotations
@@ -17,7 +23,10 @@ from .._validation import normalize_rows, points_array, vector3
 from ..errors import InvalidParameterError
 from .lights import Light, Material
 
-__all__ = ["shade"]
+__all__ = ["TERMINATOR_COSINE", "shade"]
+
+#: Cosines of incidence at most this far above 0 are the terminator (rounding of unit vectors).
+TERMINATOR_COSINE = 1e-9
 
 
 def shade(
@@ -65,6 +74,6 @@ def shade(
         if m.ks > 0:
             rf = 2 * ndotl[:, None] * n - ldir
             spec = np.maximum(np.einsum("ij,ij->i", rf, v), 0.0) ** m.shininess
-            term = term + np.where(cos_i > 0, m.ks * spec, 0.0)
+            term = term + np.where(ndotl > TERMINATOR_COSINE, m.ks * spec, 0.0)
         out += light.intensity * term
     return out

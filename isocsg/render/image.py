@@ -7,9 +7,11 @@ with NaN where no object is hit. 8-bit images map [0, 1] to [0, 255]
 
 from __future__ import annotations
 
+import io
 import os
 import xml.etree.ElementTree as ET
 from collections.abc import Sequence
+from typing import BinaryIO
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -55,31 +57,48 @@ def to_uint8(image: ArrayLike) -> NDArray[np.uint8]:
     return out.astype(np.uint8)
 
 
-def save_png(path: str | os.PathLike[str], image: ArrayLike) -> None:
+def save_png(path: str | os.PathLike[str] | BinaryIO, image: ArrayLike) -> None:
     """Write an 8-bit grey PNG (see :func:`to_uint8`) with Pillow.
 
     Parameters
     ----------
-    path : str or path-like
+    path : str, path-like or binary file object
+        A file name, or an object with a ``write(bytes)`` method (an open
+        file, ``io.BytesIO``, ``sys.stdout.buffer``).
     image : array_like, shape (H, W)
 
     Raises
     ------
     InvalidParameterError
-        If ``image`` is not a 2-D numeric array.
+        If ``image`` is not a 2-D numeric array, or ``path`` is neither a path
+        nor a binary file object.
 
     Examples
     --------
-    >>> import os, tempfile
+    >>> import io, os, tempfile
     >>> from PIL import Image
     >>> p = os.path.join(tempfile.mkdtemp(), "a.png")
     >>> save_png(p, [[0.0, 1.0]])
     >>> np.asarray(Image.open(p)).tolist()
     [[0, 255]]
+    >>> buf = io.BytesIO()
+    >>> save_png(buf, [[0.0, 1.0]])
+    >>> buf.getvalue()[:8] == b"\\x89PNG\\r\\n\\x1a\\n"
+    True
     """
     from PIL import Image
 
-    Image.fromarray(to_uint8(image), mode="L").save(os.fspath(path), format="PNG")
+    pixels = Image.fromarray(to_uint8(image), mode="L")
+    if hasattr(path, "write"):
+        if isinstance(path, io.TextIOBase):
+            raise InvalidParameterError(f"path must be a path or a binary file object, got the text stream {path!r}")
+        pixels.save(path, format="PNG")
+        return
+    try:
+        target = os.fspath(path)  # type: ignore[arg-type]
+    except TypeError:
+        raise InvalidParameterError(f"path must be a path or a binary file object, got {type(path).__name__}") from None
+    pixels.save(target, format="PNG")
 
 
 def save_npy(path: str | os.PathLike[str], image: ArrayLike) -> None:

@@ -50,7 +50,7 @@ import tomllib
 from collections.abc import Callable, Mapping
 from importlib import resources
 from pathlib import Path
-from typing import Any
+from typing import Any, BinaryIO
 
 from .._validation import MAX_LIGHTS, MAX_SCENE_FILE_BYTES, show
 from ..camera import Camera
@@ -79,6 +79,7 @@ __all__ = [
     "LIGHT_KINDS",
     "MAX_SCENE_FILE_BYTES",
     "read_scene_file",
+    "read_scene_stream",
     "decode_scene_text",
 ]
 
@@ -471,15 +472,51 @@ def read_scene_file(path: str | os.PathLike[str]) -> tuple[str, str]:
             raise SceneFileError(f"{p}: cannot read the file: {exc.strerror or exc}") from None
     if len(data) > MAX_SCENE_FILE_BYTES:
         raise SceneFileError(f"{p}: the file is larger than the limit of {MAX_SCENE_FILE_BYTES} bytes")
+    return _decode(data, p), fmt
+
+
+def read_scene_stream(stream: BinaryIO, *, source: str = "<stdin>") -> tuple[str, str]:
+    """Read scene text from a binary stream (standard input); returns ``(text, format)``.
+
+    At most :data:`MAX_SCENE_FILE_BYTES` bytes of UTF-8 without NUL
+    characters, as for a file. With no file name to tell the format, the
+    text is JSON when its first character other than white space is ``{``,
+    TOML otherwise.
+
+    Raises
+    ------
+    SceneFileError
+        Naming ``source`` and what is wrong.
+
+    Examples
+    --------
+    >>> import io
+    >>> read_scene_stream(io.BytesIO(b' {"camera": {}}'))
+    (' {"camera": {}}', 'json')
+    """
+    try:
+        data = stream.read(MAX_SCENE_FILE_BYTES + 1)
+    except OSError as exc:
+        raise SceneFileError(f"{source}: cannot read: {exc.strerror or exc}") from None
+    if not isinstance(data, bytes):
+        raise SceneFileError(f"{source}: expected a binary stream, got {type(data).__name__} from it")
+    if len(data) > MAX_SCENE_FILE_BYTES:
+        raise SceneFileError(f"{source}: the input is larger than the limit of {MAX_SCENE_FILE_BYTES} bytes")
+    text = _decode(data, source)
+    return text, "json" if text.lstrip().startswith("{") else "toml"
+
+
+def _decode(data: bytes, source: object) -> str:
+    """UTF-8 text without NUL characters, or a :class:`SceneFileError` naming ``source``."""
     try:
         text = data.decode("utf-8")
     except UnicodeDecodeError as exc:
         raise SceneFileError(
-            f"{p}: not a UTF-8 text file (byte 0x{data[exc.start]:02x} at offset {exc.start}); scene files are UTF-8 TOML or JSON"
+            f"{source}: not a UTF-8 text file (byte 0x{data[exc.start]:02x} at offset {exc.start}); scene files are UTF-8 TOML or JSON"
         ) from None
     if "\x00" in text:
-        raise SceneFileError(f"{p}: not a text file (NUL byte at offset {text.index(chr(0))}); scene files are UTF-8 TOML or JSON")
-    return text, fmt
+        raise SceneFileError(f"{source}: not a text file (NUL byte at offset {text.index(chr(0))}); scene files are UTF-8 TOML or JSON")
+    return text
 
 
 def _check_regular(p: Path, st: os.stat_result) -> None:

@@ -87,6 +87,8 @@ PART_LATERAL, PART_CAP1, PART_CAP2 = 0, 1, 2
 #: Bounds of the surface id's fields (leaves per object, parts per leaf).
 _MAX_LEAVES = 1 << 24
 _MAX_PARTS = 1024
+#: Cosines of incidence within this of 0 lie on the terminator (rounding of unit vectors).
+TERMINATOR_COSINE = 1e-9
 
 
 # ----------------------------------------------------------------------------- rays
@@ -1007,8 +1009,10 @@ def shade_points(points: F64, normals: F64, eye: F64, lights: Sequence[Any], mat
         else:
             raise TypeError(f"unsupported light {type(light).__name__}")
         ndl = _dot(nrm, l)
-        lit = ndl > 0
-        term = material.kd * np.maximum(ndl, 0.0)
+        # The highlight jumps at the terminator: a cosine within rounding of 0 is not lit
+        # (a cylinder's side under a light along its axis has n . l = 0 exactly).
+        lit = ndl > TERMINATOR_COSINE
+        term = material.kd * np.where(lit, ndl, 0.0)
         if material.ks > 0:
             rf = 2 * ndl[:, None] * nrm - l
             spec = np.maximum(_dot(rf, v), 0.0) ** material.shininess
