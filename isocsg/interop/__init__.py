@@ -8,14 +8,7 @@ from __future__ import annotations
 
 from .bands import ShadedSurface, object_surface, scene_surfaces
 from .gltf import export_glb, save_gltf
+from .pyvista import to_pyvista
 
 __all__ = ["ShadedSurface", "object_surface", "scene_surfaces", "export_glb", "save_gltf", "to_pyvista"]
 
-
-def __getattr__(name: str) -> object:
-    # pyvista conversions load on first use (vtk is heavy).
-    if name == "to_pyvista":
-        from .pyvista import to_pyvista
-
-        return to_pyvista
-    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
