@@ -23,7 +23,9 @@ from .._validation import Vec3, integer, nonzero_vector3, vector3
 from ..errors import InvalidParameterError
 from ..geometry.primitives import DEFAULT_RESOLUTION
 
-__all__ = ["LuxGrid", "LuxMap", "IsoluxLine", "illuminance_map", "isolux_lines", "nice_levels", "save_luxmap_png"]
+__all__ = [
+    "LuxGrid", "LuxMap", "IsoluxLine", "illuminance_map", "isolux_lines", "nice_levels", "occluded_nodes", "save_luxmap_png",
+]
 
 ProgressCallback = Callable[[int, int], None]
 
@@ -218,19 +220,10 @@ def illuminance_map(
 
     if not isinstance(grid, LuxGrid):
         raise InvalidParameterError(f"grid must be a LuxGrid, got {type(grid).__name__}")
-    from ..geometry.primitives import Solid
-
     pts = grid.points()
     n = grid.normal
     E = np.empty((grid.ny, grid.nx))
-    solids = [occluders] if isinstance(occluders, Solid) else [o for o in occluders if isinstance(o, Solid)]
-    # A hair above the plane: a solid resting on the plane covers the nodes under it,
-    # while a floor slab whose top face holds the grid does not.
-    eps = 1e-7 * max(float(np.linalg.norm(grid.u)), float(np.linalg.norm(grid.v)))
-    probe = pts.reshape(-1, 3) + eps * n
-    occluded = np.zeros(len(probe), dtype=bool)
-    for solid in solids:
-        occluded |= solid.contains(probe, tol=0.0)
+    occluded = occluded_nodes(grid, occluders)
     step = max(1, 4096 // grid.nx)
     for j0 in range(0, grid.ny, step):
         j1 = min(grid.ny, j0 + step)
@@ -239,7 +232,32 @@ def illuminance_map(
         E[j0:j1] = illuminance(p, n, lights, occluders, resolution=resolution).reshape(j1 - j0, grid.nx)
         if progress is not None:
             progress(j1, grid.ny)
-    return LuxMap(grid, E, occluded.reshape(grid.ny, grid.nx))
+    return LuxMap(grid, E, occluded)
+
+
+def occluded_nodes(grid: LuxGrid, occluders: Sequence[Any] | Any = ()) -> NDArray[np.bool_]:
+    """Nodes of the grid inside a solid occluder, shape (ny, nx).
+
+    Each node is tested a hair (1e-7 of the grid's size) above the plane, on
+    the side the receivers face: a solid resting on the plane covers the
+    nodes under it, while a floor slab whose top face holds the grid does not.
+
+    Examples
+    --------
+    >>> from isocsg import Box
+    >>> g = LuxGrid.from_bounds(-1, -1, 1, 1, 0, 5, 5)
+    >>> occluded_nodes(g, [Box((0, 0, -0.5), (4, 4, 1)), Box((0, 0, 0.5), (0.6, 0.6, 1))]).sum()
+    np.int64(1)
+    """
+    from ..geometry.primitives import Solid
+
+    solids = [occluders] if isinstance(occluders, Solid) else [o for o in occluders if isinstance(o, Solid)]
+    eps = 1e-7 * max(float(np.linalg.norm(grid.u)), float(np.linalg.norm(grid.v)))
+    probe = grid.points().reshape(-1, 3) + eps * grid.normal
+    out = np.zeros(len(probe), dtype=bool)
+    for solid in solids:
+        out |= solid.contains(probe, tol=0.0)
+    return out.reshape(grid.ny, grid.nx)
 
 
 def nice_levels(E: ArrayLike, count: int = 8) -> NDArray[np.float64]:
