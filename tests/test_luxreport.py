@@ -188,7 +188,7 @@ def test_figure_has_a_lux_colour_bar_labelled_isolux_and_metres(tmp_path, luxmap
     labels = {t.get_text() for t in ax.texts}
     assert {"25", "50", "100"} <= labels
     s = lux_statistics(luxmap, area)
-    assert any(f"U0 {s.u0:.2f}" in t for t in labels)
+    assert f"Emin {s.e_min:.4g} lx" in ax.get_title() and f"U0 {s.u0:.2f}" in ax.get_title()
     out = save_luxmap_figure(tmp_path / "lux.png", luxmap, levels=4)
     assert out.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
     import matplotlib.pyplot as plt

@@ -4,7 +4,7 @@ matplotlib is optional (``pip install 'isocsg[plot]'``) and imported when a
 figure is drawn. The isolux lines are :func:`isocsg.shadows.luxmap.isolux_lines`
 (the same lines as the PNG map and the API), labelled with their value in lux;
 nodes inside occluders are shown hatched-grey and left out of the statistics
-printed under the map (:func:`isocsg.shadows.luxstats.lux_statistics`).
+written above the map (:func:`isocsg.shadows.luxstats.lux_statistics`).
 """
 
 from __future__ import annotations
@@ -77,7 +77,7 @@ def plot_luxmap(
     cmap : str, keyword-only, default "magma"
     title : str, keyword-only, optional
     stats : bool, keyword-only, default True
-        Write Emin, Eavg, Emax and U0 under the map.
+        Write Emin, Eavg, Emax and U0 in the title.
 
     Returns
     -------
@@ -93,18 +93,24 @@ def plot_luxmap(
     if not isinstance(luxmap, LuxMap):
         raise InvalidParameterError(f"luxmap must be a LuxMap, got {type(luxmap).__name__}")
     plt = _pyplot()
+    xs, ys, xlabel, ylabel = plane_axes(luxmap)
     if ax is None:
-        fig, ax = plt.subplots(figsize=(6.4, 5.2), layout="constrained")
+        # a figure of the map's aspect, room for the colour bar and the labels
+        w = 6.4
+        h = min(9.0, max(2.4, (w - 1.6) * (ys[-1] - ys[0]) / max(xs[-1] - xs[0], 1e-12) + 1.4))
+        fig, ax = plt.subplots(figsize=(w, h))
     else:
         fig = ax.figure
-    xs, ys, xlabel, ylabel = plane_axes(luxmap)
     occ = np.asarray(luxmap.occluded, dtype=bool)
     E = np.ma.array(luxmap.E, mask=occ | ~np.isfinite(luxmap.E))
     colours = plt.get_cmap(cmap).with_extremes(bad="0.75")
     mesh = ax.pcolormesh(xs, ys, E, shading="gouraud" if E.mask.sum() == 0 else "nearest", cmap=colours, vmin=0.0)
     if occ.any():
         ax.contourf(xs, ys, occ.astype(float), levels=[0.5, 1.5], colors="none", hatches=["///"])
-    bar = fig.colorbar(mesh, ax=ax)
+    from mpl_toolkits.axes_grid1 import make_axes_locatable
+
+    # the colour bar as tall as the map
+    bar = fig.colorbar(mesh, cax=make_axes_locatable(ax).append_axes("right", size="4%", pad=0.1))
     bar.set_label("illuminance E (lx)")
     # Isolux lines in node units (i, j) mapped to the axes' metres.
     dx = (xs[-1] - xs[0]) / (len(xs) - 1)
@@ -130,14 +136,13 @@ def plot_luxmap(
     ax.set_xlabel(xlabel)
     ax.set_ylabel(ylabel)
     ax.set_aspect("equal")
-    if title is not None:
-        ax.set_title(title)
+    lines = [] if title is None else [title]
     if stats:
         s = lux_statistics(luxmap, area)
-        ax.text(
-            0.0, -0.13, f"Emin {s.e_min:.4g} lx   Eavg {s.e_avg:.4g} lx   Emax {s.e_max:.4g} lx   U0 {s.u0:.2f}",
-            transform=ax.transAxes, fontsize=9, va="top",
-        )
+        where = "task area" if area is not None else "grid"
+        lines.append(f"{where}: Emin {s.e_min:.4g} lx   Eavg {s.e_avg:.4g} lx   Emax {s.e_max:.4g} lx   U0 {s.u0:.2f}")
+    if lines:
+        ax.set_title("\n".join(lines), fontsize=9)
     return fig
 
 
@@ -154,6 +159,6 @@ def save_luxmap_figure(path: str | os.PathLike[str], luxmap: LuxMap, *, dpi: int
     plt = _pyplot()
     fig = plot_luxmap(luxmap, **kwargs)
     p = Path(path)
-    fig.savefig(p, dpi=dpi)
+    fig.savefig(p, dpi=dpi, bbox_inches="tight")
     plt.close(fig)
     return p
