@@ -134,6 +134,8 @@ def gltf_document(item: Any, *, contours: int | None = None) -> tuple[dict[str, 
     meshes, nodes = [], []
     for s in surfaces:
         t = np.asarray(s.triangles, dtype=np.int64)
+        if len(t) == 0:  # nothing to draw (glTF accessors need at least one element)
+            continue
         # One vertex per triangle corner: colours cannot blend across triangles.
         pos = np.asarray(s.vertices, dtype=np.float64)[t.reshape(-1)].astype(np.float32)
         value = np.repeat(np.asarray(s.value, dtype=np.float64), 3)

@@ -105,7 +105,7 @@ def to_pyvista(
     *,
     lights: Any = None,
     material: Any = None,
-    contours: int = 64,
+    contours: int | None = None,
     eye: ArrayLike | None = None,
     bounds: ArrayLike | None = None,
     resolution: int = 64,
@@ -138,7 +138,8 @@ def to_pyvista(
           data ``illuminance_lx``; a :class:`~isocsg.shadows.luxmap.LuxGrid`:
           the grid's nodes.
     lights, material, contours, eye : keyword-only
-        For solids: how the bands are built (see :func:`isocsg.build_laminae`).
+        For solids: how the bands are built (see :func:`isocsg.build_laminae`;
+        ``contours`` defaults to 64, for a scene to ``scene.render.contours``).
     bounds : array_like, shape (2, 3), keyword-only
         The box a shadow volume (possibly unbounded) is clipped to.
     resolution : int, keyword-only, default 64
@@ -196,13 +197,13 @@ def to_pyvista(
         return mesh
     if isinstance(obj, Scene):
         block = pv.MultiBlock()
-        for s in scene_surfaces(obj, contours=contours if contours != 64 else None):
+        for s in scene_surfaces(obj, contours=contours):
             block[s.name] = to_pyvista(s)
         return block
     if isinstance(obj, Solid):
         if lights is None:
             return pv.wrap(obj.to_trimesh(resolution))
-        return to_pyvista(object_surface(obj, lights, material, contours, eye=eye))
+        return to_pyvista(object_surface(obj, lights, material, 64 if contours is None else contours, eye=eye))
     if isinstance(obj, ShadowVolumes):
         b = _bounds(bounds, "shadow volume")
         block = pv.MultiBlock()
