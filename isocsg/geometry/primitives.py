@@ -98,11 +98,11 @@ class Solid:
 
         return mimebundle(self, include, exclude)
 
-    def _repr_png_(self) -> bytes:
+    def _repr_png_(self) -> bytes | None:
         """A small PNG image of the object (see :mod:`isocsg.interop.notebook`)."""
         from ..interop.notebook import mimebundle
 
-        return mimebundle(self, ("image/png",))["image/png"]
+        return mimebundle(self, ("image/png",)).get("image/png")
 
     # Subclasses override these.
     def contains(self, points: ArrayLike) -> NDArray[np.bool_]:  # pragma: no cover

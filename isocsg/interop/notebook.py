@@ -166,16 +166,20 @@ def mimebundle(obj: Any, include: Any = None, exclude: Any = None) -> dict[str, 
 
     out: dict[str, Any] = {"text/plain": repr(obj)}
     want = (lambda m: (include is None or m in include) and (exclude is None or m not in exclude))
-    if isinstance(obj, Solid):
-        if want("image/png"):
-            out["image/png"] = solid_png(obj)
-    elif isinstance(obj, Scene):
-        if want("image/svg+xml"):
-            svg = scene_svg(obj)
-            if svg is not None:
-                out["image/svg+xml"] = svg
-        if want("image/png"):
-            out["image/png"] = scene_png(obj)
-    elif want("image/png"):
-        out["image/png"] = png_bytes(getattr(obj, "display", obj.image))
+    # A picture that cannot be made (a scene outside the limits, say) leaves the text repr alone.
+    try:
+        if isinstance(obj, Solid):
+            if want("image/png"):
+                out["image/png"] = solid_png(obj)
+        elif isinstance(obj, Scene):
+            if want("image/svg+xml"):
+                svg = scene_svg(obj)
+                if svg is not None:
+                    out["image/svg+xml"] = svg
+            if want("image/png"):
+                out["image/png"] = scene_png(obj)
+        elif want("image/png"):
+            out["image/png"] = png_bytes(getattr(obj, "display", obj.image))
+    except IsocsgError:
+        pass
     return out

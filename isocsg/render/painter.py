@@ -139,11 +139,11 @@ class RenderResult:
 
         return mimebundle(self, include, exclude)
 
-    def _repr_png_(self) -> bytes:
+    def _repr_png_(self) -> bytes | None:
         """A small PNG image of the object (see :mod:`isocsg.interop.notebook`)."""
         from ..interop.notebook import mimebundle
 
-        return mimebundle(self, ("image/png",))["image/png"]
+        return mimebundle(self, ("image/png",)).get("image/png")
 
     @property
     def depth(self) -> NDArray[np.float64]:

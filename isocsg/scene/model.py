@@ -108,11 +108,11 @@ class Scene:
 
         return mimebundle(self, include, exclude)
 
-    def _repr_png_(self) -> bytes:
+    def _repr_png_(self) -> bytes | None:
         """A small PNG image of the object (see :mod:`isocsg.interop.notebook`)."""
         from ..interop.notebook import mimebundle
 
-        return mimebundle(self, ("image/png",))["image/png"]
+        return mimebundle(self, ("image/png",)).get("image/png")
 
     def __post_init__(self) -> None:
         if not isinstance(self.camera, Camera):

@@ -223,13 +223,15 @@ def illuminance_map(
     pts = grid.points()
     n = grid.normal
     E = np.empty((grid.ny, grid.nx))
-    occluded = occluded_nodes(grid, occluders)
+    occluded = np.zeros((grid.ny, grid.nx), dtype=bool)
+    solids, eps = _probe(grid, occluders)
     step = max(1, 4096 // grid.nx)
     for j0 in range(0, grid.ny, step):
         j1 = min(grid.ny, j0 + step)
         # a solid whose face holds the grid lies behind the receiving plane: it casts nothing on it
         p = pts[j0:j1].reshape(-1, 3)
         E[j0:j1] = illuminance(p, n, lights, occluders, resolution=resolution).reshape(j1 - j0, grid.nx)
+        occluded[j0:j1] = _inside(p + eps * n, solids).reshape(j1 - j0, grid.nx)
         if progress is not None:
             progress(j1, grid.ny)
     return LuxMap(grid, E, occluded)
@@ -249,15 +251,23 @@ def occluded_nodes(grid: LuxGrid, occluders: Sequence[Any] | Any = ()) -> NDArra
     >>> occluded_nodes(g, [Box((0, 0, -0.5), (4, 4, 1)), Box((0, 0, 0.5), (0.6, 0.6, 1))]).sum()
     np.int64(1)
     """
+    solids, eps = _probe(grid, occluders)
+    return _inside(grid.points().reshape(-1, 3) + eps * grid.normal, solids).reshape(grid.ny, grid.nx)
+
+
+def _probe(grid: LuxGrid, occluders: Any) -> tuple[list[Any], float]:
+    """The solid occluders and the height above the plane at which nodes are tested."""
     from ..geometry.primitives import Solid
 
     solids = [occluders] if isinstance(occluders, Solid) else [o for o in occluders if isinstance(o, Solid)]
-    eps = 1e-7 * max(float(np.linalg.norm(grid.u)), float(np.linalg.norm(grid.v)))
-    probe = grid.points().reshape(-1, 3) + eps * grid.normal
-    out = np.zeros(len(probe), dtype=bool)
+    return solids, 1e-7 * max(float(np.linalg.norm(grid.u)), float(np.linalg.norm(grid.v)))
+
+
+def _inside(points: NDArray[np.float64], solids: list[Any]) -> NDArray[np.bool_]:
+    out = np.zeros(len(points), dtype=bool)
     for solid in solids:
-        out |= solid.contains(probe, tol=0.0)
-    return out.reshape(grid.ny, grid.nx)
+        out |= solid.contains(points, tol=0.0)
+    return out
 
 
 def nice_levels(E: ArrayLike, count: int = 8) -> NDArray[np.float64]:
