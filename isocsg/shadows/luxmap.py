@@ -308,8 +308,10 @@ def isolux_lines(E: ArrayLike, levels: ArrayLike) -> list[list[tuple[NDArray[np.
 
     Cells are split by linear interpolation along their edges; a saddle cell
     is resolved by the average of its four corners. Lines are contourpy's
-    ``serial`` algorithm without corner masking, the same lines (to rounding)
-    as a plain marching-squares tracer.
+    ``serial`` algorithm without corner masking: the same points, to 1e-12,
+    as a plain marching-squares tracer (where a line runs through a node
+    lying exactly on the level, the two may split it into polylines
+    differently there; the segments are the same).
 
     Parameters
     ----------
