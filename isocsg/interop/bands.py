@@ -100,6 +100,9 @@ def object_surface(
         If no point or directional light is given.
     InvalidParameterError
         If ``shape`` is not a solid.
+    InvalidGeometryError, ResourceLimitError
+        From :func:`isocsg.csg.surface.surface_from_bands`, for a CSG tree
+        whose bands do not close or whose surface exceeds the memory budget.
 
     Examples
     --------
