@@ -172,6 +172,24 @@ def test_from_flux_follows_the_inverse_square_law():
         AreaLight.from_flux(LAMP, -1.0)
 
 
+def test_scene_files_take_flux_or_radiance():
+    from isocsg import SceneFileError
+    from isocsg.scene.io import scene_from_dict
+
+    doc = {
+        "camera": {"eye": [0, -5, 2], "target": [0, 0, 0]},
+        "objects": [{"shape": {"sphere": {"center": [0, 0, 0], "radius": 1}}}],
+        "lights": [{"kind": "area", "vertices": [[0, 0, 3], [0, 2, 3], [2, 2, 3], [2, 0, 3]], "flux": 3000.0}],
+    }
+    assert scene_from_dict(doc).lights[0].radiance == pytest.approx(3000.0 / (math.pi * 4.0), rel=1e-12)
+    doc["lights"][0]["flux"] = -1
+    with pytest.raises(SceneFileError, match=re.escape("lights[0].flux: must be >= 0, got -1")):
+        scene_from_dict(doc)
+    doc["lights"][0].update(flux=10.0, radiance=2.0)
+    with pytest.raises(SceneFileError, match=re.escape("lights[0]: give radiance (cd/m^2) or flux (lm), not both")):
+        scene_from_dict(doc)
+
+
 # ----------------------------------------------------------------------------- figures
 
 
