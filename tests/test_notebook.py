@@ -70,3 +70,14 @@ def test_render_result_png_is_its_image() -> None:
     cam = Camera((0, -5, 1), (0, 0, 0), width=40, height=30)
     result = render(Scene(cam, [PointLight((2, -3, 4))], [Sphere((0, 0, 0), 1)]))
     np.testing.assert_array_equal(_decode(result._repr_png_()), to_uint8(result.image))
+
+
+def test_halftone_result_png_is_its_display_image() -> None:
+    from isocsg.shadows import AreaLight
+    from isocsg.shadows.halftone import render_halftone
+
+    lamp = AreaLight([(-0.5, -0.5, 3), (-0.5, 0.5, 3), (0.5, 0.5, 3), (0.5, -0.5, 3)], radiance=1.0)
+    scene = Scene(Camera((0, -5, 3), (0, 0, 0), width=24, height=16), [lamp],
+                  [Box((0, 0, -0.05), (4, 4, 0.1)), Box((0, 0, 0.5), (0.5, 0.5, 1))], RenderSettings(mode="halftone"))
+    result = render_halftone(scene)
+    np.testing.assert_array_equal(_decode(result._repr_png_()), to_uint8(result.display))
