@@ -28,6 +28,8 @@ from .render.image import save_npy, save_png
 from .scene import load_scene, save_scene
 from .shadows import AreaLight, PolyhedronLight, illuminance, illuminance_and_state, shadow_state
 from .view import show
+from .batch import illuminance_grid, render_views, turntable
+from .interop import ShadedSurface, export_glb, object_surface, save_gltf, scene_surfaces, to_pyvista
 
 __version__ = "0.1.0"
 
@@ -43,6 +45,8 @@ __all__ = [
     "section", "volume", "to_manifold", "to_trimesh", "clip_laminae",
     "build_laminae", "Lamina", "LaminaSet", "BandMesh",
     "render", "Renderer", "RenderResult", "save_png", "save_npy", "show",
+    "render_views", "turntable", "illuminance_grid",
+    "ShadedSurface", "object_surface", "scene_surfaces", "export_glb", "save_gltf", "to_pyvista",
     "load_scene", "save_scene",
     "AreaLight", "PolyhedronLight", "illuminance", "shadow_state", "illuminance_and_state",
 ]

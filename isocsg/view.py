@@ -11,16 +11,18 @@ from collections.abc import Callable, Sequence
 from typing import Any
 
 import numpy as np
-from numpy.typing import NDArray
 
 from .camera import Camera
-from .csg.tree import leaves
-from .errors import InvalidParameterError, MissingDependencyError
+from .csg.tree import CSGNode
+from .errors import InvalidParameterError
 from .geometry.primitives import Solid
 from .lighting.lights import Material
 from .scene.model import SceneObject
 
-__all__ = ["show"]
+__all__ = ["show", "BACKGROUND"]
+
+#: Background colour of :func:`show`'s plotters (a dark blue, told apart from any grey band).
+BACKGROUND = (32, 32, 64)
 
 
 def _objects(objects: Any) -> list[SceneObject]:
@@ -42,18 +44,21 @@ def show(
     *,
     contours: int = 64,
     camera: Camera | None = None,
+    plotter: Any = None,
     off_screen: bool = False,
     screenshot: str | os.PathLike[str] | None = None,
     window_size: tuple[int, int] = (800, 600),
     show_edges: bool = False,
     build_laminae: Callable[..., Any] | None = None,
-) -> NDArray[np.uint8] | None:
-    """Show the surface bands of each primitive, coloured by their intensity.
+) -> Any:
+    """Show the surface bands of each object, coloured by their intensity.
 
-    Every band triangle is drawn flat with its ``value_out`` as a grey level
+    Every band triangle is drawn flat with its value as a grey level
     (0 black, 1 white) and no extra lighting, so the view shows the
-    isoluminance contours themselves. Primitives of a CSG tree are shown
-    whole (the Boolean result is resolved by :func:`isocsg.render.render`).
+    isoluminance contours themselves. A CSG tree is drawn as its Boolean
+    result: the leaves' bands clipped in 3D
+    (:func:`isocsg.csg.surface.surface_from_bands`), so a subtracted hole is a
+    hole and the inside of a cut shows the reversed-normal values.
 
     Parameters
     ----------
@@ -65,11 +70,16 @@ def show(
         Initial view (eye, target, up, vertical field of view); also the eye of
         view-dependent (specular) bands. Defaults to pyvista's automatic view
         and an eye at the scene's bounding box corner.
+    plotter : pyvista.Plotter, optional
+        Add the meshes to this plotter (and set its camera if ``camera`` is
+        given) without showing it: the caller composes the view and shows it.
     off_screen : bool, default False
-        Render without a window and return the image.
+        For a new plotter: render without a window (nothing is shown; read
+        the image with ``plotter.screenshot()``).
     screenshot : str or path-like, optional
-        Also save the rendered image as PNG.
+        Save the rendered image as PNG.
     window_size : (int, int), default (800, 600)
+        For a new plotter.
     show_edges : bool, default False
         Draw the band triangles' edges.
     build_laminae : callable, optional
@@ -77,8 +87,9 @@ def show(
 
     Returns
     -------
-    ndarray of uint8, shape (h, w, 3), or None
-        The rendered image when ``off_screen`` is true.
+    pyvista.Plotter
+        The plotter (the given one, or a new one: shown in a window unless
+        ``off_screen``, and not closed, so that it can still be read).
 
     Raises
     ------
@@ -90,12 +101,13 @@ def show(
     Examples
     --------
     >>> from isocsg import PointLight, Sphere
-    >>> img = show(Sphere((0, 0, 0), 1), [PointLight((3, -3, 5))], off_screen=True)  # doctest: +SKIP
+    >>> p = show(Sphere((0, 0, 0), 1), [PointLight((3, -3, 5))], off_screen=True)  # doctest: +SKIP
+    >>> image = p.screenshot()  # doctest: +SKIP
     """
-    try:
-        import pyvista as pv
-    except ImportError as exc:
-        raise MissingDependencyError("isocsg.show needs pyvista; install the extra: pip install 'isocsg[view]'") from exc
+    from .csg.surface import surface_from_bands
+    from .interop.pyvista import import_pyvista, to_pyvista
+
+    pv = import_pyvista()
     objs = _objects(objects)
     if build_laminae is None:
         from .laminae import build_laminae as build
@@ -107,23 +119,38 @@ def show(
         lo = np.min([o.shape.bounds[0] for o in objs], axis=0) if objs else np.zeros(3)
         hi = np.max([o.shape.bounds[1] for o in objs], axis=0) if objs else np.ones(3)
         eye = tuple(float(x) for x in hi + 2.0 * (hi - lo))
-    plotter = pv.Plotter(off_screen=off_screen, window_size=list(window_size))
-    plotter.set_background("#202040")
+    given = plotter is not None
+    if not given:
+        plotter = pv.Plotter(off_screen=off_screen, window_size=list(window_size))
+        plotter.set_background([c / 255 for c in BACKGROUND])
+
+    def bands_of(prim: Any, material: Material) -> Any:
+        res = build(prim, tuple(lights), material, contours, eye=eye)
+        return getattr(res, "bands", res)
+
     for obj in objs:
         material = obj.material if isinstance(obj.material, Material) else Material()
-        for prim in leaves(obj.shape):
-            res = build(prim, tuple(lights), material, contours, eye=eye)
-            bands = getattr(res, "bands", res)
-            tris = np.asarray(bands.triangles, dtype=np.int64)
-            faces = np.column_stack([np.full(len(tris), 3), tris]).ravel()
-            mesh = pv.PolyData(np.asarray(bands.vertices, dtype=np.float64), faces)
-            mesh.cell_data["intensity"] = np.clip(np.asarray(bands.value_out, dtype=np.float64), 0.0, 1.0)
-            plotter.add_mesh(
-                mesh, scalars="intensity", cmap="gray", clim=(0.0, 1.0), lighting=False,
-                show_edges=show_edges, show_scalar_bar=False,
-            )
+        if isinstance(obj.shape, CSGNode):
+            program = obj.shape.program()
+            mesh = to_pyvista(surface_from_bands(program, [bands_of(p, material) for p in program.leaves]))
+        else:
+            mesh = to_pyvista(bands_of(obj.shape, material))
+        if mesh.n_cells == 0:
+            continue
+        mesh.cell_data["intensity"] = np.clip(mesh.cell_data["intensity"], 0.0, 1.0)
+        plotter.add_mesh(
+            mesh, scalars="intensity", cmap="gray", clim=(0.0, 1.0), lighting=False,
+            show_edges=show_edges, show_scalar_bar=False,
+        )
     if camera is not None:
         plotter.camera_position = [camera.eye, camera.target, camera.up]
         plotter.camera.view_angle = camera.fov
-    out = plotter.show(screenshot=None if screenshot is None else os.fspath(screenshot), return_img=off_screen)
-    return np.asarray(out) if off_screen else None
+    if given:
+        return plotter
+    if off_screen:
+        plotter.render()
+        if screenshot is not None:
+            plotter.screenshot(os.fspath(screenshot))
+        return plotter
+    plotter.show(screenshot=None if screenshot is None else os.fspath(screenshot), auto_close=False)
+    return plotter

@@ -102,7 +102,7 @@ def test_no_command_prints_help_and_fails(capsys: pytest.CaptureFixture[str]) ->
         (["frobnicate"], "isocsg: error: argument COMMAND: invalid choice: 'frobnicate'"),
         (["render", "missing.toml", "-o", "x.png"],
          "isocsg render: error: missing.toml: cannot read the file: No such file or directory"),
-        (["render", "s.toml", "-o", "x.jpg"], "isocsg render: error: output file 'x.jpg' must end in .png"),
+        (["render", "s.toml", "-o", "x.jpg"], "isocsg render: error: output file 'x.jpg' must end in .png, .glb or .gltf"),
         (["render", "s.toml", "-o", "x.png", "--npy", "x.bin"], "isocsg render: error: output file 'x.bin' must end in .npy"),
         (["demo", "-o", "demo.gif"], "isocsg demo: error: output file 'demo.gif' must end in .png"),
     ],

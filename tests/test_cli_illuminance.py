@@ -64,7 +64,7 @@ def test_default_grid_is_the_floor_top(tmp_path, capsys):
     with Image.open(png) as im:
         assert im.size == (21 * 4, 16 * 4)
     out = capsys.readouterr().out
-    assert f"wrote {png}" in out and f"wrote {npy}" in out and "E min" in out
+    assert f"wrote {png}" in out and f"wrote {npy}" in out and "Emin" in out and "U0" in out
 
 
 def test_scene_table_and_command_line_plane(tmp_path):
@@ -117,7 +117,7 @@ def test_bad_input_exits_2_with_one_line(tmp_path, capsys, extra, doc_patch, mes
 def test_bad_outputs_and_missing_file(tmp_path, capsys):
     scene = _write(tmp_path)
     assert main(["illuminance", str(scene), "-o", str(tmp_path / "x.jpg")]) == 2
-    assert "must end in .png" in capsys.readouterr().err
+    assert "must end in .png or .csv" in capsys.readouterr().err
     assert main(["illuminance", str(tmp_path / "nope.toml"), "-o", str(tmp_path / "x.png")]) == 2
     assert "cannot read the file" in capsys.readouterr().err
 

@@ -441,7 +441,7 @@ def test_errors_have_no_chained_traceback() -> None:
         ({"kind": "area", "vertices": [[0, 0, 3], [1, 0, 3], [2, 0, 3]]}, "lights[0].vertices: are collinear: the polygon has zero area"),
         ({"kind": "area", "vertices": [[0, 0, 3], [0, 1, 3], [1, 1, 3]], "radiance": -1}, "lights[0].radiance: must be >= 0, got -1"),
         ({"kind": "area", "vertices": [[0, 0, 3], [0, 1, 3]]}, "lights[0].vertices: needs at least 3 rows, got 2"),
-        ({"kind": "area", "position": [0, 0, 3]}, "lights[0]: unknown key 'position' (expected kind, vertices, radiance)"),
+        ({"kind": "area", "position": [0, 0, 3]}, "lights[0]: unknown key 'position' (expected kind, vertices, radiance, flux)"),
         ({"kind": "polyhedron", "vertices": [[0, 0, 0], [1, 0, 0], [0, 1, 0], [1, 1, 0]]},
          "lights[0].vertices: are coplanar or degenerate: their hull has no volume"),
     ],

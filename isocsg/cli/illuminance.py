@@ -34,13 +34,18 @@ from ..scene.io import decode_scene_text, read_scene_file, read_scene_stream, sc
 from ..scene.model import Scene
 from ..shadows.lights import AreaLight, PolyhedronLight
 from ..shadows.luxmap import LuxGrid, illuminance_map, save_luxmap_png
+from ..shadows.luxstats import lux_statistics, save_luxmap_csv
 
 __all__ = ["register", "run", "load_scene_and_grid", "floor_grid"]
 
 DESCRIPTION = """\
-Compute the illuminance E on a grid over a plane (exact soft shadows from the
-scene's area and polyhedron lights, the objects occluding) and write a PNG map
-with isolux lines, and optionally the float64 array E (ny, nx) as .npy.
+Compute the illuminance E in lux on a grid over a plane (exact soft shadows
+from the scene's area and polyhedron lights, radiance in cd/m^2, the objects
+occluding; direct light only, black occluders) and write a PNG map with isolux
+lines (or, for -o GRID.csv, the grid as CSV), and optionally the float64 array
+E (ny, nx) as .npy, the grid as CSV and a report figure. Prints Emin, Eavg, Emax
+and the uniformity U0 = Emin / Eavg over the grid (or --area), leaving out the
+nodes inside occluders.
 Default plane: the scene's [illuminance] table, else the top of its floor.
 """
 
@@ -57,8 +62,17 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
     """Add the ``illuminance`` sub-command."""
     p = subparsers.add_parser("illuminance", help="illuminance map with isolux lines", description=DESCRIPTION)
     p.add_argument("scene", metavar="SCENE", help="scene file, .toml or .json, or - to read it from standard input")
-    p.add_argument("-o", "--output", required=True, metavar="MAP.png", help="PNG map to write")
+    p.add_argument("-o", "--output", required=True, metavar="MAP.png", help="PNG map to write, or GRID.csv for the grid as CSV")
     p.add_argument("--npy", metavar="E.npy", help="also write E (ny, nx) as .npy")
+    p.add_argument("--csv", metavar="GRID.csv", help="also write the grid as CSV (i, j, x_m, y_m, z_m, E_lx, occluded)")
+    p.add_argument(
+        "--figure", metavar="FIG.png",
+        help="also draw a report figure (.png, .pdf or .svg; colour bar in lux, labelled isolux lines; needs matplotlib)",
+    )
+    p.add_argument(
+        "--area", nargs=4, type=float, metavar=("X0", "Y0", "X1", "Y1"),
+        help="task area for the statistics: the rectangle [X0, X1] x [Y0, Y1] on a horizontal grid (default: the grid)",
+    )
     p.add_argument("--grid", nargs=2, type=int, metavar=("NX", "NY"), help="grid nodes along u and v (default 64 64)")
     p.add_argument("--origin", nargs=3, type=float, metavar=("X", "Y", "Z"), help="corner of the grid")
     p.add_argument("--u", nargs=3, type=float, metavar=("UX", "UY", "UZ"), help="first edge vector of the grid")
@@ -186,7 +200,16 @@ def run(args: argparse.Namespace) -> int:
     from ._common import check_outputs, progress_bar
 
     out = Path(args.output)
-    check_outputs(args.output, args.npy)
+    as_csv = out.suffix.lower() == ".csv"
+    if out.suffix.lower() not in (".png", ".csv"):
+        raise InvalidParameterError(f"output file {str(args.output)!r} must end in .png or .csv")
+    check_outputs(None if as_csv else args.output, args.npy)
+    for flag, path, suffixes in (("--csv", args.csv, (".csv",)), ("--figure", args.figure, (".png", ".pdf", ".svg"))):
+        if path is not None and Path(path).suffix.lower() not in suffixes:
+            raise InvalidParameterError(f"{flag} {str(path)!r} must end in {' or '.join(suffixes)}")
+    for path in (out, args.csv, args.figure):
+        if path is not None and Path(path).is_dir():
+            raise InvalidParameterError(f"output file {str(path)!r} is a directory")
     given = [args.origin is not None, args.u is not None, args.v is not None]
     if any(given) and not all(given):
         raise InvalidParameterError("--origin, --u and --v must be given together")
@@ -211,13 +234,31 @@ def run(args: argparse.Namespace) -> int:
     levels: Any = args.levels if args.levels is not None else (table or {}).get("levels", 8)
     with progress_bar("illuminance", enabled=not args.no_progress) as progress:
         m = illuminance_map(grid, lights, [o.shape for o in scene.objects], resolution=res, progress=progress)
+    area = None
+    if args.area is not None:
+        x0, y0, x1, y1 = args.area
+        z = grid.origin[2]
+        area = [(x0, y0, z), (x1, y0, z), (x1, y1, z), (x0, y1, z)]
+    stats = lux_statistics(m, area)  # checks the area before anything is written
+    if args.figure is not None:
+        from ..shadows.luxplot import save_luxmap_figure
+
+        save_luxmap_figure(args.figure, m, levels=levels, area=area)  # matplotlib missing: fails before writing
     out.parent.mkdir(parents=True, exist_ok=True)
-    save_luxmap_png(out, m, levels=levels)
+    if as_csv:
+        save_luxmap_csv(out, m)
+    else:
+        save_luxmap_png(out, m, levels=levels)
     print(f"wrote {out}")
     if args.npy is not None:
         npy = Path(args.npy)
         npy.parent.mkdir(parents=True, exist_ok=True)
         np.save(npy, m.E, allow_pickle=False)
         print(f"wrote {npy}")
-    print(f"E min {m.E.min():.6g}  mean {m.E.mean():.6g}  max {m.E.max():.6g}")
+    if args.csv is not None:
+        Path(args.csv).parent.mkdir(parents=True, exist_ok=True)
+        print(f"wrote {save_luxmap_csv(args.csv, m)}")
+    if args.figure is not None:
+        print(f"wrote {args.figure}")
+    print(stats.summary())
     return 0

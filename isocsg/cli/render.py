@@ -24,14 +24,22 @@ DESCRIPTION = """\
 Render a scene file (.toml or .json) to a PNG image (and optionally .npy and .svg). The scene's render.mode
 chooses the method: "isoluminance" (contour bands, point and directional lights)
 or "halftone" (exact illuminance and soft shadows from area and polyhedron lights).
+An output ending in .glb or .gltf writes the shaded bands as a 3D glTF model instead
+(flat unlit colours, one per band; CSG objects as their Boolean result).
 """
+
+#: Output extensions that write a glTF model instead of an image.
+GLTF_SUFFIXES = (".glb", ".gltf")
 
 
 def register(subparsers: Any) -> argparse.ArgumentParser:
     """Add the ``render`` sub-command."""
     p = subparsers.add_parser("render", help="render a scene file to PNG", description=DESCRIPTION)
     p.add_argument("scene", metavar="SCENE", help="scene file, .toml or .json, or - to read it from standard input")
-    p.add_argument("-o", "--output", required=True, metavar="OUT.png", help="PNG file to write")
+    p.add_argument(
+        "-o", "--output", required=True, metavar="OUT.png",
+        help="PNG file to write; .glb or .gltf: the shaded bands as a glTF model",
+    )
     p.add_argument("--npy", metavar="OUT.npy", help="also write the float32 image (NaN background) as .npy")
     p.add_argument(
         "--svg", metavar="OUT.svg",
@@ -44,22 +52,37 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
 
 def run(args: argparse.Namespace) -> int:
     """Load, render, write; prints the files written."""
-    check_outputs(args.output, args.npy)
+    gltf = Path(args.output).suffix.lower() in GLTF_SUFFIXES
+    if Path(args.output).suffix.lower() not in (".png", *GLTF_SUFFIXES):
+        raise InvalidParameterError(f"output file {str(args.output)!r} must end in .png, .glb or .gltf")
+    check_outputs(None if gltf else args.output, args.npy)
+    if gltf and Path(args.output).is_dir():
+        raise InvalidParameterError(f"output file {str(args.output)!r} is a directory")
     if args.svg is not None and not str(args.svg).lower().endswith(".svg"):
         raise InvalidParameterError(f"--svg must name a .svg file, got {args.svg!r}")
     if args.svg is not None and Path(args.svg).is_dir():
         raise InvalidParameterError(f"--svg {args.svg!r} is a directory")
     scene = apply_overrides(load_scene_argument(args.scene), size=args.size, contours=args.contours)
+    if gltf and scene.render.mode != "isoluminance":
+        raise InvalidParameterError(f"{args.output}: glTF output needs render.mode = \"isoluminance\" (point or directional lights)")
     if args.svg is not None:
         if scene.render.mode != "isoluminance":
             raise InvalidParameterError("--svg needs render.mode = \"isoluminance\"")
         for k, obj in enumerate(scene.objects):
             if not isinstance(obj.shape, Primitive):
                 raise InvalidParameterError(f"--svg: objects[{k}] is a CSG tree; SVG output takes single primitives only")
-    with progress_bar(f"render {scene.render.mode}", enabled=not args.no_progress) as progress:
-        result = render_scene(scene, progress=progress)
-    for path in write_outputs(result, args.output, args.npy):
-        print(f"wrote {path}")
+    if gltf:
+        from ..interop.gltf import save_gltf
+
+        out = Path(args.output)
+        out.parent.mkdir(parents=True, exist_ok=True)
+        save_gltf(scene, out)
+        print(f"wrote {out}")
+    if not gltf or args.npy is not None:
+        with progress_bar(f"render {scene.render.mode}", enabled=not args.no_progress) as progress:
+            result = render_scene(scene, progress=progress)
+        for path in write_outputs(result, None if gltf else args.output, args.npy):
+            print(f"wrote {path}")
     if args.svg is not None:
         from ..render.svg import save_scene_svg
 

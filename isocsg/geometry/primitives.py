@@ -92,6 +92,18 @@ class Solid:
 
         return difference(self, other)
 
+    def _repr_mimebundle_(self, include: Any = None, exclude: Any = None) -> dict[str, Any]:
+        """Rich display in Jupyter: a small PNG image (see :mod:`isocsg.interop.notebook`)."""
+        from ..interop.notebook import mimebundle
+
+        return mimebundle(self, include, exclude)
+
+    def _repr_png_(self) -> bytes | None:
+        """A small PNG image of the object (see :mod:`isocsg.interop.notebook`)."""
+        from ..interop.notebook import mimebundle
+
+        return mimebundle(self, ("image/png",)).get("image/png")
+
     # Subclasses override these.
     def contains(self, points: ArrayLike) -> NDArray[np.bool_]:  # pragma: no cover
         raise NotImplementedError

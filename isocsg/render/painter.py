@@ -133,6 +133,18 @@ class RenderResult:
             self._lazy["leaf"] = self._leaf_of[self._label + 1]
         return self._lazy["leaf"]
 
+    def _repr_mimebundle_(self, include: Any = None, exclude: Any = None) -> dict[str, Any]:
+        """Rich display in Jupyter: a small PNG image (see :mod:`isocsg.interop.notebook`)."""
+        from ..interop.notebook import mimebundle
+
+        return mimebundle(self, include, exclude)
+
+    def _repr_png_(self) -> bytes | None:
+        """A small PNG image of the object (see :mod:`isocsg.interop.notebook`)."""
+        from ..interop.notebook import mimebundle
+
+        return mimebundle(self, ("image/png",)).get("image/png")
+
     @property
     def depth(self) -> NDArray[np.float64]:
         """Camera depth (along the view direction) of the visible point; ``inf`` on the background."""

@@ -121,8 +121,8 @@ SHAPE_KINDS = tuple(_PRIMITIVE_FIELDS) + tuple(_CSG_TYPES)
 _LIGHT_FIELDS: dict[str, tuple[tuple[str, ...], tuple[str, ...]]] = {
     "point": (("position",), ("intensity",)),
     "directional": (("direction",), ("intensity",)),
-    "area": (("vertices",), ("radiance",)),
-    "polyhedron": (("vertices",), ("radiance",)),
+    "area": (("vertices",), ("radiance", "flux")),
+    "polyhedron": (("vertices",), ("radiance", "flux")),
 }
 LIGHT_KINDS = tuple(_LIGHT_FIELDS)
 
@@ -245,6 +245,10 @@ def _light(r: _Reader, path: str, value: Any) -> Any:
     from ..shadows import lights as shadow_lights
 
     cls = shadow_lights.AreaLight if kind == "area" else shadow_lights.PolyhedronLight
+    if "flux" in t:  # luminous flux in lumens instead of radiance in cd/m^2
+        if "radiance" in t:
+            raise r.fail(path, "give radiance (cd/m^2) or flux (lm), not both")
+        return r.construct(path, cls.__name__, cls.from_flux, **t)
     return r.construct(path, cls.__name__, cls, **t)
 
 

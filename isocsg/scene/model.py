@@ -102,6 +102,18 @@ class Scene:
     objects: tuple[SceneObject, ...]
     render: RenderSettings = field(default_factory=RenderSettings)
 
+    def _repr_mimebundle_(self, include: Any = None, exclude: Any = None) -> dict[str, Any]:
+        """Rich display in Jupyter: a small PNG image (see :mod:`isocsg.interop.notebook`)."""
+        from ..interop.notebook import mimebundle
+
+        return mimebundle(self, include, exclude)
+
+    def _repr_png_(self) -> bytes | None:
+        """A small PNG image of the object (see :mod:`isocsg.interop.notebook`)."""
+        from ..interop.notebook import mimebundle
+
+        return mimebundle(self, ("image/png",)).get("image/png")
+
     def __post_init__(self) -> None:
         if not isinstance(self.camera, Camera):
             raise InvalidParameterError(f"scene.camera must be a Camera, got {type(self.camera).__name__}")

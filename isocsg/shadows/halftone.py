@@ -234,6 +234,18 @@ class HalftoneResult:
     interval: int
     seconds: float
 
+    def _repr_mimebundle_(self, include: Any = None, exclude: Any = None) -> dict[str, Any]:
+        """Rich display in Jupyter: a small PNG image (see :mod:`isocsg.interop.notebook`)."""
+        from ..interop.notebook import mimebundle
+
+        return mimebundle(self, include, exclude)
+
+    def _repr_png_(self) -> bytes | None:
+        """A small PNG image of the object (see :mod:`isocsg.interop.notebook`)."""
+        from ..interop.notebook import mimebundle
+
+        return mimebundle(self, ("image/png",)).get("image/png")
+
     @property
     def exact_fraction(self) -> float:
         """Fraction of the visible pixels computed exactly."""

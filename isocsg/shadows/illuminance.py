@@ -221,7 +221,8 @@ def illuminance(
     -------
     ndarray, shape (n,)
         Illuminance, ``(L/2) sum beta_i (n . g_i)`` over the visible part of
-        each source (``pi L`` for a source filling the hemisphere).
+        each source (``pi L`` for a source filling the hemisphere): lux for
+        radiances in cd/m^2. Direct light only; occluders are black.
 
     Raises
     ------

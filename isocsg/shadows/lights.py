@@ -9,6 +9,12 @@ on the other side (or in the plane) receive nothing from it.
 
 A :class:`PolyhedronLight` is a convex polyhedron whose every face emits
 outwards with the same radiance.
+
+Photometric units: radiance (luminance) L in cd/m^2 and lengths in metres
+give illuminance E in lux (lm/m^2). A one-sided Lambertian emitter of area A
+and radiance L sends out the luminous flux F = pi L A (lumens); ``from_flux``
+builds a source from its flux, L = F / (pi A). Only direct light is
+modelled: occluders are black and nothing is reflected.
 """
 
 from __future__ import annotations
@@ -53,8 +59,10 @@ class AreaLight:
         normal of the winding (``normal``) points to the lit side. Either
         winding is accepted: it chooses the side that is lit.
     radiance : float, default 1
-        Radiance L, 0 .. 1e6. A fully visible source covering the whole
-        hemisphere above a point would give illuminance pi L.
+        Radiance (luminance) L in cd/m^2, 0 .. 1e6. A fully visible source
+        covering the whole hemisphere above a point would give the
+        illuminance pi L lux. See :meth:`from_flux` for a source given by
+        its luminous flux in lumens.
 
     Attributes
     ----------
@@ -155,6 +163,38 @@ class AreaLight:
         """The emitting convex polygons, each (k, 3), counter-clockwise seen from its lit side."""
         return [self.vertices_array]
 
+    @property
+    def flux(self) -> float:
+        """Luminous flux F = pi L A in lumens (one-sided Lambertian emitter)."""
+        return math.pi * self.radiance * self.area
+
+    @classmethod
+    def from_flux(cls, vertices: ArrayLike, flux: float) -> "AreaLight":
+        """A source of luminous flux ``flux`` (lumens): radiance L = F / (pi A) in cd/m^2.
+
+        Parameters
+        ----------
+        vertices : array_like, shape (m, 3)
+            As for the constructor.
+        flux : float
+            Luminous flux in lumens, >= 0.
+
+        Raises
+        ------
+        InvalidLightError
+            On bad vertices (as the constructor), or a negative or non-finite
+            flux (``AreaLight.flux``).
+
+        Examples
+        --------
+        >>> panel = AreaLight.from_flux([(0, 0, 3), (0, 0.6, 3), (0.6, 0.6, 3), (0.6, 0, 3)], 3600.0)
+        >>> round(panel.radiance, 3), round(panel.flux, 9)
+        (3183.099, 3600.0)
+        """
+        f = scalar("AreaLight.flux", flux, low=0.0, low_inclusive=True, high=MAX_INTENSITY * 1e6, error=InvalidLightError)
+        shape = cls(vertices)
+        return cls(shape.vertices, f / (math.pi * shape.area))
+
     def to_dict(self) -> dict[str, Any]:
         """Scene-file mapping ``{"kind": "area", "vertices": [...], "radiance": L}``."""
         return {"kind": "area", "vertices": [list(v) for v in self.vertices], "radiance": self.radiance}
@@ -170,7 +210,8 @@ class PolyhedronLight:
         At least 4 points, not coplanar; the source is their convex hull
         (interior points are dropped).
     radiance : float, default 1
-        Radiance L (0 .. 1e6) of every face.
+        Radiance (luminance) L in cd/m^2 (0 .. 1e6) of every face. See
+        :meth:`from_flux` for a source given by its luminous flux.
 
     Attributes
     ----------
@@ -220,6 +261,35 @@ class PolyhedronLight:
     def emitting_polygons(self) -> list[NDArray[np.float64]]:
         """The faces, each (k, 3), counter-clockwise seen from outside (their lit side)."""
         return [np.array(f, dtype=np.float64) for f in self.polyhedron.face_polygons()]
+
+    @property
+    def area(self) -> float:
+        """Total area of the emitting faces (m^2)."""
+        return float(sum(np.linalg.norm(_newell_normal(f - f.mean(axis=0))) for f in self.emitting_polygons()))
+
+    @property
+    def flux(self) -> float:
+        """Luminous flux F = pi L A in lumens, A the total face area (every face emits outwards)."""
+        return math.pi * self.radiance * self.area
+
+    @classmethod
+    def from_flux(cls, vertices: ArrayLike, flux: float) -> "PolyhedronLight":
+        """A source of luminous flux ``flux`` (lumens) spread over its faces: L = F / (pi A).
+
+        Raises
+        ------
+        InvalidLightError
+            On bad vertices, or a negative or non-finite flux (``PolyhedronLight.flux``).
+
+        Examples
+        --------
+        >>> cube = PolyhedronLight.from_flux([(x, y, z) for x in (0, 1) for y in (0, 1) for z in (0, 1)], 600.0)
+        >>> cube.area, round(cube.radiance * math.pi, 9)
+        (6.0, 100.0)
+        """
+        f = scalar("PolyhedronLight.flux", flux, low=0.0, low_inclusive=True, high=MAX_INTENSITY * 1e6, error=InvalidLightError)
+        shape = cls(vertices)
+        return cls(shape.vertices, f / (math.pi * shape.area))
 
     def to_dict(self) -> dict[str, Any]:
         """Scene-file mapping ``{"kind": "polyhedron", "vertices": [...], "radiance": L}``."""

@@ -5,7 +5,7 @@ for ``s, t`` in [0, 1], sampled at ``nx`` x ``ny`` nodes (the corners
 included). :func:`illuminance_map` evaluates the exact illuminance (soft
 shadows included) at the nodes, for receivers facing ``normalize(u x v)``.
 :func:`isolux_lines` traces contour lines of the map by marching squares
-(saddle cells are split by the cell-centre average), and
+(contourpy; saddle cells are split by the cell-centre average), and
 :func:`save_luxmap_png` draws the map with its isolux lines.
 """
 
@@ -23,7 +23,9 @@ from .._validation import Vec3, integer, nonzero_vector3, vector3
 from ..errors import InvalidParameterError
 from ..geometry.primitives import DEFAULT_RESOLUTION
 
-__all__ = ["LuxGrid", "LuxMap", "IsoluxLine", "illuminance_map", "isolux_lines", "nice_levels", "save_luxmap_png"]
+__all__ = [
+    "LuxGrid", "LuxMap", "IsoluxLine", "illuminance_map", "isolux_lines", "nice_levels", "occluded_nodes", "save_luxmap_png",
+]
 
 ProgressCallback = Callable[[int, int], None]
 
@@ -136,11 +138,28 @@ class LuxMap:
     ----------
     grid : LuxGrid
     E : ndarray, shape (ny, nx)
-        Illuminance; ``E[j, i]`` at node ``(i, j)``.
+        Illuminance in lux (lx = lm/m^2) for source radiances in cd/m^2;
+        ``E[j, i]`` at node ``(i, j)``.
+    occluded : ndarray of bool, shape (ny, nx), optional
+        Nodes inside an occluder (covered by a solid standing on the
+        receiving plane): no light can reach them, and statistics leave them
+        out rather than count them as 0 lx. Defaults to none.
     """
 
     grid: LuxGrid
     E: NDArray[np.float64]
+    occluded: NDArray[np.bool_] | None = None
+
+    def __post_init__(self) -> None:
+        E = np.asarray(self.E, dtype=np.float64)
+        shape = (self.grid.ny, self.grid.nx)
+        if E.shape != shape:
+            raise InvalidParameterError(f"E must have shape {shape} (ny, nx), got {E.shape}")
+        object.__setattr__(self, "E", E)
+        occ = np.zeros(shape, dtype=bool) if self.occluded is None else np.asarray(self.occluded, dtype=bool)
+        if occ.shape != shape:
+            raise InvalidParameterError(f"occluded must have shape {shape} (ny, nx), got {occ.shape}")
+        object.__setattr__(self, "occluded", occ)
 
     def isolux(self, levels: Sequence[float] | int | None = None) -> list[IsoluxLine]:
         """Isolux lines of the map at ``levels`` (or that many :func:`nice_levels`)."""
@@ -161,6 +180,12 @@ def illuminance_map(
     progress: ProgressCallback | None = None,
 ) -> LuxMap:
     """Exact illuminance (soft shadows included) at the nodes of a grid.
+
+    Direct light only: the sources' light that reaches a node in a straight
+    line; occluders are black (they reflect nothing), and nothing is
+    inter-reflected. With radiances in cd/m^2 the illuminance is in lux.
+    Nodes just inside a solid (tested a hair above the plane, on the side
+    the receivers face) are marked in :attr:`LuxMap.occluded`.
 
     Parameters
     ----------
@@ -198,15 +223,51 @@ def illuminance_map(
     pts = grid.points()
     n = grid.normal
     E = np.empty((grid.ny, grid.nx))
+    occluded = np.zeros((grid.ny, grid.nx), dtype=bool)
+    solids, eps = _probe(grid, occluders)
     step = max(1, 4096 // grid.nx)
     for j0 in range(0, grid.ny, step):
         j1 = min(grid.ny, j0 + step)
         # a solid whose face holds the grid lies behind the receiving plane: it casts nothing on it
         p = pts[j0:j1].reshape(-1, 3)
         E[j0:j1] = illuminance(p, n, lights, occluders, resolution=resolution).reshape(j1 - j0, grid.nx)
+        occluded[j0:j1] = _inside(p + eps * n, solids).reshape(j1 - j0, grid.nx)
         if progress is not None:
             progress(j1, grid.ny)
-    return LuxMap(grid, E)
+    return LuxMap(grid, E, occluded)
+
+
+def occluded_nodes(grid: LuxGrid, occluders: Sequence[Any] | Any = ()) -> NDArray[np.bool_]:
+    """Nodes of the grid inside a solid occluder, shape (ny, nx).
+
+    Each node is tested a hair (1e-7 of the grid's size) above the plane, on
+    the side the receivers face: a solid resting on the plane covers the
+    nodes under it, while a floor slab whose top face holds the grid does not.
+
+    Examples
+    --------
+    >>> from isocsg import Box
+    >>> g = LuxGrid.from_bounds(-1, -1, 1, 1, 0, 5, 5)
+    >>> occluded_nodes(g, [Box((0, 0, -0.5), (4, 4, 1)), Box((0, 0, 0.5), (0.6, 0.6, 1))]).sum()
+    np.int64(1)
+    """
+    solids, eps = _probe(grid, occluders)
+    return _inside(grid.points().reshape(-1, 3) + eps * grid.normal, solids).reshape(grid.ny, grid.nx)
+
+
+def _probe(grid: LuxGrid, occluders: Any) -> tuple[list[Any], float]:
+    """The solid occluders and the height above the plane at which nodes are tested."""
+    from ..geometry.primitives import Solid
+
+    solids = [occluders] if isinstance(occluders, Solid) else [o for o in occluders if isinstance(o, Solid)]
+    return solids, 1e-7 * max(float(np.linalg.norm(grid.u)), float(np.linalg.norm(grid.v)))
+
+
+def _inside(points: NDArray[np.float64], solids: list[Any]) -> NDArray[np.bool_]:
+    out = np.zeros(len(points), dtype=bool)
+    for solid in solids:
+        out |= solid.contains(points, tol=0.0)
+    return out
 
 
 def nice_levels(E: ArrayLike, count: int = 8) -> NDArray[np.float64]:
@@ -242,23 +303,15 @@ def _levels(E: NDArray[np.float64], levels: Sequence[float] | int | None) -> NDA
     return lv
 
 
-# Marching squares: corners (0: (i, j), 1: (i+1, j), 2: (i+1, j+1), 3: (i, j+1)); edges
-# 0: bottom (c0-c1), 1: right (c1-c2), 2: top (c3-c2), 3: left (c0-c3). Case bit k = corner k above.
-_SEGMENTS: dict[int, tuple[tuple[int, int], ...]] = {
-    1: ((3, 0),), 2: ((0, 1),), 3: ((3, 1),), 4: ((1, 2),), 6: ((0, 2),), 7: ((3, 2),),
-    8: ((2, 3),), 9: ((2, 0),), 11: ((2, 1),), 12: ((1, 3),), 13: ((1, 0),), 14: ((0, 3),),
-}
-# saddles (5: corners 0 and 2 above; 10: corners 1 and 3): (centre above, centre below)
-_SADDLES = {5: (((3, 2), (1, 0)), ((3, 0), (1, 2))), 10: (((0, 3), (2, 1)), ((0, 1), (2, 3)))}
-
-
-def _edge_key(i: int, j: int, e: int) -> tuple[int, int, int]:
-    """A cell edge as a key shared by both cells: (i, j, 0) horizontal from (i, j), (i, j, 1) vertical."""
-    return {0: (i, j, 0), 1: (i + 1, j, 1), 2: (i, j + 1, 0), 3: (i, j, 1)}[e]
-
-
 def isolux_lines(E: ArrayLike, levels: ArrayLike) -> list[list[tuple[NDArray[np.float64], bool]]]:
-    """Contour lines of a 2D field by marching squares.
+    """Contour lines of a 2D field by marching squares (contourpy).
+
+    Cells are split by linear interpolation along their edges; a saddle cell
+    is resolved by the average of its four corners. Lines are contourpy's
+    ``serial`` algorithm without corner masking: the same points, to 1e-12,
+    as a plain marching-squares tracer (where a line runs through a node
+    lying exactly on the level, the two may split it into polylines
+    differently there; the segments are the same).
 
     Parameters
     ----------
@@ -271,7 +324,13 @@ def isolux_lines(E: ArrayLike, levels: ArrayLike) -> list[list[tuple[NDArray[np.
     -------
     list of list of (ndarray, bool)
         For each level, its polylines as ``(points (m, 2) of fractional
-        node coordinates (i, j), closed)``.
+        node coordinates (i, j), closed)``; a closed line repeats its first
+        point at the end.
+
+    Raises
+    ------
+    InvalidParameterError
+        If ``E`` is not a 2-D array of at least 2 x 2 values.
 
     Examples
     --------
@@ -283,72 +342,29 @@ def isolux_lines(E: ArrayLike, levels: ArrayLike) -> list[list[tuple[NDArray[np.
     >>> closed, len(ring)
     (True, 13)
     """
+    import contourpy
+
     Z = np.asarray(E, dtype=np.float64)
     if Z.ndim != 2 or min(Z.shape) < 2:
         raise InvalidParameterError(f"E must be a 2-D array with at least 2 x 2 values, got shape {Z.shape}")
+    bad = ~np.isfinite(Z)
+    z = np.ma.array(np.where(bad, 0.0, Z), mask=bad) if bad.any() else Z
+    gen = contourpy.contour_generator(
+        z=z, name="serial", corner_mask=False, quad_as_tri=False,
+        line_type=contourpy.LineType.SeparateCode,
+    )
     out = []
     for level in np.asarray(levels, dtype=np.float64).reshape(-1):
-        above = Z > level
-        c = np.stack([above[:-1, :-1], above[:-1, 1:], above[1:, 1:], above[1:, :-1]])  # (4, ny-1, nx-1)
-        case = c[0] * 1 + c[1] * 2 + c[2] * 4 + c[3] * 8
-        finite = np.isfinite(Z)
-        ok = finite[:-1, :-1] & finite[:-1, 1:] & finite[1:, 1:] & finite[1:, :-1]
-        cells = np.argwhere(ok & (case != 0) & (case != 15))
-        points: dict[tuple[int, int, int], NDArray[np.float64]] = {}
-        adj: dict[tuple[int, int, int], list[tuple[int, int, int]]] = {}
-
-        def point(i: int, j: int, e: int) -> tuple[int, int, int]:
-            k = _edge_key(i, j, e)
-            if k not in points:
-                a0, a1 = (k[0], k[1]), ((k[0] + 1, k[1]) if k[2] == 0 else (k[0], k[1] + 1))
-                z0, z1 = Z[a0[1], a0[0]], Z[a1[1], a1[0]]
-                t = (level - z0) / (z1 - z0)
-                points[k] = np.array([a0[0] + t * (a1[0] - a0[0]), a0[1] + t * (a1[1] - a0[1])])
-            return k
-
-        for j, i in cells:
-            cs = int(case[j, i])
-            if cs in _SADDLES:
-                centre = 0.25 * (Z[j, i] + Z[j, i + 1] + Z[j + 1, i + 1] + Z[j + 1, i])
-                segs = _SADDLES[cs][0 if centre > level else 1]
-            else:
-                segs = _SEGMENTS[cs]
-            for e0, e1 in segs:
-                a, b = point(i, j, e0), point(i, j, e1)
-                adj.setdefault(a, []).append(b)
-                adj.setdefault(b, []).append(a)
-        out.append(_chain(points, adj))
+        points, codes = gen.lines(float(level))
+        out.append([
+            (np.asarray(pts, dtype=np.float64), bool(len(code) and code[-1] == _CLOSEPOLY))
+            for pts, code in zip(points, codes)
+        ])
     return out
 
 
-def _chain(points: dict[Any, NDArray[np.float64]], adj: dict[Any, list[Any]]) -> list[tuple[NDArray[np.float64], bool]]:
-    """Join segments (an adjacency of edge points) into polylines."""
-    seen: set[tuple[Any, Any]] = set()
-    lines = []
-    # open lines start at points with one neighbour (the grid border); then the closed loops
-    starts = [k for k, nb in adj.items() if len(nb) == 1] + list(adj)
-    for s in starts:
-        for nxt in adj[s]:
-            if (s, nxt) in seen:
-                continue
-            path = [s]
-            prev, cur = s, nxt
-            seen.add((s, nxt))
-            seen.add((nxt, s))
-            closed = False
-            while True:
-                path.append(cur)
-                if cur == s:
-                    closed = True
-                    break
-                options = [k for k in adj[cur] if (cur, k) not in seen]
-                if not options:
-                    break
-                prev, cur = cur, options[0]
-                seen.add((prev, cur))
-                seen.add((cur, prev))
-            lines.append((np.array([points[k] for k in path]), closed))
-    return lines
+# contourpy's (matplotlib's) path code that closes a line.
+_CLOSEPOLY = 79
 
 
 def save_luxmap_png(

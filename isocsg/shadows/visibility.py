@@ -32,6 +32,7 @@ directions from p to S_p.
 from __future__ import annotations
 
 import math
+import threading
 
 import numba
 import numpy as np
@@ -502,14 +503,39 @@ def visible_illuminance(
     if groups is None:
         groups = _all_pieces(n, pieces)
     group, g_off, g_idx = (np.ascontiguousarray(a, dtype=np.int64) for a in groups)
-    _kernel(
+    args = (
         np.ascontiguousarray(points), np.ascontiguousarray(normals),
         sources.verts, sources.off, sources.normal, sources.u, sources.w, sources.q0, sources.radiance,
         sources.group, sources.ngroups, float(scale),
         pieces.verts, pieces.voff, pieces.edges, pieces.eoff, pieces.center, pieces.radius, group, g_off, g_idx,
         pieces.maxpts, _vmax(sources, pieces), min(n, 8 * numba.get_num_threads()), E, state, overflow,
     )
+    if parallel_launch_is_threadsafe():
+        _kernel(*args)
+    else:
+        with _LAUNCH_LOCK:
+            _kernel(*args)
     return E, state, overflow
+
+
+# numba's "workqueue" threading layer aborts the process when two threads launch
+# parallel kernels at once; the "omp" and "tbb" layers do not. Under workqueue
+# (and until the first launch has chosen a layer) launches take turns.
+_LAUNCH_LOCK = threading.Lock()
+_THREADSAFE_LAYERS = ("omp", "tbb")
+
+
+def parallel_launch_is_threadsafe() -> bool:
+    """Whether several threads may launch the parallel kernel at once (numba's layer is omp or tbb).
+
+    False before the first launch (the layer is chosen then) and under the
+    ``workqueue`` layer: such launches are serialised by a lock, so callers
+    in threads (thread pools, Dask workers) are safe under every layer.
+    """
+    try:
+        return numba.threading_layer() in _THREADSAFE_LAYERS
+    except ValueError:  # no parallel kernel launched yet
+        return False
 
 
 def _all_pieces(n: int, pieces: PieceArrays) -> tuple[NDArray[np.int64], NDArray[np.int64], NDArray[np.int64]]:
