@@ -270,6 +270,20 @@ def test_near_light_axial_slices_reduce_the_laminae_error(where):
     assert sliced <= KD / 8, report
 
 
+def test_near_light_slices_keep_a_cone_apex_exact():
+    """Slices of a cone lit from close above its apex: the apex slice has radius exactly 0.
+
+    (Found by the random search: the apex radius interpolated along the axis came out as
+    1.1e-16, which a Truncus refuses as below the smallest length at that position.)
+    """
+    t = Truncus((0, 0, 0), (0, 0, 2.4643987788526274), 0.0, 0.9998594712341624)
+    light = PointLight((0, 0, 3.696598168278941))
+    laminae = truncus_laminae(t, light, N)
+    assert laminae
+    ls = build_laminae(t, [light], contours=N)
+    assert len(ls.bands.triangles) > 0
+
+
 # ----------------------------------------------------------------------------- polyhedra
 
 POLY = ConvexPolyhedron([(1, 0, 0), (-1, 0.1, 0), (0, 1.2, 0.1), (0.1, -1, 0), (0, 0, 1.1), (0.2, 0.1, -0.9)])

@@ -113,10 +113,11 @@ def _slices(truncus: Truncus, light: Light) -> list[Truncus]:
         return [truncus]
     a = np.asarray(truncus.axis, dtype=np.float64)
     zs = np.linspace(0.5, -0.5, k + 1)
+    # The end radii as given: interpolated, a cone's apex would come out as rounding (1e-16),
+    # a radius below the smallest length a Truncus accepts.
+    radii = [truncus.r1] + [max(float(truncus.radius_at(z * truncus.height)), 0.0) for z in zs[1:-1]] + [truncus.r2]
     out = []
-    for z0, z1 in zip(zs[:-1], zs[1:]):
-        r0 = max(float(truncus.radius_at(z0 * truncus.height)), 0.0)
-        r1 = max(float(truncus.radius_at(z1 * truncus.height)), 0.0)
+    for z0, z1, r0, r1 in zip(zs[:-1], zs[1:], radii[:-1], radii[1:]):
         out.append(Truncus(truncus.center_array + 0.5 * (z0 + z1) * a, a * (z0 - z1), r0, r1))
     return out
 
