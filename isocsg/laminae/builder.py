@@ -238,13 +238,14 @@ def _origin(primitive: Primitive) -> NDArray[np.float64]:
 
 
 def _surface(
-    primitive: Primitive, lights: tuple[Light, ...], n: int, eye: NDArray[np.float64] | None, shininess: float
+    primitive: Primitive, lights: tuple[Light, ...], n: int, eye: NDArray[np.float64] | None, shininess: float,
+    weights: tuple[float, float] = (1.0, 1.0),
 ) -> Surface:
     if isinstance(primitive, Sphere):
         return sphere_surface(primitive, lights[0] if lights else None, diffuse_levels(np.array([-1.0, 1.0]), n))
     if isinstance(primitive, Truncus):
-        return truncus_surface(primitive, list(lights), n, eye=eye, shininess=shininess)
-    return polyhedron_surface(primitive, list(lights), n, eye=eye, shininess=shininess)
+        return truncus_surface(primitive, list(lights), n, eye=eye, shininess=shininess, weights=weights)
+    return polyhedron_surface(primitive, list(lights), n, eye=eye, shininess=shininess, weights=weights)
 
 
 def _paper_laminae(primitive: Primitive, light: Light, n: int) -> list[tuple[NDArray[np.float64], NDArray[np.float64], float, str]]:
@@ -298,7 +299,7 @@ def _virtual_light(primitive: Primitive, light: Light, eye: NDArray[np.float64])
 def _build(primitive: Primitive, lights: tuple[Light, ...], mat: Material, n: int, eye: NDArray[np.float64] | None) -> LaminaSet:
     origin = _origin(primitive)
     eye_local = None if eye is None else eye - origin
-    surf = _surface(primitive, lights, n, eye_local, float(mat.shininess))
+    surf = _surface(primitive, lights, n, eye_local, float(mat.shininess), (float(mat.kd), float(mat.ks)))
     fams: list[FieldFamily] = []
     for j, light in enumerate(lights):
         fams.append(diffuse_family(j, light, mat, incidence(light, surf.vertices, surf.normals, surf.origin)))
