@@ -51,3 +51,25 @@ def mean_errors(scene, counts) -> list[float]:
 def test_error_shrinks_with_more_contours(name: str) -> None:
     errors = mean_errors(CORE_SCENES[name], (16, 64, 256))
     assert errors[0] > errors[1] > errors[2], f"{name}: mean |err| at N = 16, 64, 256: {errors}"
+
+
+@pytest.mark.parametrize("seed", [0, 2, 3, 4])
+def test_face_grazed_by_a_point_light_has_no_highlight(seed: int) -> None:
+    # A tetrahedron-like hull whose faces x = 0 and z = 0 hold the point light, turned and moved:
+    # n . l is 0 up to rounding on them; vertices where it came out +1e-17 took the full grazing
+    # highlight (-l . v)^s into the bands (91 % down to 6 % of pixels within the bar).
+    from scipy.spatial.transform import Rotation
+
+    from isocsg import Camera, ConvexPolyhedron, Material, PointLight, RenderSettings, Scene, SceneObject
+
+    rot = Rotation.random(random_state=seed).as_matrix()
+    off = np.array([1e3, -2e3, 5e2]) * (seed % 2)
+    pts = np.array([(0, 0, 1.0), (0, 1.0, 0), (0, 0.7071067811865475, 0.7071067811865475), (0, -1.0, 0), (1.0, 0, 0)])
+    eye = np.array((0.0, 2.4961508830135313, -1.6641005886756874)) @ rot.T + off
+    light = PointLight(tuple(np.array((0.0, -1.5, 0.0)) @ rot.T + off))
+    scene = Scene(Camera(tuple(eye), tuple(off), (0, 0, 1), fov=48.4, width=64, height=64), (light,),
+                  (SceneObject(ConvexPolyhedron(pts @ rot.T + off), Material(0.125, 0.5, 0.2, 2.0)),),
+                  RenderSettings(contours=64))
+    result = compare(render_image(scene), raycast_scene(scene))
+    assert result.iou >= MIN_IOU, result.summary()
+    assert result.fraction >= MIN_FRACTION, result.summary()

@@ -29,10 +29,13 @@ from ..lighting.shading import Material
 
 __all__ = [
     "FieldFamily", "diffuse_levels", "specular_levels", "incidence", "diffuse_family", "specular_families",
-    "light_direction_at", "band_tables",
+    "light_direction_at", "band_tables", "GRAZING",
 ]
 
 Light = PointLight | DirectionalLight
+
+#: Incidence cosines within rounding of 0: the surface is grazed, not lit (no Phong term).
+GRAZING = 1e-12
 
 
 @dataclass(frozen=True, slots=True, eq=False)
@@ -213,6 +216,8 @@ def specular_families(
     rv = np.einsum("ij,ij->i", rf, v)
     n = float(material.shininess)
     w = float(material.ks * light.intensity)
-    out = FieldFamily(light_index, "specular_out", np.where(ndotl > 0, rv, -1.0), n, w, w)
-    inn = FieldFamily(light_index, "specular_in", np.where(ndotl < 0, rv, -1.0), n, w, w)
+    # A face in the light's plane has n . l = 0 up to rounding: unlit (no highlight), not lit at
+    # random vertices with the full grazing highlight (-l . v) ** n.
+    out = FieldFamily(light_index, "specular_out", np.where(ndotl > GRAZING, rv, -1.0), n, w, w)
+    inn = FieldFamily(light_index, "specular_in", np.where(ndotl < -GRAZING, rv, -1.0), n, w, w)
     return [out, inn]

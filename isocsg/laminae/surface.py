@@ -19,7 +19,7 @@ from numba import njit
 from numpy.typing import NDArray
 
 from ..lighting.lights import PointLight
-from .families import light_direction_at
+from .families import GRAZING, light_direction_at
 
 __all__ = ["Surface", "orient_outward", "light_reference_distance", "refinement", "specular_refinement", "eye_reference_distance", "curvature_spacing", "pieces"]
 
@@ -152,8 +152,9 @@ def _terms(
             # levels the cut follows (0 of the diffuse and of the Phong family), so only samples
             # inside the highlight on the lit side measure how the term bends.
             w = weights[1] * light.intensity
-            out.append((np.where(ndl > 0, np.maximum(rv, 0.0) ** shininess, 0.0), (ndl > 0) & (rv > 0), w))
-            out.append((np.where(ndl < 0, np.maximum(rv, 0.0) ** shininess, 0.0), (ndl < 0) & (rv > 0), w))
+            lit_out, lit_in = ndl > GRAZING, ndl < -GRAZING
+            out.append((np.where(lit_out, np.maximum(rv, 0.0) ** shininess, 0.0), lit_out & (rv > 0), w))
+            out.append((np.where(lit_in, np.maximum(rv, 0.0) ** shininess, 0.0), lit_in & (rv > 0), w))
     return out
 
 
