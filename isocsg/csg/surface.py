@@ -200,7 +200,9 @@ def close_mesh(
 
     Band meshes are cut face by face: equal vertices may be repeated, and a
     vertex of one face may lie inside an edge of its neighbour (a
-    T-junction). Repeated vertices are merged, and each open edge with such
+    T-junction). Repeated vertices are merged (also those within the tolerance
+    below of each other: a point cut from two faces comes out a few ulps
+    apart), and each open edge with such
     vertices inside is split at them (its triangle becomes a fan, in the same
     plane, so the surface and the orientation are unchanged). A vertex lies on
     an edge within 1e-9 of the mesh size, or within the rounding of its
