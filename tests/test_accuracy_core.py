@@ -73,3 +73,24 @@ def test_face_grazed_by_a_point_light_has_no_highlight(seed: int) -> None:
     result = compare(render_image(scene), raycast_scene(scene))
     assert result.iou >= MIN_IOU, result.summary()
     assert result.fraction >= MIN_FRACTION, result.summary()
+
+
+@pytest.mark.parametrize("orthographic", [False, True], ids=["perspective", "orthographic"])
+def test_found_cone_under_two_lights_with_phong(orthographic: bool) -> None:
+    # The cone whose band mesh the refinement no longer blows up (tests/test_laminae.py): the image
+    # stays within the bars and its error shrinks with N.
+    from isocsg import Camera, DirectionalLight, Material, PointLight, RenderSettings, Scene, SceneObject, Truncus
+
+    cone = Truncus((0.140824489531859, 0.0, -0.27894955952863615), (1.237962246836256, 0.0, -1.3649590137402514),
+                   0.8181560425149027, 0.0)
+    lights = (PointLight((6.73600082401685, 7.092117516495353, -4.476557540157528)),
+              DirectionalLight((-0.17261483859126808, 0.5052604650370058, -0.8455270427187407), 0.6450224105532074))
+    eye = (0.8220449381467546, -7.230369660421692, -3.0640655642770125)
+    cam = (Camera(eye, (0, 0, 0), (0, 0, 1), width=64, height=64, orthographic=True, height_m=3.2) if orthographic
+           else Camera(eye, (0, 0, 0), (0, 0, 1), fov=30.0, width=64, height=64))
+    scene = Scene(cam, lights, (SceneObject(cone, Material(0.1, 0.6, 0.35224982768333457, 5.0)),), RenderSettings(contours=64))
+    result = compare(render_image(scene), raycast_scene(scene))
+    assert result.iou >= MIN_IOU, result.summary()
+    assert result.fraction >= MIN_FRACTION, result.summary()
+    e16, e64 = mean_errors(scene, (16, 64))
+    assert e64 < e16, (e16, e64)
