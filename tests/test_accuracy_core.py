@@ -94,3 +94,20 @@ def test_found_cone_under_two_lights_with_phong(orthographic: bool) -> None:
     assert result.fraction >= MIN_FRACTION, result.summary()
     e16, e64 = mean_errors(scene, (16, 64))
     assert e64 < e16, (e16, e64)
+
+
+def test_highlight_reaches_a_cylinders_terminator() -> None:
+    # A directional light square to the axis: the ends are grazed (no highlight), while the side's
+    # highlight runs up to the terminator, whose vertices have n . l = 0 up to rounding. Counting
+    # every vertex within rounding of 0 as unlit cut the highlight one generator short there.
+    from isocsg import Camera, DirectionalLight, Material, RenderSettings, Scene, SceneObject, Truncus
+
+    cam = Camera((0.0, -5.201746071110272, 0.5907968154113306), (0, 0, 0), (0, 0, 1), fov=23.323835801914264,
+                 width=80, height=80)
+    scene = Scene(cam, (DirectionalLight((-0.4023318317777731, 0.9154939088483012, 0.0)),),
+                  (SceneObject(Truncus((0, 0, 0), (0, 0, 1.0), 0.625, 0.625), Material(0.125, 0.5, 0.2, 2.0)),),
+                  RenderSettings(contours=64))
+    result = compare(render_image(scene), raycast_scene(scene))
+    assert result.iou >= MIN_IOU, result.summary()
+    assert result.fraction >= MIN_FRACTION, result.summary()
+    assert result.max_error < 0.05, result.summary()

@@ -34,7 +34,8 @@ __all__ = [
 
 Light = PointLight | DirectionalLight
 
-#: Incidence cosines within rounding of 0: the surface is grazed, not lit (no Phong term).
+#: Incidence cosines within rounding of 0: a part of the surface whose cosine stays this close
+#: to 0 (a face in a point light's plane) is grazed, not lit (no Phong term).
 GRAZING = 1e-12
 
 
@@ -216,8 +217,8 @@ def specular_families(
     rv = np.einsum("ij,ij->i", rf, v)
     n = float(material.shininess)
     w = float(material.ks * light.intensity)
-    # A face in the light's plane has n . l = 0 up to rounding: unlit (no highlight), not lit at
-    # random vertices with the full grazing highlight (-l . v) ** n.
-    out = FieldFamily(light_index, "specular_out", np.where(ndotl > GRAZING, rv, -1.0), n, w, w)
-    inn = FieldFamily(light_index, "specular_in", np.where(ndotl < -GRAZING, rv, -1.0), n, w, w)
+    # (A vertex on the terminator keeps its sign: the lit side's highlight reaches the terminator.
+    # A whole part in the light's plane is grazed, and unlit: see the band builder.)
+    out = FieldFamily(light_index, "specular_out", np.where(ndotl > 0, rv, -1.0), n, w, w)
+    inn = FieldFamily(light_index, "specular_in", np.where(ndotl < 0, rv, -1.0), n, w, w)
     return [out, inn]
