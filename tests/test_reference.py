@@ -418,3 +418,17 @@ def test_tiled_reference_equals_untiled_first_hits(orthographic: bool) -> None:
     ref = raycast_scene(scene)
     assert direct.sum() > 500
     assert np.array_equal(ref.mask, direct)
+
+
+@pytest.mark.parametrize("scale", [1.0, 689.0], ids=["unit", "689"])
+def test_face_in_a_point_lights_plane_is_ambient(scale: float) -> None:
+    # The face z = 0 of this tetrahedron holds the light: n . l = 0 there, so no diffuse term and
+    # no highlight (conventions: Phong only where cos_i > 0). Hit points a few ulps off the plane
+    # used to light random pixels with the full grazing highlight (-l . v)^s.
+    poly = ConvexPolyhedron(scale * np.array([(0, 0, 1.0), (0, 1.0, 0), (0, -1.0, 0), (1.0, 0, 0), (0.2, 0.2, -0.0)]))
+    mat = Material(ambient=0.125, kd=0.5, ks=0.2, shininess=2.0)
+    cam = Camera(tuple(scale * np.array([0.3, 2.5, -1.66])), (0, 0, 0), width=48, height=48, fov=50)
+    ref = raycast(cam, [(poly, mat)], [PointLight((0.0, -1.5 * scale, 0.0))])
+    on_face = ref.mask & (np.abs(ref.normal[..., 2] + 1.0) < 1e-12)
+    assert on_face.sum() > 100
+    assert np.all(ref.image[on_face] == 0.125)

@@ -200,7 +200,9 @@ def close_mesh(
 
     Band meshes are cut face by face: equal vertices may be repeated, and a
     vertex of one face may lie inside an edge of its neighbour (a
-    T-junction). Repeated vertices are merged, and each open edge with such
+    T-junction). Repeated vertices are merged (also those within the tolerance
+    below of each other: a point cut from two faces comes out a few ulps
+    apart), and each open edge with such
     vertices inside is split at them (its triangle becomes a fan, in the same
     plane, so the surface and the orientation are unchanged). A vertex lies on
     an edge within 1e-9 of the mesh size, or within the rounding of its
@@ -248,6 +250,12 @@ def _close(
     size = float(np.ptp(v, axis=0).max())
     magnitude = float(np.abs(v).max())
     tol = max(_ON_EDGE_RELATIVE * size, _ON_EDGE_ULPS * np.finfo(np.float64).eps * magnitude, 1e-300)
+    # Vertices within rounding of each other are one vertex too: the same point cut from the two
+    # parts meeting at a rim (or a cone's apex) comes out a few ulps apart; a triangle that then
+    # repeats a vertex has no area and goes.
+    v, t = _merge_near(v, t, tol)
+    keep = (t[:, 0] != t[:, 1]) & (t[:, 1] != t[:, 2]) & (t[:, 2] != t[:, 0])
+    t, src = t[keep], src[keep]
     closed = False
     for _ in range(8):  # each pass splits one open edge per triangle
         u = t.ravel()
@@ -288,6 +296,25 @@ def _close(
     else:
         closed = not len(_open_half_edges(t))
     return v, t, src, closed
+def _merge_near(v: NDArray[np.float64], t: NDArray[np.int64], tol: float) -> tuple[NDArray[np.float64], NDArray[np.int64]]:
+    """Merge vertices closer than ``tol`` (clusters linked by such pairs) into their first member."""
+    from scipy.sparse import coo_matrix
+    from scipy.sparse.csgraph import connected_components
+    from scipy.spatial import cKDTree
+
+    pairs = cKDTree(v).query_pairs(tol, output_type="ndarray")
+    if not len(pairs):
+        return v, t
+    n = len(v)
+    graph = coo_matrix((np.ones(len(pairs)), (pairs[:, 0], pairs[:, 1])), shape=(n, n))
+    _, label = connected_components(graph, directed=False)
+    first = np.full(n, n, np.int64)
+    np.minimum.at(first, label, np.arange(n))
+    rep = first[label]
+    used, new_index = np.unique(rep, return_inverse=True)
+    return v[used], new_index.reshape(-1)[t]
+
+
 @njit(cache=True)
 def _equal_rows(bits: NDArray[np.int64]) -> tuple[NDArray[np.int64], NDArray[np.int64]]:
     """Rows of equal bits: the first of each kind (in order) and every row's kind (a hash table)."""

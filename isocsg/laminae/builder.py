@@ -41,7 +41,7 @@ from ..geometry.primitives import Box, ConvexPolyhedron, Primitive, Sphere, Trun
 from ..lighting.lights import DirectionalLight, PointLight
 from ..lighting.shading import TERMINATOR_COSINE, Material
 from ..limits import memory_budget
-from .families import FieldFamily, diffuse_family, diffuse_levels, incidence, specular_families
+from .families import GRAZING, FieldFamily, diffuse_family, diffuse_levels, incidence, specular_families
 from .model import BandMesh, ContourFamily, Lamina, LaminaSet
 from .polyhedron import face_laminae, polyhedron_surface
 from .sphere import contour_heights, light_axis, sphere_laminae, sphere_surface
@@ -238,13 +238,14 @@ def _origin(primitive: Primitive) -> NDArray[np.float64]:
 
 
 def _surface(
-    primitive: Primitive, lights: tuple[Light, ...], n: int, eye: NDArray[np.float64] | None, shininess: float
+    primitive: Primitive, lights: tuple[Light, ...], n: int, eye: NDArray[np.float64] | None, shininess: float,
+    weights: tuple[float, float] = (1.0, 1.0),
 ) -> Surface:
     if isinstance(primitive, Sphere):
         return sphere_surface(primitive, lights[0] if lights else None, diffuse_levels(np.array([-1.0, 1.0]), n))
     if isinstance(primitive, Truncus):
-        return truncus_surface(primitive, list(lights), n, eye=eye, shininess=shininess)
-    return polyhedron_surface(primitive, list(lights), n, eye=eye, shininess=shininess)
+        return truncus_surface(primitive, list(lights), n, eye=eye, shininess=shininess, weights=weights)
+    return polyhedron_surface(primitive, list(lights), n, eye=eye, shininess=shininess, weights=weights)
 
 
 def _paper_laminae(primitive: Primitive, light: Light, n: int) -> list[tuple[NDArray[np.float64], NDArray[np.float64], float, str]]:
@@ -298,7 +299,7 @@ def _virtual_light(primitive: Primitive, light: Light, eye: NDArray[np.float64])
 def _build(primitive: Primitive, lights: tuple[Light, ...], mat: Material, n: int, eye: NDArray[np.float64] | None) -> LaminaSet:
     origin = _origin(primitive)
     eye_local = None if eye is None else eye - origin
-    surf = _surface(primitive, lights, n, eye_local, float(mat.shininess))
+    surf = _surface(primitive, lights, n, eye_local, float(mat.shininess), (float(mat.kd), float(mat.ks)))
     fams: list[FieldFamily] = []
     for j, light in enumerate(lights):
         fams.append(diffuse_family(j, light, mat, incidence(light, surf.vertices, surf.normals, surf.origin)))
@@ -364,6 +365,7 @@ def _cut(surf: Surface, fams: list[FieldFamily], mat: Material, n: int) -> BandM
             used = np.flatnonzero(used)
             remap[used] = np.arange(len(used))
             vertices, values, tri = local[used], fields[used], remap[tri]
+        _unlight_grazed(values, fams)
         band = np.zeros((len(tri), k), np.int64)
         for i, fam in enumerate(fams):
             col = values[:, i]
@@ -425,6 +427,22 @@ def _cut(surf: Surface, fams: list[FieldFamily], mat: Material, n: int) -> BandM
 
 
 _KIND_CODES = {"diffuse": 0, "specular_out": 1, "specular_in": 2}
+
+
+def _unlight_grazed(values: NDArray[np.float64], fams: list[FieldFamily]) -> None:
+    """No highlight on a part that lies in a light's plane (its ``n . l`` is 0 up to rounding).
+
+    There the exact shading has no Phong term (``cos_i = 0``), but the rounded cosine is
+    ``+-1e-17`` and vertices where it came out positive would carry the full grazing highlight
+    ``(-l . v) ** n`` into the bands. ``values`` holds one part's columns and is changed in place.
+    """
+    diffuse = {f.light_index: i for i, f in enumerate(fams) if f.kind == "diffuse"}
+    for i, fam in enumerate(fams):
+        d = diffuse.get(fam.light_index)
+        if fam.kind == "diffuse" or d is None or not len(values):
+            continue
+        if float(np.max(np.abs(values[:, d]))) <= GRAZING:
+            values[:, i] = -1.0
 
 
 @njit(cache=True, nogil=True)

@@ -29,10 +29,14 @@ from ..lighting.shading import TERMINATOR_COSINE, Material
 
 __all__ = [
     "FieldFamily", "diffuse_levels", "specular_levels", "incidence", "diffuse_family", "specular_families",
-    "light_direction_at", "band_tables",
+    "light_direction_at", "band_tables", "GRAZING",
 ]
 
 Light = PointLight | DirectionalLight
+
+#: Incidence cosines within rounding of 0: a part of the surface whose cosine stays this close
+#: to 0 (a face in a point light's plane) is grazed, not lit (no Phong term).
+GRAZING = 1e-12
 
 
 @dataclass(frozen=True, slots=True, eq=False)

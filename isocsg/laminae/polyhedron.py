@@ -87,6 +87,7 @@ def polyhedron_surface(
     *,
     eye: NDArray[np.float64] | None = None,
     shininess: float = 1.0,
+    weights: tuple[float, float] = (1.0, 1.0),
 ) -> Surface:
     """Faces as fans of triangles relative to the centre, subdivided for point lights and highlights.
 
@@ -112,7 +113,7 @@ def polyhedron_surface(
             t = np.linspace(0.0, 1.0, 17)[None, :, None]
             lines = np.concatenate([g + t * (f - g)[:, None, :], f[:, None, :] + t * (np.roll(f, -1, axis=0) - f)[:, None, :]])
             spacing = curvature_spacing(lines, np.broadcast_to(n, lines.shape), lights, origin, contours,
-                                        eye=eye, shininess=shininess)
+                                        eye=eye, shininess=shininess, weights=weights)
             s = max(s, pieces(diam, spacing))
         if s == 1:
             fv = f

@@ -19,7 +19,7 @@ from numba import njit
 from numpy.typing import NDArray
 
 from ..lighting.lights import PointLight
-from .families import light_direction_at
+from .families import GRAZING, light_direction_at
 
 __all__ = ["Surface", "orient_outward", "light_reference_distance", "refinement", "specular_refinement", "eye_reference_distance", "curvature_spacing", "pieces"]
 
@@ -132,22 +132,29 @@ def eye_reference_distance(eye: NDArray[np.float64] | None, center: NDArray[np.f
 
 def _terms(
     points: NDArray[np.float64], normals: NDArray[np.float64], lights: list, origin: NDArray[np.float64],
-    eye: NDArray[np.float64] | None, shininess: float,
-) -> list[NDArray[np.float64]]:
+    eye: NDArray[np.float64] | None, shininess: float, weights: tuple[float, float] = (1.0, 1.0),
+) -> list[tuple[NDArray[np.float64], NDArray[np.bool_], float]]:
     """Each family's field in the units its levels are uniform in (points and ``eye`` relative to
-    ``origin``): ``n . l`` per light, and ``(rf . v) ** s`` on each lit side with an eye."""
+    ``origin``): ``n . l`` per light, and ``(rf . v) ** s`` on each lit side with an eye; with the
+    samples where it is smooth and its weight in the image (``weights`` = (kd, ks) times the
+    light's intensity)."""
     out = []
     for light in lights:
         ldir = light_direction_at(light, points, origin)
         ndl = np.einsum("ij,ij->i", normals, ldir)
-        out.append(ndl)
+        out.append((ndl, np.ones(len(ndl), bool), weights[0] * light.intensity))
         if eye is not None:
             rf = 2.0 * ndl[:, None] * normals - ldir
             v = eye - points
             v /= np.maximum(np.linalg.norm(v, axis=1, keepdims=True), 1e-300)
             rv = np.einsum("ij,ij->i", rf, v)
-            out.append(np.where(ndl > 0, np.maximum(rv, 0.0) ** shininess, 0.0))
-            out.append(np.where(ndl < 0, np.maximum(rv, 0.0) ** shininess, 0.0))
+            # The term jumps at the terminator and has a kink at the highlight's edge: both are
+            # levels the cut follows (0 of the diffuse and of the Phong family), so only samples
+            # inside the highlight on the lit side measure how the term bends.
+            w = weights[1] * light.intensity
+            lit_out, lit_in = ndl > GRAZING, ndl < -GRAZING
+            out.append((np.where(lit_out, np.maximum(rv, 0.0) ** shininess, 0.0), lit_out & (rv > 0), w))
+            out.append((np.where(lit_in, np.maximum(rv, 0.0) ** shininess, 0.0), lit_in & (rv > 0), w))
     return out
 
 
@@ -161,6 +168,7 @@ def curvature_spacing(
     eye: NDArray[np.float64] | None = None,
     shininess: float = 1.0,
     step: float | None = None,
+    weights: tuple[float, float] = (1.0, 1.0),
 ) -> float:
     """The longest mesh spacing along sample lines that follows every field within a quarter band step.
 
@@ -176,6 +184,8 @@ def curvature_spacing(
     step : float, optional
         The distance between samples along the surface (curved lines such as
         a truncus's rings); by default the chord of each straight line over ``m - 1``.
+    weights : (float, float), default (1, 1)
+        The material's ``kd`` and ``ks``: what each family adds to the image.
 
     Returns
     -------
@@ -185,7 +195,11 @@ def curvature_spacing(
         linear interpolant over a length ``h`` misses it by ``|f''| h**2 / 8``
         (``f''`` from second differences of the samples). Keeping that below
         ``R / (4 N)`` gives ``h = sqrt(2 R / (N |f''|))``, with N taken up to
-        ``SPECULAR_CONTOURS``.
+        ``SPECULAR_CONTOURS``. A family whose weighted range ``w R`` is below the
+        part's largest one ``D`` is followed within ``D / (4 N w)`` instead: its
+        error in the image stays below a quarter of the part's band step (a
+        faint highlight's edge spanning 1e-5 would otherwise ask for thousands
+        of generators). Only samples where the field is smooth count (see ``_terms``).
     """
     n_lines, m, _ = lines.shape
     if step is None:
@@ -196,14 +210,20 @@ def curvature_spacing(
         return np.inf
     n = min(contours, SPECULAR_CONTOURS)
     best = np.inf
-    for f in _terms(lines.reshape(-1, 3), normals.reshape(-1, 3), lights, origin, eye, shininess):
+    terms = []
+    for f, smooth, w in _terms(lines.reshape(-1, 3), normals.reshape(-1, 3), lights, origin, eye, shininess, weights):
         f = f.reshape(n_lines, m)
         r = float(f.max() - f.min())
-        if not r > 1e-12:
+        if r > 1e-12 and w > 0:
+            terms.append((f, smooth.reshape(n_lines, m), w, r))
+    dominant = max((w * r for _, _, w, r in terms), default=0.0)
+    for f, smooth, w, r in terms:
+        inside = smooth[:, :-2] & smooth[:, 1:-1] & smooth[:, 2:]
+        if not inside.any():
             continue
-        d2 = float(np.max(np.abs(f[:, :-2] - 2.0 * f[:, 1:-1] + f[:, 2:]) / (step[:, None] ** 2)))
+        d2 = float(np.max(np.where(inside, np.abs(f[:, :-2] - 2.0 * f[:, 1:-1] + f[:, 2:]), 0.0) / (step[:, None] ** 2)))
         if d2 > 0:
-            best = min(best, float(np.sqrt(2.0 * r / (n * d2))))
+            best = min(best, float(np.sqrt(2.0 * dominant / (n * w * d2))))
     return best
 
 

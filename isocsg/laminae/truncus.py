@@ -277,6 +277,7 @@ def truncus_surface(
     *,
     eye: NDArray[np.float64] | None = None,
     shininess: float = 1.0,
+    weights: tuple[float, float] = (1.0, 1.0),
 ) -> Surface:
     """Band mesh base of a truncus, relative to its centre.
 
@@ -321,7 +322,7 @@ def truncus_surface(
                 continue
             ring_pts = (z * a + r * circle)[None]
             ring_nrm = ((circle - k_ * a) / np.hypot(1.0, k_))[None]
-            gap = curvature_spacing(ring_pts, ring_nrm, lights, ct, contours, eye=eye, shininess=shininess,
+            gap = curvature_spacing(ring_pts, ring_nrm, lights, ct, contours, eye=eye, shininess=shininess, weights=weights,
                                     step=2.0 * np.pi * r / RING_SAMPLES)
             spacing = min(spacing, gap / r)  # as an angle
         if np.isfinite(spacing) and spacing > 0:
@@ -344,7 +345,7 @@ def truncus_surface(
     nrm = np.broadcast_to(((probe - k * a) / np.hypot(1.0, k))[:, None, :], lines.shape)
     origin = ct
     if lights:
-        n_ax = max(n_ax, pieces(slant, curvature_spacing(lines, nrm, lights, origin, contours, eye=eye, shininess=shininess)))
+        n_ax = max(n_ax, pieces(slant, curvature_spacing(lines, nrm, lights, origin, contours, eye=eye, shininess=shininess, weights=weights)))
 
     def ring(z: float, r: float) -> NDArray[np.float64]:
         return z * a + r * radial
@@ -378,7 +379,7 @@ def truncus_surface(
         if lights:
             spokes = centre + t * (r * probe[::2])[:, None, :]
             spacing = curvature_spacing(spokes, np.broadcast_to(n, spokes.shape), lights, origin, contours,
-                                        eye=eye, shininess=shininess)
+                                        eye=eye, shininess=shininess, weights=weights)
             n_rad = max(n_rad, pieces(r, spacing))
         verts.append(centre[None, :])
         rings = [ring(z, r * i / n_rad) if i < n_rad else ring(z, r) for i in range(1, n_rad + 1)]

@@ -995,23 +995,39 @@ def _tile_hits(camera: Camera, solid: Any, o: F64, d: F64, *, t_min: float = 0.0
 
 
 def shade_points(points: F64, normals: F64, eye: F64, lights: Sequence[Any], material: Material) -> F64:
-    """``ambient + sum intensity (kd max(0, n.l) + [n.l > 0] ks max(0, rf.v)^shininess)``."""
+    """``ambient + sum intensity (kd max(0, n.l) + [n.l > 0] ks max(0, rf.v)^shininess)``.
+
+    ``n.l`` within the rounding of the hit point counts as 0 (grazing, no highlight): on a
+    face whose plane holds a point light the exact ``n.l`` is 0, but a hit point a few ulps off
+    the plane gives ``+-1e-16`` and, where positive, the full grazing highlight ``(-l.v)^s``
+    at random pixels.
+    """
     p = np.asarray(points, dtype=np.float64)
     nrm = _normalize(np.asarray(normals, dtype=np.float64))
-    v = _normalize(np.asarray(eye, dtype=np.float64) - p)
+    e = np.asarray(eye, dtype=np.float64)
+    v = _normalize(e - p)
     out = np.full(len(p), float(material.ambient))
+    eps = 64.0 * np.finfo(np.float64).eps
     for light in lights:
         if isinstance(light, PointLight):
-            l = _normalize(np.asarray(light.position, dtype=np.float64) - p)
+            pos = np.asarray(light.position, dtype=np.float64)
+            d = pos - p
+            dist = np.linalg.norm(d, axis=-1)
+            l = _normalize(d)
+            # the hit point is off by about eps times the largest coordinate involved
+            size = np.maximum(np.maximum(np.linalg.norm(p, axis=-1), np.linalg.norm(e)), np.linalg.norm(pos))
+            grazing = eps * (1.0 + size / np.maximum(dist, 1e-300))
         elif isinstance(light, DirectionalLight):
             dl = np.asarray(light.direction, dtype=np.float64)
             l = np.broadcast_to(dl / np.linalg.norm(dl), p.shape)
+            grazing = np.full(len(p), eps)
         else:
             raise TypeError(f"unsupported light {type(light).__name__}")
         ndl = _dot(nrm, l)
         # The highlight jumps at the terminator: a cosine within rounding of 0 is not lit
-        # (a cylinder's side under a light along its axis has n . l = 0 exactly).
-        lit = ndl > TERMINATOR_COSINE
+        # (a cylinder's side under a light along its axis has n . l = 0 exactly; far from the
+        # origin the hit point's own rounding can exceed TERMINATOR_COSINE).
+        lit = ndl > np.maximum(TERMINATOR_COSINE, grazing)
         term = material.kd * np.where(lit, ndl, 0.0)
         if material.ks > 0:
             rf = 2 * ndl[:, None] * nrm - l
