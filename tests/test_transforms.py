@@ -227,3 +227,29 @@ def test_box_orientation_is_validated():
         Box((0, 0, 0), (1, 1, 1), np.diag([1.0, 1.0, -1.0]))
     # the default is the identity, and the scene form of an axis-aligned box is unchanged
     assert Box((0, 0, 0), (1, 1, 1)).to_dict() == {"box": {"center": [0.0, 0.0, 0.0], "size": [1.0, 1.0, 1.0]}}
+
+
+@pytest.mark.parametrize("fmt", ["toml", "json"])
+def test_turned_box_scene_file_round_trip(fmt):
+    from isocsg import Camera, PointLight, Scene
+    from isocsg.scene.io import dumps_scene, loads_scene
+
+    for angles in [(10, 20, 30), (1, 2, 3), (45, 45, 45), (0, 0, 90)]:
+        b = Box((0.5, 0, 0), (1, 2, 3)).rotate(angles)
+        s = Scene(Camera((0, -5, 0), (0, 0, 0)), [PointLight((0, -5, 5))], [b])
+        assert loads_scene(dumps_scene(s, format=fmt), format=fmt).objects[0].shape == b
+
+
+def test_turned_box_scene_file_errors_name_the_field():
+    from isocsg import SceneFileError
+    from isocsg.scene.io import loads_scene
+
+    text = """
+[camera]
+eye = [0, -5, 0]
+target = [0, 0, 0]
+[[objects]]
+shape = { box = { center = [0, 0, 0], size = [1, 1, 1], orientation = [[1, 0, 0], [0, 1, 0], [0, 0, 2]] } }
+"""
+    with pytest.raises(SceneFileError, match=re.escape("s.toml: objects[0].shape.box.orientation: must be orthonormal")):
+        loads_scene(text, source="s.toml")

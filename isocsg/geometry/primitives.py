@@ -257,7 +257,8 @@ ROTATION_TOL = 1e-9
 def rotation3(name: str, value: Any) -> tuple[Vec3, Vec3, Vec3]:
     """Validate a 3x3 rotation matrix (orthonormal, determinant +1) and return it as row tuples.
 
-    Matrices within :data:`ROTATION_TOL` of a rotation are polished to the nearest one.
+    Matrices within :data:`ROTATION_TOL` of a rotation, but further than 1e-12 from one, are
+    polished to the nearest rotation.
     """
     if isinstance(value, (str, bytes)):
         raise InvalidGeometryError(f"{name} must be a 3x3 rotation matrix, got {value!r}")
@@ -274,7 +275,7 @@ def rotation3(name: str, value: Any) -> tuple[Vec3, Vec3, Vec3]:
         raise InvalidGeometryError(f"{name} must be orthonormal (a rotation), got R^T R - I up to {err:g}")
     if np.linalg.det(r) < 0:
         raise InvalidGeometryError(f"{name} must be a rotation (determinant +1), got a reflection")
-    if err > 0.0:
+    if err > 1e-12:  # polished once; a polished matrix passes unchanged (files read back equal)
         u, _, vt = np.linalg.svd(r)
         r = u @ vt
     return tuple(tuple(float(x) for x in row) for row in r)  # type: ignore[return-value]
