@@ -407,9 +407,9 @@ class Sphere(Primitive):
         k = similarity_factor(A)
         if k is not None:
             return Sphere(c, k * self.radius)
-        raise InvalidParameterError(
-            f"matrix must be a similarity (rotation, reflection, uniform scale) for a Sphere, got {A.tolist()}"
-        )
+        from .ellipsoid import Ellipsoid
+
+        return Ellipsoid.from_affine(A * self.radius, c)
 
     def to_dict(self) -> dict[str, Any]:
         """``{"sphere": {"center": [...], "radius": r}}``."""
