@@ -124,6 +124,7 @@ def hook_for(prim: Any, which: str) -> Callable[..., Any] | None:
 
 def _register_builtins() -> None:
     from .ellipsoid import Ellipsoid
+    from .elliptic import EllipticTruncus
     from .primitives import Box, Cone, ConvexPolyhedron, Cylinder, Sphere, Truncus
 
     register_kind(PrimitiveKind("sphere", Sphere, ("center", "radius")))
@@ -141,6 +142,16 @@ def _register_builtins() -> None:
             section="isocsg.geometry.ellipsoid:ellipsoid_section",
             surface="isocsg.laminae.ellipsoid:ellipsoid_surface",
             manifold="isocsg.geometry.ellipsoid:ellipsoid_manifold",
+        )
+    )
+    register_kind(
+        PrimitiveKind(
+            "elliptic_truncus",
+            EllipticTruncus,
+            ("center", "matrix", "r1", "r2"),
+            section="isocsg.geometry.elliptic:elliptic_section",
+            surface="isocsg.laminae.elliptic:elliptic_surface",
+            manifold="isocsg.geometry.elliptic:elliptic_manifold",
         )
     )
 

@@ -21,7 +21,7 @@ from numpy.typing import NDArray
 
 from ..geometry.ellipsoid import Ellipsoid
 from ..lighting.lights import DirectionalLight
-from .surface import Surface, curvature_spacing, orient_outward, pieces
+from .surface import Surface, curvature_spacing, mixed_spacing, orient_outward, pieces
 
 __all__ = ["ellipsoid_surface", "MIN_LONGITUDES", "MAX_LONGITUDES"]
 
@@ -104,6 +104,11 @@ def ellipsoid_surface(
         pr, nr = _map(e, rings)
         h_phi = curvature_spacing(pr, nr, lights, origin, contours, eye=eye, shininess=shininess, step=phi_s[1])
     n_lon = int(np.clip(pieces(2.0 * np.pi, h_phi, cap=MAX_LONGITUDES), MIN_LONGITUDES, MAX_LONGITUDES))
+    if lights:  # the mixed term of the cells (see mixed_spacing), at the final n_lon
+        pg_ = np.linspace(0.0, np.pi, 65)
+        phig = 2.0 * np.pi * np.arange(n_lon + 1) / n_lon
+        pm, nm = _map(e, _grid(w, e1, e2, pg_, phig))
+        h_polar = min(h_polar, mixed_spacing(pm, nm, lights, origin, contours, pg_[1], phig[1], eye=eye, shininess=shininess))
     n_lat = int(np.clip(pieces(np.pi, h_polar, cap=MAX_LONGITUDES // 2), MIN_LONGITUDES // 2, MAX_LONGITUDES // 2))
     polar = np.pi * np.arange(1, n_lat) / n_lat
     phi = 2.0 * np.pi * np.arange(n_lon) / n_lon

@@ -11,11 +11,12 @@ itself:
 - ray-primitive intervals in closed form (sphere quadratic; truncus lateral
   quadric on one nappe intersected with the slab between its end planes;
   box and convex polyhedron as intersections of half-spaces, the polyhedron's
-  planes from its own ``scipy.spatial.ConvexHull``; a turned box and an
-  ellipsoid in their own frames, ``x = center + M y`` with ``M`` the rotation,
-  times ``diag(radii)`` for the ellipsoid: the ray ``M^-1 (o - c) + t M^-1 d``
-  meets the axis-aligned box or the unit ball at the same ``t``, and a normal
-  ``m`` there is ``M^-T m`` in the world),
+  planes from its own ``scipy.spatial.ConvexHull``; a turned box, an
+  ellipsoid and an elliptic truncus in their own frames, ``x = center + M y``
+  with ``M`` the rotation, times ``diag(radii)`` for the ellipsoid, the
+  ``matrix`` of the elliptic truncus: the ray ``M^-1 (o - c) + t M^-1 d``
+  meets the axis-aligned box, the unit ball or the truncus of height 1 along
+  z at the same ``t``, and a normal ``m`` there is ``M^-T m`` in the world),
 - CSG by interval arithmetic: the boundary events of all leaves are sorted
   along each ray and the tree is evaluated on every segment between them; the
   visible point is the start of the first non-empty segment inside the result,
@@ -52,6 +53,7 @@ from scipy.spatial import ConvexHull
 from isocsg import (
     Box,
     Ellipsoid,
+    EllipticTruncus,
     Camera,
     ConvexPolyhedron,
     Difference,
@@ -404,6 +406,16 @@ class _Leaf:
             lo = np.min([e - r * spread for e, r in ends], axis=0)
             hi = np.max([e + r * spread for e, r in ends], axis=0)
             return _Leaf(_TRUNCUS, (c, a, h2, k, r1, r2), lo, hi)
+        if isinstance(p, EllipticTruncus):
+            c = np.asarray(p.center, dtype=np.float64)
+            M = np.asarray(p.matrix, dtype=np.float64)
+            r1, r2 = float(p.r1), float(p.r2)
+            # the ends' ellipses: centre +- axis/2, extent r * hypot of the two radial columns
+            spread = np.sqrt(M[:, 0] ** 2 + M[:, 1] ** 2)
+            ends = [(c + M[:, 2] / 2, r1), (c - M[:, 2] / 2, r2)]
+            lo = np.min([e - r * spread for e, r in ends], axis=0)
+            hi = np.max([e + r * spread for e, r in ends], axis=0)
+            return _Leaf(_LOCAL, ("truncus", c, M, (r1, r2)), lo, hi)
         if isinstance(p, Ellipsoid):
             c = np.asarray(p.center, dtype=np.float64)
             M = np.asarray(p.orientation, dtype=np.float64) * np.asarray(p.radii, dtype=np.float64)
@@ -447,6 +459,9 @@ def _local_intervals(params: tuple[Any, ...], o: F64, d: F64) -> Intervals:
     dl = d @ Minv.T
     if shape == "ball":
         iv = _spheres(np.zeros((1, 3)), np.ones(1), ol, dl)
+    elif shape == "truncus":  # axis z, height 1, r1 at z = +1/2, r2 at z = -1/2
+        r1, r2 = h
+        iv = _trunci(np.zeros((1, 3)), np.array([[0.0, 0.0, 1.0]]), np.array([0.5]), np.array([r1 - r2]), np.array([r2]), ol, dl)
     else:
         iv = _halfspaces(_BOX_NORMALS, (np.abs(_BOX_NORMALS) @ h)[None, :], ol, dl)
     n_in = _normalize(iv.n_in @ Minv)  # M^-T m, row-wise
