@@ -146,10 +146,19 @@ def test_error_shrinks_with_more_contours(name):
     assert errors[0] > errors[1] > errors[2], errors
 
 
-def test_csg_of_transformed_parts_matches_reference():
+@pytest.mark.parametrize("csg", ["pixel", "surface"])
+def test_csg_of_transformed_parts_matches_reference(csg):
+    from isocsg.render import Renderer
+
     part = Box((0, 0, 0), (2, 2, 2)).rotate((10, 20, 30)) - Sphere((0, 0, 0), 1.2).scale((1, 1, 1.4)).rotate((0, 40, 0))
     tree = part | Cylinder((0, 0, 0), (0, 0, 3), 0.3).scale((1.5, 1, 1)).rotate((60, 0, 0))
-    judge(scene_of(tree, [PointLight((3, -2, 4))], (4, -5, 3), size=80))
+    scene = scene_of(tree, [PointLight((3, -2, 4))], (4, -5, 3), size=80)
+    result = compare(Renderer(csg=csg).render(scene).image, raycast_scene(scene))
+    assert result.iou >= MIN_IOU and result.fraction >= MIN_FRACTION, result.summary()
+    # membership of the tree agrees with its leaves' own (the difference and union written out)
+    x = np.random.default_rng(5).uniform(-2, 2, (20000, 3))
+    a, b, c = tree.leaves()[0], tree.leaves()[1], tree.leaves()[2]
+    assert np.array_equal(tree.contains(x), (a.contains(x) & ~b.contains(x)) | c.contains(x))
 
 
 # ----------------------------------------------------------------------------- hypothesis

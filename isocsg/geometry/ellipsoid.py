@@ -102,14 +102,24 @@ class Ellipsoid(Primitive):
         Examples
         --------
         >>> Ellipsoid.from_affine([[0, 2, 0], [1, 0, 0], [0, 0, 3]], (0, 0, 0)).radii
-        (3.0, 2.0, 1.0)
+        (2.0, 1.0, 3.0)
         """
         a = np.asarray(A, dtype=np.float64)
+        c = tuple(np.asarray(center, dtype=np.float64))
         u, s, _ = np.linalg.svd(a)  # A A^T = U S^2 U^T: the image depends on U and S only
-        if np.linalg.det(u) < 0:
-            u[:, 0] = -u[:, 0]  # an ellipsoid is symmetric in its own planes
         u[np.abs(u) <= 1e-15] = 0.0
-        return Ellipsoid(tuple(np.asarray(center, dtype=np.float64)), tuple(s), u)
+        one = np.abs(np.abs(u) - 1.0) <= 1e-15
+        u[one] = np.sign(u[one])
+        perm = np.abs(u)
+        if np.all((perm == 0.0) | (perm == 1.0)):  # axes along the world's: axis-aligned, radii permuted
+            return Ellipsoid(c, tuple(perm @ s))
+        # an ellipsoid is symmetric in its own planes: each axis points where its largest entry is
+        # positive, the last one flipped if needed to make a rotation
+        big = np.argmax(np.abs(u), axis=0)
+        u = u * np.sign(u[big, np.arange(3)])
+        if np.linalg.det(u) < 0:
+            u[:, 2] = -u[:, 2]
+        return Ellipsoid(c, tuple(s), u)
 
     # ------------------------------------------------------------ frame
     @property

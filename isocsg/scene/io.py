@@ -28,6 +28,14 @@ A scene file holds four parts (TOML shown; JSON uses the same structure)::
         { sphere = { center = [1, 1, 1], radius = 0.8 } },
     ] }
 
+Shape nodes are the primitive kinds of :mod:`isocsg.geometry.registry` (``sphere``,
+``truncus``, ``cylinder``, ``cone``, ``box`` with an optional ``orientation``,
+``polyhedron``, ``ellipsoid``, ``elliptic_truncus``), the Boolean nodes, and
+OpenSCAD's transforms around one ``shape``: ``translate {v}``, ``rotate {a, v?}``,
+``scale {v}``, ``mirror {v}``, ``multmatrix {m}`` and ``transform {matrix}``::
+
+    shape = { rotate = { a = [0, 0, 30], shape = { box = { center = [1, 0, 0], size = [2, 1, 1] } } } }
+
 Every error is a :class:`~isocsg.errors.SceneFileError` whose message starts
 with the file name and the dotted path of the offending field, e.g.
 ``scene.toml: objects[0].shape.sphere.radius: must be > 0, got -1``.
