@@ -17,6 +17,7 @@ from numpy.typing import NDArray
 from .._validation import integer
 from ..errors import InvalidGeometryError, InvalidParameterError, MissingDependencyError
 from ..geometry.primitives import Box, ConvexPolyhedron, Primitive, Solid, Sphere, Truncus
+from ..geometry.registry import hook_for
 from .program import OP_INTERSECTION, OP_UNION, compile_program
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -68,6 +69,9 @@ def _leaf(prim: Primitive, resolution: int, shapes: dict[tuple[Any, ...], Any] |
     m3 = _manifold3d()
     M = m3.Manifold
     shapes = {} if shapes is None else shapes
+    hook = hook_for(prim, "manifold")
+    if hook is not None:
+        return hook(prim, resolution)
     if isinstance(prim, Sphere):
         # manifold3d rounds the segment count up to a multiple of 4
         key = ("sphere", prim.radius, resolution)
@@ -85,7 +89,10 @@ def _leaf(prim: Primitive, resolution: int, shapes: dict[tuple[Any, ...], Any] |
         mat = np.column_stack([R, prim.center_array])
         return cyl.transform(mat.tolist())
     if isinstance(prim, Box):
-        return M.cube(tuple(prim.size), True).translate(tuple(prim.center))
+        cube = M.cube(tuple(prim.size), True)
+        if prim.axis_aligned:
+            return cube.translate(tuple(prim.center))
+        return cube.transform(np.column_stack([prim.rotation, prim.center_array]).tolist())
     if isinstance(prim, ConvexPolyhedron):
         return M.hull_points(np.asarray(prim.hull_vertices, dtype=np.float64).tolist())
     # any other convex primitive: its inscribed polyhedron
