@@ -12,7 +12,9 @@ from .errors import (
     InvalidParameterError,
     IsocsgError,
     MissingDependencyError,
+    OpenSCADError,
     SceneFileError,
+    UnsupportedOpenSCADError,
 )
 from .geometry import Box, Cone, ConvexPolyhedron, Cylinder, Primitive, RayHits, Solid, Sphere, Truncus
 from .lighting import DirectionalLight, Material, PointLight, shade
@@ -28,6 +30,8 @@ from .render.image import save_npy, save_png
 from .scene import load_scene, save_scene
 from .shadows import AreaLight, PolyhedronLight, illuminance, illuminance_and_state, shadow_state
 from .view import show
+from .geometry.extrude import extrude
+from .openscad import OpenSCADSkipWarning, dumps_openscad, load_openscad, loads_openscad, read_openscad, save_openscad
 
 __version__ = "0.1.0"
 
@@ -35,7 +39,7 @@ __all__ = [
     "__version__",
     "Camera",
     "IsocsgError", "InvalidGeometryError", "InvalidLightError", "InvalidParameterError",
-    "SceneFileError", "MissingDependencyError",
+    "SceneFileError", "MissingDependencyError", "OpenSCADError", "UnsupportedOpenSCADError",
     "Solid", "Primitive", "RayHits", "Sphere", "Truncus", "Cylinder", "Cone", "Box", "ConvexPolyhedron",
     "PointLight", "DirectionalLight", "Material", "shade",
     "Scene", "SceneObject", "RenderSettings",
@@ -45,4 +49,6 @@ __all__ = [
     "render", "Renderer", "RenderResult", "save_png", "save_npy", "show",
     "load_scene", "save_scene",
     "AreaLight", "PolyhedronLight", "illuminance", "shadow_state", "illuminance_and_state",
+    "extrude",
+    "load_openscad", "loads_openscad", "read_openscad", "save_openscad", "dumps_openscad", "OpenSCADSkipWarning",
 ]

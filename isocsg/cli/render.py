@@ -24,13 +24,18 @@ DESCRIPTION = """\
 Render a scene file (.toml or .json) to a PNG image (and optionally .npy and .svg). The scene's render.mode
 chooses the method: "isoluminance" (contour bands, point and directional lights)
 or "halftone" (exact illuminance and soft shadows from area and polyhedron lights).
+An OpenSCAD model (.csg, or .scad through the openscad program) is rendered with a camera that
+frames it (512x512 unless --size) and one directional light.
 """
+
+#: Model files rendered with a default camera and light.
+OPENSCAD_SUFFIXES = (".scad", ".csg")
 
 
 def register(subparsers: Any) -> argparse.ArgumentParser:
     """Add the ``render`` sub-command."""
     p = subparsers.add_parser("render", help="render a scene file to PNG", description=DESCRIPTION)
-    p.add_argument("scene", metavar="SCENE", help="scene file, .toml or .json")
+    p.add_argument("scene", metavar="SCENE", help="scene file (.toml or .json) or OpenSCAD model (.scad or .csg)")
     p.add_argument("-o", "--output", required=True, metavar="OUT.png", help="PNG file to write")
     p.add_argument("--npy", metavar="OUT.npy", help="also write the float32 image (NaN background) as .npy")
     p.add_argument(
@@ -49,7 +54,7 @@ def run(args: argparse.Namespace) -> int:
         raise InvalidParameterError(f"--svg must name a .svg file, got {args.svg!r}")
     if args.svg is not None and Path(args.svg).is_dir():
         raise InvalidParameterError(f"--svg {args.svg!r} is a directory")
-    scene = apply_overrides(load_scene(args.scene), size=args.size, contours=args.contours)
+    scene = apply_overrides(_load(args.scene), size=args.size, contours=args.contours)
     if args.svg is not None:
         if scene.render.mode != "isoluminance":
             raise InvalidParameterError("--svg needs render.mode = \"isoluminance\"")
@@ -67,3 +72,14 @@ def run(args: argparse.Namespace) -> int:
         save_scene_svg(args.svg, scene)
         print(f"wrote {args.svg}")
     return 0
+
+
+def _load(path: str) -> Any:
+    """A scene file, or an OpenSCAD model in a framed scene."""
+    if Path(path).suffix.lower() not in OPENSCAD_SUFFIXES:
+        return load_scene(path)
+    from ..openscad import read_openscad
+    from ..scene.framing import framed_scene
+
+    model = read_openscad(path)
+    return framed_scene(model.solid)

@@ -24,7 +24,7 @@ from .._validation import MAX_ABS_COORD, MAX_VERTICES, scalar
 from ..errors import InvalidGeometryError
 from .primitives import ConvexPolyhedron, Solid
 
-__all__ = ["extrude", "convex_partition", "prisms"]
+__all__ = ["extrude", "extrude_rings", "convex_partition", "prisms"]
 
 
 def _polygons(polygon: Any, name: str) -> list[Any]:
@@ -38,8 +38,6 @@ def _polygons(polygon: Any, name: str) -> list[Any]:
         parts = list(polygon.geoms)
     else:
         raise InvalidGeometryError(f"{name} must be a shapely Polygon or MultiPolygon, got {type(polygon).__name__}")
-    if polygon.is_empty or polygon.area <= 0:
-        raise InvalidGeometryError(f"{name} must have an area > 0, got {polygon.area:g}")
     coords = shapely.get_coordinates(polygon)
     if not np.all(np.isfinite(coords)):
         raise InvalidGeometryError(f"{name} must have finite coordinates")
@@ -50,6 +48,8 @@ def _polygons(polygon: Any, name: str) -> list[Any]:
     if not polygon.is_valid:
         reason = shapely.is_valid_reason(polygon)
         raise InvalidGeometryError(f"{name} must be a valid polygon (shapely.make_valid repairs it), got {reason}")
+    if polygon.is_empty or polygon.area <= 0:
+        raise InvalidGeometryError(f"{name} must have an area > 0, got {polygon.area:g}")
     return [p for p in parts if p.area > 0]
 
 
@@ -62,7 +62,7 @@ def _convex_at(pts: NDArray[np.float64], prev: int, here: int, nxt: int, scale: 
     return _cross(pts[prev], pts[here], pts[nxt]) >= -1e-12 * scale * scale
 
 
-def convex_partition(polygon: Any) -> list[NDArray[np.float64]]:
+def convex_partition(polygon: Any, *, name: str = "polygon") -> list[NDArray[np.float64]]:
     """Split a polygon into convex pieces that cover it exactly.
 
     Parameters
@@ -90,7 +90,7 @@ def convex_partition(polygon: Any) -> list[NDArray[np.float64]]:
     """
     import shapely
 
-    parts = _polygons(polygon, "polygon")
+    parts = _polygons(polygon, name)
     pieces: list[NDArray[np.float64]] = []
     for part in parts:
         part = shapely.normalize(part)
@@ -190,7 +190,7 @@ def prisms(polygon: Any, z0: float, z1: float) -> Solid:
 
     if not (math.isfinite(z0) and math.isfinite(z1)) or z1 <= z0:
         raise InvalidGeometryError(f"extrude.height must be > 0, got {z1 - z0:g}")
-    pieces = convex_partition(polygon)
+    pieces = convex_partition(polygon, name="extrude.polygon")
     solids = []
     for piece in pieces:
         k = len(piece)
@@ -201,3 +201,47 @@ def prisms(polygon: Any, z0: float, z1: float) -> Solid:
         verts[k:, 2] = z1
         solids.append(ConvexPolyhedron(verts))
     return solids[0] if len(solids) == 1 else union_all(solids)
+
+
+def _ring(name: str, value: Any) -> NDArray[np.float64]:
+    if isinstance(value, np.ndarray):
+        value = value.tolist()
+    if not isinstance(value, (list, tuple)) or not all(isinstance(p, (list, tuple)) and len(p) == 2 for p in value):
+        raise InvalidGeometryError(f"{name} must be a list of [x, y] points, got {type(value).__name__}")
+    if len(value) < 3:
+        raise InvalidGeometryError(f"{name} must have at least 3 points, got {len(value)}")
+    if len(value) > MAX_VERTICES:
+        raise InvalidGeometryError(f"{name} must have at most {MAX_VERTICES} points, got {len(value)}")
+    for p in value:
+        for x in p:
+            if isinstance(x, bool) or not isinstance(x, (int, float)) or not math.isfinite(x) or abs(x) > MAX_ABS_COORD:
+                raise InvalidGeometryError(f"{name} must hold finite numbers within +-{MAX_ABS_COORD:g}, got {x!r}")
+    return np.asarray(value, dtype=np.float64)
+
+
+def extrude_rings(polygon: Any, height: float, holes: Any = (), center: bool = False) -> Solid:
+    """:func:`extrude` of a polygon given as rings of ``[x, y]`` points (the scene files' ``extrude`` node).
+
+    Parameters
+    ----------
+    polygon : sequence of [x, y]
+        The outer ring (at least 3 points; closing point optional).
+    height : float
+        Extrusion length, > 0.
+    holes : sequence of rings, optional
+        Inner rings, inside the outer one.
+    center : bool, default False
+        Span ``z`` in ``[-height/2, height/2]`` instead of ``[0, height]``.
+
+    Raises
+    ------
+    InvalidGeometryError
+        Naming the field (``extrude.polygon``, ``extrude.holes``, ``extrude.height``).
+    """
+    from shapely.geometry import Polygon
+
+    outer = _ring("extrude.polygon", polygon)
+    if not isinstance(holes, (list, tuple)):
+        raise InvalidGeometryError(f"extrude.holes must be a list of rings, got {type(holes).__name__}")
+    inner = [_ring(f"extrude.holes[{k}]", h) for k, h in enumerate(holes)]
+    return extrude(Polygon(outer, inner), height, center=center)

@@ -222,7 +222,8 @@ class _Lowerer:
                 continue
             p = pts[f]
             enclosed += sum(float(np.dot(p[0], np.cross(p[i], p[i + 1]))) for i in range(1, len(f) - 1)) / 6.0
-        planar = np.all(np.abs(pts @ hull.face_normals.T - hull.face_offsets).min(axis=1) <= 1e-9 * max(scale, 1.0))
+        used = pts[sorted({i for f in faces for i in f})]
+        planar = np.all(np.abs(used @ hull.face_normals.T - hull.face_offsets).min(axis=1) <= 1e-9 * max(scale, 1.0))
         if not planar or abs(abs(enclosed) - hull.volume) > 1e-9 * max(hull.volume, scale**3):
             self.unsupported(call, "a non-convex polyhedron is not an isocsg primitive; split it into convex ones")
             return None
@@ -335,14 +336,45 @@ class _Lowerer:
 
 
 def _show(value: Any, limit: int = 60) -> str:
-    text = repr(value)
-    return text if len(text) <= limit else text[: limit - 3] + "..."
+    """A short repr, built iteratively (nested lists may be deeper than the recursion limit)."""
+    out: list[str] = []
+    size = 0
+    todo: list[Any] = [value]
+    while todo and size <= limit:
+        v = todo.pop()
+        if v is _CLOSE:
+            piece = "]"
+        elif isinstance(v, list):
+            piece = "["
+            todo.append(_CLOSE)
+            for k, item in enumerate(reversed(v)):
+                todo.append(item)
+                if k < len(v) - 1:
+                    todo.append(_SEP)
+        elif v is _SEP:
+            piece = ", "
+        else:
+            piece = repr(v)
+        out.append(piece)
+        size += len(piece)
+    text = "".join(out)
+    return text if size <= limit and not todo else text[: limit - 3] + "..."
+
+
+_SEP, _CLOSE = object(), object()  # markers of the iterative repr
 
 
 def _transform(lw: _Lowerer, call: CSGCall, solid: Solid, m: NDArray[np.float64]) -> Solid:
     """``solid.transform(m)``, its validation errors naming the node."""
+    method = getattr(solid, "transform", None)
+    if method is None:
+        raise UnsupportedOpenSCADError(
+            f"{lw.where(call)}{call.name}: this isocsg has no transform() for {type(solid).__name__}",
+            line=call.line,
+            node=call.name,
+        )
     try:
-        return solid.transform(m)  # type: ignore[attr-defined,no-any-return]
+        return method(m)  # type: ignore[no-any-return]
     except InvalidGeometryError as exc:
         raise lw.fail(call, str(exc)) from None
 

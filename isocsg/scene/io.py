@@ -61,6 +61,7 @@ from ..errors import (
     InvalidParameterError,
     SceneFileError,
 )
+from ..geometry.extrude import extrude_rings
 from ..geometry.primitives import Box, Cone, ConvexPolyhedron, Cylinder, Solid, Sphere, Truncus
 from ..lighting.lights import DirectionalLight, Material, PointLight
 from .model import RenderSettings, Scene, SceneObject
@@ -93,6 +94,7 @@ _PRIMITIVE_FIELDS: dict[str, tuple[tuple[str, ...], tuple[str, ...]]] = {
     "cone": (("center", "axis", "radius"), ()),
     "box": (("center", "size"), ()),
     "polyhedron": (("vertices",), ()),
+    "extrude": (("polygon", "height"), ("holes", "center")),
 }
 _PRIMITIVE_TYPES: dict[str, Callable[..., Solid]] = {
     "sphere": Sphere,
@@ -101,6 +103,7 @@ _PRIMITIVE_TYPES: dict[str, Callable[..., Solid]] = {
     "cone": Cone,
     "box": Box,
     "polyhedron": ConvexPolyhedron,
+    "extrude": extrude_rings,
 }
 # Class names that appear as prefixes in the value types' own messages.
 _CLASS_NAMES = {
@@ -110,6 +113,7 @@ _CLASS_NAMES = {
     "cone": "Cone",
     "box": "Box",
     "polyhedron": "ConvexPolyhedron",
+    "extrude": "extrude",
 }
 _CSG_TYPES: dict[str, type[CSGNode]] = {"union": Union, "intersection": Intersection, "difference": Difference}
 
@@ -201,7 +205,7 @@ def _type_name(value: Any) -> str:
 
 def _reword(path: str, class_name: str, message: str) -> tuple[str, str]:
     """Turn ``Class.field rest`` into ``(path.field, rest)``."""
-    m = re.match(rf"^{re.escape(class_name)}\.(\w+) (.*)$", message, flags=re.DOTALL)
+    m = re.match(rf"^{re.escape(class_name)}\.(\w+(?:\[\d+\])*) (.*)$", message, flags=re.DOTALL)
     if m is None:
         return path, message
     field, rest = m.group(1), m.group(2)
