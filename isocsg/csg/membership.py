@@ -121,7 +121,7 @@ def signed_distance(prim: Primitive, points: NDArray[np.float64]) -> NDArray[np.
         d = p - prim.center_array
         return np.sqrt(np.einsum("ij,ij->i", d, d)) - prim.radius
     if isinstance(prim, Box):
-        q = np.abs(p - prim.center_array) - prim.half_size
+        q = np.abs(prim.to_local(p)) - prim.half_size
         outside = np.sqrt(np.einsum("ij,ij->i", np.maximum(q, 0), np.maximum(q, 0)))
         return outside + np.minimum(q.max(axis=1), 0.0)
     if isinstance(prim, Truncus):

@@ -85,7 +85,10 @@ def _leaf(prim: Primitive, resolution: int, shapes: dict[tuple[Any, ...], Any] |
         mat = np.column_stack([R, prim.center_array])
         return cyl.transform(mat.tolist())
     if isinstance(prim, Box):
-        return M.cube(tuple(prim.size), True).translate(tuple(prim.center))
+        cube = M.cube(tuple(prim.size), True)
+        if prim.axis_aligned:
+            return cube.translate(tuple(prim.center))
+        return cube.transform(np.column_stack([prim.rotation, prim.center_array]).tolist())
     if isinstance(prim, ConvexPolyhedron):
         return M.hull_points(np.asarray(prim.hull_vertices, dtype=np.float64).tolist())
     # any other convex primitive: its inscribed polyhedron

@@ -457,7 +457,8 @@ def primitive_section(prim: Primitive, frame: NDArray[np.float64], resolution: i
 class LeafTable:
     """The leaves of a program as arrays, for vectorised extents and batched sections.
 
-    ``kind``: 0 sphere, 1 truncus, 2 box, 3 polyhedron. Unused entries are 0.
+    ``kind``: 0 sphere, 1 truncus, 2 axis-aligned box, 3 polyhedron (and any other convex
+    leaf, through its polyhedron, e.g. a turned box). Unused entries are 0.
     """
 
     kind: NDArray[np.int8]
@@ -541,7 +542,7 @@ def leaf_table(prog: Program) -> LeafTable:
         elif isinstance(p, Truncus):
             kind[i] = 1
             center[i], axis[i], height[i], r1[i], r2[i] = p.center, p.unit_axis, p.height, p.r1, p.r2
-        elif isinstance(p, Box):
+        elif isinstance(p, Box) and p.axis_aligned:
             kind[i] = 2
             center[i], half[i] = p.center, p.half_size
         else:
@@ -638,6 +639,8 @@ def coplanar_sides(prog: Program, F: NDArray[np.float64], ids: NDArray[np.int64]
             out[bx[hit]] = -1 if sgn > 0 else 1
     for j in np.nonzero(kind == 3)[0].tolist():
         p = prog.leaves[int(ids[j])]
+        if isinstance(p, Box):
+            p = p.to_polyhedron()
         if not isinstance(p, ConvexPolyhedron):
             continue
         size = float(np.max(np.ptp(p.hull_vertices, axis=0)))

@@ -48,7 +48,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from .._validation import integer, nonzero_vector3, scalar
 from ..errors import InvalidParameterError
-from ..geometry.primitives import ConvexPolyhedron, Solid
+from ..geometry.primitives import Box, ConvexPolyhedron, Solid
 from .program import OP_DIFFERENCE, OP_LEAF, OP_UNION, Program
 from .section import combine_sections, leaf_sections, leaf_table, plane_frame, solid_program
 
@@ -209,7 +209,7 @@ def _prismatic(prog: Program, w: NDArray[np.float64]) -> NDArray[np.bool_]:
     out[(k == 1) & (tab.r1 == tab.r2) & (np.abs(tab.axis @ w) >= 1.0 - 1e-13)] = True
     for i in np.nonzero(k == 3)[0].tolist():
         p = prog.leaves[i]
-        if isinstance(p, ConvexPolyhedron):
+        if isinstance(p, (ConvexPolyhedron, Box)):
             d = np.abs(p.face_normals @ w)
             out[i] = bool(np.all((d <= 1e-13) | (d >= 1.0 - 1e-13)))
     return out

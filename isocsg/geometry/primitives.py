@@ -24,7 +24,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from .._validation import MAX_ABS_COORD, MAX_VERTICES, MIN_ASPECT, Vec3, length_floor, nonzero_vector3, points_array, scalar, vector3
-from ..errors import InvalidGeometryError
+from ..errors import InvalidGeometryError, InvalidParameterError
 
 if TYPE_CHECKING:  # pragma: no cover
     import trimesh
@@ -92,6 +92,83 @@ class Solid:
 
         return difference(self, other)
 
+    # ------------------------------------------------------------ transforms
+    def transform(self, matrix: ArrayLike) -> Solid:
+        """The image under an affine map ``x -> A x + t`` given as a 4x4 or 3x4 matrix ``[A | t]``.
+
+        Parameters
+        ----------
+        matrix : array_like, shape (4, 4) or (3, 4)
+            Finite, invertible, with a condition number at most
+            :data:`isocsg.geometry.transforms.MAX_CONDITION`.
+
+        Returns
+        -------
+        Solid
+            A new solid; ``self`` is unchanged. Primitives stay exact analytic
+            primitives (see :doc:`the transforms section of the README <README>`).
+
+        Raises
+        ------
+        InvalidParameterError
+            If the matrix is malformed, singular or too ill-conditioned (the
+            message names ``matrix``).
+
+        Examples
+        --------
+        >>> Sphere((0, 0, 0), 1).transform([[2, 0, 0, 1], [0, 2, 0, 0], [0, 0, 2, 0]])
+        Sphere(center=(1.0, 0.0, 0.0), radius=2.0)
+        """
+        from .transforms import transform_solid
+
+        return transform_solid(self, matrix)
+
+    def translate(self, v: ArrayLike) -> Solid:
+        """The solid moved by ``v`` (metres).
+
+        Examples
+        --------
+        >>> Sphere((0, 0, 0), 1).translate((1, 2, 3)).center
+        (1.0, 2.0, 3.0)
+        """
+        from .transforms import translation_matrix
+
+        return self.transform(translation_matrix(v))
+
+    def rotate(self, v: ArrayLike, axis: ArrayLike | None = None) -> Solid:
+        """The solid turned about the origin (degrees), as OpenSCAD's ``rotate``.
+
+        Parameters
+        ----------
+        v : array_like, shape (3,), or float
+            Euler angles ``[a, b, c]``: ``a`` about x, then ``b`` about y, then
+            ``c`` about z. A single number turns about ``axis`` (default z).
+        axis : array_like, shape (3,), optional
+            The axis of an axis-angle rotation (right-hand rule).
+
+        Examples
+        --------
+        >>> Box((1, 0, 0), (2, 1, 1)).rotate((0, 0, 90))
+        Box(center=(0.0, 1.0, 0.0), size=(1.0, 2.0, 1.0))
+        """
+        from .transforms import axis_angle_matrix, rotation_matrix
+
+        if axis is not None or np.ndim(v) == 0:
+            return self.transform(axis_angle_matrix(v, (0.0, 0.0, 1.0) if axis is None else axis))  # type: ignore[arg-type]
+        return self.transform(rotation_matrix(v))
+
+    def scale(self, s: ArrayLike) -> Solid:
+        """The solid scaled about the origin by a number or per axis ``[sx, sy, sz]``."""
+        from .transforms import scale_matrix
+
+        return self.transform(scale_matrix(s))
+
+    def mirror(self, normal: ArrayLike) -> Solid:
+        """The solid reflected in the plane through the origin with ``normal`` (OpenSCAD's ``mirror``)."""
+        from .transforms import mirror_matrix
+
+        return self.transform(mirror_matrix(normal))
+
     # Subclasses override these.
     def contains(self, points: ArrayLike) -> NDArray[np.bool_]:  # pragma: no cover
         raise NotImplementedError
@@ -135,6 +212,10 @@ class Primitive(Solid):
         """A plain mapping ``{kind: {field: value}}`` for scene files."""
         raise NotImplementedError
 
+    def _affine(self, A: NDArray[np.float64], t: NDArray[np.float64]) -> Primitive:  # pragma: no cover
+        """The image under ``x -> A x + t`` (``A`` validated by :func:`~isocsg.geometry.transforms.affine_matrix`)."""
+        raise NotImplementedError
+
 
 def _as_rays(origins: ArrayLike, directions: ArrayLike) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
     o = points_array("origins", origins)
@@ -165,6 +246,57 @@ def _perpendicular_frame(axis: NDArray[np.float64]) -> tuple[NDArray[np.float64]
     u = np.cross(axis, helper)
     u /= np.linalg.norm(u)
     return u, np.cross(axis, u)
+
+
+IDENTITY3: tuple[Vec3, Vec3, Vec3] = ((1.0, 0.0, 0.0), (0.0, 1.0, 0.0), (0.0, 0.0, 1.0))
+
+#: How far from orthonormal (max |R^T R - I|) an ``orientation`` may be; it is then made exactly orthonormal.
+ROTATION_TOL = 1e-9
+
+
+def rotation3(name: str, value: Any) -> tuple[Vec3, Vec3, Vec3]:
+    """Validate a 3x3 rotation matrix (orthonormal, determinant +1) and return it as row tuples.
+
+    Matrices within :data:`ROTATION_TOL` of a rotation, but further than 1e-12 from one, are
+    polished to the nearest rotation.
+    """
+    if isinstance(value, (str, bytes)):
+        raise InvalidGeometryError(f"{name} must be a 3x3 rotation matrix, got {value!r}")
+    try:
+        r = np.asarray(value, dtype=np.float64)
+    except (TypeError, ValueError):
+        raise InvalidGeometryError(f"{name} must be a 3x3 rotation matrix of numbers") from None
+    if r.shape != (3, 3):
+        raise InvalidGeometryError(f"{name} must have shape (3, 3), got {r.shape}")
+    if not np.all(np.isfinite(r)):
+        raise InvalidGeometryError(f"{name} must be finite, got {r.tolist()}")
+    err = float(np.max(np.abs(r.T @ r - np.eye(3))))
+    if err > ROTATION_TOL:
+        raise InvalidGeometryError(f"{name} must be orthonormal (a rotation), got R^T R - I up to {err:g}")
+    if np.linalg.det(r) < 0:
+        raise InvalidGeometryError(f"{name} must be a rotation (determinant +1), got a reflection")
+    if err > 1e-12:  # polished once; a polished matrix passes unchanged (files read back equal)
+        u, _, vt = np.linalg.svd(r)
+        r = u @ vt
+    return tuple(tuple(float(x) for x in row) for row in r)  # type: ignore[return-value]
+
+
+def _orthogonal_columns(B: NDArray[np.float64]) -> NDArray[np.float64] | None:
+    """Column lengths of ``B`` when its columns are mutually orthogonal (relative 1e-9), else None."""
+    norms = np.linalg.norm(B, axis=0)
+    g = (B.T @ B) / np.outer(norms, norms)
+    if np.max(np.abs(g - np.eye(3))) <= 1e-9:
+        return norms
+    return None
+
+
+def _snap_rotation(Q: NDArray[np.float64]) -> NDArray[np.float64]:
+    """``Q`` with entries within 1e-15 of 0 or +-1 made exact (so 90-degree turns stay exact)."""
+    out = Q.copy()
+    out[np.abs(out) <= 1e-15] = 0.0
+    one = np.abs(np.abs(out) - 1.0) <= 1e-15
+    out[one] = np.sign(out[one])
+    return out
 
 
 # ----------------------------------------------------------------------------- sphere
@@ -267,6 +399,17 @@ class Sphere(Primitive):
         ).reshape(-1, 3)
         pts = np.vstack([[0, 0, 1.0], ring, [0, 0, -1.0]]) * self.radius + self.center_array
         return ConvexPolyhedron(pts)
+
+    def _affine(self, A: NDArray[np.float64], t: NDArray[np.float64]) -> Primitive:
+        from .transforms import similarity_factor
+
+        c = A @ self.center_array + t
+        k = similarity_factor(A)
+        if k is not None:
+            return Sphere(c, k * self.radius)
+        raise InvalidParameterError(
+            f"matrix must be a similarity (rotation, reflection, uniform scale) for a Sphere, got {A.tolist()}"
+        )
 
     def to_dict(self) -> dict[str, Any]:
         """``{"sphere": {"center": [...], "radius": r}}``."""
@@ -539,6 +682,31 @@ class Truncus(Primitive):
             pts.append(c[None, :] if r == 0 else c + r * circle)
         return ConvexPolyhedron(np.vstack(pts))
 
+    def _affine(self, A: NDArray[np.float64], t: NDArray[np.float64]) -> Primitive:
+        c = A @ self.center_array + t
+        axis = A @ np.asarray(self.axis, dtype=np.float64)
+        u, v = _perpendicular_frame(self.unit_axis)
+        au, av = A @ u, A @ v
+        nu, nv = float(np.linalg.norm(au)), float(np.linalg.norm(av))
+        an = float(np.linalg.norm(axis))
+        tol = 1e-9
+        circular = (
+            abs(nu - nv) <= tol * max(nu, nv)
+            and abs(au @ av) <= tol * nu * nv
+            and abs(au @ axis) <= tol * nu * an
+            and abs(av @ axis) <= tol * nv * an
+        )
+        if circular:  # end circles map to circles normal to the new axis: a right truncus again
+            k = 0.5 * (nu + nv)
+            if type(self) is Cylinder:
+                return Cylinder(c, axis, k * self.r1)
+            if type(self) is Cone:
+                return Cone(c, axis, k * self.r1)
+            return Truncus(c, axis, k * self.r1, k * self.r2)
+        raise InvalidParameterError(
+            f"matrix must keep the end circles of a {type(self).__name__} circular, got {A.tolist()}"
+        )
+
     def to_dict(self) -> dict[str, Any]:
         """``{"truncus": {"center", "axis", "r1", "r2"}}``."""
         return {"truncus": {"center": list(self.center), "axis": list(self.axis), "r1": self.r1, "r2": self.r2}}
@@ -764,6 +932,10 @@ class ConvexPolyhedron(Primitive):
         """The polyhedron itself (it is already exact)."""
         return self
 
+    def _affine(self, A: NDArray[np.float64], t: NDArray[np.float64]) -> Primitive:
+        # the hull of the mapped points is the image of the hull (affine maps keep convexity)
+        return ConvexPolyhedron(np.asarray(self.vertices, dtype=np.float64) @ A.T + t)
+
     def to_dict(self) -> dict[str, Any]:
         """``{"polyhedron": {"vertices": [...]}}``."""
         return {"polyhedron": {"vertices": [list(v) for v in self.vertices]}}
@@ -771,18 +943,24 @@ class ConvexPolyhedron(Primitive):
 
 @dataclass(frozen=True, slots=True)
 class Box(Primitive):
-    """An axis-aligned box.
+    """A box (rectangular cuboid), axis-aligned unless given an ``orientation``.
 
     Parameters
     ----------
     center : array_like, shape (3,)
     size : array_like, shape (3,)
-        Edge lengths ``[sx, sy, sz]``, each > 0.
+        Edge lengths ``[sx, sy, sz]`` along the box's own axes, each > 0.
+    orientation : array_like, shape (3, 3), optional
+        A rotation matrix whose columns are the box's own x, y and z axes in
+        world coordinates (default the identity: an axis-aligned box). A point
+        ``p`` of the box's own frame lies at ``center + orientation @ p``.
 
     Raises
     ------
     InvalidGeometryError
-        On non-finite values or a size that is not > 0 in every axis.
+        On non-finite values, a size that is not > 0 in every axis, or an
+        orientation that is not a rotation (orthonormal within
+        :data:`ROTATION_TOL`, determinant +1).
 
     Examples
     --------
@@ -793,6 +971,7 @@ class Box(Primitive):
 
     center: Vec3
     size: Vec3
+    orientation: tuple[Vec3, Vec3, Vec3] = IDENTITY3
     kind = "box"
 
     def __post_init__(self) -> None:
@@ -811,6 +990,21 @@ class Box(Primitive):
                 f"Box.size must have its smallest edge at least {MIN_ASPECT:g} x its largest, got {size}"
             )
         object.__setattr__(self, "size", size)
+        object.__setattr__(self, "orientation", rotation3("Box.orientation", self.orientation))
+
+    def __repr__(self) -> str:
+        extra = "" if self.axis_aligned else f", orientation={self.orientation}"
+        return f"Box(center={self.center}, size={self.size}{extra})"
+
+    @property
+    def axis_aligned(self) -> bool:
+        """True when the orientation is the identity."""
+        return self.orientation == IDENTITY3
+
+    @property
+    def rotation(self) -> NDArray[np.float64]:
+        """The orientation as a (3, 3) array (columns: the box's own axes)."""
+        return np.asarray(self.orientation, dtype=np.float64)
 
     @property
     def center_array(self) -> NDArray[np.float64]:
@@ -819,25 +1013,31 @@ class Box(Primitive):
 
     @property
     def half_size(self) -> NDArray[np.float64]:
-        """Half edge lengths."""
+        """Half edge lengths (along the box's own axes)."""
         return np.asarray(self.size, dtype=np.float64) / 2
+
+    def to_local(self, points: ArrayLike) -> NDArray[np.float64]:
+        """Points in the box's own frame (centre at the origin, edges along the axes)."""
+        p = np.asarray(points, dtype=np.float64).reshape(-1, 3) - self.center_array
+        return p if self.axis_aligned else p @ self.rotation
 
     @property
     def corners(self) -> NDArray[np.float64]:
         """The 8 corners, shape (8, 3)."""
         signs = np.array([[x, y, z] for x in (-1, 1) for y in (-1, 1) for z in (-1, 1)], dtype=np.float64)
-        return self.center_array + signs * self.half_size
+        local = signs * self.half_size
+        return self.center_array + (local if self.axis_aligned else local @ self.rotation.T)
 
     @property
     def face_normals(self) -> NDArray[np.float64]:
-        """Outward normals of the 6 faces (+x, -x, +y, -y, +z, -z)."""
-        return np.array([[1, 0, 0], [-1, 0, 0], [0, 1, 0], [0, -1, 0], [0, 0, 1], [0, 0, -1]], dtype=np.float64)
+        """Outward normals of the 6 faces (+x, -x, +y, -y, +z, -z of the box's own axes)."""
+        local = np.array([[1, 0, 0], [-1, 0, 0], [0, 1, 0], [0, -1, 0], [0, 0, 1], [0, 0, -1]], dtype=np.float64)
+        return local if self.axis_aligned else local @ self.rotation.T
 
     @property
     def face_offsets(self) -> NDArray[np.float64]:
         """Plane offsets ``n . x = d`` of the 6 faces."""
-        n = self.face_normals
-        return n @ self.center_array + np.abs(n) @ self.half_size
+        return self.face_normals @ self.center_array + np.repeat(self.half_size, 2)
 
     def face_polygons(self) -> list[NDArray[np.float64]]:
         """Each face as a (4, 3) array, counter-clockwise seen from outside."""
@@ -858,8 +1058,9 @@ class Box(Primitive):
 
     @property
     def bounds(self) -> NDArray[np.float64]:
-        """Axis-aligned bounds, shape (2, 3)."""
-        return np.stack([self.center_array - self.half_size, self.center_array + self.half_size])
+        """Axis-aligned bounds, shape (2, 3) (exact)."""
+        ext = self.half_size if self.axis_aligned else np.abs(self.rotation) @ self.half_size
+        return np.stack([self.center_array - ext, self.center_array + ext])
 
     @property
     def volume(self) -> float:
@@ -875,6 +1076,25 @@ class Box(Primitive):
         """The box as a :class:`ConvexPolyhedron` (exact)."""
         return ConvexPolyhedron(self.corners)
 
+    def _affine(self, A: NDArray[np.float64], t: NDArray[np.float64]) -> Primitive:
+        c = A @ self.center_array + t
+        B = A @ self.rotation
+        norms = _orthogonal_columns(B)
+        if norms is None:  # a shear of the box: a parallelepiped
+            return ConvexPolyhedron(self.corners @ A.T + t)
+        Q = B / norms
+        if np.linalg.det(Q) < 0:  # a reflection: the box is symmetric in its own planes
+            Q[:, 0] = -Q[:, 0]
+        Q = _snap_rotation(Q)
+        size = np.asarray(self.size) * norms
+        perm = np.abs(Q)
+        if np.all((perm == 0.0) | (perm == 1.0)):  # turned by right angles: axis-aligned again
+            return Box(c, perm @ size)
+        return Box(c, size, Q)
+
     def to_dict(self) -> dict[str, Any]:
-        """``{"box": {"center", "size"}}``."""
-        return {"box": {"center": list(self.center), "size": list(self.size)}}
+        """``{"box": {"center", "size"}}``, plus ``"orientation"`` (3 rows) when not axis-aligned."""
+        out: dict[str, Any] = {"center": list(self.center), "size": list(self.size)}
+        if not self.axis_aligned:
+            out["orientation"] = [list(r) for r in self.orientation]
+        return {"box": out}

@@ -35,7 +35,7 @@ def _faces(poly: Box | ConvexPolyhedron, origin: NDArray[np.float64]) -> list[tu
     """Faces relative to ``origin`` (counter-clockwise from outside) and their unit outward normals."""
     if isinstance(poly, Box):
         # The same box about the origin: no hull of far-off absolute coordinates.
-        polys = [np.asarray(f, dtype=np.float64) for f in Box((0.0, 0.0, 0.0), poly.size).face_polygons()]
+        polys = [np.asarray(f, dtype=np.float64) for f in Box((0.0, 0.0, 0.0), poly.size, poly.orientation).face_polygons()]
     else:
         polys = [np.asarray(f, dtype=np.float64) - origin for f in poly.face_polygons()]
     out = []

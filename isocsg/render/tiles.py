@@ -102,7 +102,7 @@ def leaf_geometry(leaves: Sequence[Primitive]) -> LeafGeometry:
         elif isinstance(p, Truncus):
             t_idx.append(i)
             t_par.append((*p.center, *p.axis, p.r1, p.r2))
-        elif type(p) is Box:
+        elif type(p) is Box and p.axis_aligned:
             b_idx.append(i)
             b_par.append((*p.center, *p.size))
         else:

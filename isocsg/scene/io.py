@@ -92,7 +92,7 @@ _PRIMITIVE_FIELDS: dict[str, tuple[tuple[str, ...], tuple[str, ...]]] = {
     "truncus": (("center", "axis", "r1", "r2"), ()),
     "cylinder": (("center", "axis", "radius"), ()),
     "cone": (("center", "axis", "radius"), ()),
-    "box": (("center", "size"), ()),
+    "box": (("center", "size"), ("orientation",)),
     "polyhedron": (("vertices",), ()),
     "extrude": (("polygon", "height"), ("holes", "center")),
 }

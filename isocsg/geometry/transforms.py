@@ -1,0 +1,235 @@
+"""Affine transforms of solids: translate, rotate, scale, mirror and general matrices.
+
+The names are manifold3d's and the semantics OpenSCAD's:
+
+- ``translate(v)`` moves by ``v``;
+- ``rotate([a, b, c])`` turns by ``a`` degrees about x, then ``b`` about y, then ``c``
+  about z (``Rz(c) Ry(b) Rx(a)``), ``rotate(angle)`` about z, and
+  ``rotate(angle, axis=v)`` by ``angle`` degrees about ``v`` (right-hand rule);
+- ``scale(s)`` scales by a number or per axis;
+- ``mirror(n)`` reflects in the plane through the origin with normal ``n``;
+- ``transform(m)`` applies a 4x4 or 3x4 affine matrix (``x -> A x + t``).
+
+Multiples of 90 degrees give exact matrices (cosines and sines of 0 and +-1), as
+in OpenSCAD, so that a box turned by 90 degrees stays axis-aligned exactly.
+
+A transform of a primitive is again an exact, analytic primitive
+(see :func:`transform_primitive` for which kind each map produces); a transform
+of a CSG tree applies to its leaves, walked without recursion.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import TYPE_CHECKING, Any
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from .._validation import MAX_ABS_COORD, show
+from ..errors import InvalidGeometryError, InvalidParameterError
+
+if TYPE_CHECKING:  # pragma: no cover
+    from .primitives import Solid
+
+__all__ = [
+    "MAX_CONDITION",
+    "affine_matrix",
+    "translation_matrix",
+    "rotation_matrix",
+    "axis_angle_matrix",
+    "scale_matrix",
+    "mirror_matrix",
+    "rotation_array",
+    "transform_solid",
+    "similarity_factor",
+]
+
+#: Largest accepted condition number (ratio of largest to smallest singular value) of the linear
+#: part of a transform; beyond it the image of a solid is too thin to be represented faithfully.
+MAX_CONDITION = 1e6
+
+#: Relative tolerance under which a linear map counts as a similarity (rotation, reflection,
+#: uniform scale) and a 3x3 matrix as a rotation.
+SIMILARITY_TOL = 1e-9
+
+
+def _array(name: str, value: Any, shape: tuple[int, ...] | None = None) -> NDArray[np.float64]:
+    if isinstance(value, (str, bytes)):
+        raise InvalidParameterError(f"{name} must be numbers, got {show(value)}")
+    try:
+        a = np.asarray(value, dtype=np.float64)
+    except (TypeError, ValueError):
+        raise InvalidParameterError(f"{name} must be numbers, got {show(value)}") from None
+    if shape is not None and a.shape != shape:
+        raise InvalidParameterError(f"{name} must have shape {shape}, got {a.shape}")
+    if not np.all(np.isfinite(a)):
+        raise InvalidParameterError(f"{name} must be finite, got {show(value)}")
+    return a
+
+
+def _degrees_cos_sin(deg: float) -> tuple[float, float]:
+    """Cosine and sine of an angle in degrees, exact at multiples of 90 degrees."""
+    q = deg / 90.0
+    if q == round(q):
+        k = int(round(q)) % 4
+        return ((1.0, 0.0), (0.0, 1.0), (-1.0, 0.0), (0.0, -1.0))[k]
+    r = math.radians(deg)
+    return math.cos(r), math.sin(r)
+
+
+def affine_matrix(matrix: ArrayLike, *, name: str = "matrix") -> NDArray[np.float64]:
+    """Validate a 4x4 or 3x4 affine matrix and return it as a 4x4 array.
+
+    Parameters
+    ----------
+    matrix : array_like, shape (4, 4) or (3, 4)
+        ``[A | t]`` mapping ``x`` to ``A x + t``; a 4x4 matrix must have the last
+        row ``[0, 0, 0, 1]``.
+    name : str
+        The field named in error messages.
+
+    Returns
+    -------
+    ndarray, shape (4, 4)
+
+    Raises
+    ------
+    InvalidParameterError
+        If the matrix has another shape, holds non-finite numbers, is not affine
+        (bad last row), is singular, or has a condition number above
+        :data:`MAX_CONDITION`, or a translation beyond the coordinate limit.
+
+    Examples
+    --------
+    >>> affine_matrix([[2, 0, 0, 1], [0, 2, 0, 0], [0, 0, 2, 0]])[:, 3].tolist()
+    [1.0, 0.0, 0.0, 1.0]
+    """
+    m = _array(name, matrix)
+    if m.shape not in ((4, 4), (3, 4)):
+        raise InvalidParameterError(f"{name} must have shape (4, 4) or (3, 4), got {m.shape}")
+    if m.shape == (4, 4):
+        if not np.array_equal(m[3], [0.0, 0.0, 0.0, 1.0]):
+            raise InvalidParameterError(f"{name} must be affine (last row [0, 0, 0, 1]), got {m[3].tolist()}")
+    else:
+        m = np.vstack([m, [0.0, 0.0, 0.0, 1.0]])
+    if np.any(np.abs(m[:3, 3]) > MAX_ABS_COORD):
+        raise InvalidParameterError(f"{name} translation must lie within +-{MAX_ABS_COORD:g}, got {m[:3, 3].tolist()}")
+    sv = np.linalg.svd(m[:3, :3], compute_uv=False)
+    if not sv[-1] > 0.0:
+        raise InvalidParameterError(f"{name} must be invertible, got a singular linear part {m[:3, :3].tolist()}")
+    cond = float(sv[0] / sv[-1])
+    if cond > MAX_CONDITION:
+        raise InvalidParameterError(
+            f"{name} must have a condition number <= {MAX_CONDITION:g} (largest over smallest singular value), got {cond:g}"
+        )
+    if sv[0] > MAX_ABS_COORD or sv[-1] < 1.0 / MAX_ABS_COORD:
+        raise InvalidParameterError(f"{name} scales by {sv[-1]:g} to {sv[0]:g}, outside the limits 1e-12 to 1e12")
+    return m
+
+
+def translation_matrix(v: ArrayLike) -> NDArray[np.float64]:
+    """The 4x4 matrix of a translation by ``v``."""
+    m = np.eye(4)
+    m[:3, 3] = _array("translate(v)", v, (3,))
+    return m
+
+
+def rotation_array(degrees: ArrayLike) -> NDArray[np.float64]:
+    """The 3x3 rotation ``Rz(c) Ry(b) Rx(a)`` for Euler angles ``[a, b, c]`` in degrees (OpenSCAD)."""
+    a, b, c = _array("rotate(v)", degrees, (3,)).tolist()
+    ca, sa = _degrees_cos_sin(a)
+    cb, sb = _degrees_cos_sin(b)
+    cc, sc = _degrees_cos_sin(c)
+    rx = np.array([[1.0, 0.0, 0.0], [0.0, ca, -sa], [0.0, sa, ca]])
+    ry = np.array([[cb, 0.0, sb], [0.0, 1.0, 0.0], [-sb, 0.0, cb]])
+    rz = np.array([[cc, -sc, 0.0], [sc, cc, 0.0], [0.0, 0.0, 1.0]])
+    return rz @ ry @ rx
+
+
+def rotation_matrix(degrees: ArrayLike) -> NDArray[np.float64]:
+    """The 4x4 matrix of :func:`rotation_array`."""
+    m = np.eye(4)
+    m[:3, :3] = rotation_array(degrees)
+    return m
+
+
+def axis_angle_matrix(angle: float, axis: ArrayLike) -> NDArray[np.float64]:
+    """The 4x4 matrix of a rotation by ``angle`` degrees about ``axis`` (right-hand rule)."""
+    ang = float(_array("rotate(angle)", angle, ()))
+    k = _array("rotate(axis)", axis, (3,))
+    norm = float(np.linalg.norm(k))
+    if not norm > 0.0:
+        raise InvalidParameterError(f"rotate(axis) must be a non-zero vector, got {k.tolist()}")
+    k = k / norm
+    c, s = _degrees_cos_sin(ang)
+    K = np.array([[0.0, -k[2], k[1]], [k[2], 0.0, -k[0]], [-k[1], k[0], 0.0]])
+    m = np.eye(4)
+    m[:3, :3] = c * np.eye(3) + s * K + (1.0 - c) * np.outer(k, k)
+    return m
+
+
+def scale_matrix(s: ArrayLike) -> NDArray[np.float64]:
+    """The 4x4 matrix of a scale by a number or by ``[sx, sy, sz]``."""
+    a = _array("scale(s)", s)
+    if a.shape == ():
+        a = np.full(3, float(a))
+    if a.shape != (3,):
+        raise InvalidParameterError(f"scale(s) must be a number or have shape (3,), got {a.shape}")
+    if np.any(a == 0.0):
+        raise InvalidParameterError(f"scale(s) must be non-zero in every axis, got {a.tolist()}")
+    return np.diag([*a.tolist(), 1.0])
+
+
+def mirror_matrix(normal: ArrayLike) -> NDArray[np.float64]:
+    """The 4x4 matrix of the reflection in the plane through the origin with ``normal``."""
+    n = _array("mirror(normal)", normal, (3,))
+    nn = float(n @ n)
+    if not nn > 0.0:
+        raise InvalidParameterError(f"mirror(normal) must be a non-zero vector, got {n.tolist()}")
+    m = np.eye(4)
+    m[:3, :3] -= 2.0 * np.outer(n, n) / nn
+    return m
+
+
+def similarity_factor(A: NDArray[np.float64]) -> float | None:
+    """The scale ``s`` when ``A = s Q`` with ``Q`` orthogonal (rotation or reflection), else None."""
+    g = A.T @ A
+    s2 = float(np.trace(g)) / 3.0
+    if np.max(np.abs(g - s2 * np.eye(3))) <= SIMILARITY_TOL * s2:
+        return math.sqrt(s2)
+    return None
+
+
+def transform_solid(solid: "Solid", matrix: ArrayLike) -> "Solid":
+    """The image of ``solid`` under an affine matrix (validated by :func:`affine_matrix`).
+
+    Primitives map to primitives (see :meth:`~isocsg.geometry.primitives.Primitive.transform`);
+    a CSG tree maps leaf by leaf into a tree of the same shape, without recursion.
+
+    Raises
+    ------
+    InvalidParameterError
+        On a malformed matrix.
+    InvalidGeometryError
+        If an image is not a valid primitive (e.g. it leaves the coordinate range).
+    """
+    from ..csg.tree import CSGNode, _KINDS, _postorder
+    from .primitives import Primitive
+
+    m = affine_matrix(matrix)
+    A, t = m[:3, :3], m[:3, 3]
+    if isinstance(solid, Primitive):
+        return solid._affine(A, t)
+    if not isinstance(solid, CSGNode):
+        raise InvalidGeometryError(f"transform needs a solid (primitive or CSG node), got {type(solid).__name__}")
+    done: dict[int, Any] = {}
+    for s in _postorder(solid):
+        key = id(s)
+        if key in done:
+            continue  # a leaf or subtree shared in several places is mapped once
+        if isinstance(s, CSGNode):
+            done[key] = _KINDS[s.kind](*[done[id(c)] for c in s.children])
+        else:
+            done[key] = s._affine(A, t)  # type: ignore[attr-defined]
+    return done[id(solid)]
