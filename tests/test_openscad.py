@@ -345,6 +345,7 @@ ROUND_TRIP = {
     "cone downwards": Cone((0, 0, 0), (0, 0, -2), 1.0 / 3),
     "cylinder along x": Cylinder((0.5, 0.25, 0), (2, 0, 0), 0.3),
     "box": Box((1 / 3, 0.1, -0.2), (1, 2, 3)),
+    "oriented box": Box((1, 2, 3), (1, 2, 3)).rotate([10, 20, 30]) if HAS_TRANSFORM else None,
     "csg": (Box((0, 0, 0), (2, 2, 2)) - Sphere((1, 1, 1), 0.9) - Cylinder((0, 0, 0), (0, 0, 3), 0.5)) | Cone((3, 0, 0), (1, 1, 1), 0.5),
 }
 

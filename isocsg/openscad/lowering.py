@@ -39,7 +39,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from ..csg import Difference, Intersection, Union
-from ..errors import InvalidGeometryError, OpenSCADError, UnsupportedOpenSCADError
+from ..errors import InvalidGeometryError, InvalidParameterError, OpenSCADError, UnsupportedOpenSCADError
 from ..geometry.primitives import Box, ConvexPolyhedron, Cylinder, Solid, Sphere, Truncus
 from .parser import CSGCall
 
@@ -364,7 +364,7 @@ def _show(value: Any, limit: int = 60) -> str:
 _SEP, _CLOSE = object(), object()  # markers of the iterative repr
 
 
-def _transform(lw: _Lowerer, call: CSGCall, solid: Solid, m: NDArray[np.float64]) -> Solid:
+def _transform(lw: _Lowerer, call: CSGCall, solid: Solid, m: NDArray[np.float64]) -> Solid | None:
     """``solid.transform(m)``, its validation errors naming the node."""
     method = getattr(solid, "transform", None)
     if method is None:
@@ -375,6 +375,9 @@ def _transform(lw: _Lowerer, call: CSGCall, solid: Solid, m: NDArray[np.float64]
         )
     try:
         return method(m)  # type: ignore[no-any-return]
+    except InvalidParameterError as exc:  # a map whose image is no isocsg primitive
+        lw.unsupported(call, f"its image of {type(solid).__name__} is not an exact isocsg solid: {exc}")
+        return None
     except InvalidGeometryError as exc:
         raise lw.fail(call, str(exc)) from None
 

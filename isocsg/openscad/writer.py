@@ -73,7 +73,6 @@ def _translated(center: NDArray[np.float64], body: str) -> str:
 
 def _leaf(solid: Solid) -> str:
     """One primitive as an OpenSCAD statement."""
-    matrix = getattr(solid, "matrix", None)  # a primitive given by a map of a unit shape
     if isinstance(solid, Sphere):
         return _translated(np.asarray(solid.center), f"sphere(r = {_num(solid.radius)});")
     if isinstance(solid, Truncus):
@@ -83,8 +82,14 @@ def _leaf(solid: Solid) -> str:
         if axis[0] == 0 and axis[1] == 0 and axis[2] > 0:
             return _translated(np.asarray(solid.center), body)
         return f"multmatrix({_mat(_frame(axis, np.asarray(solid.center)))}) {{ {body} }}"
-    if isinstance(solid, Box) and matrix is None:
-        return _translated(np.asarray(solid.center), f"cube(size = {_vec(solid.size)}, center = true);")
+    if isinstance(solid, Box):
+        body = f"cube(size = {_vec(solid.size)}, center = true);"
+        if getattr(solid, "axis_aligned", True):
+            return _translated(np.asarray(solid.center), body)
+        m = np.eye(4)
+        m[:3, :3] = np.asarray(solid.orientation, dtype=np.float64)  # columns: the box's own axes
+        m[:3, 3] = solid.center
+        return f"multmatrix({_mat(m)}) {{ {body} }}"
     if isinstance(solid, ConvexPolyhedron):
         pts = ", ".join(_vec(p) for p in solid.hull_vertices)
         # OpenSCAD wants each face clockwise seen from outside; isocsg's are counter-clockwise.

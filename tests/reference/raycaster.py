@@ -219,8 +219,19 @@ def _box_offsets(box: Box) -> F64:
     return _BOX_NORMALS @ c + np.abs(_BOX_NORMALS) @ h
 
 
+def _box_rotation(box: Box) -> F64:
+    """Columns: the box's own axes in world coordinates (``center + R p``); the identity when axis-aligned."""
+    return np.asarray(getattr(box, "orientation", np.eye(3)), dtype=np.float64)
+
+
 def _box_planes(box: Box) -> tuple[F64, F64]:
-    return _BOX_NORMALS, _box_offsets(box)
+    rot = _box_rotation(box)
+    if np.array_equal(rot, np.eye(3)):
+        return _BOX_NORMALS, _box_offsets(box)
+    normals = _BOX_NORMALS @ rot.T  # each own-frame normal turned into the world
+    c = np.asarray(box.center, dtype=np.float64)
+    h = np.asarray(box.size, dtype=np.float64) / 2
+    return normals, normals @ c + np.abs(_BOX_NORMALS) @ h
 
 
 def _polyhedron_planes(poly: ConvexPolyhedron) -> tuple[F64, F64]:
@@ -398,6 +409,13 @@ class _Leaf:
             lo = np.min([e - r * spread for e, r in ends], axis=0)
             hi = np.max([e + r * spread for e, r in ends], axis=0)
             return _Leaf(_TRUNCUS, (c, a, h2, k, r1, r2), lo, hi)
+        if isinstance(p, Box) and not np.array_equal(_box_rotation(p), np.eye(3)):
+            # An oriented box is the convex hull of its 8 corners, center + R (+-h).
+            c = np.asarray(p.center, dtype=np.float64)
+            h = np.asarray(p.size, dtype=np.float64) / 2
+            signs = np.array([[x, y, z] for x in (-1, 1) for y in (-1, 1) for z in (-1, 1)], dtype=np.float64)
+            corners = c + (signs * h) @ _box_rotation(p).T
+            return _Leaf(_POLY, (ConvexPolyhedron(corners),), corners.min(axis=0), corners.max(axis=0))
         if isinstance(p, Box):
             c = np.asarray(p.center, dtype=np.float64)
             h = np.asarray(p.size, dtype=np.float64) / 2
