@@ -16,7 +16,7 @@ from .errors import (
     SceneFileError,
     UnsupportedOpenSCADError,
 )
-from .geometry import Box, Cone, ConvexPolyhedron, Cylinder, Primitive, RayHits, Solid, Sphere, Truncus
+from .geometry import Box, Cone, ConvexPolyhedron, Cylinder, Ellipsoid, EllipticTruncus, Primitive, RayHits, Solid, Sphere, Truncus
 from .lighting import DirectionalLight, Material, PointLight, shade
 from .scene import RenderSettings, Scene, SceneObject
 from .csg import CSGNode, Difference, Intersection, Union, difference, intersection, union, union_all
@@ -40,7 +40,7 @@ __all__ = [
     "Camera",
     "IsocsgError", "InvalidGeometryError", "InvalidLightError", "InvalidParameterError",
     "SceneFileError", "MissingDependencyError", "OpenSCADError", "UnsupportedOpenSCADError",
-    "Solid", "Primitive", "RayHits", "Sphere", "Truncus", "Cylinder", "Cone", "Box", "ConvexPolyhedron",
+    "Solid", "Primitive", "RayHits", "Sphere", "Truncus", "Cylinder", "Cone", "Box", "ConvexPolyhedron", "Ellipsoid", "EllipticTruncus",
     "PointLight", "DirectionalLight", "Material", "shade",
     "Scene", "SceneObject", "RenderSettings",
     "CSGNode", "Union", "Intersection", "Difference", "union", "intersection", "difference", "union_all",

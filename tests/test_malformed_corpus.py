@@ -818,6 +818,34 @@ for _bad, _v in BAD_VECTORS_API:
         (f"Camera.eye-{_bad}", lambda v=_v: isocsg.Camera(v, (0, 0, 0)), P, ("camera.eye",)),
         (f"Camera.up-{_bad}", lambda v=_v: isocsg.Camera((0, -5, 1), (0, 0, 0), up=v), P, ("camera.up",)),
     ]
+for _bad, _v in BAD_VECTORS_API:
+    API_CASES += [
+        (f"Ellipsoid.radii-{_bad}", lambda v=_v: isocsg.Ellipsoid((0, 0, 0), v), G, ("Ellipsoid.radii",)),
+        (f"Ellipsoid.center-{_bad}", lambda v=_v: isocsg.Ellipsoid(v, (1, 1, 1)), G, ("Ellipsoid.center",)),
+        (f"translate-{_bad}", lambda v=_v: isocsg.Sphere((0, 0, 0), 1).translate(v), P, ("translate(v)",)),
+        (f"mirror-{_bad}", lambda v=_v: isocsg.Sphere((0, 0, 0), 1).mirror(v), P, ("mirror(normal)",)),
+    ]
+# transforms: matrices that are not affine, singular, too ill-conditioned or not numbers
+API_CASES += [
+    ("transform-singular", lambda: isocsg.Box((0, 0, 0), (1, 1, 1)).transform(np.diag([1.0, 1.0, 0.0, 1.0])), P, ("matrix",)),
+    ("transform-ill-conditioned", lambda: isocsg.Box((0, 0, 0), (1, 1, 1)).transform(np.diag([1.0, 1.0, 1e-9, 1.0])), P, ("matrix",)),
+    ("transform-nan", lambda: isocsg.Sphere((0, 0, 0), 1).transform(np.full((4, 4), np.nan)), P, ("matrix",)),
+    ("transform-shape", lambda: isocsg.Sphere((0, 0, 0), 1).transform(np.eye(3)), P, ("matrix",)),
+    ("transform-projective", lambda: isocsg.Sphere((0, 0, 0), 1).transform(np.ones((4, 4))), P, ("matrix",)),
+    ("transform-string", lambda: isocsg.Sphere((0, 0, 0), 1).transform("eye"), P, ("matrix",)),
+    ("transform-tree-singular", lambda: (isocsg.Sphere((0, 0, 0), 1) | isocsg.Box((0, 0, 0), (1, 1, 1))).scale(0), P, ("scale(s)",)),
+    ("scale-zero-axis", lambda: isocsg.Sphere((0, 0, 0), 1).scale((1, 0, 1)), P, ("scale(s)",)),
+    ("rotate-axis-zero", lambda: isocsg.Sphere((0, 0, 0), 1).rotate(30, axis=(0, 0, 0)), P, ("rotate(axis)",)),
+    ("rotate-angles-shape", lambda: isocsg.Sphere((0, 0, 0), 1).rotate((1, 2)), P, ("rotate(v)",)),
+    ("Box.orientation-scaled", lambda: isocsg.Box((0, 0, 0), (1, 1, 1), 2 * np.eye(3)), G, ("Box.orientation",)),
+    ("Box.orientation-reflection", lambda: isocsg.Box((0, 0, 0), (1, 1, 1), -np.eye(3)), G, ("Box.orientation",)),
+    ("Box.orientation-strings", lambda: isocsg.Box((0, 0, 0), (1, 1, 1), [["a"] * 3] * 3), G, ("Box.orientation",)),
+    ("Ellipsoid.orientation-shape", lambda: isocsg.Ellipsoid((0, 0, 0), (1, 1, 1), np.eye(2)), G, ("Ellipsoid.orientation",)),
+    ("Ellipsoid.radii-aspect", lambda: isocsg.Ellipsoid((0, 0, 0), (1, 1, 1e-7)), G, ("Ellipsoid.radii",)),
+    ("EllipticTruncus.matrix-singular", lambda: isocsg.EllipticTruncus((0, 0, 0), np.diag([1.0, 1.0, 0.0]), 1, 1), G,
+     ("EllipticTruncus.matrix",)),
+    ("EllipticTruncus.r1-negative", lambda: isocsg.EllipticTruncus((0, 0, 0), np.eye(3), -1, 1), G, ("EllipticTruncus.r1",)),
+]
 API_CASES += [
     ("Box.size-thin", lambda: isocsg.Box((0, 0, 0), (1, 1, 1e-300)), G, ("Box.size",)),
     ("Box.size-aspect", lambda: isocsg.Box((0, 0, 0), (1, 1, 1e-7)), G, ("Box.size",)),

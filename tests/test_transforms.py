@@ -253,3 +253,65 @@ shape = { box = { center = [0, 0, 0], size = [1, 1, 1], orientation = [[1, 0, 0]
 """
     with pytest.raises(SceneFileError, match=re.escape("s.toml: objects[0].shape.box.orientation: must be orthonormal")):
         loads_scene(text, source="s.toml")
+
+
+SCENE_HEAD = """
+[camera]
+eye = [0, -5, 0]
+target = [0, 0, 0]
+[[objects]]
+"""
+BOX = "{ box = { center = [1, 0, 0], size = [2, 1, 1] } }"
+
+SCENE_NODES = [
+    (f"shape = {{ translate = {{ v = [1, 2, 3], shape = {BOX} }} }}", Box((2, 2, 3), (2, 1, 1))),
+    (f"shape = {{ rotate = {{ a = [0, 0, 90], shape = {BOX} }} }}", Box((0, 1, 0), (1, 2, 1))),
+    (f"shape = {{ rotate = {{ a = 90, shape = {BOX} }} }}", Box((0, 1, 0), (1, 2, 1))),
+    (f"shape = {{ rotate = {{ a = 90, v = [0, 1, 0], shape = {BOX} }} }}", Box((0, 0, -1), (1, 1, 2))),
+    (f"shape = {{ scale = {{ v = 2, shape = {BOX} }} }}", Box((2, 0, 0), (4, 2, 2))),
+    (f"shape = {{ scale = {{ v = [1, 2, 3], shape = {BOX} }} }}", Box((1, 0, 0), (2, 2, 3))),
+    (f"shape = {{ mirror = {{ v = [1, 0, 0], shape = {BOX} }} }}", Box((-1, 0, 0), (2, 1, 1))),
+    (f"shape = {{ multmatrix = {{ m = [[1, 0, 0, 1], [0, 1, 0, 0], [0, 0, 1, 0]], shape = {BOX} }} }}", Box((2, 0, 0), (2, 1, 1))),
+    (f"shape = {{ transform = {{ matrix = [[2, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]], shape = {BOX} }} }}",
+     Box((2, 0, 0), (4, 1, 1))),
+    ("shape = { scale = { v = [2, 1, 1], shape = { sphere = { center = [0, 0, 0], radius = 1 } } } }",
+     __import__("isocsg").Ellipsoid((0, 0, 0), (2, 1, 1))),
+]
+
+
+@pytest.mark.parametrize("text,expected", SCENE_NODES, ids=[t.split("=")[1].split("{")[1].strip() + str(i) for i, (t, _) in enumerate(SCENE_NODES)])
+def test_scene_file_transform_nodes(text, expected):
+    from isocsg.scene.io import dumps_scene, loads_scene
+
+    scene = loads_scene(SCENE_HEAD + text)
+    assert scene.objects[0].shape == expected
+    assert loads_scene(dumps_scene(scene)) == scene  # written as the transformed primitive
+
+
+SCENE_ERRORS = [
+    (f"shape = {{ translate = {{ v = [1, 2], shape = {BOX} }} }}", "objects[0].shape.translate.v: must have shape (3,), got (2,)"),
+    ("shape = { translate = { v = [1, 2, 3] } }", "objects[0].shape.translate.shape: missing required field"),
+    (f"shape = {{ rotate = {{ a = 'x', shape = {BOX} }} }}", "objects[0].shape.rotate.a: must be a number or 3 numbers, got a string 'x'"),
+    (f"shape = {{ rotate = {{ a = 30, v = [0, 0, 0], shape = {BOX} }} }}", "objects[0].shape.rotate.v: must be a non-zero vector"),
+    (f"shape = {{ rotate = {{ a = [1, 2, 3], v = [1, 0, 0], shape = {BOX} }} }}",
+     "objects[0].shape.rotate.v: an axis goes with a single angle a, not with 3 Euler angles"),
+    (f"shape = {{ scale = {{ v = [1, 0, 1], shape = {BOX} }} }}", "objects[0].shape.scale.v: must be non-zero in every axis"),
+    (f"shape = {{ mirror = {{ v = [0, 0, 0], shape = {BOX} }} }}", "objects[0].shape.mirror.v: must be a non-zero vector"),
+    (f"shape = {{ multmatrix = {{ m = [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 0, 0]], shape = {BOX} }} }}",
+     "objects[0].shape.multmatrix.m: must be invertible"),
+    (f"shape = {{ transform = {{ matrix = [[1, 0, 0], [0, 1, 0]], shape = {BOX} }} }}",
+     "objects[0].shape.transform.matrix: must have shape (4, 4) or (3, 4), got (2, 3)"),
+    (f"shape = {{ translate = {{ v = [1, 2, 3], shape = {BOX}, w = 1 }} }}", "objects[0].shape.translate: unknown key 'w' (expected v, shape)"),
+    ("shape = { scale = { v = 2, shape = { box = { center = [0, 0, 0], size = [1, 1, -1] } } } }",
+     "objects[0].shape.scale.shape.box.size: must be > 0 in every axis"),
+    ("shape = { ellipsoid = { center = [0, 0, 0], radii = [1, 0, 1] } }", "objects[0].shape.ellipsoid.radii: must be > 0 in every axis"),
+]
+
+
+@pytest.mark.parametrize("text,msg", SCENE_ERRORS, ids=[m.split(":")[0] + str(i) for i, (_, m) in enumerate(SCENE_ERRORS)])
+def test_scene_file_transform_errors_name_the_field(text, msg):
+    from isocsg import SceneFileError
+    from isocsg.scene.io import loads_scene
+
+    with pytest.raises(SceneFileError, match=re.escape("s.toml: " + msg)):
+        loads_scene(SCENE_HEAD + text, source="s.toml")

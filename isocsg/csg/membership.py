@@ -142,6 +142,8 @@ def signed_distance(prim: Primitive, points: NDArray[np.float64]) -> NDArray[np.
         return out
     if isinstance(prim, ConvexPolyhedron):
         return (p @ prim.face_normals.T - prim.face_offsets).max(axis=1)
+    if hasattr(prim, "signed_distance"):  # any other registered kind provides its own
+        return prim.signed_distance(p)
     raise InvalidParameterError(f"signed_distance needs a primitive, got {type(prim).__name__}")  # pragma: no cover
 
 
@@ -223,6 +225,9 @@ def _tangent_constraints(
                     C[at, 2] = -math.cos(beta)
                     valid[at, 0 if s_end > 0 else 1] = False  # the apex has no cap
         return V, C, valid
+    if hasattr(prim, "normals_at"):  # a smooth convex surface (ellipsoid): its tangent half-space
+        n = prim.normals_at(p)
+        return n[:, None, :], np.zeros((m, 1)), np.ones((m, 1), dtype=bool)
     raise InvalidParameterError(f"contains needs primitives, got {type(prim).__name__}")  # pragma: no cover
 
 
@@ -411,7 +416,7 @@ def _batched_distance(tab, prog: Program, leaf_of: NDArray[np.int64], q: NDArray
             d3 = _segment_distance_v(so, ro, -h, a2, h, a1)
             d[o] = np.minimum(np.minimum(d1, d2), d3)
         out[sel] = d
-    sel = np.nonzero(kind == 3)[0]
+    sel = np.nonzero(kind >= 3)[0]  # polyhedra and other kinds, leaf by leaf
     if len(sel):
         L = leaf_of[sel]
         order = np.argsort(L, kind="stable")

@@ -17,6 +17,7 @@ from numpy.typing import NDArray
 from .._validation import integer
 from ..errors import InvalidGeometryError, InvalidParameterError, MissingDependencyError
 from ..geometry.primitives import Box, ConvexPolyhedron, Primitive, Solid, Sphere, Truncus
+from ..geometry.registry import hook_for
 from .program import OP_INTERSECTION, OP_UNION, compile_program
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -68,6 +69,9 @@ def _leaf(prim: Primitive, resolution: int, shapes: dict[tuple[Any, ...], Any] |
     m3 = _manifold3d()
     M = m3.Manifold
     shapes = {} if shapes is None else shapes
+    hook = hook_for(prim, "manifold")
+    if hook is not None:
+        return hook(prim, resolution)
     if isinstance(prim, Sphere):
         # manifold3d rounds the segment count up to a multiple of 4
         key = ("sphere", prim.radius, resolution)

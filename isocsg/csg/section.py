@@ -29,6 +29,7 @@ import functools
 import math
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 import shapely
@@ -39,6 +40,7 @@ from shapely.geometry.base import BaseGeometry
 from .._validation import integer, nonzero_vector3, points_array, vector3
 from ..errors import InvalidGeometryError, InvalidParameterError
 from ..geometry.primitives import Box, ConvexPolyhedron, Primitive, Solid, Sphere, Truncus
+from ..geometry.registry import hook_for
 from .program import OP_DIFFERENCE, OP_INTERSECTION, OP_UNION, Program, compile_program
 from .tree import CSGNode
 
@@ -436,6 +438,9 @@ def primitive_section(prim: Primitive, frame: NDArray[np.float64], resolution: i
     1.0
     """
     F = np.asarray(frame, dtype=np.float64)
+    hook = hook_for(prim, "section")
+    if hook is not None:
+        return hook(prim, F, resolution, area_exact)
     if isinstance(prim, Sphere):
         return _sphere_section(prim, F, resolution, area_exact)
     if isinstance(prim, Truncus):
@@ -457,8 +462,9 @@ def primitive_section(prim: Primitive, frame: NDArray[np.float64], resolution: i
 class LeafTable:
     """The leaves of a program as arrays, for vectorised extents and batched sections.
 
-    ``kind``: 0 sphere, 1 truncus, 2 axis-aligned box, 3 polyhedron (and any other convex
-    leaf, through its polyhedron, e.g. a turned box). Unused entries are 0.
+    ``kind``: 0 sphere, 1 truncus, 2 axis-aligned box, 3 polyhedron or turned box (through its
+    polyhedron), 4 any other registered kind (an ellipsoid: its ``extent`` and its own section
+    and distance). Unused entries are 0.
     """
 
     kind: NDArray[np.int8]
@@ -472,6 +478,7 @@ class LeafTable:
     poly_vertices: NDArray[np.float64]  # hull vertices of all polyhedra, concatenated
     poly_start: NDArray[np.int64]  # per leaf: start of its vertices (polyhedra only), -1 otherwise
     poly_count: NDArray[np.int64]
+    others: dict[int, Any]  # leaf index -> primitive, for kind 4
 
     def extents(self, n: NDArray[np.float64]) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
         """Exact extents ``(lo, hi)`` of every leaf along the unit vector ``n``."""
@@ -499,6 +506,8 @@ class LeafTable:
             starts = self.poly_start[ph]
             lo[ph] = np.minimum.reduceat(proj, starts)
             hi[ph] = np.maximum.reduceat(proj, starts)
+        for i in np.nonzero(k == 4)[0].tolist():  # other kinds: their own exact support
+            lo[i], hi[i] = self.others[i].extent(n)
         return lo, hi
 
     def breakpoints(self, n: NDArray[np.float64]) -> NDArray[np.float64]:
@@ -533,6 +542,7 @@ def leaf_table(prog: Program) -> LeafTable:
     r2 = np.zeros(n)
     half = np.zeros((n, 3))
     pv: list[NDArray[np.float64]] = []
+    others: dict[int, Any] = {}
     pstart = -np.ones(n, np.int64)
     pcount = np.zeros(n, np.int64)
     total = 0
@@ -545,14 +555,18 @@ def leaf_table(prog: Program) -> LeafTable:
         elif isinstance(p, Box) and p.axis_aligned:
             kind[i] = 2
             center[i], half[i] = p.center, p.half_size
-        else:
+        elif isinstance(p, (ConvexPolyhedron, Box)):
             kind[i] = 3
             hv = p.hull_vertices if isinstance(p, ConvexPolyhedron) else p.to_polyhedron().hull_vertices
             pv.append(hv)
             pstart[i], pcount[i] = total, len(hv)
             total += len(hv)
+        else:
+            kind[i] = 4
+            center[i] = p.center_array
+            others[i] = p
     poly = np.vstack(pv) if pv else np.zeros((0, 3))
-    return LeafTable(kind, center, radius, axis, height, r1, r2, half, poly, pstart, pcount)
+    return LeafTable(kind, center, radius, axis, height, r1, r2, half, poly, pstart, pcount, others)
 
 
 def leaf_sections(

@@ -407,9 +407,9 @@ class Sphere(Primitive):
         k = similarity_factor(A)
         if k is not None:
             return Sphere(c, k * self.radius)
-        raise InvalidParameterError(
-            f"matrix must be a similarity (rotation, reflection, uniform scale) for a Sphere, got {A.tolist()}"
-        )
+        from .ellipsoid import Ellipsoid
+
+        return Ellipsoid.from_affine(A * self.radius, c)
 
     def to_dict(self) -> dict[str, Any]:
         """``{"sphere": {"center": [...], "radius": r}}``."""
@@ -703,9 +703,10 @@ class Truncus(Primitive):
             if type(self) is Cone:
                 return Cone(c, axis, k * self.r1)
             return Truncus(c, axis, k * self.r1, k * self.r2)
-        raise InvalidParameterError(
-            f"matrix must keep the end circles of a {type(self).__name__} circular, got {A.tolist()}"
-        )
+        from .elliptic import EllipticTruncus
+
+        frame = np.column_stack([u, v, np.asarray(self.axis, dtype=np.float64)])  # canonical -> self
+        return EllipticTruncus(tuple(c), A @ frame, self.r1, self.r2)
 
     def to_dict(self) -> dict[str, Any]:
         """``{"truncus": {"center", "axis", "r1", "r2"}}``."""

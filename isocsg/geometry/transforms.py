@@ -26,7 +26,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from .._validation import MAX_ABS_COORD, show
+from .._validation import MAX_ABS_COORD, _float_array, show, vector3
 from ..errors import InvalidGeometryError, InvalidParameterError
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -57,10 +57,8 @@ SIMILARITY_TOL = 1e-9
 def _array(name: str, value: Any, shape: tuple[int, ...] | None = None) -> NDArray[np.float64]:
     if isinstance(value, (str, bytes)):
         raise InvalidParameterError(f"{name} must be numbers, got {show(value)}")
-    try:
-        a = np.asarray(value, dtype=np.float64)
-    except (TypeError, ValueError):
-        raise InvalidParameterError(f"{name} must be numbers, got {show(value)}") from None
+    # booleans, strings and numbers too large for a float are refused (not converted)
+    a = _float_array(name, value, InvalidParameterError, "numbers")
     if shape is not None and a.shape != shape:
         raise InvalidParameterError(f"{name} must have shape {shape}, got {a.shape}")
     if not np.all(np.isfinite(a)):
@@ -131,7 +129,7 @@ def affine_matrix(matrix: ArrayLike, *, name: str = "matrix") -> NDArray[np.floa
 def translation_matrix(v: ArrayLike) -> NDArray[np.float64]:
     """The 4x4 matrix of a translation by ``v``."""
     m = np.eye(4)
-    m[:3, 3] = _array("translate(v)", v, (3,))
+    m[:3, 3] = vector3("translate(v)", v, error=InvalidParameterError)
     return m
 
 
@@ -183,7 +181,7 @@ def scale_matrix(s: ArrayLike) -> NDArray[np.float64]:
 
 def mirror_matrix(normal: ArrayLike) -> NDArray[np.float64]:
     """The 4x4 matrix of the reflection in the plane through the origin with ``normal``."""
-    n = _array("mirror(normal)", normal, (3,))
+    n = np.asarray(vector3("mirror(normal)", normal, error=InvalidParameterError))
     nn = float(n @ n)
     if not nn > 0.0:
         raise InvalidParameterError(f"mirror(normal) must be a non-zero vector, got {n.tolist()}")

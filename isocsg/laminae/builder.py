@@ -38,6 +38,7 @@ from numpy.typing import ArrayLike, NDArray
 from .._validation import integer, vector3
 from ..errors import InvalidLightError, InvalidParameterError
 from ..geometry.primitives import Box, ConvexPolyhedron, Primitive, Sphere, Truncus
+from ..geometry.registry import hook_for
 from ..lighting.lights import DirectionalLight, PointLight
 from ..lighting.shading import Material
 from ..limits import memory_budget
@@ -172,8 +173,11 @@ def build_laminae(
     >>> float(ls.bands.value_out.min()), round(float(ls.bands.value_out.max()), 3)
     (0.1, 0.85)
     """
-    if not isinstance(primitive, (Sphere, Truncus, Box, ConvexPolyhedron)):
-        raise InvalidParameterError(f"primitive must be a Sphere, Truncus, Box or ConvexPolyhedron, got {type(primitive).__name__}")
+    if not isinstance(primitive, (Sphere, Truncus, Box, ConvexPolyhedron)) and hook_for(primitive, "surface") is None:
+        raise InvalidParameterError(
+            f"primitive must be a Sphere, Truncus, Box, ConvexPolyhedron or another registered kind with a band surface, "
+            f"got {type(primitive).__name__}"
+        )
     lights_t = _check_lights(lights)
     mat = Material() if material is None else material
     if not isinstance(mat, Material):
@@ -231,7 +235,7 @@ def _check_size(n: int, n_lights: int, specular: bool) -> None:
 
 def _origin(primitive: Primitive) -> NDArray[np.float64]:
     """The local origin the band mesh is built around (the primitive's centre)."""
-    if isinstance(primitive, (Sphere, Truncus, Box)):
+    if hasattr(primitive, "center_array"):
         return primitive.center_array.copy()
     lo, hi = primitive.bounds
     return 0.5 * (lo + hi)
@@ -240,6 +244,9 @@ def _origin(primitive: Primitive) -> NDArray[np.float64]:
 def _surface(
     primitive: Primitive, lights: tuple[Light, ...], n: int, eye: NDArray[np.float64] | None, shininess: float
 ) -> Surface:
+    hook = hook_for(primitive, "surface")
+    if hook is not None:
+        return hook(primitive, list(lights), n, eye, shininess)
     if isinstance(primitive, Sphere):
         return sphere_surface(primitive, lights[0] if lights else None, diffuse_levels(np.array([-1.0, 1.0]), n))
     if isinstance(primitive, Truncus):
@@ -252,6 +259,8 @@ def _paper_laminae(primitive: Primitive, light: Light, n: int) -> list[tuple[NDA
         return [(v, nrm, c, "contour") for v, nrm, c in sphere_laminae(primitive, light, n)]
     if isinstance(primitive, Truncus):
         return truncus_laminae(primitive, light, n)
+    if not isinstance(primitive, (Box, ConvexPolyhedron)):
+        return []  # curved kinds without planar contours (an ellipsoid): the bands carry the image
     return [(v, nrm, c, "face") for v, nrm, c in face_laminae(primitive, light)]
 
 

@@ -21,7 +21,7 @@ from numpy.typing import NDArray
 from ..lighting.lights import PointLight
 from .families import light_direction_at
 
-__all__ = ["Surface", "orient_outward", "light_reference_distance", "refinement", "specular_refinement", "eye_reference_distance", "curvature_spacing", "pieces"]
+__all__ = ["Surface", "orient_outward", "light_reference_distance", "refinement", "specular_refinement", "eye_reference_distance", "curvature_spacing", "mixed_spacing", "pieces"]
 
 
 @dataclass(frozen=True, slots=True, eq=False)
@@ -212,3 +212,46 @@ def pieces(length: float, spacing: float, cap: int = 64) -> int:
     if not np.isfinite(spacing) or spacing <= 0:
         return 1
     return int(np.clip(np.ceil(length / spacing), 1, cap))
+
+
+def mixed_spacing(
+    grid: NDArray[np.float64],
+    normals: NDArray[np.float64],
+    lights: list,
+    origin: NDArray[np.float64],
+    contours: int,
+    step0: float,
+    step1: float,
+    *,
+    eye: NDArray[np.float64] | None = None,
+    shininess: float = 1.0,
+) -> float:
+    """The longest spacing along the first parameter of a grid whose cells' triangles follow every
+    field within a quarter band step, given the spacing ``step1`` along the second.
+
+    A triangle of a cell ``h0 x h1`` of a parametric grid interpolates ``f`` linearly, missing
+    the mixed term ``f_01 h0 h1`` by up to about ``|f_01| h0 h1 / 4``, which
+    :func:`curvature_spacing` (along straight lines) does not see: a long triangle spanning a
+    truncus's side between two generators misses how the field's slope around the axis changes
+    along it. Keeping it below ``R / (4 N)`` gives ``h0 = R / (N |f_01| h1)``.
+
+    Parameters
+    ----------
+    grid, normals : ndarray, shape (m0, m1, 3)
+        Surface points (relative to ``origin``) and exact normals on a grid of the two
+        parameters, with spacings ``step0`` and ``step1`` between samples.
+    """
+    m0, m1, _ = grid.shape
+    if m0 < 2 or m1 < 2:
+        return np.inf
+    n = min(contours, SPECULAR_CONTOURS)
+    best = np.inf
+    for f in _terms(grid.reshape(-1, 3), normals.reshape(-1, 3), lights, origin, eye, shininess):
+        f = f.reshape(m0, m1)
+        r = float(f.max() - f.min())
+        if not r > 1e-12:
+            continue
+        mixed = float(np.max(np.abs(np.diff(np.diff(f, axis=0), axis=1)))) / (step0 * step1)
+        if mixed > 0:
+            best = min(best, r / (n * mixed * step1))
+    return best

@@ -28,6 +28,14 @@ A scene file holds four parts (TOML shown; JSON uses the same structure)::
         { sphere = { center = [1, 1, 1], radius = 0.8 } },
     ] }
 
+Shape nodes are the primitive kinds of :mod:`isocsg.geometry.registry` (``sphere``,
+``truncus``, ``cylinder``, ``cone``, ``box`` with an optional ``orientation``,
+``polyhedron``, ``ellipsoid``, ``elliptic_truncus``), the Boolean nodes, and
+OpenSCAD's transforms around one ``shape``: ``translate {v}``, ``rotate {a, v?}``,
+``scale {v}``, ``mirror {v}``, ``multmatrix {m}`` and ``transform {matrix}``::
+
+    shape = { rotate = { a = [0, 0, 30], shape = { box = { center = [1, 0, 0], size = [2, 1, 1] } } } }
+
 Every error is a :class:`~isocsg.errors.SceneFileError` whose message starts
 with the file name and the dotted path of the offending field, e.g.
 ``scene.toml: objects[0].shape.sphere.radius: must be > 0, got -1``.
@@ -61,8 +69,10 @@ from ..errors import (
     InvalidParameterError,
     SceneFileError,
 )
+from ..geometry import transforms as _tf
 from ..geometry.extrude import extrude_rings
-from ..geometry.primitives import Box, Cone, ConvexPolyhedron, Cylinder, Solid, Sphere, Truncus
+from ..geometry.primitives import Solid
+from ..geometry.registry import registered_kinds
 from ..lighting.lights import DirectionalLight, Material, PointLight
 from .model import RenderSettings, Scene, SceneObject
 
@@ -86,39 +96,35 @@ __all__ = [
 #: Names of the scenes shipped in ``isocsg/data`` (``<name>.toml``).
 BUILTIN_SCENES = ("demo", "halftone")
 
-#: Primitive node kinds and their (required, optional) fields.
+#: Primitive node kinds and their (required, optional) fields, classes and class names (the
+#: prefixes of the value types' own messages): read from the table of kinds
+#: (:mod:`isocsg.geometry.registry`), so that a new kind needs no change here.
 _PRIMITIVE_FIELDS: dict[str, tuple[tuple[str, ...], tuple[str, ...]]] = {
-    "sphere": (("center", "radius"), ()),
-    "truncus": (("center", "axis", "r1", "r2"), ()),
-    "cylinder": (("center", "axis", "radius"), ()),
-    "cone": (("center", "axis", "radius"), ()),
-    "box": (("center", "size"), ("orientation",)),
-    "polyhedron": (("vertices",), ()),
-    "extrude": (("polygon", "height"), ("holes", "center")),
+    k.name: (k.required, k.optional) for k in registered_kinds()
 }
-_PRIMITIVE_TYPES: dict[str, Callable[..., Solid]] = {
-    "sphere": Sphere,
-    "truncus": Truncus,
-    "cylinder": Cylinder,
-    "cone": Cone,
-    "box": Box,
-    "polyhedron": ConvexPolyhedron,
-    "extrude": extrude_rings,
-}
-# Class names that appear as prefixes in the value types' own messages.
-_CLASS_NAMES = {
-    "sphere": "Sphere",
-    "truncus": "Truncus",
-    "cylinder": "Cylinder",
-    "cone": "Cone",
-    "box": "Box",
-    "polyhedron": "ConvexPolyhedron",
-    "extrude": "extrude",
-}
+_PRIMITIVE_TYPES: dict[str, Callable[..., Solid]] = {k.name: k.cls for k in registered_kinds()}
+_CLASS_NAMES = {k.name: k.cls.__name__ for k in registered_kinds()}
+# The straight extrusion of a polygon: a union of convex prisms (isocsg.geometry.extrude).
+_PRIMITIVE_FIELDS["extrude"] = (("polygon", "height"), ("holes", "center"))
+_PRIMITIVE_TYPES["extrude"] = extrude_rings
+_CLASS_NAMES["extrude"] = "extrude"
 _CSG_TYPES: dict[str, type[CSGNode]] = {"union": Union, "intersection": Intersection, "difference": Difference}
 
 #: Every node kind accepted in an object's ``shape`` tree.
-SHAPE_KINDS = tuple(_PRIMITIVE_FIELDS) + tuple(_CSG_TYPES)
+#: Transform nodes, OpenSCAD's names and parameters, each around one ``shape``:
+#: ``translate {v}``, ``rotate {a, v?}`` (Euler angles ``a = [x, y, z]``, or an angle ``a``
+#: about the axis ``v``, default z), ``scale {v}`` (a number or per axis), ``mirror {v}``
+#: (the plane's normal), ``multmatrix {m}`` and ``transform {matrix}`` (4x4 or 3x4).
+_TRANSFORM_FIELDS: dict[str, tuple[tuple[str, ...], tuple[str, ...]]] = {
+    "translate": (("v", "shape"), ()),
+    "rotate": (("a", "shape"), ("v",)),
+    "scale": (("v", "shape"), ()),
+    "mirror": (("v", "shape"), ()),
+    "multmatrix": (("m", "shape"), ()),
+    "transform": (("matrix", "shape"), ()),
+}
+
+SHAPE_KINDS = tuple(_PRIMITIVE_FIELDS) + tuple(_CSG_TYPES) + tuple(_TRANSFORM_FIELDS)
 
 #: Light kinds and their (required, optional) fields.
 _LIGHT_FIELDS: dict[str, tuple[tuple[str, ...], tuple[str, ...]]] = {
@@ -270,13 +276,50 @@ def _node(r: _Reader, path: str, value: Any) -> tuple[str, str, Any]:
     return kind, _join(path, kind), body
 
 
+def _transform_matrix(r: _Reader, here: str, kind: str, t: Mapping[str, Any]) -> Any:
+    """The 4x4 matrix of a transform node; errors name the node's field."""
+    field = {"translate": "v", "rotate": "a", "scale": "v", "mirror": "v", "multmatrix": "m", "transform": "matrix"}[kind]
+    if kind == "rotate":
+        a = t["a"]
+        if isinstance(a, bool) or not isinstance(a, (int, float, list)):
+            raise r.fail(_join(here, "a"), f"must be a number or 3 numbers, got {_type_name(a)}")
+        if isinstance(a, list) and "v" in t:
+            raise r.fail(_join(here, "v"), "an axis goes with a single angle a, not with 3 Euler angles")
+    try:
+        if kind == "translate":
+            m = _tf.translation_matrix(t["v"])
+        elif kind == "rotate":
+            if isinstance(a, list):
+                m = _tf.rotation_matrix(a)
+            else:
+                if "v" in t:
+                    field = "v"
+                m = _tf.axis_angle_matrix(a, t.get("v", [0.0, 0.0, 1.0]))
+        elif kind == "scale":
+            m = _tf.scale_matrix(t["v"])
+        elif kind == "mirror":
+            m = _tf.mirror_matrix(t["v"])
+        else:
+            m = _tf.affine_matrix(t[field])
+    except _VALUE_ERRORS as exc:
+        # "rotate(axis) must ..." / "matrix must ..." -> "<node>.<field>: must ..."
+        msg = str(exc)
+        mm = re.match(r"^[\w().]+ (must .*)$", msg, flags=re.DOTALL)
+        if kind == "rotate" and msg.startswith("rotate(axis)"):
+            field = "v"
+        raise r.fail(_join(here, field), mm.group(1) if mm else msg) from None
+    except (TypeError, ValueError) as exc:
+        raise r.fail(_join(here, field), str(exc)) from None
+    return m
+
+
 def _shape(r: _Reader, path: str, value: Any) -> Solid:
     """Build a shape tree depth first with an explicit stack (no recursion).
 
     Deep trees must not exhaust Python's recursion limit; each stack entry is
     ``(kind, path, operands, children built so far)``.
     """
-    stack: list[tuple[str, str, list[Any], list[Solid]]] = []
+    stack: list[tuple[str, str, list[Any], list[Solid], Any]] = []
     todo: tuple[str, Any] | None = (path, value)
     while True:
         assert todo is not None
@@ -285,8 +328,13 @@ def _shape(r: _Reader, path: str, value: Any) -> Solid:
             operands = r.array(here, body)
             if not operands:
                 raise r.fail(here, "needs at least one operand, got none")
-            stack.append((kind, here, operands, []))
+            stack.append((kind, here, operands, [], None))
             todo = (f"{here}[0]", operands[0])
+            continue
+        if kind in _TRANSFORM_FIELDS:
+            t = r.table(here, body, _TRANSFORM_FIELDS[kind])
+            stack.append((kind, here, [t["shape"]], [], _transform_matrix(r, here, kind, t)))
+            todo = (_join(here, "shape"), t["shape"])
             continue
         t = r.table(here, body, _PRIMITIVE_FIELDS[kind])
         solid: Solid = r.construct(here, _CLASS_NAMES[kind], _PRIMITIVE_TYPES[kind], **dict(t))
@@ -294,14 +342,14 @@ def _shape(r: _Reader, path: str, value: Any) -> Solid:
         while True:
             if not stack:
                 return solid
-            kind, here, operands, children = stack[-1]
+            kind, here, operands, children, matrix = stack[-1]
             children.append(solid)
             if len(children) < len(operands):
                 todo = (f"{here}[{len(children)}]", operands[len(children)])
                 break
             stack.pop()
             try:
-                solid = _CSG_TYPES[kind](*children)
+                solid = children[0].transform(matrix) if matrix is not None else _CSG_TYPES[kind](*children)
             except _VALUE_ERRORS as exc:
                 raise r.fail(here, str(exc)) from None
 

@@ -2,7 +2,8 @@
 
 Written independently of the library: it reads the parameters of primitives
 (``Sphere.center/.radius``, ``Truncus.center/.axis/.r1/.r2``,
-``Box.center/.size``, ``ConvexPolyhedron.vertices``), the ``children`` of CSG
+``Box.center/.size/.orientation``, ``Ellipsoid.center/.radii/.orientation``,
+``ConvexPolyhedron.vertices``), the ``children`` of CSG
 nodes, lights, materials and camera fields, and computes everything else
 itself:
 
@@ -10,7 +11,12 @@ itself:
 - ray-primitive intervals in closed form (sphere quadratic; truncus lateral
   quadric on one nappe intersected with the slab between its end planes;
   box and convex polyhedron as intersections of half-spaces, the polyhedron's
-  planes from its own ``scipy.spatial.ConvexHull``),
+  planes from its own ``scipy.spatial.ConvexHull``; a turned box, an
+  ellipsoid and an elliptic truncus in their own frames, ``x = center + M y``
+  with ``M`` the rotation, times ``diag(radii)`` for the ellipsoid, the
+  ``matrix`` of the elliptic truncus: the ray ``M^-1 (o - c) + t M^-1 d``
+  meets the axis-aligned box, the unit ball or the truncus of height 1 along
+  z at the same ``t``, and a normal ``m`` there is ``M^-T m`` in the world),
 - CSG by interval arithmetic: the boundary events of all leaves are sorted
   along each ray and the tree is evaluated on every segment between them; the
   visible point is the start of the first non-empty segment inside the result,
@@ -46,6 +52,8 @@ from scipy.spatial import ConvexHull
 
 from isocsg import (
     Box,
+    Ellipsoid,
+    EllipticTruncus,
     Camera,
     ConvexPolyhedron,
     Difference,
@@ -219,19 +227,8 @@ def _box_offsets(box: Box) -> F64:
     return _BOX_NORMALS @ c + np.abs(_BOX_NORMALS) @ h
 
 
-def _box_rotation(box: Box) -> F64:
-    """Columns: the box's own axes in world coordinates (``center + R p``); the identity when axis-aligned."""
-    return np.asarray(getattr(box, "orientation", np.eye(3)), dtype=np.float64)
-
-
 def _box_planes(box: Box) -> tuple[F64, F64]:
-    rot = _box_rotation(box)
-    if np.array_equal(rot, np.eye(3)):
-        return _BOX_NORMALS, _box_offsets(box)
-    normals = _BOX_NORMALS @ rot.T  # each own-frame normal turned into the world
-    c = np.asarray(box.center, dtype=np.float64)
-    h = np.asarray(box.size, dtype=np.float64) / 2
-    return normals, normals @ c + np.abs(_BOX_NORMALS) @ h
+    return _BOX_NORMALS, _box_offsets(box)
 
 
 def _polyhedron_planes(poly: ConvexPolyhedron) -> tuple[F64, F64]:
@@ -383,7 +380,7 @@ def primitive_intervals(primitive: Any, origins: Any, directions: Any) -> Interv
 # ----------------------------------------------------------------------------- leaves
 
 
-_SPHERE, _TRUNCUS, _BOX, _POLY = 0, 1, 2, 3
+_SPHERE, _TRUNCUS, _BOX, _POLY, _LOCAL = 0, 1, 2, 3, 4
 
 
 @dataclass(frozen=True)
@@ -409,13 +406,27 @@ class _Leaf:
             lo = np.min([e - r * spread for e, r in ends], axis=0)
             hi = np.max([e + r * spread for e, r in ends], axis=0)
             return _Leaf(_TRUNCUS, (c, a, h2, k, r1, r2), lo, hi)
-        if isinstance(p, Box) and not np.array_equal(_box_rotation(p), np.eye(3)):
-            # An oriented box is the convex hull of its 8 corners, center + R (+-h).
+        if isinstance(p, EllipticTruncus):
             c = np.asarray(p.center, dtype=np.float64)
+            M = np.asarray(p.matrix, dtype=np.float64)
+            r1, r2 = float(p.r1), float(p.r2)
+            # the ends' ellipses: centre +- axis/2, extent r * hypot of the two radial columns
+            spread = np.sqrt(M[:, 0] ** 2 + M[:, 1] ** 2)
+            ends = [(c + M[:, 2] / 2, r1), (c - M[:, 2] / 2, r2)]
+            lo = np.min([e - r * spread for e, r in ends], axis=0)
+            hi = np.max([e + r * spread for e, r in ends], axis=0)
+            return _Leaf(_LOCAL, ("truncus", c, M, (r1, r2)), lo, hi)
+        if isinstance(p, Ellipsoid):
+            c = np.asarray(p.center, dtype=np.float64)
+            M = np.asarray(p.orientation, dtype=np.float64) * np.asarray(p.radii, dtype=np.float64)
+            ext = np.sqrt((M * M).sum(axis=1))
+            return _Leaf(_LOCAL, ("ball", c, M, None), c - ext, c + ext)
+        if isinstance(p, Box) and not np.array_equal(np.asarray(p.orientation), np.eye(3)):
+            c = np.asarray(p.center, dtype=np.float64)
+            M = np.asarray(p.orientation, dtype=np.float64)
             h = np.asarray(p.size, dtype=np.float64) / 2
-            signs = np.array([[x, y, z] for x in (-1, 1) for y in (-1, 1) for z in (-1, 1)], dtype=np.float64)
-            corners = c + (signs * h) @ _box_rotation(p).T
-            return _Leaf(_POLY, (ConvexPolyhedron(corners),), corners.min(axis=0), corners.max(axis=0))
+            ext = np.abs(M) @ h
+            return _Leaf(_LOCAL, ("box", c, M, h), c - ext, c + ext)
         if isinstance(p, Box):
             c = np.asarray(p.center, dtype=np.float64)
             h = np.asarray(p.size, dtype=np.float64) / 2
@@ -438,6 +449,24 @@ def _planes_of(poly: ConvexPolyhedron) -> tuple[F64, F64]:
         hit = (poly, _polyhedron_planes(poly))
         _PLANES[id(poly)] = hit
     return hit[1]
+
+
+def _local_intervals(params: tuple[Any, ...], o: F64, d: F64) -> Intervals:
+    """One turned box or ellipsoid, intersected in its own frame (see the module docstring)."""
+    shape, c, M, h = params
+    Minv = np.linalg.inv(M)
+    ol = (o - c) @ Minv.T
+    dl = d @ Minv.T
+    if shape == "ball":
+        iv = _spheres(np.zeros((1, 3)), np.ones(1), ol, dl)
+    elif shape == "truncus":  # axis z, height 1, r1 at z = +1/2, r2 at z = -1/2
+        r1, r2 = h
+        iv = _trunci(np.zeros((1, 3)), np.array([[0.0, 0.0, 1.0]]), np.array([0.5]), np.array([r1 - r2]), np.array([r2]), ol, dl)
+    else:
+        iv = _halfspaces(_BOX_NORMALS, (np.abs(_BOX_NORMALS) @ h)[None, :], ol, dl)
+    n_in = _normalize(iv.n_in @ Minv)  # M^-T m, row-wise
+    n_out = _normalize(iv.n_out @ Minv)
+    return Intervals(iv.t_in, iv.t_out, n_in, n_out, iv.part_in, iv.part_out)
 
 
 def _batch_intervals(leaves: Sequence[_Leaf], o: F64, d: F64) -> Intervals:
@@ -464,6 +493,8 @@ def _batch_intervals(leaves: Sequence[_Leaf], o: F64, d: F64) -> Intervals:
             ivs = [(rows, _trunci(c, a, h2, kk, r2, o, d))]
         elif kind == _BOX:
             ivs = [(rows, _halfspaces(_BOX_NORMALS, np.array([g.params[0] for g in group]), o, d))]
+        elif kind == _LOCAL:
+            ivs = [(np.array([r]), _local_intervals(g.params, o, d)) for r, g in zip(rows.tolist(), group)]
         else:
             ivs = []
             for r, g in zip(rows.tolist(), group):
