@@ -27,7 +27,6 @@ from pathlib import Path
 
 import pytest
 
-import isocsg
 from isocsg import volume
 from isocsg.openscad import export_mesh, lower, parse_csg, scad_to_csg
 from isocsg.scene.framing import framed_scene
@@ -47,9 +46,6 @@ SLOW_STL = {
     "difference_cube_sphere", "intersection_cube_sphere", "ellipsoid_cut", "logo", "modifiers",
     "plate_with_holes", "module_posts",
 }
-#: Models that need an ellipsoid primitive (a non-uniform scale of a sphere).
-NEEDS_ELLIPSOID = {"scale_sphere", "ellipsoid_cut"}
-HAS_ELLIPSOID = hasattr(isocsg, "Ellipsoid")
 
 pytestmark = pytest.mark.skipif(not HAS_OPENSCAD, reason="the openscad program is not installed (apt install openscad)")
 
@@ -60,11 +56,6 @@ VOLUME_RTOL = 0.005
 
 def test_corpus_is_large_enough() -> None:
     assert len(CORPUS) >= 30
-
-
-def _check_ellipsoid(name: str) -> None:
-    if name in NEEDS_ELLIPSOID and not HAS_ELLIPSOID:
-        pytest.skip("a scaled sphere needs isocsg.Ellipsoid")
 
 
 _SOLIDS: dict[str, object] = {}
@@ -82,7 +73,6 @@ def corpus_solid(name: str):
 
 @pytest.mark.parametrize("name", CORPUS, ids=str)
 def test_corpus_model_renders_like_the_ray_caster(name: str) -> None:
-    _check_ellipsoid(name)
     solid = corpus_solid(name)
     scene = framed_scene(solid, width=96, height=96, contours=64)
     result = compare(render_image(scene), raycast_scene(scene))
@@ -121,7 +111,6 @@ def _openscad_stl(name: str, cache_dir: Path) -> Path:
 def test_corpus_volume_matches_openscad_stl(name: str) -> None:
     import trimesh
 
-    _check_ellipsoid(name)
     if name in SLOW_STL and not FULL:
         pytest.skip("OpenSCAD's $fn = 256 export of this model takes minutes; run with ISOCSG_SCALE_FULL=1")
     stl = _openscad_stl(name, _cache_dir())

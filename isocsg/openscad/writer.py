@@ -1,6 +1,9 @@
 """Writing isocsg solids as OpenSCAD source.
 
-The text uses only the calls of OpenSCAD's flattened export (``multmatrix``,
+Every kind is written: spheres, cylinders, cones and frusta, boxes (turned ones,
+ellipsoids and elliptic trunci as a ``multmatrix`` of a cube, sphere or
+cylinder), convex polyhedra and Boolean trees. The text uses only the calls of
+OpenSCAD's flattened export (``multmatrix``,
 ``cube``, ``sphere``, ``cylinder``, ``polyhedron``, ``union``, ``difference``,
 ``intersection``), so it is both a ``.scad`` model and a ``.csg`` file that
 :func:`isocsg.openscad.loads_openscad` reads back without the ``openscad``
@@ -89,6 +92,20 @@ def _leaf(solid: Solid) -> str:
         m = np.eye(4)
         m[:3, :3] = np.asarray(solid.orientation, dtype=np.float64)  # columns: the box's own axes
         m[:3, 3] = solid.center
+        return f"multmatrix({_mat(m)}) {{ {body} }}"
+    kind = getattr(solid, "kind", "")
+    if kind == "ellipsoid":
+        # The unit sphere mapped by orientation x diag(radii), then moved to the centre.
+        m = np.eye(4)
+        m[:3, :3] = np.asarray(solid.orientation, dtype=np.float64) * np.asarray(solid.radii, dtype=np.float64)
+        m[:3, 3] = solid.center
+        return f"multmatrix({_mat(m)}) {{ sphere(r = 1); }}"
+    if kind == "elliptic_truncus" or (hasattr(solid, "matrix") and hasattr(solid, "r1")):
+        # The canonical truncus (unit height along z, E1 of radius r1 at z = +1/2) mapped by `matrix`.
+        m = np.eye(4)
+        m[:3, :3] = np.asarray(solid.matrix, dtype=np.float64)
+        m[:3, 3] = solid.center
+        body = f"cylinder(h = 1, r1 = {_num(solid.r2)}, r2 = {_num(solid.r1)}, center = true);"
         return f"multmatrix({_mat(m)}) {{ {body} }}"
     if isinstance(solid, ConvexPolyhedron):
         pts = ", ".join(_vec(p) for p in solid.hull_vertices)
