@@ -396,3 +396,44 @@ def test_writer_refuses_what_it_cannot_write(tmp_path) -> None:
         isocsg.save_openscad(Sphere((0, 0, 0), 1), tmp_path / "m.stl")
     with pytest.raises(InvalidParameterError, match=re.escape("save_openscad: solid must be an isocsg Solid, got str")):
         dumps_openscad("sphere")
+
+
+# ----------------------------------------------------------------------------- command line
+
+
+def test_cli_renders_a_csg_model_with_a_framing_camera(tmp_path, capsys) -> None:
+    from PIL import Image
+
+    from isocsg.cli import main
+
+    model = tmp_path / "part.csg"
+    model.write_text("difference() { cube(size = [4, 3, 1], center = true); cylinder(h = 2, r1 = 0.8, r2 = 0.8, center = true); }")
+    out = tmp_path / "out.png"
+    assert main(["render", str(model), "-o", str(out), "--size", "64x48", "--contours", "16", "--no-progress"]) == 0
+    assert f"wrote {out}" in capsys.readouterr().out
+    image = np.asarray(Image.open(out))
+    assert image.shape[:2] == (48, 64)
+    lit = image.reshape(48, 64, -1)[..., 0] > 0
+    # The model fills a good part of the frame and touches none of its borders.
+    assert 0.15 < lit.mean() < 0.9
+    assert not (lit[0].any() or lit[-1].any() or lit[:, 0].any() or lit[:, -1].any())
+
+
+def test_cli_reports_unsupported_nodes(tmp_path, capsys) -> None:
+    from isocsg.cli import main
+
+    model = tmp_path / "part.csg"
+    model.write_text("cube(size = 1);\nhull() { sphere(r = 1); }\n")
+    assert main(["render", str(model), "-o", str(tmp_path / "o.png"), "--no-progress"]) == 2
+    assert f"isocsg render: error: {model}:2: hull() is not supported" in capsys.readouterr().err
+
+
+@pytest.mark.skipif(shutil.which("openscad") is None, reason="the openscad program is not installed (apt install openscad)")
+def test_cli_renders_a_scad_model(tmp_path) -> None:
+    from isocsg.cli import main
+
+    model = tmp_path / "part.scad"
+    model.write_text("difference() { cube(2, center = true); rotate([90, 0, 0]) cylinder(h = 3, r = 0.5, center = true); }")
+    out = tmp_path / "out.png"
+    assert main(["render", str(model), "-o", str(out), "--size", "40x40", "--contours", "8", "--no-progress"]) == 0
+    assert out.stat().st_size > 0
