@@ -14,7 +14,8 @@ Per model of the corpus (``tests/data/openscad/*.scad``):
 - openscad: ``openscad --render -o x.stl model.scad`` at ``$fn = --segments``
   (CGAL Booleans and export; stopped after ``--timeout`` seconds);
 - manifold3d + pyvista: the lowered model's leaves tessellated at ``--segments``
-  and combined by manifold3d's batch Booleans (``to_mesh``), then pyvista's
+  and combined by manifold3d's batch Booleans (``isocsg.to_manifold``, then
+  ``to_mesh``), then pyvista's
   off-screen first render of that mesh (plotter, upload, first frame).
 
 Printed: medians over repeats and the ratios of the peers' times to isocsg's
@@ -97,14 +98,14 @@ def openscad_time(name: str, segments: int, repeats: int, timeout: float, tmp: P
 
 def peer_times(solid, segments: int, size: int, repeats: int) -> tuple[float | None, float | None]:
     import numpy as np
-    from reference.meshes import manifold_of
 
+    from isocsg import to_manifold
     from isocsg.scene.framing import framed_scene
 
     booleans, firsts = [], []
     mesh = None
     for _ in range(repeats):
-        t, mesh = _timed(lambda: manifold_of(solid, segments).to_mesh())
+        t, mesh = _timed(lambda: to_manifold(solid, segments).to_mesh())
         booleans.append(t)
     try:
         import pyvista as pv

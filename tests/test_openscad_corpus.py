@@ -43,6 +43,7 @@ FULL = os.environ.get("ISOCSG_SCALE_FULL") == "1"
 #: Models whose $fn = 256 STL export takes OpenSCAD 2021 from half a minute to over ten minutes
 #: (CGAL Booleans of 256-segment spheres and of many cylinders).
 SLOW_STL = {
+    "translate_union",
     "difference_cube_sphere", "intersection_cube_sphere", "ellipsoid_cut", "logo", "modifiers",
     "plate_with_holes", "module_posts",
 }
