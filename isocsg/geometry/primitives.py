@@ -16,6 +16,7 @@ The ``|``, ``&`` and ``-`` operators build CSG trees (see :mod:`isocsg.csg`).
 
 from __future__ import annotations
 
+import functools
 import math
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
@@ -283,6 +284,13 @@ def rotation3(name: str, value: Any) -> tuple[Vec3, Vec3, Vec3]:
 
 def _orthogonal_columns(B: NDArray[np.float64]) -> NDArray[np.float64] | None:
     """Column lengths of ``B`` when its columns are mutually orthogonal (relative 1e-9), else None."""
+    out = _orthogonal_columns_cached(np.ascontiguousarray(B, dtype=np.float64).tobytes())
+    return None if out is None else out.copy()
+
+
+@functools.lru_cache(maxsize=64)
+def _orthogonal_columns_cached(key: bytes) -> NDArray[np.float64] | None:
+    B = np.frombuffer(key, dtype=np.float64).reshape(3, 3)
     norms = np.linalg.norm(B, axis=0)
     g = (B.T @ B) / np.outer(norms, norms)
     if np.max(np.abs(g - np.eye(3))) <= 1e-9:
@@ -1079,7 +1087,7 @@ class Box(Primitive):
 
     def _affine(self, A: NDArray[np.float64], t: NDArray[np.float64]) -> Primitive:
         c = A @ self.center_array + t
-        B = A @ self.rotation
+        B = A if self.axis_aligned else A @ self.rotation
         norms = _orthogonal_columns(B)
         if norms is None:  # a shear of the box: a parallelepiped
             return ConvexPolyhedron(self.corners @ A.T + t)

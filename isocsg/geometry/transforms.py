@@ -20,6 +20,7 @@ of a CSG tree applies to its leaves, walked without recursion.
 
 from __future__ import annotations
 
+import functools
 import math
 from typing import TYPE_CHECKING, Any
 
@@ -192,6 +193,13 @@ def mirror_matrix(normal: ArrayLike) -> NDArray[np.float64]:
 
 def similarity_factor(A: NDArray[np.float64]) -> float | None:
     """The scale ``s`` when ``A = s Q`` with ``Q`` orthogonal (rotation or reflection), else None."""
+    return _similarity(np.ascontiguousarray(A, dtype=np.float64).tobytes())
+
+
+@functools.lru_cache(maxsize=64)
+def _similarity(key: bytes) -> float | None:
+    # one transform maps every leaf of a tree with the same matrix: decided once
+    A = np.frombuffer(key, dtype=np.float64).reshape(3, 3)
     g = A.T @ A
     s2 = float(np.trace(g)) / 3.0
     if np.max(np.abs(g - s2 * np.eye(3))) <= SIMILARITY_TOL * s2:
