@@ -84,7 +84,8 @@ def test_volume_is_area_times_height(name: str, center: bool) -> None:
     assert volume(solid) == pytest.approx(exact, rel=1e-9)
     # Along a tilted axis the sections are not prisms: the adaptive rule stops at its default tol = 1e-4.
     assert volume(solid, axis=(0.3, -0.2, 1.0)) == pytest.approx(exact, rel=1e-4)
-    assert manifold_extrusion(poly, h).volume() == pytest.approx(exact, rel=1e-9)
+    # manifold3d keeps its vertices in float32 precision: its volume agrees to about 1e-8.
+    assert manifold_extrusion(poly, h).volume() == pytest.approx(exact, rel=1e-7)
     lo, hi = solid.bounds[:, 2]
     assert (lo, hi) == ((-h / 2, h / 2) if center else (0.0, h))
 

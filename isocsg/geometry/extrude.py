@@ -38,6 +38,8 @@ def _polygons(polygon: Any, name: str) -> list[Any]:
         parts = list(polygon.geoms)
     else:
         raise InvalidGeometryError(f"{name} must be a shapely Polygon or MultiPolygon, got {type(polygon).__name__}")
+    if polygon.is_empty:
+        raise InvalidGeometryError(f"{name} must have an area > 0, got an empty polygon")
     coords = shapely.get_coordinates(polygon)
     if not np.all(np.isfinite(coords)):
         raise InvalidGeometryError(f"{name} must have finite coordinates")

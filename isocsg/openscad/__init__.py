@@ -121,8 +121,8 @@ def load_openscad(path: str | os.PathLike[str], *, skip_unsupported: bool = Fals
     >>> import pathlib, tempfile
     >>> from isocsg import volume
     >>> path = pathlib.Path(tempfile.mkdtemp()) / "part.csg"
-    >>> _ = path.write_text("difference() { cube(size = [2, 2, 1]); cylinder(h = 3, r1 = 0.5, r2 = 0.5); }")
-    >>> round(volume(load_openscad(path)), 9) == round(4 - 3.141592653589793 / 4, 9)
+    >>> _ = path.write_text("difference() { cube(size = [2, 2, 1], center = true); cylinder(h = 3, r1 = 0.5, r2 = 0.5, center = true); }")
+    >>> round(volume(load_openscad(path)), 9) == round(2 * 2 * 1 - 3.141592653589793 * 0.5**2 * 1, 9)
     True
     """
     model = read_openscad(path, skip_unsupported=skip_unsupported)
