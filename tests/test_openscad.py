@@ -428,6 +428,9 @@ def test_cli_reports_unsupported_nodes(tmp_path, capsys) -> None:
     model.write_text("cube(size = 1);\nhull() { sphere(r = 1); }\n")
     assert main(["render", str(model), "-o", str(tmp_path / "o.png"), "--no-progress"]) == 2
     assert f"isocsg render: error: {model}:2: hull() is not supported" in capsys.readouterr().err
+    args = ["render", str(model), "-o", str(tmp_path / "o.png"), "--size", "32x32", "--no-progress", "--skip-unsupported"]
+    assert main(args) == 0
+    assert "isocsg render: skipped 1 unsupported OpenSCAD node(s): 1 hull" in capsys.readouterr().err
 
 
 @pytest.mark.skipif(shutil.which("openscad") is None, reason="the openscad program is not installed (apt install openscad)")

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import argparse
+import sys
 from pathlib import Path
 from typing import Any
 
@@ -42,6 +43,10 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
         "--svg", metavar="OUT.svg",
         help="also write the visible bands as SVG polygons, back to front (isoluminance scenes of primitives)",
     )
+    p.add_argument(
+        "--skip-unsupported", action="store_true",
+        help="OpenSCAD models: skip nodes without an exact equivalent (hull, minkowski, ...) and say how many",
+    )
     add_common_render_options(p)
     p.set_defaults(func=run)
     return p
@@ -54,7 +59,7 @@ def run(args: argparse.Namespace) -> int:
         raise InvalidParameterError(f"--svg must name a .svg file, got {args.svg!r}")
     if args.svg is not None and Path(args.svg).is_dir():
         raise InvalidParameterError(f"--svg {args.svg!r} is a directory")
-    scene = apply_overrides(_load(args.scene), size=args.size, contours=args.contours)
+    scene = apply_overrides(_load(args.scene, skip_unsupported=args.skip_unsupported), size=args.size, contours=args.contours)
     if args.svg is not None:
         if scene.render.mode != "isoluminance":
             raise InvalidParameterError("--svg needs render.mode = \"isoluminance\"")
@@ -74,12 +79,15 @@ def run(args: argparse.Namespace) -> int:
     return 0
 
 
-def _load(path: str) -> Any:
+def _load(path: str, *, skip_unsupported: bool = False) -> Any:
     """A scene file, or an OpenSCAD model in a framed scene."""
     if Path(path).suffix.lower() not in OPENSCAD_SUFFIXES:
         return load_scene(path)
     from ..openscad import read_openscad
     from ..scene.framing import framed_scene
 
-    model = read_openscad(path)
+    model = read_openscad(path, skip_unsupported=skip_unsupported)
+    if model.skipped:
+        counts = ", ".join(f"{n} {name}" for name, n in sorted(model.skipped.items()))
+        print(f"isocsg render: skipped {sum(model.skipped.values())} unsupported OpenSCAD node(s): {counts}", file=sys.stderr)
     return framed_scene(model.solid)
