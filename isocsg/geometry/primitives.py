@@ -25,7 +25,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from .._validation import MAX_ABS_COORD, MAX_VERTICES, MIN_ASPECT, Vec3, length_floor, nonzero_vector3, points_array, scalar, vector3
-from ..errors import InvalidGeometryError, InvalidParameterError
+from ..errors import InvalidGeometryError
 
 if TYPE_CHECKING:  # pragma: no cover
     import trimesh

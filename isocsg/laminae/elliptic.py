@@ -83,7 +83,7 @@ def elliptic_surface(
         pr, nr = _side(e, np.array([-0.45, -0.25, 0.0, 0.25, 0.45]), phi_s)
         h_phi = curvature_spacing(pr, nr, lights, origin, contours, step=phi_s[1], **kw)
         pg, ng = _side(e, z_s, 2.0 * np.pi * np.arange(16) / 16)
-        h_z = curvature_spacing(pg.transpose(1, 0, 2), ng.transpose(1, 0, 2), lights, origin, contours, step=z_s[1], **kw)
+        h_z = curvature_spacing(pg.transpose(1, 0, 2), ng.transpose(1, 0, 2), lights, origin, contours, step=z_s[1] - z_s[0], **kw)
         rr = np.linspace(0.0, 1.0, _SAMPLES)
         for zc, r, sgn in ((0.5, e.r1, 1.0), (-0.5, e.r2, -1.0)):
             if r <= 0:
