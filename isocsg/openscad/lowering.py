@@ -66,7 +66,7 @@ _LEAVES_3D = {"cube", "sphere", "cylinder", "polyhedron"}
 _LEAVES_2D = {"square", "circle", "polygon"}
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True, slots=True, eq=False)  # compared by identity: the solid may be a huge tree
 class LoweredModel:
     """The result of lowering: the solid and what was skipped.
 

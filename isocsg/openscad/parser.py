@@ -51,7 +51,7 @@ _KEYWORDS: dict[str, Any] = {"true": True, "false": False, "undef": None, "inf":
 _MODIFIERS = "!#%*"
 
 
-@dataclass(slots=True)
+@dataclass(slots=True, repr=False, eq=False)  # no generated repr or == : they would recurse over children
 class CSGCall:
     """One statement of a ``.csg`` file.
 
@@ -77,6 +77,12 @@ class CSGCall:
     children: list["CSGCall"] = field(default_factory=list)
     line: int = 0
     modifiers: str = ""
+
+    def __repr__(self) -> str:
+        return (
+            f"CSGCall({self.modifiers}{self.name}, line={self.line}, args={len(self.args)}, "
+            f"kwargs={sorted(self.kwargs)}, children={len(self.children)})"
+        )
 
 
 @dataclass(slots=True)
