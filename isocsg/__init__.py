@@ -12,7 +12,9 @@ from .errors import (
     InvalidParameterError,
     IsocsgError,
     MissingDependencyError,
+    OpenSCADError,
     SceneFileError,
+    UnsupportedOpenSCADError,
 )
 from .geometry import Box, Cone, ConvexPolyhedron, Cylinder, Ellipsoid, EllipticTruncus, Primitive, RayHits, Solid, Sphere, Truncus
 from .lighting import DirectionalLight, Material, PointLight, shade
@@ -30,6 +32,8 @@ from .shadows import AreaLight, PolyhedronLight, illuminance, illuminance_and_st
 from .view import show
 from .batch import illuminance_grid, render_views, turntable
 from .interop import ShadedSurface, export_glb, object_surface, save_gltf, scene_surfaces, to_pyvista
+from .geometry.extrude import extrude
+from .openscad import OpenSCADSkipWarning, dumps_openscad, load_openscad, loads_openscad, read_openscad, save_openscad
 
 __version__ = "0.1.0"
 
@@ -37,7 +41,7 @@ __all__ = [
     "__version__",
     "Camera",
     "IsocsgError", "InvalidGeometryError", "InvalidLightError", "InvalidParameterError",
-    "SceneFileError", "MissingDependencyError",
+    "SceneFileError", "MissingDependencyError", "OpenSCADError", "UnsupportedOpenSCADError",
     "Solid", "Primitive", "RayHits", "Sphere", "Truncus", "Cylinder", "Cone", "Box", "ConvexPolyhedron", "Ellipsoid", "EllipticTruncus",
     "PointLight", "DirectionalLight", "Material", "shade",
     "Scene", "SceneObject", "RenderSettings",
@@ -49,4 +53,6 @@ __all__ = [
     "ShadedSurface", "object_surface", "scene_surfaces", "export_glb", "save_gltf", "to_pyvista",
     "load_scene", "save_scene",
     "AreaLight", "PolyhedronLight", "illuminance", "shadow_state", "illuminance_and_state",
+    "extrude",
+    "load_openscad", "loads_openscad", "read_openscad", "save_openscad", "dumps_openscad", "OpenSCADSkipWarning",
 ]

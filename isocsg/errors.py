@@ -18,6 +18,8 @@ __all__ = [
     "SceneFileError",
     "MissingDependencyError",
     "ResourceLimitError",
+    "OpenSCADError",
+    "UnsupportedOpenSCADError",
 ]
 
 
@@ -55,4 +57,28 @@ class ResourceLimitError(IsocsgError, MemoryError):
     Raised before anything is allocated; the message names the request, the
     estimate and the budget, e.g. ``render: 4096 x 4096 image with ... needs
     about 3.2 GB, over the memory budget of 2.0 GB (isocsg.limits.set_memory_budget)``.
+    """
+
+
+class OpenSCADError(IsocsgError, ValueError):
+    """An OpenSCAD file (``.scad`` or ``.csg``) cannot be read.
+
+    The message starts with the file name (when known) and the line, e.g.
+    ``model.csg:12: expected ')' after the arguments of cube, got ';'``.
+    ``line`` holds the 1-based line number (``None`` when the error is not
+    about one line, such as a failed ``openscad`` run).
+    """
+
+    def __init__(self, message: str, *, line: int | None = None, node: str | None = None) -> None:
+        super().__init__(message)
+        self.line = line
+        self.node = node
+
+
+class UnsupportedOpenSCADError(OpenSCADError):
+    """An OpenSCAD node that has no exact isocsg equivalent (``hull``, ``minkowski``, ...).
+
+    ``node`` holds the node's name and ``line`` its line; the message names
+    both, e.g. ``model.csg:7: hull() is not supported (...)``.
+    ``load_openscad(..., skip_unsupported=True)`` skips such nodes instead.
     """

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import argparse
+import sys
 from pathlib import Path
 from typing import Any
 
@@ -26,16 +27,23 @@ chooses the method: "isoluminance" (contour bands, point and directional lights)
 or "halftone" (exact illuminance and soft shadows from area and polyhedron lights).
 An output ending in .glb or .gltf writes the shaded bands as a 3D glTF model instead
 (flat unlit colours, one per band; CSG objects as their Boolean result).
+An OpenSCAD model (.csg, or .scad through the openscad program) is rendered with a camera that
+frames it (512x512 unless --size) and one directional light.
 """
 
 #: Output extensions that write a glTF model instead of an image.
 GLTF_SUFFIXES = (".glb", ".gltf")
+#: Model files rendered with a default camera and light.
+OPENSCAD_SUFFIXES = (".scad", ".csg")
 
 
 def register(subparsers: Any) -> argparse.ArgumentParser:
     """Add the ``render`` sub-command."""
     p = subparsers.add_parser("render", help="render a scene file to PNG", description=DESCRIPTION)
-    p.add_argument("scene", metavar="SCENE", help="scene file, .toml or .json, or - to read it from standard input")
+    p.add_argument(
+        "scene", metavar="SCENE",
+        help="scene file (.toml or .json), OpenSCAD model (.scad or .csg), or - to read a scene from standard input",
+    )
     p.add_argument(
         "-o", "--output", required=True, metavar="OUT.png",
         help="PNG file to write; .glb or .gltf: the shaded bands as a glTF model",
@@ -44,6 +52,10 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
     p.add_argument(
         "--svg", metavar="OUT.svg",
         help="also write the visible bands as SVG polygons, back to front (isoluminance scenes of primitives)",
+    )
+    p.add_argument(
+        "--skip-unsupported", action="store_true",
+        help="OpenSCAD models: skip nodes without an exact equivalent (hull, minkowski, ...) and say how many",
     )
     add_common_render_options(p)
     p.set_defaults(func=run)
@@ -62,7 +74,7 @@ def run(args: argparse.Namespace) -> int:
         raise InvalidParameterError(f"--svg must name a .svg file, got {args.svg!r}")
     if args.svg is not None and Path(args.svg).is_dir():
         raise InvalidParameterError(f"--svg {args.svg!r} is a directory")
-    scene = apply_overrides(load_scene_argument(args.scene), size=args.size, contours=args.contours)
+    scene = apply_overrides(_load(args.scene, skip_unsupported=args.skip_unsupported), size=args.size, contours=args.contours)
     if gltf and scene.render.mode != "isoluminance":
         raise InvalidParameterError(f"{args.output}: glTF output needs render.mode = \"isoluminance\" (point or directional lights)")
     if args.svg is not None:
@@ -90,3 +102,17 @@ def run(args: argparse.Namespace) -> int:
         save_scene_svg(args.svg, scene)
         print(f"wrote {args.svg}")
     return 0
+
+
+def _load(path: str, *, skip_unsupported: bool = False) -> Any:
+    """A scene file, or an OpenSCAD model in a framed scene."""
+    if Path(path).suffix.lower() not in OPENSCAD_SUFFIXES:
+        return load_scene_argument(path)
+    from ..openscad import read_openscad
+    from ..scene.framing import framed_scene
+
+    model = read_openscad(path, skip_unsupported=skip_unsupported)
+    if model.skipped:
+        counts = ", ".join(f"{n} {name}" for name, n in sorted(model.skipped.items()))
+        print(f"isocsg render: skipped {sum(model.skipped.values())} unsupported OpenSCAD node(s): {counts}", file=sys.stderr)
+    return framed_scene(model.solid)

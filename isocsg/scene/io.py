@@ -70,6 +70,7 @@ from ..errors import (
     SceneFileError,
 )
 from ..geometry import transforms as _tf
+from ..geometry.extrude import extrude_rings
 from ..geometry.primitives import Solid
 from ..geometry.registry import registered_kinds
 from ..lighting.lights import DirectionalLight, Material, PointLight
@@ -104,6 +105,10 @@ _PRIMITIVE_FIELDS: dict[str, tuple[tuple[str, ...], tuple[str, ...]]] = {
 }
 _PRIMITIVE_TYPES: dict[str, Callable[..., Solid]] = {k.name: k.cls for k in registered_kinds()}
 _CLASS_NAMES = {k.name: k.cls.__name__ for k in registered_kinds()}
+# The straight extrusion of a polygon: a union of convex prisms (isocsg.geometry.extrude).
+_PRIMITIVE_FIELDS["extrude"] = (("polygon", "height"), ("holes", "center"))
+_PRIMITIVE_TYPES["extrude"] = extrude_rings
+_CLASS_NAMES["extrude"] = "extrude"
 _CSG_TYPES: dict[str, type[CSGNode]] = {"union": Union, "intersection": Intersection, "difference": Difference}
 
 #: Every node kind accepted in an object's ``shape`` tree.
@@ -207,7 +212,7 @@ def _type_name(value: Any) -> str:
 
 def _reword(path: str, class_name: str, message: str) -> tuple[str, str]:
     """Turn ``Class.field rest`` into ``(path.field, rest)``."""
-    m = re.match(rf"^{re.escape(class_name)}\.(\w+) (.*)$", message, flags=re.DOTALL)
+    m = re.match(rf"^{re.escape(class_name)}\.(\w+(?:\[\d+\])*) (.*)$", message, flags=re.DOTALL)
     if m is None:
         return path, message
     field, rest = m.group(1), m.group(2)

@@ -1,0 +1,1 @@
+cylinder(h = 2, r = 1);

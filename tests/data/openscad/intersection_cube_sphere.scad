@@ -1,0 +1,4 @@
+intersection() {
+    cube(2, center = true);
+    sphere(r = 1.3);
+}

@@ -1,0 +1,1 @@
+rotate([30, 45, 60]) cube([1, 2, 3], center = true);
