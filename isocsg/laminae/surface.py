@@ -245,6 +245,7 @@ def mixed_spacing(
     *,
     eye: NDArray[np.float64] | None = None,
     shininess: float = 1.0,
+    weights: tuple[float, float] = (1.0, 1.0),
 ) -> float:
     """The longest spacing along the first parameter of a grid whose cells' triangles follow every
     field within a quarter band step, given the spacing ``step1`` along the second.
@@ -266,12 +267,20 @@ def mixed_spacing(
         return np.inf
     n = min(contours, SPECULAR_CONTOURS)
     best = np.inf
-    for f in _terms(grid.reshape(-1, 3), normals.reshape(-1, 3), lights, origin, eye, shininess):
+    terms = []
+    for f, smooth, w in _terms(grid.reshape(-1, 3), normals.reshape(-1, 3), lights, origin, eye, shininess, weights):
         f = f.reshape(m0, m1)
         r = float(f.max() - f.min())
-        if not r > 1e-12:
+        if r > 1e-12 and w > 0:
+            terms.append((f, smooth.reshape(m0, m1), w))
+    # As in curvature_spacing: a faint family is followed within the part's largest band step,
+    # and only cells where the field is smooth (all four corners) measure its mixed term.
+    dominant = max((w * float(f.max() - f.min()) for f, _, w in terms), default=0.0)
+    for f, smooth, w in terms:
+        cells = smooth[:-1, :-1] & smooth[1:, :-1] & smooth[:-1, 1:] & smooth[1:, 1:]
+        if not cells.any():
             continue
-        mixed = float(np.max(np.abs(np.diff(np.diff(f, axis=0), axis=1)))) / (step0 * step1)
+        mixed = float(np.max(np.where(cells, np.abs(np.diff(np.diff(f, axis=0), axis=1)), 0.0))) / (step0 * step1)
         if mixed > 0:
-            best = min(best, r / (n * mixed * step1))
+            best = min(best, dominant / (n * w * mixed * step1))
     return best
