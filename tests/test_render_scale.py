@@ -305,7 +305,7 @@ def test_budget_error_for_tiles_that_cannot_shrink_enough():
 
     set_memory_budget(1 << 20)
     try:
-        with pytest.raises(ResourceLimitError, match="per-pixel CSG of 600 leaves in 8-pixel tiles"):
+        with pytest.raises(ResourceLimitError, match=re.escape("per-pixel CSG of 600 leaves (600 distinct) in 8-pixel tiles")):
             Renderer(build_laminae=build).render(Scene(cam, LIGHTS, (SceneObject(balls),)))
     finally:
         set_memory_budget(None)

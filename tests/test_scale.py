@@ -402,9 +402,8 @@ def test_loop_of_100000_operations_has_no_recursion_limit(distinct) -> None:
     assert abs(s.area - exact) <= 1e-3 * exact, (s.area, exact)
 
 
-@pytest.mark.xfail(run=False, reason="known: 100 001 leaves crowded into a few tile rows keep every leaf's band mesh "
-                   "alive until those rows are resolved, and those meshes are not counted against the memory budget "
-                   "(about 24 GB here); not run until the renderer releases or budgets them")
+@pytest.mark.slow
+@pytest.mark.skipif(not FULL, reason="the largest sizes run with ISOCSG_SCALE_FULL=1")
 def test_loop_of_100000_operations_renders() -> None:
     # 100 000 differences cycling through 1000 holes: 100 001 leaves, nested 100 000 deep
     solid, plate = loop_tree(100_000, distinct=1000)
