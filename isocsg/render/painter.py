@@ -1,7 +1,7 @@
 """Isoluminance rendering of a scene: band fill, per-pixel CSG, depth test.
 
 Each primitive's surface bands (planar triangles of constant value, built by
-:func:`isocsg.laminae.build_laminae` and cached there because they do not
+:func:`isocsg.laminae.build_bands` and cached there because they do not
 depend on the viewpoint) are filled with :mod:`isocsg.render.raster`:
 
 - an object that is a single primitive needs its front surface only (back
@@ -492,7 +492,8 @@ class Renderer:
         ``build_laminae(primitive, lights, material, contours, eye=eye)``
         returning a :class:`~isocsg.laminae.model.LaminaSet` (or a
         :class:`~isocsg.laminae.model.BandMesh`). Defaults to
-        :func:`isocsg.laminae.build_laminae`, which caches the
+        :func:`isocsg.laminae.build_bands` (the bands of
+        :func:`~isocsg.laminae.build_laminae` without the laminae), which caches the
         view-independent bands, so rendering from a new viewpoint only fills.
     csg : {"auto", "surface", "pixel"}, default "auto"
         How CSG objects are resolved. ``"pixel"``: per pixel on the leaves'
@@ -589,9 +590,9 @@ class Renderer:
 
     def _builder(self) -> BandBuilder:
         if self._build is None:
-            from ..laminae import build_laminae
+            from ..laminae import build_bands
 
-            self._build = build_laminae
+            self._build = build_bands
         return self._build
 
     def bands(self, primitive: Primitive, lights: Sequence[Any], material: Any, contours: int, eye: Any) -> BandMesh:
