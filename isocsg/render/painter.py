@@ -326,6 +326,9 @@ def _resolve_packed(
 
 
 # ------------------------------------------------------------------- renderer
+_QUADS_LOCK = threading.Lock()
+
+
 @dataclass(frozen=True, slots=True, eq=False)
 class _Prepared:
     vertices: NDArray[np.float64]
@@ -338,8 +341,10 @@ class _Prepared:
     def quads(self) -> tuple[NDArray[np.int32], NDArray[np.float32], NDArray[np.float32]]:
         """pair_quads of the triangles and their ``value_out`` and ``value_in`` (made when first needed)."""
         if not self._quads:
-            quads, source = pair_quads(self.vertices, self.triangles, self.value_out, self.value_in)
-            self._quads.append((quads, self.value_out[source], self.value_in[source]))
+            with _QUADS_LOCK:  # made once, by whichever thread asks first
+                if not self._quads:
+                    quads, source = pair_quads(self.vertices, self.triangles, self.value_out, self.value_in)
+                    self._quads.append((quads, self.value_out[source], self.value_in[source]))
         return self._quads[0]
 
     def proj(self, k: int = 0) -> NDArray[np.float64]:
@@ -1121,7 +1126,11 @@ class Renderer:
             if pending[t] == 0:
                 queue.appendleft(("tile", t))  # before waiting fills: it releases memory
 
-        def fill(g: int, proj: NDArray[np.float64], quads: Any, vout: Any, vin: Any) -> None:
+        def fill(g: int, prep: _Prepared) -> None:
+            # Projection and quads here, on a worker, while the main thread builds the next group.
+            proj = np.empty((7, len(prep.vertices)))
+            project_kernel(prep.vertices, eye, a, b, persp, proj, 0, len(prep.vertices))
+            quads, vout, vin = prep.quads()
             near = nears_l[members[g][0]]
             done = []
             for t, j in slots[g]:
@@ -1205,14 +1214,11 @@ class Renderer:
                     prep = self._prepare(*bands)
                     seconds += time.perf_counter() - t
                     view_dependent = bool(view_dependent) or bands[1]
-                    proj = np.empty((7, len(prep.vertices)))
-                    project_kernel(prep.vertices, eye, a, b, persp, proj, 0, len(prep.vertices))
-                    task = ("fill", g, proj, *prep.quads())  # quads made here, not in the workers
                     with cond:
-                        queue.append(task)
+                        queue.append(("fill", g, prep))
                         state["fills"] += 1
                         cond.notify_all()
-                    del task, proj, prep, bands
+                    del prep, bands
                     report.add(len(members[g]))
                     # Waiting fills hold their meshes: help once there are more than a few.
                     help_until(lambda: state["fills"] <= 2 * threads)
