@@ -119,6 +119,11 @@ def child_isocsg(model: str, n: int, size: int, repeats: int, contours: int) -> 
     r = Renderer()
     r.render(Scene(wcam, lights, [warm], RenderSettings(contours=contours)))
     r.render(Scene(wcam.with_view((-3, -3, 2)), lights, [warm], RenderSettings(contours=contours)))
+    # and the tiled path (more leaves than the whole-rectangle path takes)
+    tiled = warm
+    for k in range(12):
+        tiled = tiled - Cylinder((0.1 * k - 0.6, 0, 0), (0, 0, 3), 0.05)
+    r.render(Scene(wcam, lights, [tiled], RenderSettings(contours=8)))
     del r
     _emit("warmup", None)
 

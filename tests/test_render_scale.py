@@ -246,6 +246,47 @@ def test_small_leaves_get_fewer_contours():
     assert set(asked.values()) == {64}
 
 
+def test_equal_leaves_are_built_once_and_resolved_as_one():
+    # A modelling loop subtracting each of 16 holes 40 times (641 leaves, 17
+    # distinct): each distinct leaf is built once, and the image is the plate's
+    # with each hole once, as the ray caster sees it.
+    from isocsg.laminae import build_laminae
+
+    scene = plate_scene(4, 96, 80, contours=32)
+    tree = scene.objects[0].shape
+    part = tree.children[0]
+    for _ in range(40):
+        for hole in tree.children[1:]:
+            part = part - hole
+    built = []
+
+    def build(primitive, lights, material, contours, *, eye):
+        built.append(primitive)
+        return build_laminae(primitive, lights, material, contours, eye=eye)
+
+    loop = Scene(scene.camera, scene.lights, (SceneObject(part),), scene.render)
+    res = Renderer(csg="pixel", build_laminae=build).render(loop)
+    assert len(built) == 17 and set(built) == set(tree.children)
+    np.testing.assert_array_equal(res.image, Renderer(csg="pixel").render(scene).image)
+    result = compare(res.image, plate_reference(scene))
+    assert result.iou >= 0.99, result.summary()
+    assert result.fraction >= 0.98, result.summary()
+
+
+def test_open_tile_pixels_bounds_what_a_render_keeps(monkeypatch):
+    # Three leaves in a column of 8-pixel tiles: rows are released behind the
+    # one being built, so fewer pixels are open than the leaves cover in all.
+    rects = np.array([[0, 0, 8, 16], [0, 24, 8, 32], [0, 40, 8, 48]])
+    monkeypatch.setattr(tiles, "TILE_SIDES", (8,))
+    plan = tiles.plan_tiles(rects, (0, 0, 8, 48), 5, 1 << 30)
+    assert plan.side == 8
+    # ahead=0: one leaf's rows at a time (the first spans two rows of tiles)
+    assert tiles.open_tile_pixels(rects, plan, 0) == 8 * 16
+    # ahead=3: the second row built while the first one's still open, and so on
+    assert tiles.open_tile_pixels(rects, plan, 3) == 8 * 16 + 8 * 8
+    assert tiles.open_tile_pixels(rects, plan, 10) == 3 * 8 * 8 + 8 * 8
+
+
 _MEMORY_SCRIPT = textwrap.dedent(
     """
     import json, resource, sys, time
@@ -257,7 +298,7 @@ _MEMORY_SCRIPT = textwrap.dedent(
         return next(int(l.split()[1]) for l in open("/proc/self/status") if l.startswith("VmHWM:"))
     base = hwm()
     t = time.perf_counter()
-    res = Renderer(adaptive_contours=True).render(scene)
+    res = Renderer().render(scene)  # default settings: every leaf at the requested count
     seconds = time.perf_counter() - t
     peak = hwm()
     print(json.dumps({{"base_mb": base / 1024, "peak_mb": peak / 1024, "seconds": seconds,
@@ -305,7 +346,7 @@ def test_budget_error_for_tiles_that_cannot_shrink_enough():
 
     set_memory_budget(1 << 20)
     try:
-        with pytest.raises(ResourceLimitError, match="per-pixel CSG of 600 leaves in 8-pixel tiles"):
+        with pytest.raises(ResourceLimitError, match=re.escape("per-pixel CSG of 600 leaves (600 distinct) in 8-pixel tiles")):
             Renderer(build_laminae=build).render(Scene(cam, LIGHTS, (SceneObject(balls),)))
     finally:
         set_memory_budget(None)

@@ -50,7 +50,7 @@ from .split import MAX_PIECES, split_by_levels
 from .surface import Surface
 from .truncus import light_frame, paper_levels, truncus_laminae, truncus_surface
 
-__all__ = ["build_laminae", "clear_cache", "cache_info", "cache_bytes", "MAX_CONTOURS"]
+__all__ = ["build_laminae", "build_bands", "clear_cache", "cache_info", "cache_bytes", "MAX_CONTOURS"]
 
 #: Largest number of contours per family.
 MAX_CONTOURS = 4096
@@ -59,7 +59,10 @@ Light = PointLight | DirectionalLight
 
 #: Most bytes of lamina sets kept by the cache (never more than a quarter of
 #: :func:`isocsg.limits.memory_budget`); the least recently used go first.
-CACHE_BYTES = 1 << 30
+#: A renderer's prepared meshes keep the band meshes they were made from, so
+#: both caches' sets are alive at once: at 512 MiB the first render of a
+#: 1000-hole plate at 1024 x 1024 peaks at about 1.2 GB (1.7 GB at 1 GiB).
+CACHE_BYTES = 512 << 20
 
 # key -> (lamina set, its bytes as counted by _nbytes)
 _CACHE: OrderedDict[tuple[Any, ...], tuple[LaminaSet, int]] = OrderedDict()
@@ -173,6 +176,54 @@ def build_laminae(
     >>> float(ls.bands.value_out.min()), round(float(ls.bands.value_out.max()), 3)
     (0.1, 0.85)
     """
+    return _cached(primitive, lights, material, contours, eye, bands_only=False)
+
+
+def build_bands(
+    primitive: Primitive,
+    lights: Sequence[Light],
+    material: Material | None = None,
+    contours: int = 64,
+    *,
+    eye: ArrayLike | None = None,
+) -> LaminaSet:
+    """The band mesh of one primitive, without the laminae (what a renderer fills).
+
+    The same as :func:`build_laminae` (same parameters, checks and cache)
+    except that the paper's lamina polygons and the contour family
+    descriptions, which only inspection and the SVG output read, are not
+    built: the returned set's ``laminae`` and ``families`` are empty, and its
+    ``bands`` are equal, array for array, to :func:`build_laminae`'s. When the
+    full set is cached its bands are returned (the same objects), and a full
+    build after this one reuses these bands.
+
+    Returns
+    -------
+    LaminaSet
+        With empty ``laminae`` and ``families`` unless the full set was cached.
+
+    Raises
+    ------
+    InvalidParameterError, InvalidLightError
+        As :func:`build_laminae`.
+
+    Examples
+    --------
+    >>> from isocsg import PointLight, Sphere
+    >>> ls = build_bands(Sphere((0, 0, 0), 1.0), [PointLight((0, 0, 5))], contours=8)
+    >>> len(ls.laminae), ls.bands.n_triangles > 0
+    (0, True)
+    >>> full = build_laminae(Sphere((0, 0, 0), 1.0), [PointLight((0, 0, 5))], contours=8)
+    >>> full.bands is ls.bands, len(full.laminae)
+    (True, 8)
+    """
+    return _cached(primitive, lights, material, contours, eye, bands_only=True)
+
+
+def _cached(
+    primitive: Primitive, lights: Sequence[Light], material: Material | None, contours: int, eye: ArrayLike | None,
+    *, bands_only: bool,
+) -> LaminaSet:
     if not isinstance(primitive, (Sphere, Truncus, Box, ConvexPolyhedron)) and hook_for(primitive, "surface") is None:
         raise InvalidParameterError(
             f"primitive must be a Sphere, Truncus, Box, ConvexPolyhedron or another registered kind with a band surface, "
@@ -191,14 +242,25 @@ def build_laminae(
         eye_t = tuple(vector3("eye", eye, error=InvalidParameterError))
     _check_size(n, len(lights_t), specular)
     key = (primitive, lights_t, mat, n, eye_t)
+    part = (*key, "bands")  # a set without laminae
     with _LOCK:
-        hit = _CACHE.get(key)
-        if hit is not None:
-            _CACHE.move_to_end(key)
-            _STATS["hits"] += 1
-            return hit[0]
+        for k in (key, part) if bands_only else (key,):  # a full set serves a bands-only request too
+            hit = _CACHE.get(k)
+            if hit is not None:
+                _CACHE.move_to_end(k)
+                _STATS["hits"] += 1
+                return hit[0]
         _STATS["misses"] += 1
-    out = _build(primitive, lights_t, mat, n, None if eye_t is None else np.asarray(eye_t))
+        # A full build after a bands-only one keeps its bands (the same objects).
+        known = None if bands_only else _CACHE.pop(part, None)
+        if known is not None:
+            _BYTES[0] -= known[1]
+    eye_a = None if eye_t is None else np.asarray(eye_t)
+    if bands_only:
+        out = LaminaSet(primitive, (), (), _build_bands(primitive, lights_t, mat, n, eye_a), view_dependent=eye_a is not None)
+        key = part
+    else:
+        out = _build(primitive, lights_t, mat, n, eye_a, None if known is None else known[0].bands)
     size = _nbytes(out)
     limit = min(CACHE_BYTES, memory_budget() // 4)
     with _LOCK:
@@ -305,7 +367,10 @@ def _virtual_light(primitive: Primitive, light: Light, eye: NDArray[np.float64])
     return DirectionalLight(tuple(h / np.linalg.norm(h)), light.intensity)
 
 
-def _build(primitive: Primitive, lights: tuple[Light, ...], mat: Material, n: int, eye: NDArray[np.float64] | None) -> LaminaSet:
+def _build_bands(
+    primitive: Primitive, lights: tuple[Light, ...], mat: Material, n: int, eye: NDArray[np.float64] | None,
+) -> BandMesh:
+    """The band mesh alone: the primitive's surface cut along its contour families' level lines."""
     origin = _origin(primitive)
     eye_local = None if eye is None else eye - origin
     surf = _surface(primitive, lights, n, eye_local, float(mat.shininess), (float(mat.kd), float(mat.ks)))
@@ -314,8 +379,16 @@ def _build(primitive: Primitive, lights: tuple[Light, ...], mat: Material, n: in
         fams.append(diffuse_family(j, light, mat, incidence(light, surf.vertices, surf.normals, surf.origin)))
         if eye_local is not None:
             fams.extend(specular_families(j, light, mat, surf.vertices, surf.normals, eye - surf.origin, surf.origin))
-    bands = _cut(surf, fams, mat, n)
+    return _cut(surf, fams, mat, n)
 
+
+def _build(
+    primitive: Primitive, lights: tuple[Light, ...], mat: Material, n: int, eye: NDArray[np.float64] | None,
+    bands: BandMesh | None = None,
+) -> LaminaSet:
+    """The full set: the band mesh (built unless given) and the paper's laminae and families."""
+    if bands is None:
+        bands = _build_bands(primitive, lights, mat, n, eye)
     laminae: list[Lamina] = []
     for j, light in enumerate(lights):
         w = light.intensity

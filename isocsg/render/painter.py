@@ -1,7 +1,7 @@
 """Isoluminance rendering of a scene: band fill, per-pixel CSG, depth test.
 
 Each primitive's surface bands (planar triangles of constant value, built by
-:func:`isocsg.laminae.build_laminae` and cached there because they do not
+:func:`isocsg.laminae.build_bands` and cached there because they do not
 depend on the viewpoint) are filled with :mod:`isocsg.render.raster`:
 
 - an object that is a single primitive needs its front surface only (back
@@ -58,7 +58,9 @@ from .raster import (
     _RAW, camera_affine, fill_front_kernel, fill_projected, fill_rect, key_to_depth, pair_quads, project_kernel,
 )
 from .scratch import SCRATCH
-from .tiles import LEAF_PIXEL_BYTES, LeafGeometry, combine_rects, leaf_geometry, leaf_rects, plan_tiles, tile_leaves
+from .tiles import (
+    LEAF_PIXEL_BYTES, LeafGeometry, combine_rects, leaf_geometry, leaf_rects, open_tile_pixels, plan_tiles, tile_leaves,
+)
 
 __all__ = ["RenderResult", "RenderTimings", "Renderer", "render", "default_renderer"]
 
@@ -336,6 +338,9 @@ def _resolve_packed(
 
 
 # ------------------------------------------------------------------- renderer
+_QUADS_LOCK = threading.Lock()
+
+
 @dataclass(frozen=True, slots=True, eq=False)
 class _Prepared:
     vertices: NDArray[np.float64]
@@ -348,8 +353,10 @@ class _Prepared:
     def quads(self) -> tuple[NDArray[np.int32], NDArray[np.float32], NDArray[np.float32]]:
         """pair_quads of the triangles and their ``value_out`` and ``value_in`` (made when first needed)."""
         if not self._quads:
-            quads, source = pair_quads(self.vertices, self.triangles, self.value_out, self.value_in)
-            self._quads.append((quads, self.value_out[source], self.value_in[source]))
+            with _QUADS_LOCK:  # made once, by whichever thread asks first
+                if not self._quads:
+                    quads, source = pair_quads(self.vertices, self.triangles, self.value_out, self.value_in)
+                    self._quads.append((quads, self.value_out[source], self.value_in[source]))
         return self._quads[0]
 
     def proj(self, k: int = 0) -> NDArray[np.float64]:
@@ -502,7 +509,8 @@ class Renderer:
         ``build_laminae(primitive, lights, material, contours, eye=eye)``
         returning a :class:`~isocsg.laminae.model.LaminaSet` (or a
         :class:`~isocsg.laminae.model.BandMesh`). Defaults to
-        :func:`isocsg.laminae.build_laminae`, which caches the
+        :func:`isocsg.laminae.build_bands` (the bands of
+        :func:`~isocsg.laminae.build_laminae` without the laminae), which caches the
         view-independent bands, so rendering from a new viewpoint only fills.
     csg : {"auto", "surface", "pixel"}, default "auto"
         How CSG objects are resolved. ``"pixel"``: per pixel on the leaves'
@@ -599,9 +607,9 @@ class Renderer:
 
     def _builder(self) -> BandBuilder:
         if self._build is None:
-            from ..laminae import build_laminae
+            from ..laminae import build_bands
 
-            self._build = build_laminae
+            self._build = build_bands
         return self._build
 
     def bands(self, primitive: Primitive, lights: Sequence[Any], material: Any, contours: int, eye: Any) -> BandMesh:
@@ -1038,17 +1046,26 @@ class Renderer:
     ) -> tuple[float, bool | None]:
         """Resolve a CSG object per pixel in screen tiles (see :mod:`isocsg.render.tiles`).
 
-        The tiles (:func:`~isocsg.render.tiles.plan_tiles`) are done row of
-        tiles by row of tiles: the main thread builds the leaves whose
-        rectangle begins in the next row while the other threads take the
-        tiles of the rows already built from a queue (and the main thread
-        too, once it is more than :data:`_ROWS_AHEAD` rows ahead or done
-        building). A tile fills its leaves, each over its own part of the
-        tile, into the thread's buffers and resolves the program pruned to
-        them. A leaf's projection is dropped once every row it meets is done,
-        and leaves off screen are never built. Returns the seconds spent
-        obtaining bands and whether any was view-dependent (None if none
-        was built).
+        Equal leaves (the same primitive at the same contour count, e.g. a
+        hole subtracted again and again by a modelling loop) form one group:
+        its bands are obtained, projected and filled once per tile, and the
+        equal leaves of a tile read the same buffers. Groups are built in
+        the order of the first row of tiles their rectangle meets
+        (:func:`~isocsg.render.tiles.plan_tiles`). A tile's buffers (its
+        groups' clipped rectangles, packed) are allocated when the first
+        group meeting it is built; each group is filled into all its tiles
+        at once and its mesh and projection are dropped right after, so the
+        meshes alive are only those waiting to be filled, never one per
+        leaf. Once every group meeting a tile is filled and its row closed,
+        the tile resolves the program pruned to its leaves and releases its
+        buffers. Fills and tiles are taken from one queue by the other
+        threads and by the main thread whenever too many fills wait or when
+        more than :data:`_ROWS_AHEAD` rows are open behind the row it builds.
+        What is alive therefore grows with the image and the leaves' screen
+        footprints (bounded before anything is allocated, see
+        :func:`~isocsg.render.tiles.open_tile_pixels`). Leaves off screen are
+        never built. Returns the seconds spent obtaining bands and whether any
+        was view-dependent (None if none was built).
         """
         n = len(leaves)
         persp = not cam.orthographic
@@ -1060,129 +1077,192 @@ class Renderer:
         np.clip(rects[:, 0::2], rect[0], rect[2], out=rects[:, 0::2])
         np.clip(rects[:, 1::2], rect[1], rect[3], out=rects[:, 1::2])
         plan = plan_tiles(rects, rect, len(program.op), min(TILE_MAX_BYTES, budget // 8))
-        threads = max(1, _STRIPES)
-        cap = max(plan.max_pixels, 1)
-        H, W = zkey.shape
-        check_memory(
-            f"render: per-pixel CSG of {n} leaves in {plan.side}-pixel tiles ({threads} x {cap} leaf pixels)",
-            threads * cap * LEAF_PIXEL_BYTES + H * W * IMAGE_PIXEL_BYTES,
-        )
-        side, oy = plan.side, rect[1]
+        side, ox, oy = plan.side, rect[0], rect[1]
         on = np.flatnonzero((rects[:, 0] < rects[:, 2]) & (rects[:, 1] < rects[:, 3]))
-        first = (rects[on, 1] - oy) // side
-        last = np.minimum((rects[on, 3] - 1 - oy) // side, plan.rows - 1)
-        order = np.argsort(first, kind="stable")
-        build_order, build_row = on[order].tolist(), np.maximum(first[order], 0).tolist()
-        release: list[list[int]] = [[] for _ in range(plan.rows)]
-        for i, r in zip(on.tolist(), last.tolist()):
-            release[max(int(r), 0)].append(i)
+        # Groups of equal leaves (equal leaves have equal rectangles), in order of their first row.
+        group_of = np.full(n, -1, np.int64)
+        members: list[list[int]] = []
+        index: dict[Any, int] = {}
+        counts_l = counts.tolist()
+        for i in on.tolist():
+            key = (leaves[i], counts_l[i])
+            g = index.setdefault(key, len(members))
+            if g == len(members):
+                members.append([])
+            members[g].append(i)
+            group_of[i] = g
+        reps = np.array([m[0] for m in members], np.int64)
+        first = (rects[reps, 1] - oy) // side
+        order = np.argsort(first, kind="stable").tolist()
+        first_l = first.tolist()
+        H, W = zkey.shape
+        peak = open_tile_pixels(rects[reps], plan, _ROWS_AHEAD)
+        check_memory(
+            f"render: per-pixel CSG of {n} leaves ({len(members)} distinct) in {plan.side}-pixel tiles "
+            f"({peak} leaf pixels open at once)",
+            peak * LEAF_PIXEL_BYTES + H * W * IMAGE_PIXEL_BYTES,
+        )
         occupied = np.diff(plan.start) > 0
         row_tiles = [np.flatnonzero(occupied[r * plan.cols : (r + 1) * plan.cols]) + r * plan.cols for r in range(plan.rows)]
-        # Per leaf built and not yet dropped: its projection, quads and their values.
-        store: list[tuple[NDArray[Any], ...] | None] = [None] * n
         nears_l = nears.tolist()
-        cond = threading.Condition()
-        queue: deque[int] = deque()
-        left = [len(t) for t in row_tiles]  # tiles of each row not done yet
-        state: dict[str, Any] = {"open": True, "error": None, "queued": 0, "done": 0}  # rows queued, rows done (prefix)
         op_all, arg_all = program.op, program.arg
+        # Per open tile: (buffers, pruned op, arg, leaf ids, offsets, rows0, cols0, rows, cols).
+        tiles: dict[int, tuple[Any, ...]] = {}
+        slots: list[list[tuple[int, int]]] = [[] for _ in members]  # per group: (tile, slot) to fill
+        pending: dict[int, int] = {}  # per open tile: groups not filled yet, plus one until its row closes
+        cond = threading.Condition()
+        queue: deque[tuple[Any, ...]] = deque()
+        left = [len(t) for t in row_tiles]  # tiles of each row not resolved yet
+        state: dict[str, Any] = {"error": None, "queued": 0, "done": 0, "fills": 0, "open": True}
 
-        def tile(t: int, bufs: list[NDArray[Any]]) -> None:
+        def open_tile(t: int) -> None:
+            # Main thread only. Equal leaves of the tile share one slot of its buffers.
             c0, r0, c1, r1 = plan.tile(t)
             op, arg, ids, off, lr0, lc0, lh, lw = tile_leaves(
                 op_all, arg_all, plan.leaf[plan.start[t] : plan.start[t + 1]], n, rects, c0, r0, c1, r1)
-            if len(ids) == 0:
-                return
-            kf, vf, kb, vb = bufs
-            for i, o, y, x, hh, ww in zip(ids.tolist(), off.tolist(), lr0.tolist(), lc0.tolist(), lh.tolist(), lw.tolist()):
-                proj, quads, vout, vin = store[i]  # type: ignore[misc]
-                _fill_leaf(kf, vf, kb, vb, o, y, x, hh, ww, proj, quads, vout, vin, nears_l[i], persp)
-            _resolve_packed(kf, vf, kb, vb, off, lr0, lc0, lh, lw, ids, op, arg, _table(op, arg, len(ids)), base,
-                            r0, r1, c0, c1, zkey, value, gid, *_resolve_scratch(len(ids), len(op)))
+            groups = group_of[ids]
+            _, rep, inv = np.unique(groups, return_index=True, return_inverse=True)
+            sizes = (lh * lw)[rep]
+            starts = np.concatenate([[0], np.cumsum(sizes)])
+            off = starts[:-1][inv].astype(np.int64)
+            total = max(int(starts[-1]), 1)
+            bufs = (np.empty(total), np.empty(total, np.float32), np.empty(total), np.empty(total, np.float32))
+            tiles[t] = (bufs, op, arg, ids, off, lr0, lc0, lh, lw)
+            for j in rep.tolist():
+                slots[int(groups[j])].append((t, j))
+            pending[t] = len(rep) + 1
 
-        def work(bufs: list[NDArray[Any]], wait_for_more: bool, limit: int = -1) -> None:
-            """Take tiles from the queue until it is empty and closed (``limit`` tiles at most)."""
+        def ready(t: int) -> None:
+            # Under the lock: one more of the tile's groups filled (or its row closed).
+            pending[t] -= 1
+            if pending[t] == 0:
+                queue.appendleft(("tile", t))  # before waiting fills: it releases memory
+
+        def fill(g: int, prep: _Prepared) -> None:
+            # Projection and quads here, on a worker, while the main thread builds the next group.
+            proj = np.empty((7, len(prep.vertices)))
+            project_kernel(prep.vertices, eye, a, b, persp, proj, 0, len(prep.vertices))
+            quads, vout, vin = prep.quads()
+            near = nears_l[members[g][0]]
+            done = []
+            for t, j in slots[g]:
+                (kf, vf, kb, vb), _, _, _, off, lr0, lc0, lh, lw = tiles[t]
+                _fill_leaf(kf, vf, kb, vb, int(off[j]), int(lr0[j]), int(lc0[j]), int(lh[j]), int(lw[j]),
+                           proj, quads, vout, vin, near, persp)
+                done.append(t)
+            with cond:
+                state["fills"] -= 1
+                for t in done:
+                    ready(t)
+                cond.notify_all()
+
+        def resolve(t: int) -> None:
+            c0, r0, c1, r1 = plan.tile(t)
+            (kf, vf, kb, vb), op, arg, ids, off, lr0, lc0, lh, lw = tiles[t]
+            if len(ids):
+                _resolve_packed(kf, vf, kb, vb, off, lr0, lc0, lh, lw, ids, op, arg, _table(op, arg, len(ids)),
+                                base, r0, r1, c0, c1, zkey, value, gid, *_resolve_scratch(len(ids), len(op)))
+            with cond:
+                del tiles[t], pending[t]
+                left[t // plan.cols] -= 1
+                while state["done"] < state["queued"] and left[state["done"]] == 0:
+                    state["done"] += 1
+                cond.notify_all()
+
+        def work(wait_for_more: bool, limit: int = -1) -> None:
+            """Take tasks from the queue until it is empty (and closed, if ``wait_for_more``), ``limit`` at most."""
             while limit != 0:
                 with cond:
                     while not queue and state["open"] and wait_for_more and state["error"] is None:
                         cond.wait()
                     if not queue or state["error"] is not None:
                         return
-                    t = queue.popleft()
+                    task = queue.popleft()
                 try:
-                    tile(t, bufs)
+                    if task[0] == "tile":
+                        resolve(task[1])
+                    else:
+                        fill(*task[1:])
                 except BaseException as exc:  # handed to the main thread
                     with cond:
                         state["error"] = state["error"] or exc
                         queue.clear()
                         cond.notify_all()
                     return
-                with cond:
-                    row = t // plan.cols
-                    left[row] -= 1
-                    finish_rows()
-                    cond.notify_all()
                 limit -= 1
 
-        def finish_rows() -> None:
-            # Called under the lock: advance the prefix of finished rows, dropping leaves no row needs.
-            while state["done"] < state["queued"] and left[state["done"]] == 0:
-                for i in release[state["done"]]:
-                    store[i] = None
-                state["done"] += 1
+        def help_until(condition: Callable[[], bool]) -> None:
+            # Main thread: run queued tasks (or wait for the workers) until ``condition()`` holds.
+            while True:
+                with cond:
+                    while not condition() and not queue and state["error"] is None:
+                        cond.wait()
+                    if condition() or state["error"] is not None:
+                        return
+                work(False, 1)
 
         seconds = 0.0
         view_dependent: bool | None = None
-        specs = [((cap,), np.float64), ((cap,), np.float32), ((cap,), np.float64), ((cap,), np.float32)]
-        with SCRATCH.borrow(specs * threads) as arrays:
-            bufs = [arrays[4 * k : 4 * k + 4] for k in range(threads)]  # each thread's tile buffers
-            workers = [_pool().submit(work, bufs[k], True) for k in range(1, threads)]
-            try:
-                pos = 0
-                for row in range(plan.rows):
-                    while pos < len(build_order) and build_row[pos] <= row:
-                        i = build_order[pos]
-                        pos += 1
-                        t = time.perf_counter()
-                        bands = built[i] if built is not None else self._bands(
-                            leaves[i], lights, material, counts[i], cam.eye)
-                        prep = self._prepare(*bands)
-                        seconds += time.perf_counter() - t
-                        view_dependent = bool(view_dependent) or bands[1]
-                        proj = np.empty((7, len(prep.vertices)))
-                        project_kernel(prep.vertices, eye, a, b, persp, proj, 0, len(prep.vertices))
-                        store[i] = (proj, *prep.quads())  # quads made here, not in the workers
-                        report.add(1)
-                        with cond:
-                            if state["error"] is not None:
-                                break
+        threads = max(1, _STRIPES)
+        workers = [_pool().submit(work, True) for _ in range(1, threads)]
+        try:
+            pos = 0
+            for row in range(plan.rows):
+                # At most _ROWS_AHEAD rows behind this one still open: bounds the tiles alive.
+                help_until(lambda: state["done"] >= row - _ROWS_AHEAD)
+                if state["error"] is not None:
+                    break
+                while pos < len(order) and first_l[order[pos]] <= row:
+                    g = order[pos]
+                    pos += 1
+                    i = members[g][0]
+                    c0, r0, c1, r1 = rects[i].tolist()
+                    for tr in range((r0 - oy) // side, (r1 - 1 - oy) // side + 1):
+                        for tc in range((c0 - ox) // side, (c1 - 1 - ox) // side + 1):
+                            if tr * plan.cols + tc not in tiles:
+                                open_tile(tr * plan.cols + tc)
+                    t = time.perf_counter()
+                    bands = built[i] if built is not None else self._bands(leaves[i], lights, material, counts_l[i], cam.eye)
+                    prep = self._prepare(*bands)
+                    seconds += time.perf_counter() - t
+                    view_dependent = bool(view_dependent) or bands[1]
                     with cond:
-                        if state["error"] is not None:
-                            break
-                        queue.extend(row_tiles[row].tolist())
-                        state["queued"] = row + 1
-                        finish_rows()
+                        queue.append(("fill", g, prep))
+                        state["fills"] += 1
                         cond.notify_all()
-                    # Too far ahead of the tiles: help with them before building more.
-                    while True:
-                        with cond:
-                            ahead = state["queued"] - state["done"] > _ROWS_AHEAD and bool(queue)
-                        if not ahead:
-                            break
-                        work(bufs[0], False, 1)
-            finally:
+                    del prep, bands
+                    report.add(len(members[g]))
+                    # Waiting fills hold their meshes: help once there are more than a few.
+                    help_until(lambda: state["fills"] <= 2 * threads)
+                    if state["error"] is not None:
+                        break
                 with cond:
-                    state["open"] = False
-                    if sys.exc_info()[0] is not None:
-                        queue.clear()
+                    if state["error"] is not None:
+                        break
+                    for t in row_tiles[row].tolist():
+                        if t not in tiles:  # no group reached it (cannot happen: occupied tiles have leaves)
+                            open_tile(t)
+                        ready(t)
+                    state["queued"] = row + 1
+                    while state["done"] < state["queued"] and left[state["done"]] == 0:
+                        state["done"] += 1
                     cond.notify_all()
-                work(bufs[0], False)
-                wait(workers)  # never give back buffers that a worker still writes
-            for f in workers:
-                f.result()
-            if state["error"] is not None:
-                raise state["error"]
-        report.add(n - len(build_order))  # leaves off screen: nothing to build
+        finally:
+            with cond:
+                if sys.exc_info()[0] is not None:
+                    queue.clear()
+                    state["error"] = state["error"] or sys.exc_info()[1]
+            if state["error"] is None:
+                help_until(lambda: state["done"] >= plan.rows)
+            with cond:
+                state["open"] = False
+                cond.notify_all()
+            wait(workers)  # never return while a worker still writes the image
+        for f in workers:
+            f.result()
+        if state["error"] is not None:
+            raise state["error"]
+        report.add(n - len(on))  # leaves off screen: nothing to build
         return seconds, view_dependent
 
 

@@ -34,6 +34,7 @@ from .raster import NEAR_RELATIVE
 
 __all__ = [
     "LeafGeometry", "leaf_geometry", "leaf_rects", "combine_rects", "prune_program", "tile_leaves", "TilePlan", "plan_tiles",
+    "open_tile_pixels",
 ]
 
 #: Bytes per pixel of a leaf in the per-pixel CSG buffers: front and back depth
@@ -475,3 +476,38 @@ def plan_tiles(rects: Rects, rect: tuple[int, int, int, int], instructions: int,
     start, leaf = _tile_lists(rects, ox, oy, side, ntr, ntc, counts)
     return TilePlan(rect, side, ntr, ntc, start, leaf, worst)
 
+
+
+def open_tile_pixels(rects: Rects, plan: TilePlan, ahead: int) -> int:
+    """The most leaf pixels of ``plan``'s tiles open at once when tiles are opened and released by rows.
+
+    ``rects`` are the rectangles of the leaves that get buffers of their own
+    (one per group of equal leaves). A tile is open from the moment the first
+    leaf meeting it is built (leaves in order of the first row they meet)
+    until it is resolved; while the leaves beginning in row ``q`` are built,
+    the rows before ``q - ahead`` are resolved. So the tiles open then are
+    those of rows ``q - ahead`` up to the last row reached by a leaf
+    beginning at or before ``q``, and their buffers hold the sum of their
+    leaves' clipped rectangles.
+
+    Examples
+    --------
+    >>> rects = np.array([[0, 0, 8, 40], [0, 0, 8, 8], [0, 30, 8, 38]])
+    >>> plan = plan_tiles(rects, (0, 0, 8, 40), 5, 1 << 30)
+    >>> open_tile_pixels(rects, plan, 0) <= 3 * 8 * 40
+    True
+    """
+    ox, oy, _, _ = plan.rect
+    _, pixels = _tile_counts(rects, ox, oy, plan.side, plan.rows, plan.cols)
+    row_pixels = pixels.reshape(plan.rows, plan.cols).sum(axis=1)
+    keep = (rects[:, 0] < rects[:, 2]) & (rects[:, 1] < rects[:, 3])
+    first = (rects[keep, 1] - oy) // plan.side
+    last = (rects[keep, 3] - 1 - oy) // plan.side
+    reach = np.full(plan.rows, -1, np.int64)
+    np.maximum.at(reach, first, last)
+    reach = np.maximum.accumulate(reach)
+    cum = np.concatenate([[0], np.cumsum(row_pixels)])
+    q = np.arange(plan.rows)
+    lo = np.maximum(q - ahead, 0)
+    hi = np.maximum(reach, q) + 1
+    return int((cum[hi] - cum[lo]).max()) if plan.rows else 0
