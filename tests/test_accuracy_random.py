@@ -66,6 +66,12 @@ from scenes import render_image  # noqa: E402
 
 MIN_IOU = 0.99
 MIN_FRACTION = 0.98
+#: Silhouettes smaller than this (as in test_csg_random_views.py) are judged by the count of
+#: pixels that differ instead of the IoU: a pixel is then over 0.25 % of the silhouette, and a
+#: pixel centre whose ray passes within rounding of tangent (a thin rod's side) is a tie.
+MIN_PIXELS = 400
+#: Pixels that may differ on a small silhouette: what IoU 0.99 allows at MIN_PIXELS.
+SMALL_MISMATCH = 4
 CONTOURS = 64
 COARSE = 16
 #: The image is float32 (the conventions): intensities are resolved to about this many of its steps.
@@ -313,7 +319,11 @@ def check(make_primitive, lights, cam, material, placement, kind=""):
     result = compare(img, ref)
     note(f"N = {CONTOURS}: {result.summary()}")
     # (a disc seen edge-on may fall between pixel centres: then both images must be empty, IoU 1)
-    assert result.iou >= MIN_IOU, result.summary()
+    if result.hit_ref < MIN_PIXELS:
+        mismatch = int(np.count_nonzero(np.isfinite(ref.image) != np.isfinite(img)))
+        assert mismatch <= SMALL_MISMATCH, f"{mismatch} pixels differ; {result.summary()}"
+    else:
+        assert result.iou >= MIN_IOU, result.summary()
     fraction = result.fraction
     floor = FLOAT32_ULPS * np.finfo(np.float32).eps * float(np.nanmax(np.abs(ref.image))) if result.hit_ref else 0.0
     if result.tol < floor:
