@@ -327,3 +327,10 @@ def test_bad_standard_input_is_one_line_naming_stdin(
     assert main(["render", "-", "-o", str(tmp_path / "s.png"), "--no-progress"]) == 2
     err = capsys.readouterr().err
     assert err.startswith(message) and err.count("\n") == 1
+
+
+def test_warmup_renders_the_built_in_scenes_and_says_so(capsys: pytest.CaptureFixture[str]) -> None:
+    assert main(["warmup"]) == 0
+    out = capsys.readouterr().out.splitlines()
+    assert out[0].startswith("isocsg warmup: compiling kernels")
+    assert out[-1].startswith("isocsg warmup: done in") and out[-1].endswith(" s")

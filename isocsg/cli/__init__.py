@@ -14,7 +14,7 @@ from collections.abc import Sequence
 
 from .. import __version__
 from ..errors import IsocsgError
-from . import demo, render
+from . import demo, render, warmup
 from ._common import ArgumentParser
 
 __all__ = ["main", "build_parser"]
@@ -33,6 +33,7 @@ def build_parser() -> ArgumentParser:
     sub = parser.add_subparsers(dest="command", metavar="COMMAND", title="commands")
     render.register(sub)
     demo.register(sub)
+    warmup.register(sub)
     for name in _OPTIONAL_COMMANDS:
         if importlib.util.find_spec(f"{__name__}.{name}") is not None:
             importlib.import_module(f"{__name__}.{name}").register(sub)
