@@ -60,7 +60,7 @@ from isocsg import (  # noqa: E402
     Sphere,
     Truncus,
 )
-from reference import compare, comparison_mask, raycast_scene  # noqa: E402
+from reference import compare, comparison_mask, fraction_within, raycast_scene  # noqa: E402
 from reference.raycaster import ReferenceImage, first_hit, shade_points  # noqa: E402
 from scenes import render_image  # noqa: E402
 
@@ -74,8 +74,6 @@ MIN_PIXELS = 400
 SMALL_MISMATCH = 4
 CONTOURS = 64
 COARSE = 16
-#: The image is float32 (the conventions): intensities are resolved to about this many of its steps.
-FLOAT32_ULPS = 4
 EXAMPLES = int(os.environ.get("ISOCSG_SEARCH_EXAMPLES", "10"))
 #: A file that gets one line per example that passed (for counting a long search).
 LOG = os.environ.get("ISOCSG_SEARCH_LOG")
@@ -324,14 +322,8 @@ def check(make_primitive, lights, cam, material, placement, kind=""):
         assert mismatch <= SMALL_MISMATCH, f"{mismatch} pixels differ; {result.summary()}"
     else:
         assert result.iou >= MIN_IOU, result.summary()
-    fraction = result.fraction
-    floor = FLOAT32_ULPS * np.finfo(np.float32).eps * float(np.nanmax(np.abs(ref.image))) if result.hit_ref else 0.0
-    if result.tol < floor:
-        # The exact image varies by less than float32 resolves (a single face, its Phong term
-        # ~1e-8): no float32 image can be within 5 % of that; judge it at a few float32 steps.
-        keep = comparison_mask(img, ref)
-        fraction = float(np.mean(np.abs(img[keep] - ref.image[keep]) <= floor)) if keep.any() else 1.0
-        note(f"range below float32 resolution: within {floor:.2e}: {fraction:.4f}")
+    # (an image whose exact range is below float32 resolution is judged at a few float32 steps)
+    fraction = fraction_within(img, ref, result)
     assert fraction >= MIN_FRACTION, result.summary()
     coarse = render_image(build_scene(make_primitive, lights, cam, material, origin, scale, COARSE))
     keep = comparison_mask(coarse, ref) & comparison_mask(img, ref)

@@ -26,7 +26,7 @@ from hypothesis import strategies as st
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
-from reference import compare, raycast_scene  # noqa: E402
+from reference import compare, fraction_within, raycast_scene  # noqa: E402
 from test_csg_properties import trees  # noqa: E402
 
 from isocsg import (  # noqa: E402
@@ -153,7 +153,8 @@ def test_random_trees_match_the_ray_caster_on_first_and_later_views(tree, camera
         image = Renderer(csg=method).render(scene).image
         result = compare(image, ref)
         assert result.iou >= MIN_IOU, f"{method}: {result.summary()}"
-        assert result.fraction >= MIN_FRACTION, f"{method}: {result.summary()}"
+        # (an image whose exact range is below float32 resolution is judged at a few float32 steps)
+        assert fraction_within(image, ref, result) >= MIN_FRACTION, f"{method}: {result.summary()}"
         if LOG:
             with open(LOG, "a") as fh:
                 fh.write(f"{method}\t{len(tree.leaves()) if hasattr(tree, 'leaves') else 1}\t{result.summary()}\n")

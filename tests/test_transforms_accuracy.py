@@ -45,7 +45,7 @@ from isocsg import (  # noqa: E402
 from isocsg.csg.mesh import to_manifold  # noqa: E402
 from isocsg.csg.section import section  # noqa: E402
 from isocsg.csg.volume import volume  # noqa: E402
-from reference import compare, comparison_mask, raycast_scene  # noqa: E402
+from reference import compare, comparison_mask, fraction_within, raycast_scene  # noqa: E402
 from scenes import render_image  # noqa: E402
 
 MIN_IOU = 0.99
@@ -85,23 +85,13 @@ def scene_of(prim, lights, eye, *, target=(0.0, 0.0, 0.0), material=None, contou
     return Scene(cam, tuple(lights), (SceneObject(prim, material or Material()),), RenderSettings(contours=contours))
 
 
-#: The image is float32 (the conventions): intensities are resolved to about this many of its steps.
-FLOAT32_ULPS = 4
-
-
 def judge(scene):
     ref = raycast_scene(scene)
     img = render_image(scene)
     result = compare(img, ref)
     assert result.iou >= MIN_IOU, result.summary()
-    fraction = result.fraction
-    floor = FLOAT32_ULPS * np.finfo(np.float32).eps * float(np.nanmax(np.abs(ref.image))) if result.hit_ref else 0.0
-    if result.tol < floor:
-        # The exact image varies by less than float32 resolves (one face, a Phong term ~1e-8):
-        # judge it at a few float32 steps, as test_accuracy_random does.
-        keep = comparison_mask(img, ref)
-        fraction = float(np.mean(np.abs(img[keep] - ref.image[keep]) <= floor)) if keep.any() else 1.0
-    assert fraction >= MIN_FRACTION, result.summary()
+    # (an image whose exact range is below float32 resolution is judged at a few float32 steps)
+    assert fraction_within(img, ref, result) >= MIN_FRACTION, result.summary()
     return result
 
 

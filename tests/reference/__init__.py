@@ -6,7 +6,7 @@ computed here from the conventions, so that it can judge the library's
 rendering paths pixel by pixel.
 """
 
-from .metrics import Comparison, compare, compare_images, comparison_mask, silhouette_iou
+from .metrics import Comparison, compare, compare_images, comparison_mask, fraction_within, silhouette_iou
 from .raycaster import ReferenceImage, camera_rays, primitive_intervals, raycast, raycast_scene
 
 __all__ = [
@@ -16,6 +16,7 @@ __all__ = [
     "compare",
     "compare_images",
     "comparison_mask",
+    "fraction_within",
     "primitive_intervals",
     "raycast",
     "raycast_scene",

@@ -20,6 +20,8 @@ from numpy.typing import NDArray
 from .raycaster import ReferenceImage
 
 __all__ = [
+    "FLOAT32_ULPS",
+    "fraction_within",
     "TOLERANCE",
     "Comparison",
     "silhouette_iou",
@@ -166,3 +168,27 @@ def compare_images(
         hit_ref=int(np.count_nonzero(ref_mask)),
         hit_image=int(np.count_nonzero(np.isfinite(img))),
     )
+
+
+#: The renderer's images are float32 (the conventions): intensities are resolved to about this
+#: many of its steps.
+FLOAT32_ULPS = 4
+
+
+def fraction_within(image: NDArray[np.floating], reference: ReferenceImage, result: Comparison) -> float:
+    """``result.fraction``, except where the exact image varies by less than float32 resolves.
+
+    The bar's tolerance is 5 % of the reference's range; when that range is below a few float32
+    steps of its largest value (one face whose Phong term spans 1e-8, or a scene at scale 1e-3
+    whose field barely changes), no float32 image can meet it, and the pixels are judged at
+    :data:`FLOAT32_ULPS` float32 steps instead.
+    """
+    if not result.hit_ref:
+        return result.fraction
+    floor = FLOAT32_ULPS * float(np.finfo(np.float32).eps) * float(np.nanmax(np.abs(reference.image)))
+    if result.tol >= floor:
+        return result.fraction
+    keep = comparison_mask(image, reference)
+    if not keep.any():
+        return 1.0
+    return float(np.mean(np.abs(np.asarray(image, dtype=np.float64)[keep] - reference.image[keep]) <= floor))
