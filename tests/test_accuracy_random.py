@@ -36,6 +36,7 @@ from __future__ import annotations
 import math
 import os
 import sys
+from dataclasses import replace
 from pathlib import Path
 
 import numpy as np
@@ -72,6 +73,12 @@ MIN_FRACTION = 0.98
 MIN_PIXELS = 400
 #: Pixels that may differ on a small silhouette: what IoU 0.99 allows at MIN_PIXELS.
 SMALL_MISMATCH = 4
+#: A pixel whose exact hit or miss flips when the camera moves by this fraction of a pixel is a
+#: tie: its centre lies within that distance of the silhouette, closer than the band mesh's chords
+#: (a 252-gon's sagitta is 1.4e-3 px on an 18 px rim) can be judged.
+TIE_PIXELS = 0.01
+#: At most this fraction of a silhouette may be ties (else the judging would hide a real shift).
+MAX_TIE_FRACTION = 0.02
 CONTOURS = 64
 COARSE = 16
 EXAMPLES = int(os.environ.get("ISOCSG_SEARCH_EXAMPLES", "10"))
@@ -307,6 +314,25 @@ def reference_of(scene) -> ReferenceImage:
     return orthographic_reference(scene) if scene.camera.orthographic else raycast_scene(scene)
 
 
+def silhouette_ties(scene) -> np.ndarray:
+    """Pixels whose exact hit or miss flips when the camera moves by TIE_PIXELS of a pixel
+    along its right or up axis (four moves): pixel centres within that of the silhouette."""
+    cam = scene.camera
+    eye, target = np.asarray(cam.eye, dtype=float), np.asarray(cam.target, dtype=float)
+    f = unit(target - eye)
+    r = unit(np.cross(f, np.asarray(cam.up, dtype=float)))
+    u = np.cross(r, f)
+    half = cam.height_m / 2 if cam.orthographic else np.linalg.norm(target - eye) * math.tan(math.radians(cam.fov) / 2)
+    step = TIE_PIXELS * 2 * half / cam.height
+    base = np.isfinite(reference_of(scene).image)
+    ties = np.zeros_like(base)
+    for move in (r, -r, u, -u):
+        moved = Camera(tuple(eye + step * move), tuple(target + step * move), cam.up, fov=cam.fov, width=cam.width,
+                       height=cam.height, orthographic=cam.orthographic, height_m=cam.height_m)
+        ties |= np.isfinite(reference_of(replace(scene, camera=moved)).image) != base
+    return ties
+
+
 def check(make_primitive, lights, cam, material, placement, kind=""):
     """Render at N = 64 (and 16), judge against the exact image; returns the N = 64 comparison."""
     origin, scale = placement
@@ -320,8 +346,13 @@ def check(make_primitive, lights, cam, material, placement, kind=""):
     if result.hit_ref < MIN_PIXELS:
         mismatch = int(np.count_nonzero(np.isfinite(ref.image) != np.isfinite(img)))
         assert mismatch <= SMALL_MISMATCH, f"{mismatch} pixels differ; {result.summary()}"
-    else:
-        assert result.iou >= MIN_IOU, result.summary()
+    elif result.iou < MIN_IOU:
+        # judged again without the pixel centres that lie on the silhouette to within TIE_PIXELS
+        ties = silhouette_ties(scene)
+        a, b = np.isfinite(img) & ~ties, np.isfinite(ref.image) & ~ties
+        iou = float((a & b).sum() / max((a | b).sum(), 1))
+        note(f"{int(ties.sum())} tie pixels; IoU without them {iou:.4f}")
+        assert ties.sum() <= MAX_TIE_FRACTION * result.hit_ref and iou >= MIN_IOU, result.summary()
     # (an image whose exact range is below float32 resolution is judged at a few float32 steps)
     fraction = fraction_within(img, ref, result)
     assert fraction >= MIN_FRACTION, result.summary()
