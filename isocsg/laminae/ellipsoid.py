@@ -21,6 +21,7 @@ from numpy.typing import NDArray
 
 from ..geometry.ellipsoid import Ellipsoid
 from ..lighting.lights import DirectionalLight
+from .sphere import ring_triangles
 from .surface import Surface, curvature_spacing, mixed_spacing, orient_outward, pieces
 
 __all__ = ["ellipsoid_surface", "MIN_LONGITUDES", "MAX_LONGITUDES"]
@@ -114,17 +115,5 @@ def ellipsoid_surface(
     phi = 2.0 * np.pi * np.arange(n_lon) / n_lon
     dirs = np.vstack([w, _grid(w, e1, e2, polar, phi).reshape(-1, 3), -w])
     vertices, normals = _map(e, dirs)
-    m, n_rings = n_lon, n_lat - 1
-    j = np.arange(m)
-    jn = (j + 1) % m
-    a = 1 + m * np.arange(n_rings - 1)[:, None]
-    b = a + m
-    quads = np.stack([np.stack([a + j, b + j, b + jn], axis=-1), np.stack([a + j, b + jn, a + jn], axis=-1)], axis=1)
-    south = len(vertices) - 1
-    last = 1 + (n_rings - 1) * m
-    triangles = np.vstack([
-        np.stack([np.zeros(m, np.int64), 1 + j, 1 + jn], axis=1),
-        quads.reshape(-1, 3),
-        np.stack([np.full(m, south), last + jn, last + j], axis=1),
-    ]).astype(np.int64)
+    triangles = ring_triangles(n_lat - 1, n_lon)
     return Surface(vertices, normals, orient_outward(vertices, normals, triangles), origin.copy(), np.zeros(len(vertices), np.int64))

@@ -104,6 +104,23 @@ def _rings(t: NDArray[np.float64]) -> NDArray[np.float64]:
     return np.cos(polar)
 
 
+def ring_triangles(n_rings: int, m: int) -> NDArray[np.int64]:
+    """Triangles of a closed latitude-longitude mesh: vertex 0 a pole, ``n_rings`` rings of ``m``
+    vertices each (ring k starts at ``1 + k m``), and the opposite pole last."""
+    j = np.arange(m)
+    jn = (j + 1) % m
+    a = 1 + m * np.arange(n_rings - 1)[:, None]  # ring k's first vertex, (rings - 1, 1)
+    b = a + m
+    quads = np.stack([np.stack([a + j, b + j, b + jn], axis=-1), np.stack([a + j, b + jn, a + jn], axis=-1)], axis=1)
+    south = 1 + n_rings * m
+    last = 1 + (n_rings - 1) * m
+    return np.vstack([
+        np.stack([np.zeros(m, np.int64), 1 + j, 1 + jn], axis=1),
+        quads.reshape(-1, 3),
+        np.stack([np.full(m, south), last + jn, last + j], axis=1),
+    ]).astype(np.int64)
+
+
 def sphere_surface(sphere: Sphere, light: Light | None, levels: NDArray[np.float64]) -> Surface:
     """Latitude-longitude mesh about the axis of ``light`` with circles at the contour ``levels``.
 
@@ -122,18 +139,7 @@ def sphere_surface(sphere: Sphere, light: Light | None, levels: NDArray[np.float
     normals = np.vstack([w, dirs, -w])
     vertices = r * normals  # relative to the centre
     m, n_rings = LONGITUDES, len(t)
-    j = np.arange(m)
-    jn = (j + 1) % m
-    a = 1 + m * np.arange(n_rings - 1)[:, None]  # ring k's first vertex, (rings - 1, 1)
-    b = a + m
-    quads = np.stack([np.stack([a + j, b + j, b + jn], axis=-1), np.stack([a + j, b + jn, a + jn], axis=-1)], axis=1)
-    south = len(vertices) - 1
-    last = 1 + (n_rings - 1) * m
-    triangles = np.vstack([
-        np.stack([np.zeros(m, np.int64), 1 + j, 1 + jn], axis=1),
-        quads.reshape(-1, 3),
-        np.stack([np.full(m, south), last + jn, last + j], axis=1),
-    ]).astype(np.int64)
+    triangles = ring_triangles(n_rings, m)
     return Surface(vertices, normals, orient_outward(vertices, normals, triangles), c.copy(), np.zeros(len(vertices), np.int64))
 
 
