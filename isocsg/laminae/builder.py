@@ -54,6 +54,9 @@ __all__ = ["build_laminae", "build_bands", "clear_cache", "cache_info", "cache_b
 
 #: Largest number of contours per family.
 MAX_CONTOURS = 4096
+#: The tessellation's segments around a curved primitive by default
+#: (``sphere.LONGITUDES``, ``truncus.GENERATORS``); see :func:`build_bands`.
+DEFAULT_SEGMENTS = 128
 
 Light = PointLight | DirectionalLight
 
@@ -176,7 +179,7 @@ def build_laminae(
     >>> float(ls.bands.value_out.min()), round(float(ls.bands.value_out.max()), 3)
     (0.1, 0.85)
     """
-    return _cached(primitive, lights, material, contours, eye, bands_only=False)
+    return _cached(primitive, lights, material, contours, eye, None, bands_only=False)
 
 
 def build_bands(
@@ -186,6 +189,7 @@ def build_bands(
     contours: int = 64,
     *,
     eye: ArrayLike | None = None,
+    segments: int | None = None,
 ) -> LaminaSet:
     """The band mesh of one primitive, without the laminae (what a renderer fills).
 
@@ -196,6 +200,16 @@ def build_bands(
     ``bands`` are equal, array for array, to :func:`build_laminae`'s. When the
     full set is cached its bands are returned (the same objects), and a full
     build after this one reuses these bands.
+
+    Parameters
+    ----------
+    segments : int, optional
+        The tessellation's least number of segments around a curved
+        primitive (a sphere's longitudes, a truncus's uniform generators;
+        8 .. 4096): fewer than the defaults (128) for a primitive small on
+        screen, as a renderer's level of detail asks. The fields' own needs
+        (contour lines, bending near a point light) still refine it. ``None``:
+        the defaults. Other kinds ignore it. Part of the cache key.
 
     Returns
     -------
@@ -217,12 +231,12 @@ def build_bands(
     >>> full.bands is ls.bands, len(full.laminae)
     (True, 8)
     """
-    return _cached(primitive, lights, material, contours, eye, bands_only=True)
+    return _cached(primitive, lights, material, contours, eye, segments, bands_only=True)
 
 
 def _cached(
     primitive: Primitive, lights: Sequence[Light], material: Material | None, contours: int, eye: ArrayLike | None,
-    *, bands_only: bool,
+    segments: int | None, *, bands_only: bool,
 ) -> LaminaSet:
     if not isinstance(primitive, (Sphere, Truncus, Box, ConvexPolyhedron)) and hook_for(primitive, "surface") is None:
         raise InvalidParameterError(
@@ -241,10 +255,14 @@ def _cached(
             raise InvalidParameterError("eye is needed for a specular material (ks > 0)")
         eye_t = tuple(vector3("eye", eye, error=InvalidParameterError))
     _check_size(n, len(lights_t), specular)
+    if segments is not None:
+        segments = integer("segments", segments, low=8, high=MAX_CONTOURS, error=InvalidParameterError)
+        if segments >= DEFAULT_SEGMENTS:
+            segments = None  # the defaults
     key = (primitive, lights_t, mat, n, eye_t)
-    part = (*key, "bands")  # a set without laminae
+    part = (*key, "bands") if segments is None else (*key, "bands", segments)  # a set without laminae
     with _LOCK:
-        for k in (key, part) if bands_only else (key,):  # a full set serves a bands-only request too
+        for k in (key, part) if bands_only and segments is None else (part,) if bands_only else (key,):  # a full set serves a bands-only request too
             hit = _CACHE.get(k)
             if hit is not None:
                 _CACHE.move_to_end(k)
@@ -257,7 +275,8 @@ def _cached(
             _BYTES[0] -= known[1]
     eye_a = None if eye_t is None else np.asarray(eye_t)
     if bands_only:
-        out = LaminaSet(primitive, (), (), _build_bands(primitive, lights_t, mat, n, eye_a), view_dependent=eye_a is not None)
+        out = LaminaSet(primitive, (), (), _build_bands(primitive, lights_t, mat, n, eye_a, segments),
+                        view_dependent=eye_a is not None)
         key = part
     else:
         out = _build(primitive, lights_t, mat, n, eye_a, None if known is None else known[0].bands)
@@ -305,15 +324,16 @@ def _origin(primitive: Primitive) -> NDArray[np.float64]:
 
 def _surface(
     primitive: Primitive, lights: tuple[Light, ...], n: int, eye: NDArray[np.float64] | None, shininess: float,
-    weights: tuple[float, float] = (1.0, 1.0),
+    weights: tuple[float, float] = (1.0, 1.0), segments: int | None = None,
 ) -> Surface:
     hook = hook_for(primitive, "surface")
     if hook is not None:
         return hook(primitive, list(lights), n, eye, shininess)
+    seg = DEFAULT_SEGMENTS if segments is None else segments
     if isinstance(primitive, Sphere):
-        return sphere_surface(primitive, lights[0] if lights else None, diffuse_levels(np.array([-1.0, 1.0]), n))
+        return sphere_surface(primitive, lights[0] if lights else None, diffuse_levels(np.array([-1.0, 1.0]), n), seg)
     if isinstance(primitive, Truncus):
-        return truncus_surface(primitive, list(lights), n, eye=eye, shininess=shininess, weights=weights)
+        return truncus_surface(primitive, list(lights), n, eye=eye, shininess=shininess, weights=weights, segments=seg)
     return polyhedron_surface(primitive, list(lights), n, eye=eye, shininess=shininess, weights=weights)
 
 
@@ -369,11 +389,12 @@ def _virtual_light(primitive: Primitive, light: Light, eye: NDArray[np.float64])
 
 def _build_bands(
     primitive: Primitive, lights: tuple[Light, ...], mat: Material, n: int, eye: NDArray[np.float64] | None,
+    segments: int | None = None,
 ) -> BandMesh:
     """The band mesh alone: the primitive's surface cut along its contour families' level lines."""
     origin = _origin(primitive)
     eye_local = None if eye is None else eye - origin
-    surf = _surface(primitive, lights, n, eye_local, float(mat.shininess), (float(mat.kd), float(mat.ks)))
+    surf = _surface(primitive, lights, n, eye_local, float(mat.shininess), (float(mat.kd), float(mat.ks)), segments)
     fams: list[FieldFamily] = []
     for j, light in enumerate(lights):
         fams.append(diffuse_family(j, light, mat, incidence(light, surf.vertices, surf.normals, surf.origin)))

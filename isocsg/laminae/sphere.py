@@ -85,7 +85,7 @@ def _frame(w: NDArray[np.float64]) -> tuple[NDArray[np.float64], NDArray[np.floa
     return e1, np.cross(w, e1)
 
 
-def _rings(t: NDArray[np.float64]) -> NDArray[np.float64]:
+def _rings(t: NDArray[np.float64], latitudes: int = LATITUDES) -> NDArray[np.float64]:
     """Polar cosines of the mesh circles: the contour circles, plus uniformly
     spaced circles in every polar gap wider than ``pi / LATITUDES`` (near the
     light's pole the contours are far apart in angle, and the silhouette
@@ -93,7 +93,7 @@ def _rings(t: NDArray[np.float64]) -> NDArray[np.float64]:
     polar = np.sort(np.arccos(np.clip(t, -1.0, 1.0)))
     polar = polar[(polar > 1e-9) & (polar < np.pi - 1e-9)]
     edges = np.concatenate([[0.0], polar, [np.pi]])
-    step = np.pi / LATITUDES
+    step = np.pi / latitudes
     fill = []
     for a, b in zip(edges[:-1], edges[1:]):
         k = int(np.ceil((b - a) / step - 1e-9))
@@ -121,8 +121,13 @@ def ring_triangles(n_rings: int, m: int) -> NDArray[np.int64]:
     ]).astype(np.int64)
 
 
-def sphere_surface(sphere: Sphere, light: Light | None, levels: NDArray[np.float64]) -> Surface:
+def sphere_surface(
+    sphere: Sphere, light: Light | None, levels: NDArray[np.float64], segments: int = LONGITUDES,
+) -> Surface:
     """Latitude-longitude mesh about the axis of ``light`` with circles at the contour ``levels``.
+
+    ``segments`` longitudes (default ``LONGITUDES``), and circles at most ``2 pi / segments``
+    apart in polar angle: a renderer asks for fewer for a sphere small on screen.
 
     The circles of the first light's contours are mesh edges, so its family
     cuts nothing; other lights cut the mesh along their own level lines.
@@ -131,14 +136,15 @@ def sphere_surface(sphere: Sphere, light: Light | None, levels: NDArray[np.float
     w = light_axis(c, light)
     e1, e2 = _frame(w)
     th = contour_heights(sphere, light, levels) if light is not None else np.zeros(0)
-    t = _rings(th[np.isfinite(th)])
+    m = int(segments)
+    t = _rings(th[np.isfinite(th)], max(m // 2, 4))
     s = np.sqrt(1.0 - t * t)
-    phi = 2.0 * np.pi * np.arange(LONGITUDES) / LONGITUDES
+    phi = 2.0 * np.pi * np.arange(m) / m
     ring = np.cos(phi)[:, None] * e1 + np.sin(phi)[:, None] * e2  # (M, 3)
     dirs = (t[:, None, None] * w + s[:, None, None] * ring[None]).reshape(-1, 3)
     normals = np.vstack([w, dirs, -w])
     vertices = r * normals  # relative to the centre
-    m, n_rings = LONGITUDES, len(t)
+    n_rings = len(t)
     triangles = ring_triangles(n_rings, m)
     return Surface(vertices, normals, orient_outward(vertices, normals, triangles), c.copy(), np.zeros(len(vertices), np.int64))
 

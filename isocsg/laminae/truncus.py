@@ -278,6 +278,7 @@ def truncus_surface(
     eye: NDArray[np.float64] | None = None,
     shininess: float = 1.0,
     weights: tuple[float, float] = (1.0, 1.0),
+    segments: int = GENERATORS,
 ) -> Surface:
     """Band mesh base of a truncus, relative to its centre.
 
@@ -294,6 +295,11 @@ def truncus_surface(
     field is not constant along the generators: several lights, a point light
     or a specular material.
 
+    ``segments`` (default ``GENERATORS``) is the least number of uniform
+    generators: a renderer asks for fewer for a truncus small on screen (the
+    chord error then stays a small fraction of a pixel), never fewer than the
+    fields' bending needs.
+
     Parts: 0 the lateral surface, 1 the end E1, 2 the end E2.
     """
     first = lights[0] if lights else None
@@ -308,7 +314,8 @@ def truncus_surface(
     else:
         n_gen = contours if isinstance(first, DirectionalLight) else min(contours, POINT_LIGHT_CONTOURS)
         levels = side_levels(truncus, first, n_gen)
-    uniform = GENERATORS
+    floor = int(segments)
+    uniform = floor
     if lights:
         # The fields' bending around three rings (a point light close to the side turns the
         # incidence within a few degrees): enough uniform generators to follow it.
@@ -326,7 +333,7 @@ def truncus_surface(
                                     step=2.0 * np.pi * r / RING_SAMPLES)
             spacing = min(spacing, gap / r)  # as an angle
         if np.isfinite(spacing) and spacing > 0:
-            uniform = int(np.clip(np.ceil(2.0 * np.pi / spacing), GENERATORS, MAX_GENERATORS))
+            uniform = int(np.clip(np.ceil(2.0 * np.pi / spacing), floor, MAX_GENERATORS))
     th = _generator_angles(truncus, first, levels, uniform)
     m = len(th)
     radial = np.cos(th)[:, None] * e1 + np.sin(th)[:, None] * e2  # (m, 3)

@@ -51,6 +51,7 @@ from ..csg.tree import CSGNode
 from ..errors import InvalidGeometryError, InvalidParameterError, ResourceLimitError
 from ..geometry.primitives import Primitive, Sphere
 from ..lighting.lights import DirectionalLight, PointLight
+from ..laminae.builder import DEFAULT_SEGMENTS
 from ..laminae.model import BandMesh
 from ..limits import check_memory, memory_budget
 from ..scene.model import MAX_CONTOURS, Scene
@@ -59,13 +60,15 @@ from .raster import (
 )
 from .scratch import SCRATCH
 from .tiles import (
-    LEAF_PIXEL_BYTES, LeafGeometry, combine_rects, leaf_geometry, leaf_rects, open_tile_pixels, plan_tiles, tile_leaves,
+    LEAF_PIXEL_BYTES, LeafGeometry, combine_boxes, combine_rects, leaf_geometry, leaf_rects, leaf_screen_sizes,
+    open_tile_pixels, plan_tiles, tile_leaves,
 )
 
 __all__ = ["RenderResult", "RenderTimings", "Renderer", "render", "default_renderer"]
 
 #: The ways a :class:`Renderer` resolves CSG objects (see its ``csg`` parameter).
 CSG_METHODS = ("auto", "surface", "pixel")
+SURFACE_BUILDS = ("background", "now")
 
 #: ``build(primitive, lights, material, contours, eye=...) -> LaminaSet`` (or a BandMesh).
 BandBuilder = Callable[..., Any]
@@ -371,36 +374,64 @@ class _Prepared:
         return self.vertices.nbytes + self.triangles.nbytes + 8 * nt + 24 * nt + 56 * nv
 
 
-class _ByteCache:
-    """A least-recently-used mapping bounded by the bytes of its values (as told on insertion).
+def _band_bytes(bands: BandMesh) -> int:
+    """Bytes of a band mesh's arrays that a prepared mesh does not share."""
+    return sum(a.nbytes for a in (bands.value_out, bands.value_in, bands.band))
 
-    The most recent entry is kept even when it alone is over the limit.
+
+class _ByteCache:
+    """A mapping bounded by the bytes of its values (as told on insertion).
+
+    Least recently used entries go first. A scan-resistant cache (the prepared
+    band meshes) is more careful: entries remember the pass (a render, see :meth:`new_pass`) that last used
+    them. Room for a new entry is made by dropping the least recently used
+    entries that neither this pass nor the previous one used; when only such
+    entries are left, the new one is not kept. So a model whose working set is
+    larger than the cache keeps a stable part of it from one view to the next
+    (plain LRU under the cyclic order of a render would drop exactly what the
+    next view needs first), and a model that fits is never rebuilt. An entry is
+    kept, even over the limit, when the cache is otherwise empty.
     """
 
-    def __init__(self, limit: int) -> None:
+    def __init__(self, limit: int, *, scan_resistant: bool = False) -> None:
         self.limit = int(limit)
+        self.scan_resistant = bool(scan_resistant)
         self.nbytes = 0
-        self._items: OrderedDict[Any, tuple[Any, int]] = OrderedDict()
+        self.generation = 0
+        self._items: OrderedDict[Any, tuple[Any, int, int]] = OrderedDict()
 
     def __len__(self) -> int:
         return len(self._items)
+
+    def new_pass(self) -> None:
+        """Begin a pass (a render): what the previous pass used stays protected during this one."""
+        self.generation += 1
 
     def get(self, key: Any) -> Any:
         hit = self._items.get(key)
         if hit is None:
             return None
         self._items.move_to_end(key)
+        if hit[2] != self.generation:
+            self._items[key] = (hit[0], hit[1], self.generation)
         return hit[0]
 
-    def put(self, key: Any, value: Any, nbytes: int) -> None:
+    def put(self, key: Any, value: Any, nbytes: int) -> bool:
+        """Keep ``value`` under ``key``; returns whether it was kept."""
         old = self._items.pop(key, None)
         if old is not None:
             self.nbytes -= old[1]
-        self._items[key] = (value, int(nbytes))
-        self.nbytes += int(nbytes)
+        nbytes = int(nbytes)
         limit = min(self.limit, memory_budget() // 8)
-        while self.nbytes > limit and len(self._items) > 1:
-            self.nbytes -= self._items.popitem(last=False)[1][1]
+        items = self._items
+        while self.nbytes + nbytes > limit and items:
+            first = next(iter(items.values()))
+            if self.scan_resistant and first[2] >= self.generation - 1:
+                return False  # everything left is in use by this pass or the previous one
+            self.nbytes -= items.popitem(last=False)[1][1]
+        items[key] = (value, nbytes, self.generation)
+        self.nbytes += nbytes
+        return True
 
     def clear(self) -> None:
         self._items.clear()
@@ -419,6 +450,8 @@ GEOMETRY_CACHE_BYTES = 64 << 20
 #: view) only for trees of at most this many leaves whose bands have at most
 #: this many triangles in all; larger trees stay per pixel on every view.
 SURFACE_MAX_LEAVES = 64
+#: Leaves whose level-of-detail count a renderer remembers (the oldest are forgotten).
+LOD_MEMORY = 1 << 18
 SURFACE_MAX_TRIANGLES = 1_000_000
 
 #: Per-pixel CSG over the object's whole screen rectangle (one buffer per
@@ -430,34 +463,79 @@ TILE_MAX_BYTES = 32 << 20
 #: Bytes per pixel of the image buffers (depth key, label and value).
 IMAGE_PIXEL_BYTES = 16
 
-#: Contour counts by screen size (``Renderer(adaptive_contours=True)``): a
-#: leaf whose unclipped screen rectangle spans ``e`` pixels, ``e`` at most
-#: ``2 * CONTOUR_LADDER[-1]`` (64), gets the smallest count of the ladder that is
-#: at least ``e / 2`` (bands about two pixels apart) and never more than asked;
-#: larger leaves get the requested count, so the error still shrinks as the
-#: count grows wherever a leaf is large enough to show it. With ``N`` contours
-#: a band's value step is about ``range / N``: :data:`MIN_CONTOURS` (the first
-#: rung) keeps every pixel within 0.05 of the intensity range.
+#: Level of detail (``Renderer(adaptive_contours=True)``, the default): a leaf
+#: whose unclipped screen rectangle spans ``e`` pixels needs about
+#: ``N * e / LOD_PIXELS`` contours (at the default N = 64, bands about two
+#: pixels apart); it gets the requested ``N`` halved as often as that still
+#: leaves at least the need (so the counts are ``N``, ``N / 2``, ``N / 4``, ...
+#: and a small change of view does not change them), and never fewer than
+#: :data:`MIN_CONTOURS` (nor more than ``N``). Every count is proportional to
+#: ``N`` above that floor, so quadrupling ``N`` quadruples it and the error still
+#: shrinks as ``N`` grows; the floor keeps each band's value step (about
+#: range / 16) within the 0.05 accuracy bar however small the leaf.
+LOD_PIXELS = 128.0
+MIN_CONTOURS = 16
+#: Tessellation by screen size (with the level of detail, default builder only):
+#: a curved primitive ``e`` pixels across (radius about ``e / 2``) gets the
+#: segments around it that keep the chord error ``r (1 - cos(pi / m))`` under
+#: ``CHORD_PIXELS``, rounded up to a power of two, at least 16; at 128 (the
+#: full tessellation, :data:`isocsg.laminae.builder.DEFAULT_SEGMENTS`) from
+#: about 330 pixels on.
+CHORD_PIXELS = 0.05
+MIN_SEGMENTS = 16
+_SEGMENT_SHIFT = 16
+_CONTOUR_MASK = (1 << _SEGMENT_SHIFT) - 1
+#: Kept for compatibility: the counts of the earlier two-rung ladder (N = 64).
 CONTOUR_LADDER = np.array([16, 32])
-MIN_CONTOURS = int(CONTOUR_LADDER[0])
-PIXELS_PER_BAND = 2.0
+PIXELS_PER_BAND = LOD_PIXELS / 64
 
 
 def screen_contours(extent: NDArray[np.float64], contours: int) -> NDArray[np.int64]:
-    """Contour count of each leaf from its screen size in pixels (see :data:`CONTOUR_LADDER`).
+    """Contour count of each leaf from its screen size in pixels (see :data:`LOD_PIXELS`).
+
+    Parameters
+    ----------
+    extent : ndarray, shape (n,)
+        The larger side of each leaf's unclipped screen rectangle in pixels
+        (``inf`` for a leaf reaching behind the eye).
+    contours : int
+        N, the requested count.
+
+    Returns
+    -------
+    ndarray of int64, shape (n,)
 
     Examples
     --------
     >>> screen_contours(np.array([3.0, 40.0, 64.0, 65.0, 1000.0, np.inf]), 64).tolist()
     [16, 32, 32, 64, 64, 64]
+    >>> screen_contours(np.array([3.0, 40.0, 64.0, 65.0, 1000.0]), 256).tolist()
+    [16, 128, 128, 256, 256]
     >>> screen_contours(np.array([3.0, 40.0]), 8).tolist()
     [8, 8]
     """
-    with np.errstate(invalid="ignore"):
-        need = np.ceil(np.asarray(extent, dtype=np.float64) / PIXELS_PER_BAND)
-    small = need <= CONTOUR_LADDER[-1]
-    rung = CONTOUR_LADDER[np.searchsorted(CONTOUR_LADDER, np.where(small, need, 0))]
-    return np.where(small, np.minimum(rung, contours), contours).astype(np.int64)
+    e = np.asarray(extent, dtype=np.float64)
+    need = contours * np.nan_to_num(e, nan=np.inf, posinf=np.inf) / LOD_PIXELS
+    with np.errstate(divide="ignore", invalid="ignore"):
+        halvings = np.floor(np.log2(contours / need))
+    halvings = np.clip(np.nan_to_num(halvings, nan=0.0, posinf=30.0, neginf=0.0), 0, 30)
+    n = np.ceil(contours / np.exp2(halvings))
+    return np.clip(n, min(contours, MIN_CONTOURS), contours).astype(np.int64)
+
+
+def screen_segments(extent: NDArray[np.float64]) -> NDArray[np.int64]:
+    """Tessellation segments of each leaf from its screen size in pixels (see :data:`CHORD_PIXELS`).
+
+    Examples
+    --------
+    >>> screen_segments(np.array([4.0, 20.0, 60.0, 200.0, 400.0, np.inf])).tolist()
+    [16, 32, 64, 128, 128, 128]
+    """
+    r = np.nan_to_num(np.asarray(extent, dtype=np.float64), nan=np.inf, posinf=np.inf) / 2
+    with np.errstate(invalid="ignore", over="ignore"):
+        m = np.pi * np.sqrt(np.maximum(r, 1.0) / (2.0 * CHORD_PIXELS))  # sagitta r pi^2 / (2 m^2)
+        m = np.exp2(np.ceil(np.log2(np.minimum(m, 1e6))))
+    return np.clip(m, MIN_SEGMENTS, DEFAULT_SEGMENTS).astype(np.int64)
 
 
 @njit(cache=True, nogil=True)
@@ -524,14 +602,27 @@ class Renderer:
         :data:`SURFACE_MAX_TRIANGLES` triangles (larger trees stay per pixel).
         Objects with view-dependent (specular) bands use ``"pixel"`` under
         ``"auto"``.
-    adaptive_contours : bool, default False
-        ``True``: build primitives under 64 pixels across on screen with
-        fewer contours (:func:`screen_contours`: bands about two pixels
-        apart, at least :data:`MIN_CONTOURS`, never more than requested), so
-        that the leaves of a large model cost little; the 0.05 accuracy bar
-        still holds, but the error of such a leaf no longer shrinks as the
-        requested N grows. ``False`` (the default, as the conventions ask):
-        every primitive gets the requested count.
+    surface_build : {"background", "now"}, default "background"
+        Under ``csg="auto"``, where the clipped surface is built.
+        ``"background"``: on a thread of its own, started by the object's
+        second view, which is resolved per pixel like the first (so no view
+        waits for a Boolean); the first view after the surface is ready uses
+        it (:meth:`wait_surfaces` waits for it). ``"now"``: on the second
+        view's own path, which it delays by the build.
+    adaptive_contours : bool, default True
+        The level of detail. ``True``: each primitive (CSG leaves included)
+        gets contours by its size on screen (:func:`screen_contours`): a
+        primitive ``e`` pixels across needs about ``N * e / 128`` (bands about
+        two pixels apart at N = 64) and gets ``N`` halved as often as that
+        need allows, never fewer than :data:`MIN_CONTOURS` (16, which keeps
+        every pixel within 0.05 of the range) nor more than ``N``; primitives
+        128 pixels across or more get ``N``. Above the floor every count is
+        proportional to ``N``, so the error still shrinks as ``N`` grows. A
+        primitive keeps the larger count an earlier view of this renderer gave
+        it (its bands are then reused). The default builder also coarsens
+        the tessellation by the same screen size (see
+        :func:`isocsg.laminae.build_bands`, ``pixels``). ``False``: every
+        primitive gets the requested count and the full tessellation.
 
     Examples
     --------
@@ -555,18 +646,32 @@ class Renderer:
     """
 
     def __init__(
-        self, build_laminae: BandBuilder | None = None, *, csg: str = "auto", adaptive_contours: bool = False,
+        self, build_laminae: BandBuilder | None = None, *, csg: str = "auto", adaptive_contours: bool = True,
+        surface_build: str = "background",
     ) -> None:
         if csg not in CSG_METHODS:
             raise InvalidParameterError(f"csg must be one of {', '.join(CSG_METHODS)}, got {csg!r}")
+        if surface_build not in SURFACE_BUILDS:
+            raise InvalidParameterError(
+                f"surface_build must be one of {', '.join(SURFACE_BUILDS)}, got {surface_build!r}")
+        self.surface_build = surface_build
+        # Surfaces being built in the background: key -> future (guarded by _surface_lock).
+        self._building: dict[tuple[Any, ...], Future[None]] = {}
+        self._surface_lock = threading.Lock()
         self._build = build_laminae
         self.csg = csg
         self.adaptive_contours = bool(adaptive_contours)
+        # (leaf, lights, material, N) -> the contour count its last view used under the
+        # level of detail (below N only): a later view needing fewer reuses those bands.
+        self._lod: OrderedDict[tuple[Any, ...], tuple[int, int]] = OrderedDict()
         # CSG surfaces (leaf band meshes clipped in 3D), keyed by the leaves' band
         # meshes and the program: (band meshes kept alive, leaf parts).
         self._surfaces = _ByteCache(SURFACE_CACHE_BYTES)
         # Arrays converted for the kernels, keyed by the band mesh's identity: (band mesh, prepared).
-        self._prepared = _ByteCache(PREPARED_CACHE_BYTES)
+        self._prepared = _ByteCache(PREPARED_CACHE_BYTES, scan_resistant=True)
+        # The default builder's view-independent bands are kept here by request
+        # (primitive, lights, material, contours), so a new view asks it for nothing.
+        self._by_request = build_laminae is None
         # Leaves' bounding boxes, keyed by the program's identity: (program, LeafGeometry).
         self._geometry = _ByteCache(GEOMETRY_CACHE_BYTES)
         # Image-sized buffers reused from one render to the next once no result
@@ -619,7 +724,12 @@ class Renderer:
     def _bands(
         self, primitive: Primitive, lights: Sequence[Any], material: Any, contours: int, eye: Any
     ) -> tuple[BandMesh, bool]:
-        out = self._builder()(primitive, tuple(lights), material, int(contours), eye=eye)
+        # ``contours`` may carry the tessellation's segments above _SEGMENT_SHIFT (see _contours).
+        n, segments = int(contours) & _CONTOUR_MASK, int(contours) >> _SEGMENT_SHIFT
+        if segments:
+            out = self._builder()(primitive, tuple(lights), material, n, eye=eye, segments=segments)
+        else:
+            out = self._builder()(primitive, tuple(lights), material, n, eye=eye)
         bands = getattr(out, "bands", out)
         if not isinstance(bands, BandMesh):
             raise InvalidParameterError(f"build_laminae must return a LaminaSet or BandMesh, got {type(out).__name__}")
@@ -634,10 +744,39 @@ class Renderer:
         self._geometry.put(id(program), (program, geom), geom.nbytes + 64 * program.n_leaves)
         return geom
 
-    def _contours(self, extent: NDArray[np.float64], contours: int) -> NDArray[np.int64]:
+    def _contours(
+        self, leaves: Sequence[Primitive], lights: Any, material: Any, geom: LeafGeometry, cam: Camera,
+        program: Program | None, contours: int,
+    ) -> NDArray[np.int64]:
+        """Each leaf's contour count: :func:`screen_contours` of its size on screen (its box cut
+        to the object's, :func:`~isocsg.render.tiles.leaf_screen_sizes`), or more when an earlier
+        view used more (up to ``contours``): those bands are likely still cached, and a leaf that
+        shrank on screen is only more accurate with them than it needs to be."""
         if not self.adaptive_contours:
-            return np.full(len(extent), contours, np.int64)
-        return screen_contours(extent, contours)
+            return np.full(len(leaves), contours, np.int64)
+        box = (None, None) if program is None else combine_boxes(program.op, program.arg, geom.lo, geom.hi)
+        sizes = leaf_screen_sizes(geom, cam, *box)
+        counts = screen_contours(sizes, contours)
+        # The tessellation by the same size, for the default builder only (its signature has segments).
+        segs = screen_segments(sizes) if self._by_request else np.full(len(leaves), DEFAULT_SEGMENTS, np.int64)
+        if bool(np.all(counts == contours)) and bool(np.all(segs >= DEFAULT_SEGMENTS)):
+            return counts
+        out, seg = counts.tolist(), segs.tolist()
+        used = self._lod
+        for i, leaf in enumerate(leaves):
+            if out[i] == contours and seg[i] >= DEFAULT_SEGMENTS:
+                continue
+            key = (leaf, lights, material, contours)
+            before = used.get(key)
+            if before is not None:
+                out[i], seg[i] = max(out[i], before[0]), max(seg[i], before[1])
+            if before != (out[i], seg[i]):
+                used[key] = (out[i], seg[i])
+        while len(used) > LOD_MEMORY:
+            used.popitem(last=False)
+        codes = np.asarray(out, np.int64)
+        seg_a = np.asarray(seg, np.int64)
+        return np.where(seg_a < DEFAULT_SEGMENTS, codes | (seg_a << _SEGMENT_SHIFT), codes)
 
     def _per_pixel(self, key: tuple[Any, ...], n_leaves: int) -> bool:
         """Whether the CSG object ``(shape, lights, material, contours)`` is resolved per pixel,
@@ -668,39 +807,90 @@ class Renderer:
         the second render of an object with view-independent bands (a first
         render costs no Boolean) and few enough band triangles, under
         ``"surface"`` always (for specular bands: built every time). Surfaces
-        of view-independent bands are kept.
+        of view-independent bands are kept. Under ``"auto"`` with
+        ``surface_build="background"`` a surface not built yet is started on
+        the surface thread and ``_PENDING`` returned (this view per pixel).
         """
         bands = tuple(b for b, _ in built)
         view_dependent = any(v for _, v in built)
         if self.csg == "auto" and (view_dependent or sum(len(b.triangles) for b in bands) > SURFACE_MAX_TRIANGLES):
             return None
         key = (tuple(id(b) for b in bands), program.op.tobytes(), program.arg.tobytes())
-        hit = self._surfaces.get(key)
-        # The ids of band meshes that were dropped may be reused: compare the objects too.
-        if hit is not None and all(x is y for x, y in zip(hit[0], bands)):
-            return hit[1]
-        try:
-            surface = surface_from_bands(program, bands)
-        except (InvalidGeometryError, ResourceLimitError):
-            if self.csg != "auto":
-                raise
-            # Bands that do not close (extreme frames) or a surface over the memory budget:
-            # this object stays per pixel, and the failure is remembered so no view retries it.
-            self._surfaces.put(key, (bands, None), 64 * len(bands))
-            return None
-        parts = [(int(i), self._prepare(surface.leaf_bands(int(i)), True)) for i in np.unique(surface.leaf)]
-        if not view_dependent:
-            nbytes = sum(p.nbytes for _, p in parts) + sum(b.vertices.nbytes + 28 * len(b.triangles) for b in bands)
-            self._surfaces.put(key, (bands, parts), nbytes)
-        return parts
+        with self._surface_lock:
+            hit = self._surfaces.get(key)
+            # The ids of band meshes that were dropped may be reused: compare the objects too.
+            if hit is not None and all(x is y for x, y in zip(hit[0], bands)):
+                return hit[1]
+            if self.csg == "auto" and self.surface_build == "background":
+                if key not in self._building:
+                    self._building[key] = _surface_pool().submit(self._build_surface, key, program, bands)
+                return _PENDING
+        return self._build_surface(key, program, bands, view_dependent)
 
-    def _prepare(self, bands: BandMesh, view_dependent: bool) -> _Prepared:
+    def _build_surface(
+        self, key: tuple[Any, ...], program: Program, bands: tuple[BandMesh, ...], view_dependent: bool = False,
+    ) -> list[tuple[int, _Prepared]] | None:
+        """Build (and keep, for view-independent bands) one clipped surface; on the
+        calling thread or, under ``surface_build="background"``, on the surface thread."""
+        try:
+            try:
+                surface = surface_from_bands(program, bands)
+            except (InvalidGeometryError, ResourceLimitError):
+                if self.csg != "auto":
+                    raise
+                # Bands that do not close (extreme frames) or a surface over the memory budget:
+                # this object stays per pixel, and the failure is remembered so no view retries it.
+                with self._surface_lock:
+                    self._surfaces.put(key, (bands, None), 64 * len(bands))
+                return None
+            parts = [(int(i), self._prepare(surface.leaf_bands(int(i)), True)) for i in np.unique(surface.leaf)]
+            if not view_dependent:
+                nbytes = sum(p.nbytes for _, p in parts) + sum(b.vertices.nbytes + 28 * len(b.triangles) for b in bands)
+                with self._surface_lock:
+                    self._surfaces.put(key, (bands, parts), nbytes)
+            return parts
+        finally:
+            with self._surface_lock:
+                self._building.pop(key, None)
+
+    def wait_surfaces(self, timeout: float | None = None) -> bool:
+        """Wait for the clipped surfaces being built in the background; returns whether all are done.
+
+        Under ``surface_build="background"`` the next render after this uses them.
+
+        Examples
+        --------
+        >>> Renderer().wait_surfaces()
+        True
+        """
+        with self._surface_lock:
+            pending = list(self._building.values())
+        done, left = wait(pending, timeout=timeout)
+        for f in done:
+            f.result()
+        return not left
+
+    def _leaf(
+        self, primitive: Primitive, lights: Sequence[Any], material: Any, contours: int, eye: Any,
+        built: tuple[BandMesh, bool] | None = None,
+    ) -> tuple[_Prepared, bool]:
+        """One primitive's prepared band mesh and whether it depends on the view."""
+        key = ("request", primitive, tuple(lights), material, int(contours)) if self._by_request else None
+        if key is not None:
+            hit = self._prepared.get(key)
+            if hit is not None:
+                return hit[1], False
+        bands, view_dependent = built if built is not None else self._bands(primitive, lights, material, contours, eye)
+        return self._prepare(bands, view_dependent, key), view_dependent
+
+    def _prepare(self, bands: BandMesh, view_dependent: bool, request: Any = None) -> _Prepared:
         # View-independent meshes come back from the builder's cache as the same
-        # objects: keep their converted arrays too. View-dependent ones are new
-        # every time and are not kept.
-        key = id(bands)
+        # objects: keep their converted arrays too (under the request that gave
+        # them, for the default builder). View-dependent ones are new every
+        # time and are not kept.
+        key = id(bands) if request is None else request
         hit = self._prepared.get(key)
-        if hit is not None and hit[0] is bands:
+        if hit is not None and (request is not None or hit[0] is bands):
             return hit[1]
         vertices = np.ascontiguousarray(bands.vertices, dtype=np.float64)
         triangles = np.ascontiguousarray(bands.triangles, dtype=np.int32)
@@ -718,16 +908,18 @@ class Renderer:
             )
         prep = _Prepared(vertices, triangles, value_out, value_in, [])
         if not view_dependent:
-            self._prepared.put(key, (bands, prep), prep.nbytes)
+            self._prepared.put(key, (bands, prep), prep.nbytes + (0 if request is None else _band_bytes(bands)))
         return prep
 
     def clear_caches(self) -> None:
         """Forget the prepared band meshes, CSG surfaces and leaf geometry this renderer keeps."""
         with self._lock:
             self._prepared.clear()
-            self._surfaces.clear()
+            with self._surface_lock:
+                self._surfaces.clear()
             self._geometry.clear()
             self._csg_seen.clear()
+            self._lod.clear()
 
     def cache_info(self) -> dict[str, int]:
         """Entries and bytes of the renderer's caches (``prepared``, ``surfaces``, ``geometry``).
@@ -779,6 +971,7 @@ class Renderer:
             (raised before they are allocated).
         """
         with self._lock:
+            self._prepared.new_pass()
             return self._render(scene, camera, contours, progress)
 
     def _render(
@@ -827,20 +1020,21 @@ class Renderer:
             if prog is None:
                 obj_of.append(k)
                 leaf_of.append(0)
-                rects, nears, extent = leaf_rects(leaf_geometry([obj.shape]), cam)
+                geom = leaf_geometry([obj.shape])
+                rects, nears, _ = leaf_rects(geom, cam)
                 if rects[0, 0] < rects[0, 2] and rects[0, 1] < rects[0, 3]:  # on screen
                     t = time.perf_counter()
-                    n_k = int(self._contours(extent, n_contours)[0])
-                    bands = self._bands(obj.shape, scene.lights, obj.material, n_k, cam.eye)
-                    plain.append((self._prepare(*bands), base, float(nears[0])))
+                    n_k = int(self._contours([obj.shape], scene.lights, obj.material, geom, cam, None, n_contours)[0])
+                    plain.append((self._leaf(obj.shape, scene.lights, obj.material, n_k, cam.eye)[0], base, float(nears[0])))
                     build += time.perf_counter() - t
                 report.add(1)
                 continue
             leaves, program = prog.leaves, prog
             obj_of.extend([k] * len(leaves))
             leaf_of.extend(range(len(leaves)))
-            rects, nears, extent = leaf_rects(self._leaf_geometry(program), cam)
-            counts = self._contours(extent, n_contours)
+            geom = self._leaf_geometry(program)
+            rects, nears, _ = leaf_rects(geom, cam)
+            counts = self._contours(leaves, scene.lights, obj.material, geom, cam, program, n_contours)
             rect = tuple(int(x) for x in combine_rects(program.op, program.arg, rects))
             seen_key = (obj.shape, scene.lights, obj.material, n_contours)
             built: list[tuple[BandMesh, bool]] | None = None
@@ -855,6 +1049,8 @@ class Renderer:
                 parts = self._surface(program, built)
                 if parts is None and self.csg == "auto":
                     self._seen(seen_key, True)  # view-dependent or too large: per pixel from now on
+                elif parts is _PENDING:
+                    parts = None  # being built in the background: this view per pixel
             if parts is not None:
                 plain.extend((prep, base + i, float(nears[i])) for i, prep in parts)
                 report.add(len(leaves))
@@ -1006,9 +1202,9 @@ class Renderer:
             try:
                 for k, i in enumerate(order):
                     t = time.perf_counter()
-                    bands = built[i] if built is not None else self._bands(leaves[i], lights, material, counts[i], cam.eye)
-                    view_dependent |= bands[1]
-                    prep = self._prepare(*bands)
+                    prep, vd = self._leaf(leaves[i], lights, material, counts[i], cam.eye,
+                                          None if built is None else built[i])
+                    view_dependent |= vd
                     seconds += time.perf_counter() - t
                     if not concurrent:
                         leaf(i, prep)
@@ -1222,15 +1418,15 @@ class Renderer:
                             if tr * plan.cols + tc not in tiles:
                                 open_tile(tr * plan.cols + tc)
                     t = time.perf_counter()
-                    bands = built[i] if built is not None else self._bands(leaves[i], lights, material, counts_l[i], cam.eye)
-                    prep = self._prepare(*bands)
+                    prep, vd = self._leaf(leaves[i], lights, material, counts_l[i], cam.eye,
+                                          None if built is None else built[i])
                     seconds += time.perf_counter() - t
-                    view_dependent = bool(view_dependent) or bands[1]
+                    view_dependent = bool(view_dependent) or vd
                     with cond:
                         queue.append(("fill", g, prep))
                         state["fills"] += 1
                         cond.notify_all()
-                    del prep, bands
+                    del prep
                     report.add(len(members[g]))
                     # Waiting fills hold their meshes: help once there are more than a few.
                     help_until(lambda: state["fills"] <= 2 * threads)
@@ -1349,6 +1545,19 @@ def _pool() -> ThreadPoolExecutor:
 
 
 _LEAF_POOL: ThreadPoolExecutor | None = None
+
+
+_SURFACE_POOL: ThreadPoolExecutor | None = None
+#: What :meth:`Renderer._surface` returns while a surface is built in the background.
+_PENDING: Any = object()
+
+
+def _surface_pool() -> ThreadPoolExecutor:
+    # One thread: surfaces are built one at a time, off the views' critical path.
+    global _SURFACE_POOL
+    if _SURFACE_POOL is None:
+        _SURFACE_POOL = ThreadPoolExecutor(max_workers=1, thread_name_prefix="isocsg-surface")
+    return _SURFACE_POOL
 
 
 def _leaf_pool() -> ThreadPoolExecutor:

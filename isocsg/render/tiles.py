@@ -33,7 +33,7 @@ from ..geometry.primitives import Box, Primitive, Sphere, Truncus
 from .raster import NEAR_RELATIVE
 
 __all__ = [
-    "LeafGeometry", "leaf_geometry", "leaf_rects", "combine_rects", "prune_program", "tile_leaves", "TilePlan", "plan_tiles",
+    "LeafGeometry", "leaf_geometry", "leaf_rects", "leaf_screen_sizes", "combine_rects", "combine_boxes", "prune_program", "tile_leaves", "TilePlan", "plan_tiles",
     "open_tile_pixels",
 ]
 
@@ -160,6 +160,55 @@ def leaf_rects(geom: LeafGeometry, cam: Camera) -> tuple[Rects, NDArray[np.float
     """
     W, H = cam.width, cam.height
     n = len(geom.lo)
+    c0, c1, r0, r1, behind, near = _screen_boxes(geom, cam)
+    with np.errstate(invalid="ignore", over="ignore"):
+        extent = np.maximum(c1 - c0, r1 - r0) + 2.0
+    extent[behind | ~np.isfinite(extent)] = np.inf
+    rects = np.empty((n, 4), np.int64)
+    big = 4.0 * (W + H) + 16.0  # clamp before the integer conversion
+    rects[:, 0] = np.clip(np.floor(np.clip(c0, -big, big)) - 1, 0, W)
+    rects[:, 1] = np.clip(np.floor(np.clip(r0, -big, big)) - 1, 0, H)
+    rects[:, 2] = np.clip(np.ceil(np.clip(c1, -big, big)) + 1, 0, W)
+    rects[:, 3] = np.clip(np.ceil(np.clip(r1, -big, big)) + 1, 0, H)
+    rects[behind] = (0, 0, W, H)
+    return rects, near, extent
+
+
+def leaf_screen_sizes(
+    geom: LeafGeometry, cam: Camera, lo: NDArray[np.float64] | None = None, hi: NDArray[np.float64] | None = None,
+) -> NDArray[np.float64]:
+    """Each leaf's size on screen in pixels, for the level of detail.
+
+    The geometric mean of the sides of the unclipped screen rectangle of the
+    leaf's box, the box first cut to ``[lo, hi]`` (the object's box: a hole
+    longer than the plate it pierces shows only its part inside the plate),
+    plus 2. ``inf`` where the box reaches behind the near plane.
+
+    Examples
+    --------
+    >>> from isocsg import Camera, Cylinder
+    >>> cam = Camera((0, -10, 0), (0, 0, 0), width=100, height=100)
+    >>> g = leaf_geometry([Cylinder((0, 0, 0), (0, 0, 4), 0.1)])
+    >>> full = leaf_screen_sizes(g, cam)
+    >>> cut = leaf_screen_sizes(g, cam, np.array([-1.0, -1.0, -0.2]), np.array([1.0, 1.0, 0.2]))
+    >>> bool(cut[0] < full[0])
+    True
+    """
+    if lo is not None and hi is not None:
+        clo = np.minimum(np.maximum(geom.lo, lo), hi)
+        chi = np.maximum(np.minimum(geom.hi, hi), lo)
+        geom = LeafGeometry(clo, np.maximum(chi, clo), geom.sphere, geom.center, geom.radius)
+    c0, c1, r0, r1, behind, _ = _screen_boxes(geom, cam)
+    with np.errstate(invalid="ignore", over="ignore"):
+        size = np.sqrt(np.maximum(c1 - c0, 0.0) * np.maximum(r1 - r0, 0.0)) + 2.0
+    size[behind | ~np.isfinite(size)] = np.inf
+    return size
+
+
+def _screen_boxes(geom: LeafGeometry, cam: Camera) -> tuple[NDArray[np.float64], ...]:
+    """Unclipped pixel bounds ``c0, c1, r0, r1`` of each leaf's projection, whether it reaches
+    behind its near plane, and the near planes (see :func:`leaf_rects`)."""
+    W, H = cam.width, cam.height
     f, r, u = cam.frame
     m = np.stack([r, u, f])
     eye = cam.eye_array
@@ -201,16 +250,7 @@ def leaf_rects(geom: LeafGeometry, cam: Camera) -> tuple[Rects, NDArray[np.float
         c1 = (box[:, 1] * sx_scale + 1.0) * W / 2
         r0 = (1.0 - box[:, 3] * sy_scale) * H / 2
         r1 = (1.0 - box[:, 2] * sy_scale) * H / 2
-        extent = np.maximum(c1 - c0, r1 - r0) + 2.0
-    extent[behind | ~np.isfinite(extent)] = np.inf
-    rects = np.empty((n, 4), np.int64)
-    big = 4.0 * (W + H) + 16.0  # clamp before the integer conversion
-    rects[:, 0] = np.clip(np.floor(np.clip(c0, -big, big)) - 1, 0, W)
-    rects[:, 1] = np.clip(np.floor(np.clip(r0, -big, big)) - 1, 0, H)
-    rects[:, 2] = np.clip(np.ceil(np.clip(c1, -big, big)) + 1, 0, W)
-    rects[:, 3] = np.clip(np.ceil(np.clip(r1, -big, big)) + 1, 0, H)
-    rects[behind] = (0, 0, W, H)
-    return rects, near, extent
+    return c0, c1, r0, r1, behind, near
 
 
 @njit(cache=True)
@@ -251,6 +291,45 @@ def combine_rects(op: NDArray[np.int8], arg: NDArray[np.int64], rects: NDArray[n
         stack[base, 0], stack[base, 1], stack[base, 2], stack[base, 3] = c0, r0, c1, r1
         sp = base + 1
     return stack[0].copy()
+
+
+def combine_boxes(
+    op: NDArray[np.int8], arg: NDArray[np.int64], lo: NDArray[np.float64], hi: NDArray[np.float64],
+) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+    """The object's box from its leaves' boxes (a :class:`~isocsg.csg.program.Program`'s arrays).
+
+    As :func:`combine_rects` in 3D: a union takes the hull, an intersection
+    the overlap, a difference its first operand's box. Only the pairs of
+    (operation, operand count) are looped over, the boxes stay arrays.
+
+    Examples
+    --------
+    >>> from isocsg import Box, Cylinder
+    >>> from isocsg.csg.program import compile_program
+    >>> prog = compile_program(Box((0, 0, 0), (2, 2, 0.4)) - Cylinder((0, 0, 0), (0, 0, 3), 0.2))
+    >>> g = leaf_geometry(prog.leaves)
+    >>> [b.tolist() for b in combine_boxes(prog.op, prog.arg, g.lo, g.hi)]
+    [[-1.0, -1.0, -0.2], [1.0, 1.0, 0.2]]
+    """
+    los: list[NDArray[np.float64]] = []
+    his: list[NDArray[np.float64]] = []
+    for o, a in zip(op.tolist(), arg.tolist()):
+        if o == 0:
+            los.append(lo[a])
+            his.append(hi[a])
+            continue
+        base = len(los) - a
+        l0, h0 = los[base], his[base]
+        if o == 1:
+            l0 = np.min(np.stack(los[base:]), axis=0)
+            h0 = np.max(np.stack(his[base:]), axis=0)
+        elif o == 2:
+            l0 = np.max(np.stack(los[base:]), axis=0)
+            h0 = np.maximum(np.min(np.stack(his[base:]), axis=0), l0)
+        del los[base:], his[base:]
+        los.append(l0)
+        his.append(h0)
+    return los[0], his[0]
 
 
 @njit(cache=True, nogil=True)
