@@ -574,8 +574,8 @@ def test_reused_buffers_render_like_fresh_ones(method):
 
 
 def test_auto_builds_the_csg_surface_on_the_second_render_only(monkeypatch):
-    # "auto": the first view of a CSG object is resolved per pixel; the second
-    # view builds the clipped surface once, and later views reuse it.
+    # "auto" with surface_build="now": the first view of a CSG object is resolved per
+    # pixel; the second view builds the clipped surface once, and later views reuse it.
     from isocsg.render import painter
 
     scene = _concurrency_scenes()["csg-leaves-and-stripes"]
@@ -584,13 +584,50 @@ def test_auto_builds_the_csg_surface_on_the_second_render_only(monkeypatch):
     calls = []
     real = painter.surface_from_bands
     monkeypatch.setattr(painter, "surface_from_bands", lambda program, bands: calls.append(1) or real(program, bands))
-    renderer = Renderer()
+    renderer = Renderer(surface_build="now")
     counts = []
     for cam, want in zip(views, expected):
         got = renderer.render(scene, camera=cam)
         counts.append(len(calls))
         np.testing.assert_array_equal(got.image, want)
     assert counts == [0, 1, 1]
+
+
+def test_auto_builds_the_csg_surface_in_the_background(monkeypatch):
+    # The default surface_build="background": the second view starts the surface on
+    # the surface thread and is resolved per pixel meanwhile (it never waits for the
+    # Boolean, held here until the view is done); views after it is ready use it.
+    import threading
+
+    from isocsg.render import painter
+
+    scene = _concurrency_scenes()["csg-leaves-and-stripes"]
+    views = [scene.camera, scene.camera.with_view((-3.0, -4.0, 2.0)), scene.camera]
+    pixel = [Renderer(csg="pixel").render(scene, camera=c).image for c in views[:2]]
+    surface = Renderer(csg="surface").render(scene, camera=views[2]).image
+    release = threading.Event()
+    calls = []
+    real = painter.surface_from_bands
+
+    def held(program, bands):
+        calls.append(threading.current_thread().name)
+        assert release.wait(60)
+        return real(program, bands)
+
+    monkeypatch.setattr(painter, "surface_from_bands", held)
+    renderer = Renderer()
+    np.testing.assert_array_equal(renderer.render(scene, camera=views[0]).image, pixel[0])
+    np.testing.assert_array_equal(renderer.render(scene, camera=views[1]).image, pixel[1])  # not blocked
+    assert not renderer.wait_surfaces(timeout=0.01)
+    release.set()
+    assert renderer.wait_surfaces(timeout=60)
+    np.testing.assert_array_equal(renderer.render(scene, camera=views[2]).image, surface)
+    assert len(calls) == 1 and calls[0].startswith("isocsg-surface")
+
+
+def test_unknown_surface_build_is_refused():
+    with pytest.raises(InvalidParameterError, match=re.escape("surface_build must be one of background, now, got 'later'")):
+        Renderer(surface_build="later")
 
 
 def test_unknown_csg_method_is_refused():

@@ -390,7 +390,7 @@ def test_laminae_cache_is_bounded_by_bytes(monkeypatch):
 
 def test_renderer_caches_are_bounded_by_bytes():
     scene = plate_scene(4, 96, 80)
-    r = Renderer()  # "auto": per pixel first (leaves prepared), then the surface
+    r = Renderer(surface_build="now")  # "auto": per pixel first (leaves prepared), then the surface
     r.render(scene)
     r.render(scene, camera=scene.camera.with_view((-30.0, -65.0, 90.0)))
     info = r.cache_info()
@@ -420,12 +420,14 @@ def test_auto_keeps_large_trees_per_pixel(monkeypatch):
     assert calls == []
     r.render(small)
     r.render(small, camera=small.camera.with_view((-30.0, -65.0, 90.0)))
+    assert r.wait_surfaces(timeout=120)  # built in the background
     assert calls == [1]
     # under the triangle bound too
     monkeypatch.setattr(painter, "SURFACE_MAX_TRIANGLES", 10)
     other = plate_scene(3, 96, 80)
     r.render(other)
     r.render(other, camera=other.camera.with_view((-30.0, -65.0, 90.0)))
+    assert r.wait_surfaces(timeout=120)
     assert calls == [1]
 
 
