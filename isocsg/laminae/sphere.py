@@ -87,7 +87,7 @@ def _frame(w: NDArray[np.float64]) -> tuple[NDArray[np.float64], NDArray[np.floa
 
 def _rings(t: NDArray[np.float64], latitudes: int = LATITUDES) -> NDArray[np.float64]:
     """Polar cosines of the mesh circles: the contour circles, plus uniformly
-    spaced circles in every polar gap wider than ``pi / LATITUDES`` (near the
+    spaced circles in every polar gap wider than ``pi / latitudes`` (near the
     light's pole the contours are far apart in angle, and the silhouette
     needs fine steps everywhere)."""
     polar = np.sort(np.arccos(np.clip(t, -1.0, 1.0)))

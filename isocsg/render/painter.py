@@ -369,9 +369,18 @@ class _Prepared:
 
     @property
     def nbytes(self) -> int:
-        """About the bytes held: the arrays, the quads (at most 24 bytes per triangle) and one projection."""
+        """About the bytes held: the arrays, the quads (made or to be made: about 12 bytes per
+        triangle, half as many quads as triangles at 24 bytes) and the projections made so far
+        (a tiled fill projects into its own scratch; a plain fill keeps one per thread)."""
         nv, nt = len(self.vertices), len(self.triangles)
-        return self.vertices.nbytes + self.triangles.nbytes + 8 * nt + 24 * nt + 56 * nv
+        quads = sum(a.nbytes for a in self._quads[0]) if self._quads else 12 * nt
+        projs = sum(p.nbytes for p in self.projs) if self.projs else 56 * nv
+        return self.vertices.nbytes + self.triangles.nbytes + 8 * nt + quads + projs
+
+    @property
+    def tiled_nbytes(self) -> int:
+        """:attr:`nbytes` of a mesh filled only in screen tiles (which project into their own scratch)."""
+        return self.nbytes - (0 if self.projs else 56 * len(self.vertices))
 
 
 def _band_bytes(bands: BandMesh) -> int:
@@ -389,12 +398,14 @@ class _ByteCache:
     entries are left, the new one is not kept. So a model whose working set is
     larger than the cache keeps a stable part of it from one view to the next
     (plain LRU under the cyclic order of a render would drop exactly what the
-    next view needs first), and a model that fits is never rebuilt. An entry is
-    kept, even over the limit, when the cache is otherwise empty.
+    next view needs first), and a model that fits is never rebuilt; an entry
+    alone over the limit is not kept. Otherwise the newest entry is kept, even
+    over the limit, when the cache is otherwise empty.
     """
 
-    def __init__(self, limit: int, *, scan_resistant: bool = False) -> None:
+    def __init__(self, limit: int, *, scan_resistant: bool = False, share: int = 8) -> None:
         self.limit = int(limit)
+        self.share = int(share)  # never more than this fraction (1 / share) of the memory budget
         self.scan_resistant = bool(scan_resistant)
         self.nbytes = 0
         self.generation = 0
@@ -422,7 +433,9 @@ class _ByteCache:
         if old is not None:
             self.nbytes -= old[1]
         nbytes = int(nbytes)
-        limit = min(self.limit, memory_budget() // 8)
+        limit = min(self.limit, memory_budget() // self.share)
+        if self.scan_resistant and nbytes > limit:
+            return False  # alone over the limit: it would only block the entries that fit
         items = self._items
         while self.nbytes + nbytes > limit and items:
             first = next(iter(items.values()))
@@ -440,8 +453,8 @@ class _ByteCache:
 
 #: Bytes kept by a renderer's caches of prepared band meshes (their arrays,
 #: shared with the lamina cache's band meshes, and the quads and projection
-#: made from them), CSG surfaces and leaf geometry (each; never more than an
-#: eighth of the memory budget).
+#: made from them; never more than a quarter of the memory budget), CSG
+#: surfaces and leaf geometry (each never more than an eighth of it).
 PREPARED_CACHE_BYTES = 1 << 30
 SURFACE_CACHE_BYTES = 512 << 20
 GEOMETRY_CACHE_BYTES = 64 << 20
@@ -668,7 +681,7 @@ class Renderer:
         # meshes and the program: (band meshes kept alive, leaf parts).
         self._surfaces = _ByteCache(SURFACE_CACHE_BYTES)
         # Arrays converted for the kernels, keyed by the band mesh's identity: (band mesh, prepared).
-        self._prepared = _ByteCache(PREPARED_CACHE_BYTES, scan_resistant=True)
+        self._prepared = _ByteCache(PREPARED_CACHE_BYTES, scan_resistant=True, share=4)
         # The default builder's view-independent bands are kept here by request
         # (primitive, lights, material, contours), so a new view asks it for nothing.
         self._by_request = build_laminae is None
@@ -872,18 +885,19 @@ class Renderer:
 
     def _leaf(
         self, primitive: Primitive, lights: Sequence[Any], material: Any, contours: int, eye: Any,
-        built: tuple[BandMesh, bool] | None = None,
+        built: tuple[BandMesh, bool] | None = None, *, tiled: bool = False,
     ) -> tuple[_Prepared, bool]:
-        """One primitive's prepared band mesh and whether it depends on the view."""
+        """One primitive's prepared band mesh and whether it depends on the view (``tiled``: for
+        the screen tiles only, which keep no projection with it)."""
         key = ("request", primitive, tuple(lights), material, int(contours)) if self._by_request else None
         if key is not None:
             hit = self._prepared.get(key)
             if hit is not None:
                 return hit[1], False
         bands, view_dependent = built if built is not None else self._bands(primitive, lights, material, contours, eye)
-        return self._prepare(bands, view_dependent, key), view_dependent
+        return self._prepare(bands, view_dependent, key, tiled=tiled), view_dependent
 
-    def _prepare(self, bands: BandMesh, view_dependent: bool, request: Any = None) -> _Prepared:
+    def _prepare(self, bands: BandMesh, view_dependent: bool, request: Any = None, *, tiled: bool = False) -> _Prepared:
         # View-independent meshes come back from the builder's cache as the same
         # objects: keep their converted arrays too (under the request that gave
         # them, for the default builder). View-dependent ones are new every
@@ -908,7 +922,8 @@ class Renderer:
             )
         prep = _Prepared(vertices, triangles, value_out, value_in, [])
         if not view_dependent:
-            self._prepared.put(key, (bands, prep), prep.nbytes + (0 if request is None else _band_bytes(bands)))
+            size = prep.tiled_nbytes if tiled else prep.nbytes
+            self._prepared.put(key, (bands, prep), size + (0 if request is None else _band_bytes(bands)))
         return prep
 
     def clear_caches(self) -> None:
@@ -1419,7 +1434,7 @@ class Renderer:
                                 open_tile(tr * plan.cols + tc)
                     t = time.perf_counter()
                     prep, vd = self._leaf(leaves[i], lights, material, counts_l[i], cam.eye,
-                                          None if built is None else built[i])
+                                          None if built is None else built[i], tiled=True)
                     seconds += time.perf_counter() - t
                     view_dependent = bool(view_dependent) or vd
                     with cond:
