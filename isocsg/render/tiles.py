@@ -52,9 +52,9 @@ class LeafGeometry:
         Axis-aligned bounds of each leaf.
     sphere : ndarray of bool, shape (n,)
     center : ndarray, shape (n, 3)
-        Sphere centres (zero for other leaves).
+        Sphere and truncus centres (zero for other leaves).
     radius : ndarray, shape (n,)
-        Sphere radii (zero for other leaves).
+        Sphere radii, trunci's larger end radius (zero for other leaves).
     """
 
     lo: NDArray[np.float64]
@@ -127,6 +127,8 @@ def leaf_geometry(leaves: Sequence[Primitive]) -> LeafGeometry:
         e1, e2 = c + ax / 2, c - ax / 2
         lo[t_idx] = np.minimum(e1 - r1 * ext, e2 - r2 * ext)
         hi[t_idx] = np.maximum(e1 + r1 * ext, e2 + r2 * ext)
+        center[t_idx] = c
+        radius[t_idx] = np.maximum(r1, r2)[:, 0]
     if b_idx:
         a = np.asarray(b_par, dtype=np.float64)
         lo[b_idx] = a[:, :3] - a[:, 3:] / 2
@@ -182,25 +184,38 @@ def leaf_screen_sizes(
     The geometric mean of the sides of the unclipped screen rectangle of the
     leaf's box, the box first cut to ``[lo, hi]`` (the object's box: a hole
     longer than the plate it pierces shows only its part inside the plate),
-    plus 2. ``inf`` where the box reaches behind the near plane.
+    plus 2; for a truncus at most its larger diameter seen at its centre's
+    depth, plus 2 (its fields vary around its axis: a point light's bending
+    along it is followed by the tessellation). ``inf`` where the box reaches
+    behind the near plane.
 
     Examples
     --------
-    >>> from isocsg import Camera, Cylinder
+    >>> from isocsg import Box, Camera, Cylinder
     >>> cam = Camera((0, -10, 0), (0, 0, 0), width=100, height=100)
-    >>> g = leaf_geometry([Cylinder((0, 0, 0), (0, 0, 4), 0.1)])
+    >>> g = leaf_geometry([Box((0, 0, 0), (0.2, 0.2, 4.0)), Cylinder((0, 0, 0), (0, 0, 4), 0.1)])
     >>> full = leaf_screen_sizes(g, cam)
     >>> cut = leaf_screen_sizes(g, cam, np.array([-1.0, -1.0, -0.2]), np.array([1.0, 1.0, 0.2]))
-    >>> bool(cut[0] < full[0])
-    True
+    >>> bool(cut[0] < full[0]), full.round(1).tolist()  # the cylinder: its diameter (2.7 px) plus 2
+    (True, [14.4, 4.7])
     """
     if lo is not None and hi is not None:
         clo = np.minimum(np.maximum(geom.lo, lo), hi)
         chi = np.maximum(np.minimum(geom.hi, hi), lo)
         geom = LeafGeometry(clo, np.maximum(chi, clo), geom.sphere, geom.center, geom.radius)
-    c0, c1, r0, r1, behind, _ = _screen_boxes(geom, cam)
+    c0, c1, r0, r1, behind, near = _screen_boxes(geom, cam)
     with np.errstate(invalid="ignore", over="ignore"):
         size = np.sqrt(np.maximum(c1 - c0, 0.0) * np.maximum(r1 - r0, 0.0)) + 2.0
+    axial = ~geom.sphere & (geom.radius > 0)
+    if axial.any():
+        k = np.flatnonzero(axial)
+        depth = (geom.center[k] - cam.eye_array) @ cam.frame[0]
+        if cam.orthographic:
+            per_m = np.full(len(k), cam.height / cam.height_m)
+        else:
+            with np.errstate(divide="ignore", invalid="ignore"):
+                per_m = np.where(depth > near[k], cam.height / (2.0 * cam.tan_half_fov * depth), np.inf)
+        size[k] = np.minimum(size[k], 2.0 * geom.radius[k] * per_m + 2.0)
     size[behind | ~np.isfinite(size)] = np.inf
     return size
 
