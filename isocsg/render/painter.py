@@ -768,17 +768,15 @@ class Renderer:
         if not self.adaptive_contours:
             return np.full(len(leaves), contours, np.int64)
         box = (None, None) if program is None else combine_boxes(program.op, program.arg, geom.lo, geom.hi)
-        sizes = leaf_screen_sizes(geom, cam, *box)
+        # A truncus's diameter caps its size for CSG leaves (holes, rods), where a
+        # single primitive keeps its box (it has room to show the bending along its axis).
+        sizes = leaf_screen_sizes(geom, cam, *box, axial=program is not None)
         counts = screen_contours(sizes, contours)
         # The tessellation by the same size, for the default builder only (its signature has segments).
         segs = screen_segments(sizes) if self._by_request else np.full(len(leaves), DEFAULT_SEGMENTS, np.int64)
-        if bool(np.all(counts == contours)) and bool(np.all(segs >= DEFAULT_SEGMENTS)):
-            return counts
         out, seg = counts.tolist(), segs.tolist()
         used = self._lod
         for i, leaf in enumerate(leaves):
-            if out[i] == contours and seg[i] >= DEFAULT_SEGMENTS:
-                continue
             key = (leaf, lights, material, contours)
             before = used.get(key)
             if before is not None:

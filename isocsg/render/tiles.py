@@ -178,16 +178,17 @@ def leaf_rects(geom: LeafGeometry, cam: Camera) -> tuple[Rects, NDArray[np.float
 
 def leaf_screen_sizes(
     geom: LeafGeometry, cam: Camera, lo: NDArray[np.float64] | None = None, hi: NDArray[np.float64] | None = None,
+    *, axial: bool = True,
 ) -> NDArray[np.float64]:
     """Each leaf's size on screen in pixels, for the level of detail.
 
     The geometric mean of the sides of the unclipped screen rectangle of the
     leaf's box, the box first cut to ``[lo, hi]`` (the object's box: a hole
     longer than the plate it pierces shows only its part inside the plate),
-    plus 2; for a truncus at most its larger diameter seen at its centre's
-    depth, plus 2 (its fields vary around its axis: a point light's bending
-    along it is followed by the tessellation). ``inf`` where the box reaches
-    behind the near plane.
+    plus 2; with ``axial``, for a truncus at most its larger diameter seen at
+    its centre's depth, plus 2 (its fields vary mostly around its axis; a
+    point light's bending along it is followed by the tessellation). ``inf``
+    where the box reaches behind the near plane.
 
     Examples
     --------
@@ -206,9 +207,9 @@ def leaf_screen_sizes(
     c0, c1, r0, r1, behind, near = _screen_boxes(geom, cam)
     with np.errstate(invalid="ignore", over="ignore"):
         size = np.sqrt(np.maximum(c1 - c0, 0.0) * np.maximum(r1 - r0, 0.0)) + 2.0
-    axial = ~geom.sphere & (geom.radius > 0)
-    if axial.any():
-        k = np.flatnonzero(axial)
+    trunci = ~geom.sphere & (geom.radius > 0) if axial else np.zeros(0, bool)
+    if trunci.any():
+        k = np.flatnonzero(trunci)
         depth = (geom.center[k] - cam.eye_array) @ cam.frame[0]
         if cam.orthographic:
             per_m = np.full(len(k), cam.height / cam.height_m)
