@@ -562,10 +562,12 @@ def test_reused_buffers_render_like_fresh_ones(method):
     near = Camera((0.3, -2.2, 0.6), (0, 0, 0), width=640, height=520)
     far = Camera((2.0, -14, 3.0), (0, 0, 0), width=640, height=520)
     steps = [(plain, near), (plain, far), (mixed, near), (plain, far), (mixed, far), (plain, near)]
-    reused = Renderer(csg=method)
+    # Fixed contour counts: with the level of detail a renderer keeps the finer count an
+    # earlier (nearer) view gave a primitive, which a fresh renderer would not.
+    reused = Renderer(csg=method, adaptive_contours=False)
     for scene, cam in steps:
         got = reused.render(scene, camera=cam)
-        want = Renderer(csg=method).render(scene, camera=cam)
+        want = Renderer(csg=method, adaptive_contours=False).render(scene, camera=cam)
         np.testing.assert_array_equal(got.image, want.image)
         np.testing.assert_array_equal(got.object_index, want.object_index)
         np.testing.assert_array_equal(got.primitive_index, want.primitive_index)
@@ -580,11 +582,14 @@ def test_auto_builds_the_csg_surface_on_the_second_render_only(monkeypatch):
 
     scene = _concurrency_scenes()["csg-leaves-and-stripes"]
     views = [scene.camera, scene.camera.with_view((-3.0, -4.0, 2.0)), scene.camera]
-    expected = [Renderer(csg=m).render(scene, camera=c).image for m, c in zip(["pixel", "surface", "surface"], views)]
+    # Fixed contour counts, so that fresh renderers see the same bands as one that keeps
+    # the finer counts of earlier views (the level of detail's memory).
+    expected = [Renderer(csg=m, adaptive_contours=False).render(scene, camera=c).image
+                for m, c in zip(["pixel", "surface", "surface"], views)]
     calls = []
     real = painter.surface_from_bands
     monkeypatch.setattr(painter, "surface_from_bands", lambda program, bands: calls.append(1) or real(program, bands))
-    renderer = Renderer(surface_build="now")
+    renderer = Renderer(surface_build="now", adaptive_contours=False)
     counts = []
     for cam, want in zip(views, expected):
         got = renderer.render(scene, camera=cam)
@@ -603,8 +608,9 @@ def test_auto_builds_the_csg_surface_in_the_background(monkeypatch):
 
     scene = _concurrency_scenes()["csg-leaves-and-stripes"]
     views = [scene.camera, scene.camera.with_view((-3.0, -4.0, 2.0)), scene.camera]
-    pixel = [Renderer(csg="pixel").render(scene, camera=c).image for c in views[:2]]
-    surface = Renderer(csg="surface").render(scene, camera=views[2]).image
+    fixed = {"adaptive_contours": False}  # the same bands in every renderer (see above)
+    pixel = [Renderer(csg="pixel", **fixed).render(scene, camera=c).image for c in views[:2]]
+    surface = Renderer(csg="surface", **fixed).render(scene, camera=views[2]).image
     release = threading.Event()
     calls = []
     real = painter.surface_from_bands
@@ -615,7 +621,7 @@ def test_auto_builds_the_csg_surface_in_the_background(monkeypatch):
         return real(program, bands)
 
     monkeypatch.setattr(painter, "surface_from_bands", held)
-    renderer = Renderer()
+    renderer = Renderer(**fixed)
     np.testing.assert_array_equal(renderer.render(scene, camera=views[0]).image, pixel[0])
     np.testing.assert_array_equal(renderer.render(scene, camera=views[1]).image, pixel[1])  # not blocked
     assert not renderer.wait_surfaces(timeout=0.01)

@@ -62,10 +62,12 @@ Light = PointLight | DirectionalLight
 
 #: Most bytes of lamina sets kept by the cache (never more than a quarter of
 #: :func:`isocsg.limits.memory_budget`); the least recently used go first.
-#: A renderer's prepared meshes keep the band meshes they were made from, so
-#: both caches' sets are alive at once: at 512 MiB the first render of a
-#: 1000-hole plate at 1024 x 1024 peaks at about 1.2 GB (1.7 GB at 1 GiB).
-CACHE_BYTES = 512 << 20
+#: A renderer's prepared meshes keep the band meshes they were made from (by
+#: request, so a renderer asks this cache only for what it does not hold), and
+#: both caches' sets are alive at once: 256 MiB here leaves the memory to the
+#: renderer (the union of 1000 spheres at 1024 x 1024 peaked at 1.54 GB with
+#: 512 MiB under a 3 GB budget).
+CACHE_BYTES = 256 << 20
 
 # key -> (lamina set, its bytes as counted by _nbytes)
 _CACHE: OrderedDict[tuple[Any, ...], tuple[LaminaSet, int]] = OrderedDict()
