@@ -215,8 +215,10 @@ def main(argv: list[str] | None = None) -> int:
             for contours in args.contours if not isinstance(iso, str) else []:
                 Renderer, clear = iso
                 scene = Scene(cam1, LIGHTS, (SceneObject(tree, MATERIAL),), RenderSettings(contours=contours))
-                # JIT compilation is a one-off per process: warm up on a tiny image first
+                # JIT compilation is a one-off per process: warm up on a tiny image first, both
+                # paths (the per-pixel CSG and the plain fill of a clipped surface)
                 Renderer().render(scene, camera=cam1.with_size(32, 32))
+                Renderer(csg="surface").render(scene, camera=cam1.with_size(32, 32))
                 renderers = []
 
                 def first():

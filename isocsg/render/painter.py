@@ -855,6 +855,13 @@ class Renderer:
                     self._surfaces.put(key, (bands, None), 64 * len(bands))
                 return None
             parts = [(int(i), self._prepare(surface.leaf_bands(int(i)), True)) for i in np.unique(surface.leaf)]
+            for _, p in parts:
+                # Quads and projection scratch (pages touched) made here, on the surface thread
+                # in the background, rather than by the first view that fills the surface.
+                p.quads()
+                p.proj(_STRIPES - 1)
+                for scratch in p.projs:
+                    scratch.fill(0.0)
             if not view_dependent:
                 nbytes = sum(p.nbytes for _, p in parts) + sum(b.vertices.nbytes + 28 * len(b.triangles) for b in bands)
                 with self._surface_lock:
