@@ -768,6 +768,16 @@ def _pairwise_union(prog: Program) -> float | None:
     kind = tab.kind
     if not (np.all(kind == 0) or np.all(kind == 2)):
         return None
+    distinct = list(dict.fromkeys(prog.leaves))  # A | A = A
+    if len(distinct) < n:
+        if len(distinct) == 1:
+            return float(distinct[0].volume)
+        n = len(distinct)
+        op = np.zeros(n + 1, np.int8)
+        arg = np.arange(n + 1, dtype=np.int64)
+        op[-1], arg[-1] = OP_UNION, n
+        prog = _make(tuple(distinct), op, arg)
+        tab = leaf_table(prog)
     boxes = _boxes(prog)
     i, j = _overlap_pairs(boxes[:, 0], boxes[:, 1])
     if np.all(kind == 0):
