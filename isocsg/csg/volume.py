@@ -48,7 +48,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from .._validation import integer, nonzero_vector3, scalar
 from ..errors import InvalidParameterError
-from ..geometry.primitives import Box, ConvexPolyhedron, Solid
+from ..geometry.primitives import Box, ConvexPolyhedron, Solid, Sphere
 from .program import OP_DIFFERENCE, OP_INTERSECTION, OP_LEAF, OP_UNION, Program, _make
 from .section import combine_sections, leaf_sections, leaf_table, plane_frame, solid_program
 
@@ -312,6 +312,12 @@ def _closed_form(prog: Program) -> float | None:
             vol = first[0] - sum(x[0] for x in rest) if ok else None
             return (vol, first[1], first[2], -1, k)
         box_lo, box_hi = lo.max(axis=0), np.maximum(hi.min(axis=0), lo.max(axis=0))
+        if len(xs) == 2 and xs[0][3] >= 0 and xs[1][3] >= 0:
+            p, q = leaves[xs[0][3]], leaves[xs[1][3]]
+            if isinstance(p, Sphere) and isinstance(q, Sphere):  # a lens
+                d = math.dist(p.center, q.center)
+                lens = _lens(np.array(p.radius), np.array(q.radius), np.array(d))
+                return (float(lens), box_lo, box_hi, -1, k)
         # an operand whose box lies inside every other operand, each a (convex) primitive, is the result
         small = int(np.argmin(np.prod(hi - lo, axis=1)))
         x = xs[small]
@@ -719,6 +725,12 @@ def _split(prog: Program) -> list[tuple[Program, float]] | None:
         return None
     spans = _operand_spans(prog)
     subs = [_slice(prog, [sp], root) for sp in spans]
+    if root == OP_UNION:  # A | A = A: equal operands once
+        keys = [(q.op.tobytes(), q.arg.tobytes(), q.leaves) for q in subs]
+        first_of = dict(zip(reversed(keys), reversed(range(len(keys)))))
+        if len(first_of) < len(keys):
+            kept = sorted(first_of.values())
+            return [(_slice(prog, [spans[k] for k in kept], OP_UNION), 1.0)]
     boxes = np.array([s.bounds() for s in subs])  # (m, 2, 3)
     if root == OP_UNION:
         groups = _clusters(len(subs), *_overlap_pairs(boxes[:, 0], boxes[:, 1]))
