@@ -1,7 +1,7 @@
 """Volumes of CSG trees: closed forms where the pieces are disjoint, else exact-area sections.
 
 ``V = integral A(z) dz`` where ``A(z)`` is the area of the section by the plane
-``axis . x = z``. Two ways, tried in this order:
+``axis . x = z``. Three ways, tried in this order:
 
 1. **Closed forms.** A primitive's volume is known. A union of operands whose
    bounding boxes do not overlap is the sum of their volumes; a difference
@@ -14,7 +14,19 @@
    plate's times the overlap of their extents. When the whole tree reduces
    this way the result is exact to rounding (the holes' sections are exact-
    area polygons where they cross the plate's outline).
-2. **Integration over sections.** The axis is split at every leaf's
+2. **Splitting into parts.** A union of spheres, or of axis-aligned boxes,
+   in which no three leaves overlap pairwise is ``sum V(i) - sum V(i & j)``
+   (inclusion-exclusion stops at pairs) with the closed forms of a ball lens
+   and a box overlap: a lattice of overlapping balls is exact. Otherwise the
+   operands of a union are grouped into clusters of overlapping boxes
+   (connected components of the overlap graph, found with an R-tree): the
+   union is the sum of its clusters. ``P - Q1 - ... - Qn`` is
+   ``V(P) - sum V(P & C)`` over the clusters ``C`` of the ``Qi`` that meet
+   ``P``, each ``P & C`` keeping only the leaves of ``P`` whose boxes meet
+   ``C``'s. Each part is a closed form or splits again (a work list, no
+   recursion), or is integrated on its own, with its own breakpoints; the
+   adaptive rule's ``tol`` then holds for each part.
+3. **Integration over sections.** The axis is split at every leaf's
    breakpoints (its extent, the heights of its vertices and end centres), so
    that no leaf starts, ends or turns a corner inside a piece. Each piece
    keeps only the leaves present in it (:meth:`Program.prune`):
@@ -405,7 +417,8 @@ def volume(
     """Volume of a primitive or CSG tree: closed forms, else exact-area sections.
 
     See the module docstring for the method. Closed-form trees (primitives,
-    disjoint unions, differences of disjoint solids inside a convex one) and
+    disjoint unions, differences of disjoint solids inside a convex one,
+    unions of spheres or boxes of which no three overlap pairwise) and
     trees whose section areas are piecewise polynomials of degree <= 5 along
     ``axis`` (prisms along it, spheres, cones and cylinders along it, nested
     or disjoint) come out exact to rounding; elsewhere the adaptive rule
@@ -423,8 +436,10 @@ def volume(
         Polygon vertices per full circle; overrides the choice from ``tol``
         (94 at the default ``tol``, 436 at 1e-6).
     progress : callable, optional
-        Called as ``progress(done, total)`` after each piece of the axis and
-        while the adaptive rule refines (``total`` then grows).
+        Called as ``progress(done, total)``: after each integrated part when
+        the tree splits into several (``total`` parts), else after each piece
+        of the axis and while the adaptive rule refines (``total`` then
+        grows); the last call has ``done == total``.
 
     Returns
     -------
