@@ -245,11 +245,16 @@ def _disjoint_boxes(lo: NDArray[np.float64], hi: NDArray[np.float64]) -> bool:
         ov = np.all((lo[:, None, :] < hi[None, :, :]) & (lo[None, :, :] < hi[:, None, :]), axis=2)
         np.fill_diagonal(ov, False)
         return not ov.any()
-    tree = shapely.STRtree(shapely.box(lo[:, 0], lo[:, 1], hi[:, 0], hi[:, 1]))
-    i, j = tree.query(shapely.box(lo[:, 0], lo[:, 1], hi[:, 0], hi[:, 1]))
-    sel = i != j
-    i, j = i[sel], j[sel]
-    return not np.any(np.all((lo[i] < hi[j]) & (lo[j] < hi[i]), axis=1))
+    rects = shapely.box(lo[:, 0], lo[:, 1], hi[:, 0], hi[:, 1])
+    tree = shapely.STRtree(rects)
+    for start in range(0, n, 1024):  # in chunks: an overlapping set usually shows it in the first
+        i, j = tree.query(rects[start : start + 1024])
+        i = i + start
+        sel = i != j
+        i, j = i[sel], j[sel]
+        if np.any(np.all((lo[i] < hi[j]) & (lo[j] < hi[i]), axis=1)):
+            return False
+    return True
 
 
 def closed_form_volume(solid: Solid) -> float | None:
@@ -760,11 +765,18 @@ def _split(prog: Program) -> list[tuple[Program, float]] | None:
     if len(groups) < 2:
         return None
     pleaf = _boxes(first)
-    parts: list[tuple[Program, float]] = [(first, 1.0)]
+    presents = []
     for g in groups:
         members = rest[g]
         clo, chi = boxes[members, 0].min(axis=0), boxes[members, 1].max(axis=0)
-        present = np.all((pleaf[:, 0] < chi) & (pleaf[:, 1] > clo), axis=1)
+        presents.append(np.all((pleaf[:, 0] < chi) & (pleaf[:, 1] > clo), axis=1))
+    # when most of P meets every cluster (an intersection of many balls, dimpled all over), the
+    # parts would repeat P's leaves once per cluster: integrating the whole is cheaper
+    if sum(int(p.sum()) for p in presents) > 4 * len(prog.leaves):
+        return None
+    parts: list[tuple[Program, float]] = [(first, 1.0)]
+    for g, present in zip(groups, presents):
+        members = rest[g]
         pruned = first.prune(present) if present.any() else None
         if pruned is None:
             continue
