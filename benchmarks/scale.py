@@ -4,6 +4,7 @@ Run from the repository root::
 
     python benchmarks/scale.py            # n = 10, 100, 1000, 10 000 at 1024 x 1024, 3 repeats
     python benchmarks/scale.py --quick    # the same cases, 1 repeat and a shorter time limit per case
+    python benchmarks/scale.py --geometry # volume() and section() only, against manifold3d's volume and slice
 
 Models (``tests/reference/models.py``), for each n:
 
@@ -249,6 +250,111 @@ def _set_camera(pl, cam) -> None:
     pl.reset_camera_clipping_range()
 
 
+# ----------------------------------------------------------------------------- volume() and section() alone (--geometry)
+
+
+def _exact_volume(model: str, n: int) -> float:
+    """Closed form of the model's volume: the plate minus its holes; the lattice's balls minus one
+    lens per pair of axis neighbours (no point lies in three balls: r = 0.6 pitch < pitch / sqrt 2)."""
+    from reference.models import plate_with_holes
+
+    if model == "plate":
+        return plate_with_holes(n).volume
+    side = math.ceil(n ** (1 / 3) - 1e-9)
+    pitch = 3.0 / side
+    r = 0.6 * pitch
+    idx = [(i, j, k) for i in range(side) for j in range(side) for k in range(side)][:n]
+    chosen = set(idx)
+    pairs = sum((i + 1, j, k) in chosen for i, j, k in idx) + sum((i, j + 1, k) in chosen for i, j, k in idx) \
+        + sum((i, j, k + 1) in chosen for i, j, k in idx)
+    return n * 4 / 3 * math.pi * r**3 - pairs * math.pi * (4 * r + pitch) * (2 * r - pitch) ** 2 / 12
+
+
+def child_geometry_isocsg(model: str, n: int, repeats: int) -> None:
+    from isocsg.csg.section import section
+    from isocsg.csg.volume import volume
+
+    t, solid = _timed(lambda: build(model, n, "loop"))
+    _emit("build", t)
+    volume(build(model, 10, "loop"), tol=1e-3)  # imports and first calls, once per process
+    times, v = [], None
+    for _ in range(repeats):
+        t, v = _timed(lambda: volume(solid, tol=1e-3))
+        times.append(t)
+    exact = _exact_volume(model, n)
+    _emit("iso_volume", times, value=v, rel_error=abs(v / exact - 1))
+    o, nrm = SECTION[model]
+    times = []
+    for _ in range(repeats):
+        t, s = _timed(lambda: section(solid, o, nrm))
+        times.append(t)
+    _emit("iso_section", times, area=s.area)
+
+
+def child_geometry_peer(model: str, n: int, repeats: int) -> None:
+    import manifold3d as m3
+    from reference.meshes import manifold_leaf
+
+    def boolean():
+        if model == "plate":
+            plate = build(model, n, "batch")
+            cut = m3.Manifold.batch_boolean([manifold_leaf(h, SEGMENTS) for h in plate.holes], m3.OpType.Add)
+            return m3.Manifold.batch_boolean([manifold_leaf(plate.plate, SEGMENTS), cut], m3.OpType.Subtract)
+        return m3.Manifold.batch_boolean([manifold_leaf(s, SEGMENTS) for s in build(model, n, "batch")], m3.OpType.Add)
+
+    t, solid = _timed(boolean)
+    _emit("m3_boolean", t)
+    times = [_timed(solid.volume)[0] for _ in range(repeats)]
+    _emit("m3_volume", times, value=solid.volume())
+    o, _ = SECTION[model]
+    times = [_timed(lambda: solid.translate((-o[0], -o[1], -o[2])).slice(0.0))[0] for _ in range(repeats)]
+    _emit("m3_slice", times)
+
+
+def main_geometry(args, repeats: int, timeout: float, env: dict) -> int:
+    """``--geometry``: volume() and one section() per model and n, against manifold3d's volume() and
+    slice() of its Boolean at 64 segments (the Boolean itself timed apart, as it is the peer's way
+    to get there)."""
+    print(f"volume(tol=1e-3) and section(): {repeats} repeat(s), {timeout:.0f} s per case and side, "
+          f"manifold3d at {SEGMENTS} segments\n")
+    rows, per_leaf = [], {}
+    for model in args.models:
+        for n in args.n:
+            out = {}
+            for side in ("geo_isocsg", "geo_peer"):
+                spec = json.dumps({"side": side, "model": model, "n": n, "repeats": repeats})
+                records, status, peak = run_child([sys.executable, __file__, "--child", spec], timeout, env=env,
+                                                  max_rss_mb=args.max_rss)
+                out[side] = ({r["stage"]: r for r in records}, status)
+                print(f"  {model:7s} n={n:<6d} {side:10s} {status[:40]:8s} peak {peak:6.0f} MB  "
+                      + " ".join(f"{r['stage']}={fmt_seconds(statistics.median(r['seconds']))}"
+                                 for r in records if r.get("seconds")), flush=True)
+            iso, iso_status = out["geo_isocsg"]
+            peer, peer_status = out["geo_peer"]
+            vol, sec = _median(iso, "iso_volume"), _median(iso, "iso_section")
+            m3v, m3s = _median(peer, "m3_volume"), _median(peer, "m3_slice")
+            err = iso.get("iso_volume", {}).get("rel_error")
+            per_leaf.setdefault(model, []).append((n, vol / n if vol else None, sec / n if sec else None))
+            rows.append([model, n, fmt_seconds(vol), f"{err:.1e}" if err is not None else "-", fmt_seconds(sec),
+                         fmt_seconds(_median(peer, "m3_boolean")), fmt_seconds(m3v), fmt_seconds(m3s),
+                         _ratio(m3v, vol), _ratio(m3s, sec), fmt_seconds(vol / n if vol else None),
+                         fmt_seconds(sec / n if sec else None), f"{iso_status[:20]} / {peer_status[:20]}"])
+    print()
+    print_table("medians (ratios > 1: isocsg faster; volume error against the closed form)",
+                ["model", "n", "volume", "vol. error", "section", "m3 Boolean", "m3 volume", "m3 slice",
+                 "m3 vol/volume", "m3 slice/section", "volume/leaf", "section/leaf", "status (isocsg / peer)"], rows)
+    lines = []
+    for model, pts in per_leaf.items():
+        for col, name in ((1, "volume"), (2, "section")):
+            ok = [(n, p[col]) for n, p in zip([q[0] for q in pts], pts) if p[col]]
+            grows = [f"{a}->{b}" for (a, ta), (b, tb) in zip(ok, ok[1:]) if tb > 1.25 * ta]
+            lines.append([model, f"{name} time per leaf does not grow with n",
+                          ", ".join(f"{n}: {fmt_seconds(t)}" for n, t in ok) or "-",
+                          _yes(bool(ok) and len(ok) == len(pts) and not grows) + (f" ({', '.join(grows)})" if grows else "")])
+    print_table("targets", ["model", "target", "measured", "met"], lines)
+    return 0
+
+
 # ----------------------------------------------------------------------------- the parent
 
 
@@ -272,11 +378,17 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--max-rss", type=float, default=4096.0,
                     help="MB: a case whose resident set passes this is stopped (the machine is shared)")
     ap.add_argument("--quick", action="store_true", help="1 repeat, 150 s per case and side")
+    ap.add_argument("--geometry", action="store_true",
+                    help="volume() and section() only, against manifold3d's volume() and slice()")
     ap.add_argument("--child", help=argparse.SUPPRESS)
     args = ap.parse_args(argv)
     if args.child:
         spec = json.loads(args.child)
-        if spec["side"] == "isocsg":
+        if spec["side"] == "geo_isocsg":
+            child_geometry_isocsg(spec["model"], spec["n"], spec["repeats"])
+        elif spec["side"] == "geo_peer":
+            child_geometry_peer(spec["model"], spec["n"], spec["repeats"])
+        elif spec["side"] == "isocsg":
             child_isocsg(spec["model"], spec["n"], spec["size"], spec["repeats"], spec["contours"])
         else:
             child_peer(spec["model"], spec["n"], spec["size"], spec["repeats"])
@@ -285,6 +397,8 @@ def main(argv: list[str] | None = None) -> int:
     env = dict(os.environ)
     # isocsg plans its working memory against this budget (it splits work or refuses, see isocsg.limits)
     env.setdefault("ISOCSG_MEMORY_BUDGET", "3G")
+    if args.geometry:
+        return main_geometry(args, repeats, timeout, env)
 
     print(f"scale benchmark: {args.size} x {args.size} px, N = {args.contours} contours, {repeats} repeat(s), "
           f"{timeout:.0f} s per case and side, manifold3d at {SEGMENTS} segments")

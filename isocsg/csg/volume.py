@@ -1,7 +1,7 @@
 """Volumes of CSG trees: closed forms where the pieces are disjoint, else exact-area sections.
 
 ``V = integral A(z) dz`` where ``A(z)`` is the area of the section by the plane
-``axis . x = z``. Two ways, tried in this order:
+``axis . x = z``. Three ways, tried in this order:
 
 1. **Closed forms.** A primitive's volume is known. A union of operands whose
    bounding boxes do not overlap is the sum of their volumes; a difference
@@ -14,7 +14,19 @@
    plate's times the overlap of their extents. When the whole tree reduces
    this way the result is exact to rounding (the holes' sections are exact-
    area polygons where they cross the plate's outline).
-2. **Integration over sections.** The axis is split at every leaf's
+2. **Splitting into parts.** A union of spheres, or of axis-aligned boxes,
+   in which no three leaves overlap pairwise is ``sum V(i) - sum V(i & j)``
+   (inclusion-exclusion stops at pairs) with the closed forms of a ball lens
+   and a box overlap: a lattice of overlapping balls is exact. Otherwise the
+   operands of a union are grouped into clusters of overlapping boxes
+   (connected components of the overlap graph, found with an R-tree): the
+   union is the sum of its clusters. ``P - Q1 - ... - Qn`` is
+   ``V(P) - sum V(P & C)`` over the clusters ``C`` of the ``Qi`` that meet
+   ``P``, each ``P & C`` keeping only the leaves of ``P`` whose boxes meet
+   ``C``'s. Each part is a closed form or splits again (a work list, no
+   recursion), or is integrated on its own, with its own breakpoints; the
+   adaptive rule's ``tol`` then holds for each part.
+3. **Integration over sections.** The axis is split at every leaf's
    breakpoints (its extent, the heights of its vertices and end centres), so
    that no leaf starts, ends or turns a corner inside a piece. Each piece
    keeps only the leaves present in it (:meth:`Program.prune`):
@@ -48,8 +60,8 @@ from numpy.typing import ArrayLike, NDArray
 
 from .._validation import integer, nonzero_vector3, scalar
 from ..errors import InvalidParameterError
-from ..geometry.primitives import Box, ConvexPolyhedron, Solid
-from .program import OP_DIFFERENCE, OP_LEAF, OP_UNION, Program
+from ..geometry.primitives import Box, ConvexPolyhedron, Solid, Sphere
+from .program import OP_DIFFERENCE, OP_INTERSECTION, OP_LEAF, OP_UNION, Program, _make
 from .section import combine_sections, leaf_sections, leaf_table, plane_frame, solid_program
 
 __all__ = ["volume", "section_areas", "breakpoints", "closed_form_volume"]
@@ -233,11 +245,16 @@ def _disjoint_boxes(lo: NDArray[np.float64], hi: NDArray[np.float64]) -> bool:
         ov = np.all((lo[:, None, :] < hi[None, :, :]) & (lo[None, :, :] < hi[:, None, :]), axis=2)
         np.fill_diagonal(ov, False)
         return not ov.any()
-    tree = shapely.STRtree(shapely.box(lo[:, 0], lo[:, 1], hi[:, 0], hi[:, 1]))
-    i, j = tree.query(shapely.box(lo[:, 0], lo[:, 1], hi[:, 0], hi[:, 1]))
-    sel = i != j
-    i, j = i[sel], j[sel]
-    return not np.any(np.all((lo[i] < hi[j]) & (lo[j] < hi[i]), axis=1))
+    rects = shapely.box(lo[:, 0], lo[:, 1], hi[:, 0], hi[:, 1])
+    tree = shapely.STRtree(rects)
+    for start in range(0, n, 1024):  # in chunks: an overlapping set usually shows it in the first
+        i, j = tree.query(rects[start : start + 1024])
+        i = i + start
+        sel = i != j
+        i, j = i[sel], j[sel]
+        if np.any(np.all((lo[i] < hi[j]) & (lo[j] < hi[i]), axis=1)):
+            return False
+    return True
 
 
 def closed_form_volume(solid: Solid) -> float | None:
@@ -311,7 +328,23 @@ def _closed_form(prog: Program) -> float | None:
                 ok = bool(np.all(leaves[first[3]].contains(corners, tol=0.0)))
             vol = first[0] - sum(x[0] for x in rest) if ok else None
             return (vol, first[1], first[2], -1, k)
-        return (None, lo.max(axis=0), np.maximum(hi.min(axis=0), lo.max(axis=0)), -1, k)
+        box_lo, box_hi = lo.max(axis=0), np.maximum(hi.min(axis=0), lo.max(axis=0))
+        if len(xs) == 2 and xs[0][3] >= 0 and xs[1][3] >= 0:
+            p, q = leaves[xs[0][3]], leaves[xs[1][3]]
+            if isinstance(p, Sphere) and isinstance(q, Sphere):  # a lens
+                d = math.dist(p.center, q.center)
+                lens = _lens(np.array(p.radius), np.array(q.radius), np.array(d))
+                return (float(lens), box_lo, box_hi, -1, k)
+        # an operand whose box lies inside every other operand, each a (convex) primitive, is the result
+        small = int(np.argmin(np.prod(hi - lo, axis=1)))
+        x = xs[small]
+        others = [y for j, y in enumerate(xs) if j != small]
+        if x[0] is not None and all(y[3] >= 0 for y in others):
+            signs = np.array([[a, b, c] for a in (0, 1) for b in (0, 1) for c in (0, 1)], dtype=bool)
+            corners = np.where(signs, x[2], x[1])
+            if all(np.all(leaves[y[3]].contains(corners, tol=0.0)) for y in others):
+                return (x[0], x[1], x[2], x[3], k)
+        return (None, box_lo, box_hi, -1, k)
 
     v = prog.evaluate(leaf, combine)[0]
     return None if v is None else max(float(v), 0.0)
@@ -389,7 +422,8 @@ def volume(
     """Volume of a primitive or CSG tree: closed forms, else exact-area sections.
 
     See the module docstring for the method. Closed-form trees (primitives,
-    disjoint unions, differences of disjoint solids inside a convex one) and
+    disjoint unions, differences of disjoint solids inside a convex one,
+    unions of spheres or boxes of which no three overlap pairwise) and
     trees whose section areas are piecewise polynomials of degree <= 5 along
     ``axis`` (prisms along it, spheres, cones and cylinders along it, nested
     or disjoint) come out exact to rounding; elsewhere the adaptive rule
@@ -407,8 +441,10 @@ def volume(
         Polygon vertices per full circle; overrides the choice from ``tol``
         (94 at the default ``tol``, 436 at 1e-6).
     progress : callable, optional
-        Called as ``progress(done, total)`` after each piece of the axis and
-        while the adaptive rule refines (``total`` then grows).
+        Called as ``progress(done, total)``: after each integrated part when
+        the tree splits into several (``total`` parts), else after each piece
+        of the axis and while the adaptive rule refines (``total`` then
+        grows); the last call has ``done == total``.
 
     Returns
     -------
@@ -441,14 +477,35 @@ def volume(
         res = integer("resolution", resolution, low=8, high=1_000_000, error=InvalidParameterError)
     w = _unit(axis)
     prog = solid_program(solid)
-    exact = _closed_form(prog)
-    if exact is None:
-        exact = _prism_minus_disjoint_prisms(prog, w, res)
-    if exact is not None:
-        if progress is not None:
-            progress(1, 1)
-        return exact
-    return _integrate(prog, w, tol_, res, progress)
+    # a work list (no recursion): each program is a closed form, splits into signed parts, or is
+    # integrated; the integrals run last so that progress can count them
+    total = 0.0
+    work: list[tuple[Program, float]] = [(prog, 1.0)]
+    integrals: list[tuple[Program, float]] = []
+    while work:
+        p, sign = work.pop()
+        exact = _closed_form(p)
+        if exact is None:
+            exact = _prism_minus_disjoint_prisms(p, w, res)
+        if exact is None:
+            exact = _pairwise_union(p)
+        if exact is not None:
+            total += sign * exact
+            continue
+        parts = _split(p)
+        if parts is None:
+            integrals.append((p, sign))
+        else:
+            work.extend((q, sign * s) for q, s in parts)
+    m = len(integrals)
+    for k, (p, sign) in enumerate(integrals):
+        inner = progress if m == 1 else None
+        total += sign * _integrate(p, w, tol_, res, inner)
+        if progress is not None and m > 1:
+            progress(k + 1, m)
+    if progress is not None and m == 0:
+        progress(1, 1)
+    return max(float(total), 0.0)
 
 
 def _prism_minus_disjoint_prisms(prog: Program, w: NDArray[np.float64], res: int) -> float | None:
@@ -605,3 +662,184 @@ def _integrate(
         progress(n_pieces + splits, n_pieces + splits)
     # re-add the accepted values exactly (the running sum drifts by rounding)
     return float(max(exact_total + sum(item[4] for item in heap), 0.0))
+
+
+# ----------------------------------------------------------------------------- splitting a program into parts
+
+
+def _operand_spans(prog: Program) -> list[tuple[int, int, int, int]]:
+    """``(first instruction, last instruction + 1, first leaf, last leaf + 1)`` of each root operand.
+
+    Leaves are numbered in the order of their instructions, so each operand's leaves are a run."""
+    n = len(prog.op)
+    op, arg = prog.op, prog.arg
+    if n == 0 or op[-1] == OP_LEAF:
+        return []
+    # stack of subtree starts, one pass
+    starts: list[int] = []
+    for k, (o, a) in enumerate(zip(op[:-1].tolist(), arg[:-1].tolist())):
+        if o == OP_LEAF:
+            starts.append(k)
+        else:
+            s = starts[len(starts) - a]
+            del starts[len(starts) - a :]
+            starts.append(s)
+    ends = starts[1:] + [n - 1]
+    leaf_before = np.concatenate([[0], np.cumsum(op == OP_LEAF)])
+    return [(s, e, int(leaf_before[s]), int(leaf_before[e])) for s, e in zip(starts, ends)]
+
+
+def _slice(prog: Program, spans: list[tuple[int, int, int, int]], root: int) -> Program:
+    """The program of the given root operands joined by ``root`` (one operand: itself)."""
+    ops, args, leaves = [], [], []
+    for s, e, l0, l1 in spans:
+        o = prog.op[s:e]
+        a = prog.arg[s:e].copy()
+        a[o == OP_LEAF] += len(leaves) - l0
+        ops.append(o)
+        args.append(a)
+        leaves.extend(prog.leaves[l0:l1])
+    if len(spans) > 1:
+        ops.append(np.array([root], np.int8))
+        args.append(np.array([len(spans)], np.int64))
+    return _make(tuple(leaves), np.concatenate(ops).astype(np.int8), np.concatenate(args).astype(np.int64))
+
+
+def _overlap_pairs(lo: NDArray[np.float64], hi: NDArray[np.float64]) -> tuple[NDArray[np.int64], NDArray[np.int64]]:
+    """Pairs ``i < j`` of boxes that overlap with positive volume (an R-tree in xy, then z)."""
+    n = len(lo)
+    if n < 2:
+        return np.zeros(0, np.int64), np.zeros(0, np.int64)
+    rects = shapely.box(lo[:, 0], lo[:, 1], hi[:, 0], hi[:, 1])
+    a, b = shapely.STRtree(rects).query(rects)
+    keep = a < b
+    a, b = a[keep], b[keep]
+    ok = np.all((lo[a] < hi[b]) & (lo[b] < hi[a]), axis=1)
+    a, b = a[ok], b[ok]
+    return np.minimum(a, b), np.maximum(a, b)
+
+
+def _clusters(n: int, i: NDArray[np.int64], j: NDArray[np.int64]) -> list[NDArray[np.int64]]:
+    """Connected components of the graph on ``n`` nodes with edges ``(i, j)`` (ascending members)."""
+    from scipy.sparse import coo_matrix
+    from scipy.sparse.csgraph import connected_components
+
+    g = coo_matrix((np.ones(len(i)), (i, j)), shape=(n, n))
+    _, label = connected_components(g, directed=False)
+    order = np.argsort(label, kind="stable")
+    cuts = np.nonzero(np.diff(label[order]))[0] + 1
+    return np.split(order, cuts)
+
+
+def _split(prog: Program) -> list[tuple[Program, float]] | None:
+    """Parts whose signed volumes add up to the program's, or None when it does not split.
+
+    - a union whose operands fall into several clusters of overlapping boxes is the sum of the
+      clusters' unions (they meet in sets of zero volume);
+    - ``P - Q1 - ... - Qn`` is ``V(P) - sum V(P & C)`` over the clusters ``C`` (unions) of the
+      ``Qi`` that meet ``P``'s box, when there are several; each ``P & C`` keeps only the leaves
+      of ``P`` whose boxes meet ``C``'s (elsewhere in ``C`` they are absent).
+    """
+    root = int(prog.op[-1]) if len(prog.op) else OP_LEAF
+    if root not in (OP_UNION, OP_DIFFERENCE):
+        return None
+    spans = _operand_spans(prog)
+    subs = [_slice(prog, [sp], root) for sp in spans]
+    if root == OP_UNION:  # A | A = A: equal operands once
+        keys = [(q.op.tobytes(), q.arg.tobytes(), q.leaves) for q in subs]
+        first_of = dict(zip(reversed(keys), reversed(range(len(keys)))))
+        if len(first_of) < len(keys):
+            kept = sorted(first_of.values())
+            return [(_slice(prog, [spans[k] for k in kept], OP_UNION), 1.0)]
+    boxes = np.array([s.bounds() for s in subs])  # (m, 2, 3)
+    if root == OP_UNION:
+        groups = _clusters(len(subs), *_overlap_pairs(boxes[:, 0], boxes[:, 1]))
+        if len(groups) < 2:
+            return None
+        return [(_slice(prog, [spans[k] for k in g.tolist()], OP_UNION), 1.0) for g in groups]
+    first, pbox = subs[0], boxes[0]
+    rest = 1 + np.nonzero(np.all((boxes[1:, 0] < pbox[1]) & (boxes[1:, 1] > pbox[0]), axis=1))[0]
+    if not len(rest):
+        return [(first, 1.0)]
+    groups = _clusters(len(rest), *_overlap_pairs(boxes[rest, 0], boxes[rest, 1]))
+    if len(groups) < 2:
+        return None
+    pleaf = _boxes(first)
+    presents = []
+    for g in groups:
+        members = rest[g]
+        clo, chi = boxes[members, 0].min(axis=0), boxes[members, 1].max(axis=0)
+        presents.append(np.all((pleaf[:, 0] < chi) & (pleaf[:, 1] > clo), axis=1))
+    # when most of P meets every cluster (an intersection of many balls, dimpled all over), the
+    # parts would repeat P's leaves once per cluster: integrating the whole is cheaper
+    if sum(int(p.sum()) for p in presents) > 4 * len(prog.leaves):
+        return None
+    parts: list[tuple[Program, float]] = [(first, 1.0)]
+    for g, present in zip(groups, presents):
+        members = rest[g]
+        pruned = first.prune(present) if present.any() else None
+        if pruned is None:
+            continue
+        cut = _slice(prog, [spans[k] for k in members.tolist()], OP_UNION)
+        both = (pruned[0], cut)
+        op = np.concatenate([both[0].op, cut.op, [OP_INTERSECTION]]).astype(np.int8)
+        arg = np.concatenate([both[0].arg, cut.arg + np.where(cut.op == OP_LEAF, len(both[0].leaves), 0), [2]])
+        parts.append((_make(both[0].leaves + cut.leaves, op, arg.astype(np.int64)), -1.0))
+    return parts
+
+
+def _lens(r1: NDArray[np.float64], r2: NDArray[np.float64], d: NDArray[np.float64]) -> NDArray[np.float64]:
+    """Volume of the intersection of two balls of radii ``r1``, ``r2`` with centres ``d`` apart."""
+    small = 4.0 / 3.0 * math.pi * np.minimum(r1, r2) ** 3
+    dd = np.maximum(d, 1e-300)
+    lens = math.pi * (r1 + r2 - d) ** 2 * (d * d + 2 * d * (r1 + r2) - 3 * (r1 - r2) ** 2) / (12 * dd)
+    return np.where(d <= np.abs(r1 - r2), small, np.where(d >= r1 + r2, 0.0, lens))
+
+
+def _pairwise_union(prog: Program) -> float | None:
+    """A union of spheres, or of axis-aligned boxes, in which no three leaves overlap pairwise:
+    ``sum V(i) - sum V(i & j)`` exactly (inclusion-exclusion stops at pairs, since every triple
+    meets in zero volume), with the closed forms of a ball lens and a box overlap. None otherwise."""
+    n = len(prog.leaves)
+    if n < 2 or prog.op[-1] != OP_UNION or int(prog.arg[-1]) != n or np.any(prog.op[:-1] != OP_LEAF):
+        return None
+    tab = leaf_table(prog)
+    kind = tab.kind
+    if not (np.all(kind == 0) or np.all(kind == 2)):
+        return None
+    distinct = list(dict.fromkeys(prog.leaves))  # A | A = A
+    if len(distinct) < n:
+        if len(distinct) == 1:
+            return float(distinct[0].volume)
+        n = len(distinct)
+        op = np.zeros(n + 1, np.int8)
+        arg = np.arange(n + 1, dtype=np.int64)
+        op[-1], arg[-1] = OP_UNION, n
+        prog = _make(tuple(distinct), op, arg)
+        tab = leaf_table(prog)
+    boxes = _boxes(prog)
+    i, j = _overlap_pairs(boxes[:, 0], boxes[:, 1])
+    if np.all(kind == 0):
+        d = np.linalg.norm(tab.center[i] - tab.center[j], axis=1)
+        r1, r2 = tab.radius[i], tab.radius[j]
+        keep = d < r1 + r2
+        i, j = i[keep], j[keep]
+        vols = 4.0 / 3.0 * math.pi * tab.radius**3
+        pair = _lens(r1[keep], r2[keep], d[keep])
+    else:
+        vols = np.prod(boxes[:, 1] - boxes[:, 0], axis=1)
+        pair = np.prod(np.minimum(boxes[i, 1], boxes[j, 1]) - np.maximum(boxes[i, 0], boxes[j, 0]), axis=1)
+    if len(i) and _has_triangle(n, i, j):
+        return None
+    return max(float(np.sum(vols) - np.sum(pair)), 0.0)
+
+
+def _has_triangle(n: int, i: NDArray[np.int64], j: NDArray[np.int64]) -> bool:
+    """True when some edge's ends share a neighbour (the graph on ``n`` nodes has a triangle)."""
+    from scipy.sparse import csr_matrix
+
+    a = csr_matrix((np.ones(len(i)), (i, j)), shape=(n, n))
+    a = a + a.T
+    a.data[:] = 1.0
+    common = a[i].multiply(a[j]).sum(axis=1)  # neighbours shared by the ends of each edge
+    return bool(np.any(np.asarray(common) > 0))
