@@ -25,7 +25,10 @@ from numpy.typing import NDArray
 
 from ..csg.tree import CSGNode, Difference, Intersection, Union
 from ..errors import InvalidParameterError
+from ..geometry.ellipsoid import Ellipsoid
+from ..geometry.elliptic import EllipticTruncus
 from ..geometry.primitives import Box, ConvexPolyhedron, Solid, Sphere, Truncus
+from ..geometry.registry import hook_for
 
 __all__ = ["dumps_openscad", "save_openscad"]
 
@@ -75,44 +78,65 @@ def _translated(center: NDArray[np.float64], body: str) -> str:
 
 
 def _leaf(solid: Solid) -> str:
-    """One primitive as an OpenSCAD statement."""
-    if isinstance(solid, Sphere):
-        return _translated(np.asarray(solid.center), f"sphere(r = {_num(solid.radius)});")
-    if isinstance(solid, Truncus):
-        # OpenSCAD's r1 is at z = 0, the truncus' r1 at center + axis / 2: the cylinder's +z runs along the axis.
-        body = f"cylinder(h = {_num(solid.height)}, r1 = {_num(solid.r2)}, r2 = {_num(solid.r1)}, center = true);"
-        axis = np.asarray(solid.axis, dtype=np.float64)
-        if axis[0] == 0 and axis[1] == 0 and axis[2] > 0:
-            return _translated(np.asarray(solid.center), body)
-        return f"multmatrix({_mat(_frame(axis, np.asarray(solid.center)))}) {{ {body} }}"
-    if isinstance(solid, Box):
-        body = f"cube(size = {_vec(solid.size)}, center = true);"
-        if getattr(solid, "axis_aligned", True):
-            return _translated(np.asarray(solid.center), body)
-        m = np.eye(4)
-        m[:3, :3] = np.asarray(solid.orientation, dtype=np.float64)  # columns: the box's own axes
-        m[:3, 3] = solid.center
-        return f"multmatrix({_mat(m)}) {{ {body} }}"
-    kind = getattr(solid, "kind", "")
-    if kind == "ellipsoid":
-        # The unit sphere mapped by orientation x diag(radii), then moved to the centre.
-        m = np.eye(4)
-        m[:3, :3] = np.asarray(solid.orientation, dtype=np.float64) * np.asarray(solid.radii, dtype=np.float64)
-        m[:3, 3] = solid.center
-        return f"multmatrix({_mat(m)}) {{ sphere(r = 1); }}"
-    if kind == "elliptic_truncus" or (hasattr(solid, "matrix") and hasattr(solid, "r1")):
-        # The canonical truncus (unit height along z, E1 of radius r1 at z = +1/2) mapped by `matrix`.
-        m = np.eye(4)
-        m[:3, :3] = np.asarray(solid.matrix, dtype=np.float64)
-        m[:3, 3] = solid.center
-        body = f"cylinder(h = 1, r1 = {_num(solid.r2)}, r2 = {_num(solid.r1)}, center = true);"
-        return f"multmatrix({_mat(m)}) {{ {body} }}"
-    if isinstance(solid, ConvexPolyhedron):
-        pts = ", ".join(_vec(p) for p in solid.hull_vertices)
-        # OpenSCAD wants each face clockwise seen from outside; isocsg's are counter-clockwise.
-        faces = ", ".join("[" + ", ".join(str(int(i)) for i in reversed(f)) + "]" for f in solid.faces)
-        return f"polyhedron(points = [{pts}], faces = [{faces}]);"
-    raise InvalidParameterError(f"save_openscad: cannot write a {type(solid).__name__} (kind {getattr(solid, 'kind', '?')!r})")
+    """One primitive as an OpenSCAD statement, through its kind's ``openscad`` hook."""
+    hook = hook_for(solid, "openscad")
+    if hook is None:
+        raise InvalidParameterError(f"save_openscad: cannot write a {type(solid).__name__} (kind {getattr(solid, 'kind', '?')!r})")
+    return hook(solid)  # type: ignore[no-any-return]
+
+
+# ----------------------------------------------------------------------------- the built-in kinds' hooks
+
+
+def sphere_scad(solid: Sphere) -> str:
+    """``sphere(r)``, moved to the centre."""
+    return _translated(np.asarray(solid.center), f"sphere(r = {_num(solid.radius)});")
+
+
+def truncus_scad(solid: Truncus) -> str:
+    """A centred ``cylinder(h, r1, r2)`` turned onto the axis and moved."""
+    # OpenSCAD's r1 is at z = 0, the truncus' r1 at center + axis / 2: the cylinder's +z runs along the axis.
+    body = f"cylinder(h = {_num(solid.height)}, r1 = {_num(solid.r2)}, r2 = {_num(solid.r1)}, center = true);"
+    axis = np.asarray(solid.axis, dtype=np.float64)
+    if axis[0] == 0 and axis[1] == 0 and axis[2] > 0:
+        return _translated(np.asarray(solid.center), body)
+    return f"multmatrix({_mat(_frame(axis, np.asarray(solid.center)))}) {{ {body} }}"
+
+
+def box_scad(solid: Box) -> str:
+    """A centred ``cube(size)``, turned by the orientation and moved."""
+    body = f"cube(size = {_vec(solid.size)}, center = true);"
+    if solid.axis_aligned:
+        return _translated(np.asarray(solid.center), body)
+    m = np.eye(4)
+    m[:3, :3] = np.asarray(solid.orientation, dtype=np.float64)  # columns: the box's own axes
+    m[:3, 3] = solid.center
+    return f"multmatrix({_mat(m)}) {{ {body} }}"
+
+
+def ellipsoid_scad(solid: Ellipsoid) -> str:
+    """The unit sphere mapped by orientation x diag(radii), then moved to the centre."""
+    m = np.eye(4)
+    m[:3, :3] = np.asarray(solid.orientation, dtype=np.float64) * np.asarray(solid.radii, dtype=np.float64)
+    m[:3, 3] = solid.center
+    return f"multmatrix({_mat(m)}) {{ sphere(r = 1); }}"
+
+
+def elliptic_truncus_scad(solid: EllipticTruncus) -> str:
+    """The canonical truncus (unit height along z, E1 of radius r1 at z = +1/2) mapped by ``matrix``."""
+    m = np.eye(4)
+    m[:3, :3] = np.asarray(solid.matrix, dtype=np.float64)
+    m[:3, 3] = solid.center
+    body = f"cylinder(h = 1, r1 = {_num(solid.r2)}, r2 = {_num(solid.r1)}, center = true);"
+    return f"multmatrix({_mat(m)}) {{ {body} }}"
+
+
+def polyhedron_scad(solid: ConvexPolyhedron) -> str:
+    """``polyhedron(points, faces)`` of the hull."""
+    pts = ", ".join(_vec(p) for p in solid.hull_vertices)
+    # OpenSCAD wants each face clockwise seen from outside; isocsg's are counter-clockwise.
+    faces = ", ".join("[" + ", ".join(str(int(i)) for i in reversed(f)) + "]" for f in solid.faces)
+    return f"polyhedron(points = [{pts}], faces = [{faces}]);"
 
 
 def dumps_openscad(solid: Solid) -> str:
