@@ -10,9 +10,13 @@ OpenSCAD's flattened export (``multmatrix``,
 program. Numbers are written with ``repr`` (the shortest text that reads back
 to the same float), so that round trip keeps every bit.
 
-OpenSCAD 2021 itself prints at most 6 significant digits when it exports
-``.csg``; a model that goes through ``openscad`` keeps its numbers to that
-precision only (see the README's OpenSCAD section).
+OpenSCAD 2021 itself prints every number of its ``.csg`` export with 6
+significant digits, but keeps nested ``multmatrix`` nodes. With ``digits``
+(what :func:`save_openscad` uses for ``.scad`` files) every number has at
+most that many digits and the exact values are composed from them, so that
+the model comes through ``openscad`` as the same solid (see
+:func:`dumps_openscad` and the README's OpenSCAD section). Each kind's
+statement comes from its registered ``openscad`` hook.
 """
 
 from __future__ import annotations
