@@ -29,7 +29,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from ..csg.tree import CSGNode, Difference, Intersection, Union
-from ..errors import InvalidParameterError
+from ..errors import InvalidGeometryError, InvalidParameterError
 from ..geometry.ellipsoid import Ellipsoid
 from ..geometry.elliptic import EllipticTruncus
 from ..geometry.primitives import Box, ConvexPolyhedron, Solid, Sphere, Truncus
@@ -286,12 +286,23 @@ def elliptic_truncus_scad(solid: EllipticTruncus, digits: int | None = None) -> 
 
 
 def polyhedron_scad(solid: ConvexPolyhedron, digits: int | None = None) -> str:
-    """``polyhedron(points, faces)`` of the hull (with ``digits``, each coordinate rounded to them:
-    no map of few digits can place every vertex of a general polyhedron)."""
-    if digits is None:
-        pts = ", ".join(_vec(p) for p in solid.hull_vertices)
-    else:
-        pts = ", ".join("[" + ", ".join(_num_sig(x, digits) for x in p) + "]" for p in solid.hull_vertices)
+    """``polyhedron(points, faces)`` of the hull.
+
+    With ``digits``: the points about the centre of the bounds (placed exactly, by nested
+    translations), each coordinate rounded to ``digits``, and the faces of the hull of the
+    rounded points, so that the file stays a convex polyhedron. No map of few digits can place
+    every vertex of a general polyhedron: its volume keeps about ``digits`` digits.
+    """
+    if digits is not None:
+        lo, hi = solid.bounds
+        c = np.array([_round_sig(v, digits) for v in 0.5 * (lo + hi)])
+        local = np.vectorize(lambda v: _round_sig(v, digits))(np.asarray(solid.hull_vertices) - c)
+        try:
+            rounded = ConvexPolyhedron(local)
+        except InvalidGeometryError:  # pragma: no cover - rounding flattened a sliver
+            rounded = ConvexPolyhedron(np.asarray(solid.hull_vertices) - c)
+        return _encoded(polyhedron_scad(rounded), np.eye(3), c, digits)
+    pts = ", ".join(_vec(p) for p in solid.hull_vertices)
     # OpenSCAD wants each face clockwise seen from outside; isocsg's are counter-clockwise.
     faces = ", ".join("[" + ", ".join(str(int(i)) for i in reversed(f)) + "]" for f in solid.faces)
     return f"polyhedron(points = [{pts}], faces = [{faces}]);"
