@@ -288,20 +288,26 @@ def elliptic_truncus_scad(solid: EllipticTruncus, digits: int | None = None) -> 
 def polyhedron_scad(solid: ConvexPolyhedron, digits: int | None = None) -> str:
     """``polyhedron(points, faces)`` of the hull.
 
-    With ``digits``: the points about the centre of the bounds (placed exactly, by nested
-    translations), each coordinate rounded to ``digits``, and the faces of the hull of the
-    rounded points, so that the file stays a convex polyhedron. No map of few digits can place
+    With ``digits``: the points in the frame of the polyhedron's principal axes scaled to its
+    extents (the frame written exactly, as any map), each coordinate rounded to ``digits``, and
+    the faces of the hull of the rounded points, so that the file stays a convex polyhedron. No map of few digits can place
     every vertex of a general polyhedron: its volume keeps about ``digits`` digits.
     """
     if digits is not None:
+        # in the frame of its principal axes, scaled to its extents: every coordinate is O(1), so
+        # that rounding it moves the vertex by the same small fraction of the size in every direction
+        v = np.asarray(solid.hull_vertices, dtype=np.float64)
         lo, hi = solid.bounds
-        c = np.array([_round_sig(v, digits) for v in 0.5 * (lo + hi)])
-        local = np.vectorize(lambda v: _round_sig(v, digits))(np.asarray(solid.hull_vertices) - c)
+        c = np.array([_round_sig(x, digits) for x in 0.5 * (lo + hi)])
+        _, _, axes = np.linalg.svd(v - v.mean(axis=0))
+        half = np.ptp((v - c) @ axes.T, axis=0) / 2
+        L = axes.T * half
+        local = np.vectorize(lambda x: _round_sig(x, digits))(np.linalg.solve(L, (v - c).T).T)
         try:
             rounded = ConvexPolyhedron(local)
         except InvalidGeometryError:  # pragma: no cover - rounding flattened a sliver
-            rounded = ConvexPolyhedron(np.asarray(solid.hull_vertices) - c)
-        return _encoded(polyhedron_scad(rounded), np.eye(3), c, digits)
+            rounded = ConvexPolyhedron(np.linalg.solve(L, (v - c).T).T)
+        return _encoded(polyhedron_scad(rounded), L, c, digits)
     pts = ", ".join(_vec(p) for p in solid.hull_vertices)
     # OpenSCAD wants each face clockwise seen from outside; isocsg's are counter-clockwise.
     faces = ", ".join("[" + ", ".join(str(int(i)) for i in reversed(f)) + "]" for f in solid.faces)
