@@ -21,6 +21,7 @@ statement comes from its registered ``openscad`` hook.
 
 from __future__ import annotations
 
+import functools
 import math
 import os
 from pathlib import Path
@@ -118,6 +119,7 @@ def _split_sum(x: NDArray[np.float64], d: int, terms: int = 3) -> list[NDArray[n
     return out
 
 
+@functools.lru_cache(maxsize=4096)
 def _split_product(x: float, d: int) -> tuple[float, float]:
     """Two ``d``-digit numbers whose product is ``x`` to about ``10**(2 - 2 d)`` relative.
 
@@ -185,7 +187,7 @@ def _encoded(body: str, L: NDArray[np.float64], t: NDArray[np.float64], d: int) 
         # what the rounded factors leave on the diagonal
         diag = np.diag(np.linalg.solve(L6 @ lower, L) @ np.linalg.inv(upper)).copy()
         linear += [L6, lower]
-    ab = [_split_product(float(v), d) for v in diag]
+    ab = [_split_product(float(v), d) for v in diag]  # (10**(d-1) tries each; equal sizes are cached)
     linear += [np.diag([a for a, _ in ab]), np.diag([b for _, b in ab])]
     if upper is not None:
         linear.append(upper)
