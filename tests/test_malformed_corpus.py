@@ -916,6 +916,9 @@ API_CASES += [
                                                                   resolution=10**6), P, ("resolution",)),
     ("render-lights-x-contours", lambda: isocsg.render(_scene(lights=[isocsg.PointLight((k, -4, 5)) for k in range(8)]), contours=512),
      P, ("contours", "1024")),
+    ("dumps_openscad-digits-three", lambda: isocsg.dumps_openscad(isocsg.Sphere((0, 0, 0), 1), digits=3), P, ("digits",)),
+    ("dumps_openscad-digits-string", lambda: isocsg.dumps_openscad(isocsg.Sphere((0, 0, 0), 1), digits="6"), P, ("digits",)),
+    ("dumps_openscad-digits-bool", lambda: isocsg.dumps_openscad(isocsg.Sphere((0, 0, 0), 1), digits=True), P, ("digits",)),
 ]
 
 # Cases that need a change in a module another change owns; they pass once it lands.

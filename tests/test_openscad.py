@@ -10,9 +10,11 @@ from __future__ import annotations
 import math
 import re
 import shutil
+import subprocess
 import warnings
 
 import numpy as np
+import shapely
 import pytest
 
 import isocsg
@@ -359,19 +361,84 @@ def test_round_trip_keeps_the_volume(name: str, tmp_path) -> None:
     assert np.allclose(back.bounds, solid.bounds, rtol=0, atol=1e-12)
 
 
+def _significant_digits(token: str) -> int:
+    """Significant digits of a decimal token (trailing zeros of an integer count: 120000 is 6)."""
+    mantissa = token.lstrip("-").split("e")[0]
+    digits = mantissa.replace(".", "").lstrip("0")
+    return len(digits.rstrip("0")) if "." in mantissa else len(digits)
+
+
+@pytest.mark.parametrize("name", list(ROUND_TRIP), ids=str)
+def test_six_digit_form_keeps_the_volume(name: str) -> None:
+    """digits=6: no number longer than OpenSCAD 2021's .csg export prints, the same solid."""
+    solid = ROUND_TRIP[name]
+    text = dumps_openscad(solid, digits=6)
+    numbers = re.findall(r"(?<![\w.])-?(?:\d+\.?\d*|\.\d+)(?:e[-+]?\d+)?", text)
+    assert numbers and max(_significant_digits(t) for t in numbers) <= 6
+    # what OpenSCAD prints of each number (%g, 6 digits) is the number written
+    assert all(float(f"{float(t):.6g}") == float(t) for t in numbers)
+    back = loads_openscad(text)
+    assert volume(back) == pytest.approx(volume(solid), rel=1e-9)
+    scale = float(np.abs(solid.bounds).max())
+    assert np.allclose(back.bounds, solid.bounds, rtol=0, atol=1e-10 * scale)
+
+
+def test_six_digit_form_keeps_kinds_where_the_map_allows() -> None:
+    """Spheres, axis-aligned boxes, ellipsoids and (turned) trunci come back as their kind."""
+    from isocsg import Ellipsoid
+
+    for name, kind in (("sphere", Sphere), ("box", Box), ("ellipsoid", Ellipsoid), ("tilted frustum", Truncus)):
+        back = loads_openscad(dumps_openscad(ROUND_TRIP[name], digits=6))
+        assert isinstance(back, kind), (name, back)
+
+
+POLYHEDRAL = {
+    # faces of four corners: rounding each coordinate to 6 digits leaves them planar only to 5e-7
+    "sheared box far off": Box((0, 0, 0), (1.4, 0.9, 0.6)).transform(
+        [[0.9, 0.5, 0.3, 1234.5], [-0.2, 1.1, 0.4, -3.3], [0.1, -0.3, 1.2, 0.1], [0, 0, 0, 1]]),
+    "prism": isocsg.extrude(shapely.Polygon([(0, 0), (1 / 3, 0), (0.4, 2 / 7), (0, math.pi / 5)]), 0.7).rotate((10, 20, 30)),
+}
+
+
+@pytest.mark.parametrize("name", list(POLYHEDRAL), ids=str)
+def test_six_digit_polyhedra_stay_convex(name: str, tmp_path) -> None:
+    """A convex polyhedron keeps 6 digits of its vertices (no short map places them all): the
+    loader judges flatness to that precision, so the rounded file is still a convex polyhedron."""
+    solid = POLYHEDRAL[name]
+    back = loads_openscad(dumps_openscad(solid, digits=6))
+    assert volume(back) == pytest.approx(volume(solid), rel=1e-5)
+    if shutil.which("openscad"):
+        back = isocsg.load_openscad(isocsg.save_openscad(solid, tmp_path / "m.scad"))
+        assert volume(back) == pytest.approx(volume(solid), rel=1e-5)
+
+
 @pytest.mark.skipif(shutil.which("openscad") is None, reason="the openscad program is not installed (apt install openscad)")
 @pytest.mark.parametrize("name", list(ROUND_TRIP), ids=str)
 def test_round_trip_through_openscad(name: str, tmp_path) -> None:
-    """solid -> .scad -> openscad's .csg -> solid: OpenSCAD 2021 prints 6 significant digits.
+    """solid -> .scad -> openscad's .csg -> solid keeps the volume to 1e-9.
 
-    Each number of the model comes back within a relative 5e-7, so the volume (a
-    product of at most a few such numbers and a determinant) within 1e-5.
+    OpenSCAD 2021 prints 6 significant digits in its .csg export; save_openscad writes
+    a .scad whose numbers have at most 6 (digits="auto"), composed so that the export is
+    still the solid (sums of nested translations, products of nested scales).
     """
     solid = ROUND_TRIP[name]
     back = isocsg.load_openscad(isocsg.save_openscad(solid, tmp_path / "m.scad"))
-    assert volume(back) == pytest.approx(volume(solid), rel=1e-5)
+    assert volume(back) == pytest.approx(volume(solid), rel=1e-9)
     scale = float(np.abs(solid.bounds).max())
-    assert np.allclose(back.bounds, solid.bounds, rtol=0, atol=2e-6 * scale)
+    assert np.allclose(back.bounds, solid.bounds, rtol=0, atol=1e-10 * scale)
+
+
+@pytest.mark.skipif(shutil.which("openscad") is None, reason="the openscad program is not installed (apt install openscad)")
+def test_openscad_export_prints_six_digits(tmp_path) -> None:
+    """Why the .scad form is written with short numbers: full-precision numbers lose digits."""
+    scad = tmp_path / "m.scad"
+    scad.write_text("multmatrix([[1, 0, 0, 0.123456789], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) "
+                    "cube(size = [0.3333333333333333, 1, 1]); sphere(r = 1.4142135623730951);")
+    out = tmp_path / "m.csg"
+    subprocess.run(["openscad", "-o", str(out), str(scad)], check=True, capture_output=True)
+    text = out.read_text()
+    assert "0.123457" in text and "0.333333" in text and "1.41421" in text
+    assert "0.123456789" not in text
 
 
 def test_writer_output_is_the_csg_subset() -> None:

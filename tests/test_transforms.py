@@ -358,6 +358,18 @@ def test_registry_table():
     assert kind_of(Cylinder((0, 0, 0), (0, 0, 1), 1)).name == "cylinder"  # by the class's inheritance
     assert kind_of(Ellipsoid((0, 0, 0), (1, 2, 3))).hook("section") is not None
     assert kind_named("elliptic_truncus").cls is EllipticTruncus
+    # every kind reaches a section, band surface, mesh and OpenSCAD form through the table,
+    # the built-in ones too; cylinders and cones through the truncus's registration
+    from isocsg.geometry.registry import hook_for
+
+    samples = [Sphere((0, 0, 0), 1), Truncus((0, 0, 0), (0, 0, 1), 1, 0.5), Cylinder((0, 0, 0), (0, 0, 1), 1),
+               Cone((0, 0, 0), (0, 0, 1), 1), Box((0, 0, 0), (1, 2, 3)), ConvexPolyhedron([(0, 0, 0), (1, 0, 0), (0, 1, 0), (0, 0, 1)]),
+               Ellipsoid((0, 0, 0), (1, 2, 3)), Cylinder((0, 0, 0), (0, 0, 1), 1).scale((2, 1, 1))]
+    for prim in samples:
+        for which in ("section", "surface", "manifold", "openscad"):
+            assert callable(hook_for(prim, which)), (type(prim).__name__, which)
+    assert hook_for(Cone((0, 0, 0), (0, 0, 1), 1), "distance") is kind_named("truncus").hook("distance")
+    assert hook_for(Ellipsoid((0, 0, 0), (1, 2, 3)), "laminae") is None  # no planar contours
     with pytest.raises(InvalidParameterError, match=re.escape("kind.name 'sphere' is already registered")):
         register_kind(PrimitiveKind("sphere", type("Other", (), {}), ("center",)))
     with pytest.raises(InvalidParameterError, match=re.escape("kind.cls Ellipsoid is already registered")):

@@ -6,7 +6,7 @@
   the compared pixels within 5 % of the exact image's range; the error shrinks with N.
 - Hypothesis-drawn transforms of every kind (derandomised under ``CI``;
   ``ISOCSG_SEARCH_EXAMPLES`` examples per kind for longer runs, as in
-  ``test_accuracy_random.py``).
+  ``test_accuracy_random.py``; ``ISOCSG_SEARCH_LOG=file`` appends one line per passing example).
 - Volumes and sections against closed forms (4/3 pi a b c, pi a b h, ellipses) and manifold3d.
 - Shadows of transformed occluders against the Monte Carlo estimator (``tests/mc_reference.py``).
 """
@@ -20,7 +20,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from hypothesis import HealthCheck, given, note, settings
+from hypothesis import HealthCheck, currently_in_test_context, given, note, settings
 from hypothesis import strategies as st
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
@@ -46,12 +46,20 @@ from isocsg.csg.mesh import to_manifold  # noqa: E402
 from isocsg.csg.section import section  # noqa: E402
 from isocsg.csg.volume import volume  # noqa: E402
 from reference import compare, comparison_mask, fraction_within, raycast_scene  # noqa: E402
+from reference.ties import silhouette_ties  # noqa: E402
 from scenes import render_image  # noqa: E402
 
 MIN_IOU = 0.99
 MIN_FRACTION = 0.98
+#: As in test_accuracy_random.py: a pixel centre whose exact hit flips when the camera moves by
+#: this fraction of a pixel is a tie (closer to the silhouette than the band mesh's chords can be
+#: judged), and at most MAX_TIE_FRACTION of a silhouette may be ties.
+TIE_PIXELS = 0.01
+MAX_TIE_FRACTION = 0.02
 CONTOURS = 64
 EXAMPLES = int(os.environ.get("ISOCSG_SEARCH_EXAMPLES", "6"))
+#: A file that gets one line per judged example (for counting a long search).
+LOG = os.environ.get("ISOCSG_SEARCH_LOG")
 SEARCH = settings(max_examples=EXAMPLES, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 
 
@@ -89,7 +97,14 @@ def judge(scene):
     ref = raycast_scene(scene)
     img = render_image(scene)
     result = compare(img, ref)
-    assert result.iou >= MIN_IOU, result.summary()
+    if result.iou < MIN_IOU:
+        # judged again without the pixel centres that lie on the silhouette to within TIE_PIXELS
+        ties = silhouette_ties(scene, tie_pixels=TIE_PIXELS)
+        a, b = np.isfinite(img) & ~ties, np.isfinite(ref.image) & ~ties
+        iou = float((a & b).sum() / max((a | b).sum(), 1))
+        if currently_in_test_context():
+            note(f"{int(ties.sum())} tie pixels; IoU without them {iou:.4f}")
+        assert ties.sum() <= MAX_TIE_FRACTION * result.hit_ref and iou >= MIN_IOU, result.summary()
     # (an image whose exact range is below float32 resolution is judged at a few float32 steps)
     assert fraction_within(img, ref, result) >= MIN_FRACTION, result.summary()
     return result
@@ -236,6 +251,26 @@ def test_random_transforms_match_reference(base, data):
     scene = scene_of(prim, lights, tuple(eye), material=mat, size=64)
     result = judge(scene)
     note(result.summary())
+    if LOG:
+        with open(LOG, "a") as fh:
+            fh.write(f"{base}\t{type(prim).__name__}\t{result.summary()}\n")
+
+
+def test_sphere_on_the_pixel_grid_differs_only_at_ties():
+    """Regression of the random search (seed 11): a turned and scaled sphere centred on the pixel
+    grid put 8 symmetric rim pixel centres 0.0019 px inside its exact silhouette, closer than the
+    band mesh's chords; the renderer leaves them out (IoU 0.9877). They are ties, not an error."""
+    A = [[0.6272525501756657, -0.00529561649310119, 0.016484169974241392],
+         [0.005473950076799328, 0.6274315080404763, -0.006728425095681311],
+         [-0.01642581152754394, 0.006869663723173071, 0.627238817000072]]
+    prim = BASES["sphere"].transform(affine(A))
+    assert isinstance(prim, Sphere)
+    lights = [DirectionalLight((1.6509686391750613e-38, -0.8011421113120464, 0.5984741577398949))]
+    scene = scene_of(prim, lights, (-2.7939567737776914, -2.7939567737776914, 2.0871589488784066), size=64)
+    img, ref = render_image(scene), raycast_scene(scene)
+    differ = np.isfinite(img) != np.isfinite(ref.image)
+    assert np.all(silhouette_ties(scene, tie_pixels=TIE_PIXELS)[differ])
+    judge(scene)
 
 
 # ----------------------------------------------------------------------------- volumes and sections

@@ -49,7 +49,7 @@ from numpy.typing import NDArray
 from ..errors import InvalidParameterError
 
 if TYPE_CHECKING:  # pragma: no cover
-    from ..geometry.primitives import Primitive
+    from ..geometry.primitives import Box, ConvexPolyhedron, Primitive, Sphere, Truncus
     from .program import Program
 
 __all__ = ["signed_distance", "default_tolerance", "check_tolerance", "contains_program"]
@@ -114,37 +114,55 @@ def signed_distance(prim: Primitive, points: NDArray[np.float64]) -> NDArray[np.
     >>> signed_distance(Cylinder((0, 0, 0), (0, 0, 2), 1), [[0.0, 0, 3], [0.5, 0, 0]]).tolist()
     [2.0, -0.5]
     """
-    from ..geometry.primitives import Box, ConvexPolyhedron, Sphere, Truncus
+    from ..geometry.registry import hook_for
 
     p = np.asarray(points, dtype=np.float64).reshape(-1, 3)
-    if isinstance(prim, Sphere):
-        d = p - prim.center_array
-        return np.sqrt(np.einsum("ij,ij->i", d, d)) - prim.radius
-    if isinstance(prim, Box):
-        q = np.abs(prim.to_local(p)) - prim.half_size
-        outside = np.sqrt(np.einsum("ij,ij->i", np.maximum(q, 0), np.maximum(q, 0)))
-        return outside + np.minimum(q.max(axis=1), 0.0)
-    if isinstance(prim, Truncus):
-        s, rho, _ = _truncus_meridian(prim, p)
-        h2, r1, r2 = prim.height / 2, prim.r1, prim.r2
-        length = math.hypot(2 * h2, r1 - r2)
-        side = (rho - prim.radius_at(s)) * (2 * h2) / length  # signed distance to the side line
-        inside_d = np.maximum(np.maximum(s - h2, -s - h2), side)
-        inside = inside_d <= 0.0
-        out = inside_d.copy()
-        if not inside.all():
-            o = ~inside
-            so, ro = s[o], rho[o]
-            d1 = _segment_distance(so, ro, h2, -r1, h2, r1)
-            d2 = _segment_distance(so, ro, -h2, -r2, -h2, r2)
-            d3 = _segment_distance(so, ro, -h2, r2, h2, r1)
-            out[o] = np.minimum(np.minimum(d1, d2), d3)
-        return out
-    if isinstance(prim, ConvexPolyhedron):
-        return (p @ prim.face_normals.T - prim.face_offsets).max(axis=1)
+    hook = hook_for(prim, "distance")
+    if hook is not None:
+        return hook(prim, p)  # type: ignore[no-any-return]
     if hasattr(prim, "signed_distance"):  # any other registered kind provides its own
-        return prim.signed_distance(p)
+        return prim.signed_distance(p)  # type: ignore[no-any-return]
     raise InvalidParameterError(f"signed_distance needs a primitive, got {type(prim).__name__}")  # pragma: no cover
+
+
+# ----------------------------------------------------------------------------- the built-in kinds' distances
+
+
+def sphere_distance(prim: Sphere, p: NDArray[np.float64]) -> NDArray[np.float64]:
+    """The sphere's registered distance hook: exact."""
+    d = p - prim.center_array
+    return np.sqrt(np.einsum("ij,ij->i", d, d)) - prim.radius  # type: ignore[no-any-return]
+
+
+def box_distance(prim: Box, p: NDArray[np.float64]) -> NDArray[np.float64]:
+    """The box's registered distance hook: exact, in its own frame."""
+    q = np.abs(prim.to_local(p)) - prim.half_size
+    outside = np.sqrt(np.einsum("ij,ij->i", np.maximum(q, 0), np.maximum(q, 0)))
+    return outside + np.minimum(q.max(axis=1), 0.0)  # type: ignore[no-any-return]
+
+
+def truncus_distance(prim: Truncus, p: NDArray[np.float64]) -> NDArray[np.float64]:
+    """The truncus's registered distance hook: exact, in the meridian half-plane."""
+    s, rho, _ = _truncus_meridian(prim, p)
+    h2, r1, r2 = prim.height / 2, prim.r1, prim.r2
+    length = math.hypot(2 * h2, r1 - r2)
+    side = (rho - prim.radius_at(s)) * (2 * h2) / length  # signed distance to the side line
+    inside_d = np.maximum(np.maximum(s - h2, -s - h2), side)
+    inside = inside_d <= 0.0
+    out = inside_d.copy()
+    if not inside.all():
+        o = ~inside
+        so, ro = s[o], rho[o]
+        d1 = _segment_distance(so, ro, h2, -r1, h2, r1)
+        d2 = _segment_distance(so, ro, -h2, -r2, -h2, r2)
+        d3 = _segment_distance(so, ro, -h2, r2, h2, r1)
+        out[o] = np.minimum(np.minimum(d1, d2), d3)
+    return out  # type: ignore[no-any-return]
+
+
+def polyhedron_distance(prim: ConvexPolyhedron, p: NDArray[np.float64]) -> NDArray[np.float64]:
+    """The convex polyhedron's registered distance hook: the largest face-plane distance."""
+    return (p @ prim.face_normals.T - prim.face_offsets).max(axis=1)  # type: ignore[no-any-return]
 
 
 def check_tolerance(name: str, tol: float | None, default: float) -> float:
@@ -177,6 +195,9 @@ def default_tolerance(boxes: NDArray[np.float64]) -> float:
 # ----------------------------------------------------------------------------- tangent cones
 
 
+_Cone = tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.bool_]]
+
+
 def _tangent_constraints(
     prim: Primitive, p: NDArray[np.float64], tol: float
 ) -> tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.bool_]]:
@@ -185,50 +206,65 @@ def _tangent_constraints(
     Returns ``V (m, c, 3)``, ``C (m, c)`` and ``valid (m, c)``: direction u is
     inside the cone when ``V[i, j] . u < C[i, j]`` for every valid j.
     """
-    from ..geometry.primitives import Box, ConvexPolyhedron, Sphere, Truncus
+    from ..geometry.registry import hook_for
 
-    m = len(p)
-    if isinstance(prim, Sphere):
-        d = p - prim.center_array
-        n = d / np.maximum(np.linalg.norm(d, axis=1, keepdims=True), 1e-300)
-        return n[:, None, :], np.zeros((m, 1)), np.ones((m, 1), dtype=bool)
-    if isinstance(prim, (Box, ConvexPolyhedron)):
-        normals, offsets = prim.face_normals, prim.face_offsets
-        dist = p @ normals.T - offsets
-        valid = np.abs(dist) <= tol
-        V = np.broadcast_to(normals, (m, len(normals), 3))
-        return V, np.zeros((m, len(normals))), valid
-    if isinstance(prim, Truncus):
-        a = prim.unit_axis
-        s, rho, er = _truncus_meridian(prim, p)
-        h2, k = prim.height / 2, prim.slope
-        V = np.zeros((m, 3, 3))
-        C = np.zeros((m, 3))
-        valid = np.zeros((m, 3), dtype=bool)
-        length = math.hypot(1.0, k)
-        side = (rho - prim.radius_at(s)) / length
-        V[:, 0] = a
-        valid[:, 0] = np.abs(s - h2) <= tol
-        V[:, 1] = -a
-        valid[:, 1] = np.abs(s + h2) <= tol
-        near_side = np.abs(side) <= tol
-        V[:, 2] = (er - k * a) / length
-        valid[:, 2] = near_side
-        # the apex of a cone: a circular cone around the axis, half-angle beta
-        apex_rows = near_side & (rho <= tol)
-        for r_end, s_end, toward in ((prim.r1, h2, -a), (prim.r2, -h2, a)):
-            if r_end == 0.0:
-                at = apex_rows & (np.abs(s - s_end) <= tol + abs(k) * tol)
-                if at.any():
-                    beta = math.atan2(max(prim.r1, prim.r2), 2 * h2)
-                    V[at, 2] = -toward
-                    C[at, 2] = -math.cos(beta)
-                    valid[at, 0 if s_end > 0 else 1] = False  # the apex has no cap
-        return V, C, valid
+    hook = hook_for(prim, "tangent")
+    if hook is not None:
+        return hook(prim, p, tol)  # type: ignore[no-any-return]
     if hasattr(prim, "normals_at"):  # a smooth convex surface (ellipsoid): its tangent half-space
+        m = len(p)
         n = prim.normals_at(p)
         return n[:, None, :], np.zeros((m, 1)), np.ones((m, 1), dtype=bool)
     raise InvalidParameterError(f"contains needs primitives, got {type(prim).__name__}")  # pragma: no cover
+
+
+def sphere_tangent(prim: Sphere, p: NDArray[np.float64], tol: float) -> _Cone:
+    """The sphere's registered tangent-cone hook: the tangent half-space."""
+    m = len(p)
+    d = p - prim.center_array
+    n = d / np.maximum(np.linalg.norm(d, axis=1, keepdims=True), 1e-300)
+    return n[:, None, :], np.zeros((m, 1)), np.ones((m, 1), dtype=bool)
+
+
+def polyhedral_tangent(prim: Box | ConvexPolyhedron, p: NDArray[np.float64], tol: float) -> _Cone:
+    """The registered tangent-cone hook of boxes and convex polyhedra: the faces within ``tol``."""
+    m = len(p)
+    normals, offsets = prim.face_normals, prim.face_offsets
+    dist = p @ normals.T - offsets
+    valid = np.abs(dist) <= tol
+    V = np.broadcast_to(normals, (m, len(normals), 3))
+    return V, np.zeros((m, len(normals))), valid
+
+
+def truncus_tangent(prim: Truncus, p: NDArray[np.float64], tol: float) -> _Cone:
+    """The truncus's registered tangent-cone hook: ends, side and the apex's circular cone."""
+    m = len(p)
+    a = prim.unit_axis
+    s, rho, er = _truncus_meridian(prim, p)
+    h2, k = prim.height / 2, prim.slope
+    V = np.zeros((m, 3, 3))
+    C = np.zeros((m, 3))
+    valid = np.zeros((m, 3), dtype=bool)
+    length = math.hypot(1.0, k)
+    side = (rho - prim.radius_at(s)) / length
+    V[:, 0] = a
+    valid[:, 0] = np.abs(s - h2) <= tol
+    V[:, 1] = -a
+    valid[:, 1] = np.abs(s + h2) <= tol
+    near_side = np.abs(side) <= tol
+    V[:, 2] = (er - k * a) / length
+    valid[:, 2] = near_side
+    # the apex of a cone: a circular cone around the axis, half-angle beta
+    apex_rows = near_side & (rho <= tol)
+    for r_end, s_end, toward in ((prim.r1, h2, -a), (prim.r2, -h2, a)):
+        if r_end == 0.0:
+            at = apex_rows & (np.abs(s - s_end) <= tol + abs(k) * tol)
+            if at.any():
+                beta = math.atan2(max(prim.r1, prim.r2), 2 * h2)
+                V[at, 2] = -toward
+                C[at, 2] = -math.cos(beta)
+                valid[at, 0 if s_end > 0 else 1] = False  # the apex has no cap
+    return V, C, valid
 
 
 def _fixed_directions() -> NDArray[np.float64]:

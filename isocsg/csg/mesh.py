@@ -64,40 +64,52 @@ def rotation_to_axis(axis: NDArray[np.float64]) -> NDArray[np.float64]:
 
 
 def _leaf(prim: Primitive, resolution: int, shapes: dict[tuple[Any, ...], Any] | None = None) -> "manifold3d.Manifold":
-    """A leaf as a manifold3d solid; ``shapes`` keeps the solids at the origin by their
+    """A leaf as a manifold3d solid, through its kind's ``manifold`` hook (the hull of its
+    inscribed polyhedron when it has none); ``shapes`` keeps the solids at the origin by their
     dimensions, so that many equal spheres or cylinders are built once and moved."""
-    m3 = _manifold3d()
-    M = m3.Manifold
     shapes = {} if shapes is None else shapes
     hook = hook_for(prim, "manifold")
     if hook is not None:
-        return hook(prim, resolution)
-    if isinstance(prim, Sphere):
-        # manifold3d rounds the segment count up to a multiple of 4
-        key = ("sphere", prim.radius, resolution)
-        if key not in shapes:
-            shapes[key] = M.sphere(prim.radius, resolution)
-        return shapes[key].translate(tuple(prim.center))
-    if isinstance(prim, Truncus):
-        # manifold3d's cylinder runs from radius_low at z=-h/2 to radius_high at z=+h/2;
-        # the truncus's E2 (r2) is at -axis/2 and E1 (r1) at +axis/2.
-        key = ("truncus", prim.height, prim.r1, prim.r2, resolution)
-        if key not in shapes:
-            shapes[key] = M.cylinder(prim.height, prim.r2, prim.r1, resolution, True)
-        cyl = shapes[key]
-        R = rotation_to_axis(prim.unit_axis)
-        mat = np.column_stack([R, prim.center_array])
-        return cyl.transform(mat.tolist())
-    if isinstance(prim, Box):
-        cube = M.cube(tuple(prim.size), True)
-        if prim.axis_aligned:
-            return cube.translate(tuple(prim.center))
-        return cube.transform(np.column_stack([prim.rotation, prim.center_array]).tolist())
-    if isinstance(prim, ConvexPolyhedron):
-        return M.hull_points(np.asarray(prim.hull_vertices, dtype=np.float64).tolist())
-    # any other convex primitive: its inscribed polyhedron
+        return hook(prim, resolution, shapes)
     poly = prim.to_polyhedron(resolution)
-    return M.hull_points(np.asarray(poly.hull_vertices, dtype=np.float64).tolist())
+    return _manifold3d().Manifold.hull_points(np.asarray(poly.hull_vertices, dtype=np.float64).tolist())
+
+
+# ----------------------------------------------------------------------------- the built-in kinds' hooks
+
+
+def sphere_manifold(prim: Sphere, resolution: int, shapes: dict[tuple[Any, ...], Any]) -> "manifold3d.Manifold":
+    """manifold3d's sphere (it rounds the segment count up to a multiple of 4), moved."""
+    key = ("sphere", prim.radius, resolution)
+    if key not in shapes:
+        shapes[key] = _manifold3d().Manifold.sphere(prim.radius, resolution)
+    return shapes[key].translate(tuple(prim.center))
+
+
+def truncus_manifold(prim: Truncus, resolution: int, shapes: dict[tuple[Any, ...], Any]) -> "manifold3d.Manifold":
+    """manifold3d's cylinder, turned onto the axis and moved."""
+    # manifold3d's cylinder runs from radius_low at z=-h/2 to radius_high at z=+h/2;
+    # the truncus's E2 (r2) is at -axis/2 and E1 (r1) at +axis/2.
+    key = ("truncus", prim.height, prim.r1, prim.r2, resolution)
+    if key not in shapes:
+        shapes[key] = _manifold3d().Manifold.cylinder(prim.height, prim.r2, prim.r1, resolution, True)
+    cyl = shapes[key]
+    R = rotation_to_axis(prim.unit_axis)
+    mat = np.column_stack([R, prim.center_array])
+    return cyl.transform(mat.tolist())
+
+
+def box_manifold(prim: Box, resolution: int, shapes: dict[tuple[Any, ...], Any]) -> "manifold3d.Manifold":
+    """manifold3d's cube, turned and moved."""
+    cube = _manifold3d().Manifold.cube(tuple(prim.size), True)
+    if prim.axis_aligned:
+        return cube.translate(tuple(prim.center))
+    return cube.transform(np.column_stack([prim.rotation, prim.center_array]).tolist())
+
+
+def polyhedron_manifold(prim: ConvexPolyhedron, resolution: int, shapes: dict[tuple[Any, ...], Any]) -> "manifold3d.Manifold":
+    """The hull of the polyhedron's vertices."""
+    return _manifold3d().Manifold.hull_points(np.asarray(prim.hull_vertices, dtype=np.float64).tolist())
 
 
 def _build(solid: Solid, resolution: int, path: str) -> "manifold3d.Manifold":

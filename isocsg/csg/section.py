@@ -241,6 +241,16 @@ def _sphere_section(s: Sphere, F: NDArray[np.float64], resolution: int, area_exa
     return Polygon(_circle_ring(c2, np.array([math.sqrt(rr)]), resolution, area_exact)[0])
 
 
+def _box_section(prim: Box, F: NDArray[np.float64], resolution: int, area_exact: bool = False) -> Polygon:
+    """The box's registered section hook: exact, from its faces and corners."""
+    return _halfspace_section(prim.face_normals, prim.face_offsets, prim.corners, F)
+
+
+def _polyhedron_section(prim: ConvexPolyhedron, F: NDArray[np.float64], resolution: int, area_exact: bool = False) -> Polygon:
+    """The convex polyhedron's registered section hook: exact, from its faces and hull vertices."""
+    return _halfspace_section(prim.face_normals, prim.face_offsets, prim.hull_vertices, F)
+
+
 def _halfspace_section(
     normals: NDArray[np.float64], offsets: NDArray[np.float64], verts: NDArray[np.float64], F: NDArray[np.float64]
 ) -> Polygon:
@@ -441,15 +451,7 @@ def primitive_section(prim: Primitive, frame: NDArray[np.float64], resolution: i
     hook = hook_for(prim, "section")
     if hook is not None:
         return hook(prim, F, resolution, area_exact)
-    if isinstance(prim, Sphere):
-        return _sphere_section(prim, F, resolution, area_exact)
-    if isinstance(prim, Truncus):
-        return _truncus_section(prim, F, resolution, area_exact)
-    if isinstance(prim, Box):
-        return _halfspace_section(prim.face_normals, prim.face_offsets, prim.corners, F)
-    if isinstance(prim, ConvexPolyhedron):
-        return _halfspace_section(prim.face_normals, prim.face_offsets, prim.hull_vertices, F)
-    if isinstance(prim, Primitive):
+    if isinstance(prim, Primitive):  # a kind without a section of its own: its polyhedron's
         poly = prim.to_polyhedron(resolution)
         return _halfspace_section(poly.face_normals, poly.face_offsets, poly.hull_vertices, F)
     raise InvalidGeometryError(f"primitive_section needs a primitive, got {type(prim).__name__}")

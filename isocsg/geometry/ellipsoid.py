@@ -279,7 +279,7 @@ def ellipsoid_section(e: Ellipsoid, F: NDArray[np.float64], resolution: int, are
     return shapely.Polygon(ring @ axes.T + ab)
 
 
-def ellipsoid_manifold(e: Ellipsoid, resolution: int) -> Any:
+def ellipsoid_manifold(e: Ellipsoid, resolution: int, shapes: dict[Any, Any] | None = None) -> Any:
     """The ellipsoid as a manifold3d mesh: manifold3d's sphere mapped by ``R S`` (vertices on the surface)."""
     import manifold3d
 

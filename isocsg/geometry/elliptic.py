@@ -254,7 +254,7 @@ def elliptic_section(e: EllipticTruncus, F: NDArray[np.float64], resolution: int
     return shapely.transform(poly, lambda xy: xy @ Binv.T)
 
 
-def elliptic_manifold(e: EllipticTruncus, resolution: int) -> Any:
+def elliptic_manifold(e: EllipticTruncus, resolution: int, shapes: dict[Any, Any] | None = None) -> Any:
     """manifold3d's truncus (vertices on the surface) mapped by ``[matrix | center]``."""
     import manifold3d
 

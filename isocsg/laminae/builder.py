@@ -37,18 +37,16 @@ from numpy.typing import ArrayLike, NDArray
 
 from .._validation import integer, vector3
 from ..errors import InvalidLightError, InvalidParameterError
-from ..geometry.primitives import Box, ConvexPolyhedron, Primitive, Sphere, Truncus
+from ..geometry.primitives import Primitive
 from ..geometry.registry import hook_for
 from ..lighting.lights import DirectionalLight, PointLight
 from ..lighting.shading import TERMINATOR_COSINE, Material
 from ..limits import memory_budget
-from .families import GRAZING, FieldFamily, diffuse_family, diffuse_levels, incidence, specular_families
+from .families import GRAZING, FieldFamily, diffuse_family, incidence, specular_families
 from .model import BandMesh, ContourFamily, Lamina, LaminaSet
-from .polyhedron import face_laminae, polyhedron_surface
-from .sphere import contour_heights, light_axis, sphere_laminae, sphere_surface
+from .sphere import light_axis
 from .split import MAX_PIECES, split_by_levels
 from .surface import Surface
-from .truncus import light_frame, paper_levels, truncus_laminae, truncus_surface
 
 __all__ = ["build_laminae", "build_bands", "clear_cache", "cache_info", "cache_bytes", "MAX_CONTOURS"]
 
@@ -240,7 +238,7 @@ def _cached(
     primitive: Primitive, lights: Sequence[Light], material: Material | None, contours: int, eye: ArrayLike | None,
     segments: int | None, *, bands_only: bool,
 ) -> LaminaSet:
-    if not isinstance(primitive, (Sphere, Truncus, Box, ConvexPolyhedron)) and hook_for(primitive, "surface") is None:
+    if hook_for(primitive, "surface") is None:
         raise InvalidParameterError(
             f"primitive must be a Sphere, Truncus, Box, ConvexPolyhedron or another registered kind with a band surface, "
             f"got {type(primitive).__name__}"
@@ -329,46 +327,24 @@ def _surface(
     weights: tuple[float, float] = (1.0, 1.0), segments: int | None = None,
 ) -> Surface:
     hook = hook_for(primitive, "surface")
-    if hook is not None:
-        return hook(primitive, list(lights), n, eye, shininess)
-    seg = DEFAULT_SEGMENTS if segments is None else segments
-    if isinstance(primitive, Sphere):
-        return sphere_surface(primitive, lights[0] if lights else None, diffuse_levels(np.array([-1.0, 1.0]), n), seg)
-    if isinstance(primitive, Truncus):
-        return truncus_surface(primitive, list(lights), n, eye=eye, shininess=shininess, weights=weights, segments=seg)
-    return polyhedron_surface(primitive, list(lights), n, eye=eye, shininess=shininess, weights=weights)
+    if hook is None:  # pragma: no cover - _cached refuses such a primitive first
+        raise InvalidParameterError(f"primitive {type(primitive).__name__} has no registered band surface")
+    return hook(primitive, list(lights), n, eye, shininess, weights, segments)  # type: ignore[no-any-return]
 
 
 def _paper_laminae(primitive: Primitive, light: Light, n: int) -> list[tuple[NDArray[np.float64], NDArray[np.float64], float, str]]:
-    if isinstance(primitive, Sphere):
-        return [(v, nrm, c, "contour") for v, nrm, c in sphere_laminae(primitive, light, n)]
-    if isinstance(primitive, Truncus):
-        return truncus_laminae(primitive, light, n)
-    if not isinstance(primitive, (Box, ConvexPolyhedron)):
-        return []  # curved kinds without planar contours (an ellipsoid): the bands carry the image
-    return [(v, nrm, c, "face") for v, nrm, c in face_laminae(primitive, light)]
+    hook = hook_for(primitive, "laminae")
+    # curved kinds without planar contours (an ellipsoid): the bands carry the image
+    return [] if hook is None else hook(primitive, light, n)  # type: ignore[no-any-return]
 
 
 def _family_description(primitive: Primitive, light: Light, index: int, n: int, mat: Material) -> ContourFamily:
     """The inspectable contour family of one light (plane normal and offsets of the laminae)."""
-    cos_k = np.arange(n + 1) / n
-    if isinstance(primitive, Sphere):
-        c = primitive.center_array
-        w = light_axis(c, light)
-        t = contour_heights(primitive, light, cos_k)
-        offsets = float(w @ c) + primitive.radius * t
-        levels = cos_k
-    elif isinstance(primitive, Truncus):
-        ct = primitive.center_array
-        ln = light.unit_direction if isinstance(light, DirectionalLight) else light_axis(ct, light)
-        w, _ = light_frame(primitive.unit_axis, ln)
-        r = max(primitive.r1, primitive.r2)
-        offsets = float(w @ ct) + np.cos(np.pi * np.arange(n + 1) / n) * r
-        levels = paper_levels(primitive, light, n)
+    hook = hook_for(primitive, "family")
+    if hook is not None:
+        w, offsets, levels = hook(primitive, light, n)
     else:
-        w = np.zeros(3)
-        offsets = np.zeros(0)
-        levels = np.zeros(0)
+        w, offsets, levels = np.zeros(3), np.zeros(0), np.zeros(0)
     lv = np.asarray(levels, dtype=np.float64)
     values = mat.ambient + mat.kd * light.intensity * np.maximum(0.5 * (lv[:-1] + lv[1:]), 0.0) if len(lv) > 1 else np.zeros(0)
     return ContourFamily(w, np.asarray(offsets, dtype=np.float64), lv, values, index)

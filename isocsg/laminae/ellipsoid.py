@@ -70,7 +70,8 @@ def _grid(w, e1, e2, polar, phi) -> NDArray[np.float64]:
 
 
 def ellipsoid_surface(
-    e: Ellipsoid, lights: list, contours: int, eye: NDArray[np.float64] | None, shininess: float
+    e: Ellipsoid, lights: list, contours: int, eye: NDArray[np.float64] | None, shininess: float,
+    weights: tuple[float, float] = (1.0, 1.0), segments: int | None = None,
 ) -> Surface:
     """Latitude-longitude mesh of the ellipsoid, fine enough for every field (see the module docstring).
 
@@ -83,6 +84,11 @@ def ellipsoid_surface(
     eye : ndarray, shape (3,), or None
         The eye relative to the centre, for a specular material.
     shininess : float
+    weights : (float, float)
+        The material's ``(kd, ks)``, as every kind's surface hook receives them (unused here).
+    segments : int, optional
+        A renderer's tessellation hint for a leaf small on screen (unused here: the mesh
+        is refined by its fields).
 
     Returns
     -------

@@ -55,7 +55,8 @@ def _grid_triangles(n_rows: int, n_cols: int, start: int) -> NDArray[np.int64]:
 
 
 def elliptic_surface(
-    e: EllipticTruncus, lights: list, contours: int, eye: NDArray[np.float64] | None, shininess: float
+    e: EllipticTruncus, lights: list, contours: int, eye: NDArray[np.float64] | None, shininess: float,
+    weights: tuple[float, float] = (1.0, 1.0), segments: int | None = None,
 ) -> Surface:
     """Side and end meshes of an elliptic truncus, fine enough for every field.
 
@@ -67,6 +68,11 @@ def elliptic_surface(
     eye : ndarray, shape (3,), or None
         Relative to the centre.
     shininess : float
+    weights : (float, float)
+        The material's ``(kd, ks)``, as every kind's surface hook receives them (unused here).
+    segments : int, optional
+        A renderer's tessellation hint for a leaf small on screen (unused here: the mesh
+        is refined by its fields).
 
     Returns
     -------

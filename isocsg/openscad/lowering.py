@@ -66,6 +66,11 @@ _LEAVES_3D = {"cube", "sphere", "cylinder", "polyhedron"}
 _LEAVES_2D = {"square", "circle", "polygon"}
 
 
+#: How far a printed number may be from the value it stands for, relative to the magnitude of
+#: the coordinates: OpenSCAD 2021 prints 6 significant digits (half a unit of the 6th: 5e-7),
+#: with a factor 2 for the rounding of a face's plane through rounded points.
+PRINTED_PRECISION = 1e-6
+
 @dataclass(frozen=True, slots=True, eq=False)  # compared by identity: the solid may be a huge tree
 class LoweredModel:
     """The result of lowering: the solid and what was skipped.
@@ -214,17 +219,22 @@ class _Lowerer:
             hull = ConvexPolyhedron(pts)
         except InvalidGeometryError:
             return None  # flat: no volume, as in OpenSCAD
-        # Convex exactly when the faces enclose the hull's volume and every face lies on a hull plane.
+        # Convex when the faces enclose the hull's volume and every face lies on a hull plane, to the
+        # precision of the numbers: OpenSCAD's .csg export prints 6 significant digits, which moves a
+        # point of a flat face by up to 5e-7 of its coordinates' magnitude.
         scale = float(np.max(np.ptp(hull.hull_vertices, axis=0)))
+        reach = max(scale, float(np.max(np.abs(pts))))
+        off = PRINTED_PRECISION * reach
         enclosed = 0.0
         for f in faces:
             if len(f) < 3:
                 continue
-            p = pts[f]
+            p = pts[f] - pts[0]  # about a point of the solid: no cancellation far from the origin
             enclosed += sum(float(np.dot(p[0], np.cross(p[i], p[i + 1]))) for i in range(1, len(f) - 1)) / 6.0
         used = pts[sorted({i for f in faces for i in f})]
-        planar = np.all(np.abs(used @ hull.face_normals.T - hull.face_offsets).min(axis=1) <= 1e-9 * max(scale, 1.0))
-        if not planar or abs(abs(enclosed) - hull.volume) > 1e-9 * max(hull.volume, scale**3):
+        planar = np.all(np.abs(used @ hull.face_normals.T - hull.face_offsets).min(axis=1) <= off + 1e-9 * max(scale, 1.0))
+        # a face off its plane by `off` encloses at most `off` x the hull's area (< 6 scale^2) more or less
+        if not planar or abs(abs(enclosed) - hull.volume) > 6 * off * scale**2 + 1e-9 * max(hull.volume, scale**3):
             self.unsupported(call, "a non-convex polyhedron is not an isocsg primitive; split it into convex ones")
             return None
         return hull

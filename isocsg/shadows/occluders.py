@@ -59,7 +59,7 @@ from numpy.typing import NDArray
 from .. import _validation
 from ..csg.program import OP_INTERSECTION, OP_UNION, compile_program
 from ..errors import InvalidGeometryError, InvalidParameterError
-from ..geometry.primitives import DEFAULT_RESOLUTION, Box, ConvexPolyhedron, Primitive, Solid
+from ..geometry.primitives import DEFAULT_RESOLUTION, ConvexPolyhedron, Primitive, Solid
 
 __all__ = ["ConvexPiece", "convex_pieces", "halfspace_pieces", "shadow_pieces", "clear_cache", "DEFAULT_RESOLUTION"]
 
@@ -215,7 +215,7 @@ class _Convex:
 
 @functools.lru_cache(maxsize=1024)
 def _leaf_polyhedron(prim: Primitive, resolution: int) -> ConvexPolyhedron:
-    return prim.to_polyhedron() if isinstance(prim, (Box, ConvexPolyhedron)) else prim.to_polyhedron(resolution)
+    return prim.to_polyhedron(resolution)  # exact for polyhedral kinds, inscribed for curved ones
 
 
 def _overlap(a: _Convex, b: _Convex, tol: float) -> bool:
