@@ -20,6 +20,7 @@ before and after, since a shared machine's other work takes from both.
 from __future__ import annotations
 
 import argparse
+import logging
 import os
 import resource
 import sys
@@ -80,7 +81,8 @@ def main(argv: list[str] | None = None) -> int:
     sg_wall, sg_cpu, serial_map = _timed(lambda: illuminance_map(grid, LAMPS, OCCLUDERS), _cpu_self)
 
     rows = []
-    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None) as cluster:
+    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None,
+                                  silence_logs=logging.CRITICAL) as cluster:
         with distributed.Client(cluster) as client:
 
             def cpu_all() -> float:
