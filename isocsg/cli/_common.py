@@ -127,9 +127,10 @@ def apply_overrides(scene: Scene, *, size: tuple[int, int] | None = None, contou
     return scene
 
 
-# What a new install's first render of each kind spends compiling (measured on
-# 2 cores; README, "Command line"), and the kernel whose cache tells whether it will.
-_COMPILE_SECONDS = {"isoluminance": 15, "halftone": 20}
+# What a new install's first render of each kind spends compiling (CPU time measured
+# on 2 cores; README, "Command line"), and the kernel whose cache tells whether it will.
+_COMPILE_SECONDS = {"isoluminance": 15, "halftone": 15}
+_COMPILE_NAMES = {"isoluminance": "isoluminance", "halftone": "soft-shadow"}
 _COMPILE_PROBES = {
     "isoluminance": ("isocsg.render.raster", "_fill_polys"),
     "halftone": ("isocsg.shadows.visibility", "_kernel"),
@@ -160,7 +161,7 @@ def compile_notice(kind: str, *, file: IO[str] | None = None) -> bool:
         return False
     _NOTICED.add(kind)
     print(
-        f"isocsg: compiling its {kind} kernels, once for this install (about {_COMPILE_SECONDS[kind]} s); "
+        f"isocsg: compiling its {_COMPILE_NAMES[kind]} kernels, once for this install (about {_COMPILE_SECONDS[kind]} s); "
         "later runs read them from the cache (`isocsg warmup` compiles them ahead of time)",
         file=file if file is not None else sys.stderr,
         flush=True,
