@@ -86,14 +86,22 @@ def _render_one(scene: Scene, camera: Camera, contours: int | None) -> Any:
     return _renderer().render(scene, camera=camera, contours=contours)
 
 
-def _run(fn: Callable[..., Any], args: list[tuple[Any, ...]], client: Any, workers: int | None) -> list[Any]:
+def _run(
+    fn: Callable[..., Any], shared: tuple[Any, ...], args: list[tuple[Any, ...]], client: Any, workers: int | None,
+) -> list[Any]:
+    """``[fn(*shared, *a) for a in args]`` on the client, on threads or serially."""
     if client is not None:
-        futures = [client.submit(fn, *a, pure=False) for a in args]
+        # The shared values (the scene; the lights and occluders) go to every
+        # worker once, and every task of a worker gets the same object: the
+        # renderer's caches (band meshes, CSG surfaces) then serve its later
+        # views, as they do in one process, instead of one fresh copy per task.
+        held = tuple(client.scatter([x], broadcast=True)[0] for x in shared)
+        futures = [client.submit(fn, *held, *a, pure=False) for a in args]
         return client.gather(futures)
     if workers == 1 or len(args) <= 1:
-        return [fn(*a) for a in args]
+        return [fn(*shared, *a) for a in args]
     with ThreadPoolExecutor(max_workers=workers) as pool:
-        return list(pool.map(lambda a: fn(*a), args))
+        return list(pool.map(lambda a: fn(*shared, *a), args))
 
 
 def render_views(
@@ -141,10 +149,10 @@ def render_views(
     for i, c in enumerate(cams):
         if not isinstance(c, Camera):
             raise InvalidParameterError(f"cameras[{i}] must be a Camera, got {type(c).__name__}")
-    return _run(_render_one, [(scene, c, contours) for c in cams], client, workers)
+    return _run(_render_one, (scene,), [(c, contours) for c in cams], client, workers)
 
 
-def _rows(points: np.ndarray, normal: np.ndarray, lights: Any, occluders: Any, resolution: int) -> np.ndarray:
+def _rows(lights: Any, occluders: Any, points: np.ndarray, normal: np.ndarray, resolution: int) -> np.ndarray:
     from .shadows.illuminance import illuminance
 
     return illuminance(points.reshape(-1, 3), normal, lights, occluders, resolution=resolution).reshape(points.shape[:-1])
@@ -198,6 +206,6 @@ def illuminance_grid(
         "rows_per_task", rows_per_task, low=1, high=1 << 20, error=InvalidParameterError)
     pts = grid.points()
     n = grid.normal
-    blocks = [(np.ascontiguousarray(pts[j : j + step]), n, lights, occluders, res) for j in range(0, grid.ny, step)]
-    E = np.vstack(_run(_rows, blocks, client, workers))
+    blocks = [(np.ascontiguousarray(pts[j : j + step]), n, res) for j in range(0, grid.ny, step)]
+    E = np.vstack(_run(_rows, (lights, occluders), blocks, client, workers))
     return LuxMap(grid, E, occluded_nodes(grid, occluders))

@@ -14,7 +14,7 @@ import pytest
 from PIL import Image
 
 from isocsg.cli import build_parser, main
-from isocsg.cli._common import parse_size, progress_bar
+from isocsg.cli._common import compile_notice, kernels_cached, parse_size, progress_bar
 from isocsg.scene import builtin_scene_path, load_scene
 
 SCRIPT = Path(sys.executable).with_name("isocsg")
@@ -334,3 +334,28 @@ def test_warmup_renders_the_built_in_scenes_and_says_so(capsys: pytest.CaptureFi
     out = capsys.readouterr().out.splitlines()
     assert out[0].startswith("isocsg warmup: compiling kernels")
     assert out[-1].startswith("isocsg warmup: done in") and out[-1].endswith(" s")
+
+
+def test_warm_cache_is_recognised_so_nothing_is_said(capsys: pytest.CaptureFixture[str]) -> None:
+    assert main(["warmup"]) == 0
+    capsys.readouterr()
+    err = io.StringIO()
+    assert kernels_cached("isoluminance") and kernels_cached("halftone")
+    assert not compile_notice("isoluminance", file=err) and err.getvalue() == ""
+
+
+def test_empty_cache_is_recognised(tmp_path: Path) -> None:
+    """A new install (an empty numba cache) is told once what its first render does."""
+    code = (
+        "import io; from isocsg.cli._common import compile_notice, kernels_cached; "
+        "print(kernels_cached('isoluminance'), kernels_cached('halftone')); "
+        "f = io.StringIO(); print(compile_notice('isoluminance', file=f), compile_notice('isoluminance', file=f)); "
+        "print(f.getvalue(), end='')"
+    )
+    env = {**os.environ, "NUMBA_CACHE_DIR": str(tmp_path)}
+    proc = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, env=env, timeout=120)
+    lines = proc.stdout.splitlines()
+    assert proc.returncode == 0, proc.stderr
+    assert lines[:2] == ["False False", "True False"]
+    assert len(lines) == 3 and lines[2].startswith("isocsg: compiling its isoluminance kernels, once for this install")
+    assert not list(tmp_path.rglob("*.nbc")), "the check compiles nothing"

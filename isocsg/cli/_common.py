@@ -20,6 +20,7 @@ __all__ = [
     "load_scene_argument",
     "apply_overrides",
     "render_scene",
+    "compile_notice",
     "check_outputs",
     "write_outputs",
     "add_common_render_options",
@@ -126,8 +127,51 @@ def apply_overrides(scene: Scene, *, size: tuple[int, int] | None = None, contou
     return scene
 
 
+# What a new install's first render of each kind spends compiling (CPU time measured
+# on 2 cores; README, "Command line"), and the kernel whose cache tells whether it will.
+_COMPILE_SECONDS = {"isoluminance": 15, "halftone": 15}
+_COMPILE_NAMES = {"isoluminance": "isoluminance", "halftone": "soft-shadow"}
+_COMPILE_PROBES = {
+    "isoluminance": ("isocsg.render.raster", "_fill_polys"),
+    "halftone": ("isocsg.shadows.visibility", "_kernel"),
+}
+_NOTICED: set[str] = set()
+
+
+def kernels_cached(kind: str) -> bool:
+    """Whether numba's on-disk cache holds the kernels of ``kind`` ("isoluminance" or "halftone").
+
+    Reads the cache index of the kernel that costs most to compile (one small
+    file); any doubt (a numba without these internals) answers True, so that
+    nothing is said.
+    """
+    import importlib
+
+    module, name = _COMPILE_PROBES[kind]
+    try:
+        dispatcher = getattr(importlib.import_module(module), name)
+        return bool(dispatcher._cache._cache_file._load_index())
+    except Exception:  # noqa: BLE001 - private numba API: silence rather than fail a render
+        return True
+
+
+def compile_notice(kind: str, *, file: IO[str] | None = None) -> bool:
+    """Say on stderr, once per process, that the first render compiles the kernels; True if it did."""
+    if kind in _NOTICED or kernels_cached(kind):
+        return False
+    _NOTICED.add(kind)
+    print(
+        f"isocsg: compiling its {_COMPILE_NAMES[kind]} kernels, once for this install (about {_COMPILE_SECONDS[kind]} s); "
+        "later runs read them from the cache (`isocsg warmup` compiles them ahead of time)",
+        file=file if file is not None else sys.stderr,
+        flush=True,
+    )
+    return True
+
+
 def render_scene(scene: Scene, *, progress: ProgressCallback | None = None) -> Any:
     """Render with the method the scene asks for (``render.mode``)."""
+    compile_notice("halftone" if scene.render.mode == "halftone" else "isoluminance")
     if scene.render.mode == "halftone":
         from ..shadows.halftone import render_halftone
 

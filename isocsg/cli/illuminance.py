@@ -197,7 +197,7 @@ def _grid_from_table(path: str, table: dict[str, Any], nx: int | None, ny: int |
 
 def run(args: argparse.Namespace) -> int:
     """Load, compute, write; prints the files written and the range of E."""
-    from ._common import check_outputs, progress_bar
+    from ._common import check_outputs, compile_notice, progress_bar
 
     out = Path(args.output)
     as_csv = out.suffix.lower() == ".csv"
@@ -232,6 +232,7 @@ def run(args: argparse.Namespace) -> int:
     else:
         grid = floor_grid(scene, DEFAULT_NODES if nx is None else nx, DEFAULT_NODES if ny is None else ny)
     levels: Any = args.levels if args.levels is not None else (table or {}).get("levels", 8)
+    compile_notice("halftone")
     with progress_bar("illuminance", enabled=not args.no_progress) as progress:
         m = illuminance_map(grid, lights, [o.shape for o in scene.objects], resolution=res, progress=progress)
     area = None

@@ -15,8 +15,9 @@ DESCRIPTION = """\
 Compile isocsg's compiled kernels (numba, cached on disk next to the package)
 by rendering the built-in scenes at a tiny size: the CSG part per pixel and
 through its clipped surface, and the soft-shadow scene. A new install compiles
-them on its first render (about half a minute); run this once after installing
-so that no later call waits. Later runs find the cache and take a few seconds.
+them on its first render (about 15 s of CPU time for the first CSG image, as
+much again for the first soft-shadow image); run this once after installing so
+that no later call waits. Later runs find the cache and take a few seconds.
 """
 
 

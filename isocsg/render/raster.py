@@ -53,6 +53,10 @@ NEAR_RELATIVE = 1e-9
 # was most of the cost of a small polygon (4x the set-up itself). These
 # kernels allocate nothing; their thin entry points do.
 _RAW = {"cache": True, "nogil": True, "_nrt": False}
+# Constant flags are passed to these kernels as ``np.bool_(...)`` and
+# ``np.int64(...)``: a bare ``True`` or ``-1`` is typed as a literal, and numba
+# compiles one specialisation per literal value (the fill kernels four times
+# over, most of a new install's first-render compile time).
 
 
 def homogeneous(camera: Camera, points: ArrayLike) -> NDArray[np.float64]:
@@ -259,7 +263,7 @@ def fill_projected(
     the quads' triangles.
     """
     # No labels and no written rectangle for leaves (both discarded).
-    _fill_polys(proj, polys, vout, vin, near, perspective, True, -1, ox, oy, zf, vf, np.empty((1, 1), np.int32),
+    _fill_polys(proj, polys, vout, vin, near, perspective, np.bool_(True), np.int64(-1), ox, oy, zf, vf, np.empty((1, 1), np.int32),
                 zb, vb, np.empty(4, np.int64), np.empty((3, 4)))
 
 
@@ -334,12 +338,12 @@ def _fill_one(
         if to_front:
             _fill_triangle(
                 px[0], py[0], px[k], py[k], px[k + 1], py[k + 1], pk[0], pk[k], pk[k + 1],
-                value_out, tag, True, ox, oy, zf, vf, tf,
+                value_out, tag, np.bool_(True), ox, oy, zf, vf, tf,
             )
         if to_back:
             _fill_triangle(
                 px[0], py[0], px[k], py[k], px[k + 1], py[k + 1], pk[0], pk[k], pk[k + 1],
-                value_in, tag, False, ox, oy, zb, vb, tf,
+                value_in, tag, np.bool_(False), ox, oy, zb, vb, tf,
             )
 
 
@@ -732,7 +736,7 @@ def fill_front_kernel(
     the near plane is clipped first (as :func:`fill_kernel`). ``bounds``
     grows to cover every row and column written.
     """
-    _fill_polys(proj, polys, values, values, near, perspective, False, tag, 0, oy, zf, vf, tf,
+    _fill_polys(proj, polys, values, values, near, perspective, np.bool_(False), tag, np.int64(0), oy, zf, vf, tf,
                 np.empty((1, 1)), np.empty((1, 1), np.float32), bounds, np.empty((3, 4)))
 
 
@@ -771,10 +775,10 @@ def _fill_polys(
         n = 3 if d < 0 else 4
         if not (hd[a] >= near and hd[b] >= near and hd[c] >= near and (n == 3 or hd[d] >= near)):
             # Crossing the near plane: clipped triangle by triangle (rare).
-            _fill_one(hx, hy, hw, hd, sx, sy, sk, a, b, c, near, perspective, True, back, vout[p], vin[p],
+            _fill_one(hx, hy, hw, hd, sx, sy, sk, a, b, c, near, perspective, np.bool_(True), back, vout[p], vin[p],
                       tag, ox, oy, zf, vf, tf, zb, vb, px, py, pk)
             if n == 4:
-                _fill_one(hx, hy, hw, hd, sx, sy, sk, a, c, d, near, perspective, True, back, vout[p], vin[p],
+                _fill_one(hx, hy, hw, hd, sx, sy, sk, a, c, d, near, perspective, np.bool_(True), back, vout[p], vin[p],
                           tag, ox, oy, zf, vf, tf, zb, vb, px, py, pk)
             bounds[0] = min(bounds[0], oy)
             bounds[1] = max(bounds[1], oy + h)

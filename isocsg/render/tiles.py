@@ -282,7 +282,9 @@ def combine_rects(op: NDArray[np.int8], arg: NDArray[np.int64], rects: NDArray[n
     for k in range(len(op)):
         o = op[k]
         if o == 0:
-            stack[sp] = rects[arg[k]]
+            # Element by element: a row assignment compiles numba's shape-mismatch message (seconds of compile).
+            r = arg[k]
+            stack[sp, 0], stack[sp, 1], stack[sp, 2], stack[sp, 3] = rects[r, 0], rects[r, 1], rects[r, 2], rects[r, 3]
             sp += 1
             continue
         base = sp - arg[k]

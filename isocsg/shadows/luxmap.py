@@ -348,10 +348,18 @@ def isolux_lines(E: ArrayLike, levels: ArrayLike) -> list[list[tuple[NDArray[np.
     if Z.ndim != 2 or min(Z.shape) < 2:
         raise InvalidParameterError(f"E must be a 2-D array with at least 2 x 2 values, got shape {Z.shape}")
     bad = ~np.isfinite(Z)
-    z = np.ma.array(np.where(bad, 0.0, Z), mask=bad) if bad.any() else Z
-    gen = contourpy.contour_generator(
-        z=z, name="serial", corner_mask=False, quad_as_tri=False,
-        line_type=contourpy.LineType.SeparateCode,
+    mask = bad if bad.any() else None
+    z = np.where(bad, 0.0, Z) if mask is not None else np.ascontiguousarray(Z)
+    # The generator class itself, not contourpy.contour_generator(): that front
+    # end also validates through masked arrays and builds the coordinate grids,
+    # which cost as much as tracing a few levels on a 512 x 512 grid. Node
+    # coordinates are the indices, as there.
+    ny, nx = Z.shape
+    x, y = np.meshgrid(np.arange(nx, dtype=np.float64), np.arange(ny, dtype=np.float64))
+    gen = contourpy.SerialContourGenerator(
+        x, y, z, mask, corner_mask=False, quad_as_tri=False, z_interp=contourpy.ZInterp.Linear,
+        line_type=contourpy.LineType.SeparateCode, fill_type=contourpy.FillType.OuterCode,
+        x_chunk_size=0, y_chunk_size=0,
     )
     out = []
     for level in np.asarray(levels, dtype=np.float64).reshape(-1):
