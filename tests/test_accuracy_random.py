@@ -348,9 +348,11 @@ def intensity_levels(ref: ReferenceImage, keep: np.ndarray) -> int:
     """Distinct exact intensities among the ``keep`` pixels, in bins of a quarter of the N = 64
     band step: how many independent samples of the band quantisation a mean error holds."""
     values = ref.image[keep]
+    if values.size == 0:
+        return 0
     lo, hi = float(np.nanmin(ref.image)), float(np.nanmax(ref.image))
-    if values.size == 0 or hi <= lo:
-        return int(values.size > 0)
+    if hi <= lo:
+        return 1
     return int(np.unique(np.floor((values - lo) / ((hi - lo) / (LEVEL_BINS * CONTOURS)))).size)
 
 
