@@ -21,7 +21,8 @@ so that their plane cuts the source, or turned away). Judges:
 
 Under CI (``tests/conftest.py``) the examples are derandomized. For a long
 local search raise the count: ``ISOCSG_SEARCH_EXAMPLES=2000 pytest
-tests/test_illuminance_random.py``.
+tests/test_illuminance_random.py``; ``ISOCSG_SEARCH_LOG=file`` appends one
+line per judged example.
 """
 
 from __future__ import annotations
@@ -45,6 +46,8 @@ from test_illuminance import expected_states  # noqa: E402
 
 RES = 8  # tessellation of curved primitives, shared with the reference
 EXAMPLES = int(os.environ.get("ISOCSG_SEARCH_EXAMPLES", "60"))
+#: A file that gets one line per judged example (for counting a long search).
+LOG = os.environ.get("ISOCSG_SEARCH_LOG")
 
 coord = st.floats(-1.0, 1.0, allow_nan=False, allow_infinity=False)
 
@@ -240,6 +243,9 @@ def test_random_scenes_against_monte_carlo_and_closed_forms(src, occs, rec):
             if s == 0 and n[2] == 1.0 and p[2] < z:
                 event("closed form checked")
                 assert e == pytest_approx(rectangle_closed_form(p, x0, x1, y0, y1, z, light.radiance))
+    if LOG:
+        with open(LOG, "a") as fh:
+            fh.write(f"{kind}\t{len(P)} points, {len(occs)} occluders, states {np.bincount(S, minlength=3).tolist()}\n")
 
 
 def pytest_approx(value):
