@@ -436,7 +436,9 @@ def test_thin_rod_convergence_is_judged_on_enough_intensities():
     assert intensity_levels(ref, comparison_mask(img, ref)) < MIN_LEVELS
     e16, e64, size = convergence_errors(make, lights, cam, mat, placement, ref, img)
     assert size == ENLARGE * cam["size"]
-    assert e64 < 0.5 * e16, (e16, e64)
+    # the search's bar; at 256 px the level of detail gives this rod 16 and 32 contours for
+    # N = 16 and 64 (at 64 px, 16 for both: the enlargement is what lets N show)
+    assert e64 < e16, (e16, e64)
 
 
 # ----------------------------------------------------------------------------- one test per kind
