@@ -225,8 +225,8 @@ def test_plate_with_many_holes_matches_the_ray_caster(k):
 
 
 def test_small_leaves_get_fewer_contours():
-    # Holes under 64 pixels across are built with fewer contours (never fewer
-    # than MIN_CONTOURS); the plate, large on screen, keeps the requested count.
+    # Holes under 64 pixels across are built with fewer contours (half of N);
+    # the plate, large on screen, keeps the requested count.
     from isocsg.laminae import build_laminae
 
     asked = {}
@@ -240,7 +240,7 @@ def test_small_leaves_get_fewer_contours():
     tree = scene.objects[0].shape
     assert asked[tree.children[0]] == 64
     holes = [asked[h] for h in tree.children[1:]]
-    assert set(holes) <= {painter.MIN_CONTOURS, 32} and painter.MIN_CONTOURS in holes
+    assert set(holes) == {32}
     asked.clear()
     Renderer(build_laminae=build, adaptive_contours=False).render(scene)
     assert set(asked.values()) == {64}

@@ -482,10 +482,11 @@ IMAGE_PIXEL_BYTES = 16
 #: pixels apart); it gets the requested ``N`` halved as often as that still
 #: leaves at least the need (so the counts are ``N``, ``N / 2``, ``N / 4``, ...
 #: and a small change of view does not change them), and never fewer than
-#: :data:`MIN_CONTOURS` (nor more than ``N``). Every count is proportional to
-#: ``N`` above that floor, so quadrupling ``N`` quadruples it and the error still
-#: shrinks as ``N`` grows; the floor keeps each band's value step (about
-#: range / 16) within the 0.05 accuracy bar however small the leaf.
+#: ``N / 2`` or :data:`MIN_CONTOURS` (nor more than ``N``). Every count is
+#: therefore ``N`` or ``N / 2`` (or the floor, for N < 32): proportional to
+#: ``N``, so the error still shrinks as ``N`` grows however small the leaf;
+#: the floor keeps each band's value step (about range / 16) within the 0.05
+#: accuracy bar.
 LOD_PIXELS = 128.0
 MIN_CONTOURS = 16
 #: Tessellation by screen size (with the level of detail, default builder only):
@@ -493,8 +494,12 @@ MIN_CONTOURS = 16
 #: segments around it that keep the chord error ``r (1 - cos(pi / m))`` under
 #: ``CHORD_PIXELS``, rounded up to a power of two, at least 16; at 128 (the
 #: full tessellation, :data:`isocsg.laminae.builder.DEFAULT_SEGMENTS`) from
-#: about 330 pixels on.
-CHORD_PIXELS = 0.05
+#: about 21 pixels on. The silhouette of a latitude-longitude mesh lies inside
+#: the surface by more than one chord's sagitta (its faces span a ring gap and a
+#: longitude gap, seen from any side): a sphere 47 pixels across on 64
+#: segments (chord error 0.028 pixel) lost 24 of its 1748 pixels, below the
+#: IoU bar of 0.99, so the bound is a fraction of what the silhouette may lose.
+CHORD_PIXELS = 0.0125
 MIN_SEGMENTS = 16
 _SEGMENT_SHIFT = 16
 _CONTOUR_MASK = (1 << _SEGMENT_SHIFT) - 1
@@ -521,9 +526,11 @@ def screen_contours(extent: NDArray[np.float64], contours: int) -> NDArray[np.in
     Examples
     --------
     >>> screen_contours(np.array([3.0, 40.0, 64.0, 65.0, 1000.0, np.inf]), 64).tolist()
-    [16, 32, 32, 64, 64, 64]
+    [32, 32, 32, 64, 64, 64]
     >>> screen_contours(np.array([3.0, 40.0, 64.0, 65.0, 1000.0]), 256).tolist()
-    [16, 128, 128, 256, 256]
+    [128, 128, 128, 256, 256]
+    >>> screen_contours(np.array([3.0, 40.0, 1000.0]), 16).tolist()
+    [16, 16, 16]
     >>> screen_contours(np.array([3.0, 40.0]), 8).tolist()
     [8, 8]
     """
@@ -533,7 +540,8 @@ def screen_contours(extent: NDArray[np.float64], contours: int) -> NDArray[np.in
         halvings = np.floor(np.log2(contours / need))
     halvings = np.clip(np.nan_to_num(halvings, nan=0.0, posinf=30.0, neginf=0.0), 0, 30)
     n = np.ceil(contours / np.exp2(halvings))
-    return np.clip(n, min(contours, MIN_CONTOURS), contours).astype(np.int64)
+    floor = max(min(contours, MIN_CONTOURS), contours // 2)
+    return np.clip(n, floor, contours).astype(np.int64)
 
 
 def screen_segments(extent: NDArray[np.float64]) -> NDArray[np.int64]:
@@ -542,7 +550,7 @@ def screen_segments(extent: NDArray[np.float64]) -> NDArray[np.int64]:
     Examples
     --------
     >>> screen_segments(np.array([4.0, 20.0, 60.0, 200.0, 400.0, np.inf])).tolist()
-    [16, 32, 64, 128, 128, 128]
+    [32, 64, 128, 128, 128, 128]
     """
     r = np.nan_to_num(np.asarray(extent, dtype=np.float64), nan=np.inf, posinf=np.inf) / 2
     with np.errstate(invalid="ignore", over="ignore"):
@@ -627,10 +635,10 @@ class Renderer:
         gets contours by its size on screen (:func:`screen_contours`): a
         primitive ``e`` pixels across needs about ``N * e / 128`` (bands about
         two pixels apart at N = 64) and gets ``N`` halved as often as that
-        need allows, never fewer than :data:`MIN_CONTOURS` (16, which keeps
-        every pixel within 0.05 of the range) nor more than ``N``; primitives
-        128 pixels across or more get ``N``. Above the floor every count is
-        proportional to ``N``, so the error still shrinks as ``N`` grows. A
+        need allows, never fewer than ``N / 2`` or :data:`MIN_CONTOURS` (16,
+        which keeps every pixel within 0.05 of the range) nor more than ``N``;
+        primitives 64 pixels across or more get ``N`` (at N = 64). Every count
+        is ``N`` or ``N / 2``, so the error still shrinks as ``N`` grows. A
         primitive keeps the larger count an earlier view of this renderer gave
         it (its bands are then reused). The default builder also coarsens
         the tessellation by the same screen size (see
