@@ -776,9 +776,9 @@ class Renderer:
         if not self.adaptive_contours:
             return np.full(len(leaves), contours, np.int64)
         box = (None, None) if program is None else combine_boxes(program.op, program.arg, geom.lo, geom.hi)
-        # A truncus's diameter caps its size for CSG leaves (holes, rods), where a
-        # single primitive keeps its box (it has room to show the bending along its axis).
-        sizes = leaf_screen_sizes(geom, cam, *box, axial=program is not None)
+        # A truncus's diameter caps its size (holes, rods), alone or in a tree alike, so that
+        # a primitive and a tree of it (A | A) get the same bands.
+        sizes = leaf_screen_sizes(geom, cam, *box)
         counts = screen_contours(sizes, contours)
         # The tessellation by the same size, for the default builder only (its signature has segments).
         segs = screen_segments(sizes) if self._by_request else np.full(len(leaves), DEFAULT_SEGMENTS, np.int64)
