@@ -31,6 +31,28 @@ MIN_IOU = 0.99
 MIN_FRACTION = 0.98
 
 
+@pytest.fixture(autouse=True)
+def _lod_for_every_tree(monkeypatch):
+    # The rule applies to trees of more than LOD_MIN_LEAVES leaves; these scenes are
+    # smaller so that the ray caster judges them quickly: apply it to every tree here.
+    monkeypatch.setattr(painter, "LOD_MIN_LEAVES", 0)
+
+
+def test_small_objects_get_the_requested_count(monkeypatch):
+    monkeypatch.setattr(painter, "LOD_MIN_LEAVES", 64)
+    asked = []
+    real = laminae.build_bands
+
+    def spy(primitive, lights, material, contours, **kw):
+        asked.append((contours, kw.get("segments")))
+        return real(primitive, lights, material, contours, **kw)
+
+    monkeypatch.setattr(laminae, "build_bands", spy)
+    scene = lattice_scene(3, 96, 64)  # 27 spheres about 20 pixels across
+    Renderer(csg="pixel").render(scene)
+    assert asked and set(asked) == {(64, None)}
+
+
 def lattice_scene(side: int, size: int, contours: int) -> Scene:
     """The union of side**3 spheres on a lattice (each about size / (2 side) pixels across)."""
     pitch = 1.0
