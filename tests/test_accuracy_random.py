@@ -38,7 +38,6 @@ from __future__ import annotations
 import math
 import os
 import sys
-from dataclasses import replace
 from pathlib import Path
 
 import numpy as np
@@ -65,6 +64,7 @@ from isocsg import (  # noqa: E402
 )
 from reference import compare, comparison_mask, fraction_within, raycast_scene  # noqa: E402
 from reference.raycaster import ReferenceImage, first_hit, shade_points  # noqa: E402
+from reference.ties import silhouette_ties as reference_ties  # noqa: E402
 from scenes import render_image  # noqa: E402
 
 MIN_IOU = 0.99
@@ -327,21 +327,8 @@ def reference_of(scene) -> ReferenceImage:
 
 def silhouette_ties(scene) -> np.ndarray:
     """Pixels whose exact hit or miss flips when the camera moves by TIE_PIXELS of a pixel
-    along its right or up axis (four moves): pixel centres within that of the silhouette."""
-    cam = scene.camera
-    eye, target = np.asarray(cam.eye, dtype=float), np.asarray(cam.target, dtype=float)
-    f = unit(target - eye)
-    r = unit(np.cross(f, np.asarray(cam.up, dtype=float)))
-    u = np.cross(r, f)
-    half = cam.height_m / 2 if cam.orthographic else np.linalg.norm(target - eye) * math.tan(math.radians(cam.fov) / 2)
-    step = TIE_PIXELS * 2 * half / cam.height
-    base = np.isfinite(reference_of(scene).image)
-    ties = np.zeros_like(base)
-    for move in (r, -r, u, -u):
-        moved = Camera(tuple(eye + step * move), tuple(target + step * move), cam.up, fov=cam.fov, width=cam.width,
-                       height=cam.height, orthographic=cam.orthographic, height_m=cam.height_m)
-        ties |= np.isfinite(reference_of(replace(scene, camera=moved)).image) != base
-    return ties
+    along its right or up axis (four moves), judged by this module's exact reference."""
+    return reference_ties(scene, tie_pixels=TIE_PIXELS, reference=reference_of)
 
 
 def intensity_levels(ref: ReferenceImage, keep: np.ndarray) -> int:
