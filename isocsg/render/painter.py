@@ -479,11 +479,10 @@ IMAGE_PIXEL_BYTES = 16
 #: Level of detail (``Renderer(adaptive_contours=True)``, the default): a leaf
 #: whose unclipped screen rectangle spans ``e`` pixels needs about
 #: ``N * e / LOD_PIXELS`` contours (at the default N = 64, bands about two
-#: pixels apart); it gets the requested ``N`` halved as often as that still
-#: leaves at least the need (so the counts are ``N``, ``N / 2``, ``N / 4``, ...
-#: and a small change of view does not change them), and never fewer than
-#: ``N / 2`` or :data:`MIN_CONTOURS` (nor more than ``N``). Every count is
-#: therefore ``N`` or ``N / 2`` (or the floor, for N < 32): proportional to
+#: pixels apart); it gets ``N`` where that need is over ``N / 2``, and ``N / 2``
+#: (never fewer than :data:`MIN_CONTOURS`, nor more than ``N``) where it is
+#: not, so a small change of view rarely changes the count. Every count is
+#: ``N`` or ``N / 2`` (or the floor, for N < 32): proportional to
 #: ``N``, so the error still shrinks as ``N`` grows however small the leaf;
 #: the floor keeps each band's value step (about range / 16) within the 0.05
 #: accuracy bar.
@@ -509,9 +508,6 @@ CHORD_PIXELS = 0.0125
 MIN_SEGMENTS = 16
 _SEGMENT_SHIFT = 16
 _CONTOUR_MASK = (1 << _SEGMENT_SHIFT) - 1
-#: Kept for compatibility: the counts of the earlier two-rung ladder (N = 64).
-CONTOUR_LADDER = np.array([16, 32])
-PIXELS_PER_BAND = LOD_PIXELS / 64
 
 
 def screen_contours(extent: NDArray[np.float64], contours: int) -> NDArray[np.int64]:
@@ -540,14 +536,10 @@ def screen_contours(extent: NDArray[np.float64], contours: int) -> NDArray[np.in
     >>> screen_contours(np.array([3.0, 40.0]), 8).tolist()
     [8, 8]
     """
-    e = np.asarray(extent, dtype=np.float64)
-    need = contours * np.nan_to_num(e, nan=np.inf, posinf=np.inf) / LOD_PIXELS
-    with np.errstate(divide="ignore", invalid="ignore"):
-        halvings = np.floor(np.log2(contours / need))
-    halvings = np.clip(np.nan_to_num(halvings, nan=0.0, posinf=30.0, neginf=0.0), 0, 30)
-    n = np.ceil(contours / np.exp2(halvings))
-    floor = max(min(contours, MIN_CONTOURS), contours // 2)
-    return np.clip(n, floor, contours).astype(np.int64)
+    e = np.nan_to_num(np.asarray(extent, dtype=np.float64), nan=np.inf, posinf=np.inf)
+    need = contours * e / LOD_PIXELS
+    half = min(contours, max(MIN_CONTOURS, (contours + 1) // 2))
+    return np.where(need > contours / 2, contours, half).astype(np.int64)
 
 
 def screen_segments(extent: NDArray[np.float64]) -> NDArray[np.int64]:
@@ -641,9 +633,9 @@ class Renderer:
         :data:`LOD_MIN_LEAVES` (64) leaves. ``True``: each of their leaves
         gets contours by its size on screen (:func:`screen_contours`): a
         primitive ``e`` pixels across needs about ``N * e / 128`` (bands about
-        two pixels apart at N = 64) and gets ``N`` halved as often as that
-        need allows, never fewer than ``N / 2`` or :data:`MIN_CONTOURS` (16,
-        which keeps every pixel within 0.05 of the range) nor more than ``N``;
+        two pixels apart at N = 64) and gets ``N``, or ``N / 2`` where that
+        need allows (never fewer than :data:`MIN_CONTOURS`, 16, which keeps
+        every pixel within 0.05 of the range, nor more than ``N``);
         primitives 64 pixels across or more get ``N`` (at N = 64). Every count
         is ``N`` or ``N / 2``, so the error still shrinks as ``N`` grows. A
         primitive keeps the larger count an earlier view of this renderer gave
