@@ -77,6 +77,18 @@ def test_six_digit_hull_form_is_exact_without_the_program() -> None:
         assert dv <= 1e-12 and db <= 1e-15
 
 
+@pytest.mark.parametrize("digits", [4, 5, 7])
+def test_hull_form_is_exact_at_every_digit_count(digits: int) -> None:
+    for solid in random_polyhedra(8, seed=digits):
+        text = dumps_openscad(solid, digits=digits)
+        numbers = re.findall(r"(?<![\w.$])-?(?:\d+\.?\d*|\.\d+)(?:e[-+]?\d+)?", text)
+        assert all(float(f"{float(t):.{digits}g}") == float(t) for t in numbers)
+        back = loads_openscad(text)
+        assert len(back.hull_vertices) == len(solid.hull_vertices)
+        dv, db = errors(back, solid)
+        assert dv <= 1e-12 and db <= 1e-15
+
+
 def test_points_form_stays_readable_and_rounded() -> None:
     """``polyhedra="points"``: one plain polyhedron of 6-digit points, its volume to about 6 digits."""
     (solid,) = random_polyhedra(1, seed=3)

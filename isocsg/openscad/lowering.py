@@ -8,7 +8,10 @@ What each node becomes:
   ``$fn``, ``$fa`` and ``$fs`` are ignored: the primitives are exact, not tessellated.
 - ``multmatrix(m)`` -> ``solid.transform(m)`` of the union of its children.
 - ``union``, ``group``, ``render``, ``color`` and the ``#`` and ``!`` modifiers -> a union;
-  ``difference`` and ``intersection`` -> the same Boolean. ``%`` (background) and
+  ``difference`` and ``intersection`` -> the same Boolean.
+- ``hull`` of polyhedral children (cubes, polyhedra, under maps and groups) -> the
+  :class:`~isocsg.ConvexPolyhedron` of all their corners, exactly (what the writer's
+  exact form of a convex polyhedron is); a hull of a curved or cut child is refused. ``%`` (background) and
   ``*`` (disabled) nodes are not part of the model and are left out.
 - ``linear_extrude(height, center)`` without twist or scale, of 2D children
   (``square``, ``circle``, ``polygon``, 2D ``multmatrix`` and Booleans). A straight
@@ -17,7 +20,7 @@ What each node becomes:
   cylinder, a ``square`` a box (or a prism when rotated), a ``polygon`` the union
   of convex prisms of :func:`~isocsg.geometry.extrude.extrude`.
 
-Nodes without an exact equivalent (``hull``, ``minkowski``, ``rotate_extrude``,
+Nodes without an exact equivalent (``hull`` of curved solids, ``minkowski``, ``rotate_extrude``,
 twisted or scaled extrusions, ``text``, ``import``, ``surface``, ``projection``,
 ``offset``, ``resize``, 2D objects outside an extrusion, non-convex polyhedra and
 unknown modules) raise :class:`~isocsg.errors.UnsupportedOpenSCADError` naming the
@@ -624,6 +627,7 @@ def _hull(lw: _Lowerer, call: CSGCall, parts: list[Solid | None]) -> Solid | Non
         elif isinstance(s, Box):
             corners.append(np.asarray(s.corners, dtype=np.float64))
         else:
-            lw.unsupported(call, HULL_OF_CURVED if isinstance(s, Primitive) else f"a hull of a {type(s).__name__.lower()} is not supported")
+            what = type(s).__name__.lower()
+            lw.unsupported(call, HULL_OF_CURVED if isinstance(s, Primitive) else f"a hull of {'an' if what[0] in 'aeiou' else 'a'} {what} is not supported")
             return None
     return _hull_of(np.vstack(corners) if corners else None)

@@ -5,7 +5,7 @@ ellipsoids and elliptic trunci as a ``multmatrix`` of a cube, sphere or
 cylinder), convex polyhedra and Boolean trees. The text uses only the calls of
 OpenSCAD's flattened export (``multmatrix``,
 ``cube``, ``sphere``, ``cylinder``, ``polyhedron``, ``union``, ``difference``,
-``intersection``), so it is both a ``.scad`` model and a ``.csg`` file that
+``intersection``, and ``hull`` for the exact form of a convex polyhedron), so it is both a ``.scad`` model and a ``.csg`` file that
 :func:`isocsg.openscad.loads_openscad` reads back without the ``openscad``
 program. Numbers are written with ``repr`` (the shortest text that reads back
 to the same float), so that round trip keeps every bit.
@@ -15,7 +15,9 @@ significant digits, but keeps nested ``multmatrix`` nodes. With ``digits``
 (what :func:`save_openscad` uses for ``.scad`` files) every number has at
 most that many digits and the exact values are composed from them, so that
 the model comes through ``openscad`` as the same solid (see
-:func:`dumps_openscad` and the README's OpenSCAD section). Each kind's
+:func:`dumps_openscad` and ``docs/openscad.md``): a convex polyhedron, whose
+points the export rounds like any number, as the ``hull()`` of one small
+tetrahedron per vertex, its tip moved onto the vertex by nested translations. Each kind's
 statement comes from its registered ``openscad`` hook.
 """
 
