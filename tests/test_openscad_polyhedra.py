@@ -148,6 +148,28 @@ def _through_openscad(texts: list[str], tmp_path) -> list:
 
 
 @needs_openscad
+def test_what_the_export_keeps(tmp_path) -> None:
+    """The facts the exact form rests on (docs/openscad.md): polyhedron points are rounded to 6
+    digits like every number, small numbers keep their exponent, nested maps stay nested, hull stays."""
+    tet = "faces = [[0, 1, 2], [0, 3, 1], [0, 2, 3], [1, 3, 2]]"
+    scad = tmp_path / "m.scad"
+    scad.write_text(
+        f"polyhedron(points = [[0.123456789, 1234.56789, 1e-12], [1, 0, 0], [0, 1, 0], [0, 0, 1.00000012345]], {tet});\n"
+        f"hull() {{ translate([1.5e-12, 3.25e-20, -7.77777e-9]) translate([1, 2, 3]) polyhedron(points = [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]], {tet}); }}\n"
+    )
+    out = tmp_path / "m.csg"
+    subprocess.run(["openscad", "-o", str(out), str(scad)], check=True, capture_output=True, timeout=600)
+    text = out.read_text()
+    assert "[[0.123457, 1234.57, 1e-12], [1, 0, 0], [0, 1, 0], [0, 0, 1]]" in text
+    poly, hull = parse_csg(text)
+    assert hull.name == "hull"
+    outer = hull.children[0]
+    inner = outer.children[0]
+    assert (outer.name, inner.name, inner.children[0].name) == ("multmatrix", "multmatrix", "polyhedron")
+    assert [row[3] for row in outer.args[0][:3]] == [1.5e-12, 3.25e-20, -7.77777e-9]  # multmatrix([[...]]) is positional
+
+
+@needs_openscad
 def test_random_polyhedra_round_trip_through_openscad(tmp_path) -> None:
     """solid -> .scad -> openscad's .csg -> solid keeps volume and bounds to 1e-9 (measured: exact)."""
     polys = random_polyhedra(200, seed=5, most=24)
