@@ -718,9 +718,10 @@ def _booleans(
             drop = np.zeros(len(tris), bool)
             cand = np.flatnonzero(on_shared)
             drop[cand] = _on_opposite_face(verts, tris, cand, COINCIDENT_DISTANCE)
+            verts, tris, origin, drop = _cancel_partial_overlaps(verts, tris, cand, drop, COINCIDENT_DISTANCE)
             if drop.any():
-                keep = ~drop
-                tris, leaf, face, g = tris[keep], leaf[keep], face[keep], g[keep]
+                keep = np.flatnonzero(~drop)
+                tris, leaf, face, g = tris[keep], leaf[origin[keep]], face[origin[keep]], g[origin[keep]]
         rev = np.einsum("ij,ij->i", _triangle_normals(verts, tris), normals[g]) < 0
         pieces.append((verts * half + centre, tris, leaf, face, rev, np.where(rev, vin[g], vout[g])))
     return pieces
@@ -882,6 +883,100 @@ def _on_opposite_face(
         # difference across the plane); of the layers left, one is kept.
         out[k] = other > 0 and below >= min(same - other, 1)
     return out
+
+
+def _cancel_partial_overlaps(
+    v: NDArray[np.float64], t: NDArray[np.int64], cand: NDArray[np.int64], drop: NDArray[np.bool_], tol: float
+) -> tuple[NDArray[np.float64], NDArray[np.int64], NDArray[np.int64], NDArray[np.bool_]]:
+    """Cancel opposite layers of a coincident face where they overlap only in part.
+
+    :func:`_on_opposite_face` judges a triangle at its centroid, which is
+    right where the opposite layer covers it whole. manifold3d may leave one
+    layer as large triangles and the other as small ones (``A - (A & B)``: the
+    face of ``A`` and the pieces of ``A & B``'s copy of it cut by ``B``); a
+    large triangle half covered is then dropped or kept whole. Such a
+    triangle is replaced by its part outside the opposite triangles
+    (a fin or shell has one layer each way: they cancel where both are).
+
+    Returns
+    -------
+    vertices, triangles
+        The input with the replacing triangles (and their vertices) appended.
+    origin : ndarray of int64
+        For every output triangle, the input triangle it lies in.
+    drop : ndarray of bool
+        Which output triangles to drop (the replaced ones among them).
+    """
+    import shapely
+    from scipy.spatial import cKDTree
+
+    n_tri = len(t)
+    origin = np.arange(n_tri, dtype=np.int64)
+    if len(cand) < 2:
+        return v, t, origin, drop
+    p = v[t[cand]]  # (m, 3, 3)
+    nrm = np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0])
+    area2 = np.linalg.norm(nrm, axis=1)
+    ok = area2 > 0
+    nrm = nrm / np.where(ok, area2, 1.0)[:, None]
+    off = np.einsum("ij,ij->i", nrm, p[:, 0])
+    key = np.column_stack([nrm, off])
+    # Opposite orientations: (n, d) of one near (-n, -d) of the other.
+    pairs = cKDTree(key).query_ball_point(-key, r=1e-3)
+    lo, hi = p.min(axis=1) - tol, p.max(axis=1) + tol
+    partners: dict[int, list[int]] = {}
+    for a in np.flatnonzero(ok).tolist():
+        for b in pairs[a]:
+            if not ok[b] or np.any(lo[a] > hi[b]) or np.any(lo[b] > hi[a]):
+                continue
+            if np.all(np.abs(p[b] @ nrm[a] - off[a]) <= tol):
+                partners.setdefault(a, []).append(b)
+    if not partners:
+        return v, t, origin, drop
+    new_v, new_t, new_o = [], [], []
+    replaced = np.zeros(n_tri, bool)
+    start = len(v)
+    for a, bs in partners.items():
+        # A frame in the plane of triangle a: its first edge and the normal.
+        e1 = p[a, 1] - p[a, 0]
+        e1 = e1 / np.linalg.norm(e1)
+        e2 = np.cross(nrm[a], e1)
+        base = p[a, 0]
+
+        def flat(q: NDArray[np.float64]) -> NDArray[np.float64]:
+            d = q - base
+            return np.column_stack([d @ e1, d @ e2])
+
+        tri = shapely.Polygon(flat(p[a]))
+        cover = shapely.union_all(shapely.polygons(np.stack([flat(p[b]) for b in bs])))
+        whole = tri.area
+        rest = tri.difference(cover)
+        if rest.area >= whole * (1 - 1e-9) or rest.area <= whole * 1e-9:
+            continue  # not covered, or covered whole: the centroid rule is right
+        replaced[cand[a]] = True
+        pieces = shapely.get_parts(shapely.constrained_delaunay_triangles(rest))
+        for piece in pieces:
+            xy = np.asarray(piece.exterior.coords)[:3]
+            if shapely.area(piece) <= whole * 1e-12:
+                continue
+            # counter-clockwise in the frame is the triangle's own orientation
+            if (xy[1, 0] - xy[0, 0]) * (xy[2, 1] - xy[0, 1]) - (xy[1, 1] - xy[0, 1]) * (xy[2, 0] - xy[0, 0]) < 0:
+                xy = xy[::-1]
+            new_v.append(base + xy[:, :1] * e1 + xy[:, 1:] * e2)
+            new_t.append(start + np.arange(3))
+            new_o.append(cand[a])
+            start += 3
+    if not replaced.any():
+        return v, t, origin, drop
+    out_drop = np.concatenate([drop | replaced, np.zeros(len(new_t), bool)])
+    if not new_t:
+        return v, t, origin, out_drop
+    return (
+        np.vstack([v, *new_v]),
+        np.vstack([t, np.array(new_t, np.int64)]),
+        np.concatenate([origin, np.array(new_o, np.int64)]),
+        out_drop,
+    )
 
 
 def _assemble(pieces: list[tuple[Any, ...]]) -> CSGSurface:
