@@ -6,7 +6,12 @@ the lights (point lights near and far, directional ones, one or two), the
 material (specular on and off) and a placement of the whole scene (offset
 and scale across the allowed range). Each draw is rendered at N = 64 on its
 first view (resolved per pixel) and on a later one (through the clipped band
-surface) and judged by the analytic ray caster with the catalogue's bars.
+surface) and judged by the analytic ray caster with the catalogue's bars. On
+both views the mean error must also fall from N = 16 to N = 64, judged as
+``tests/test_accuracy_random.py`` judges single primitives (its
+:func:`errors_by_contours`: over enough distinct exact intensities that the
+sawtooth of the band quantisation averages out, the view enlarged where there
+are too few).
 
 ``ISOCSG_SEARCH_EXAMPLES=2000 python -m pytest tests/test_csg_random_views.py``
 runs a longer search than the fixed set CI draws; ``ISOCSG_SEARCH_LOG=file``
@@ -15,6 +20,7 @@ appends one line per judged example.
 
 from __future__ import annotations
 
+import dataclasses
 import math
 import os
 import sys
@@ -27,6 +33,7 @@ from hypothesis import strategies as st
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
 from reference import compare, fraction_within, raycast_scene  # noqa: E402
+from test_accuracy_random import converges, errors_by_contours  # noqa: E402
 from test_csg_properties import trees  # noqa: E402
 
 from isocsg import (  # noqa: E402
@@ -137,16 +144,31 @@ def _placed_light(light, offset, scale):
     return light
 
 
+def _scene(tree, camera, light_list, material, placement, contours=CONTOURS, size=SIZE) -> Scene:
+    offset, scale = placement
+    return Scene(
+        dataclasses.replace(_placed_camera(camera, offset, scale), width=size, height=size),
+        tuple(_placed_light(li, offset, scale) for li in light_list),
+        (SceneObject(placed(tree, offset, scale), material),),
+        RenderSettings(contours=contours),
+    )
+
+
+def view_errors(method, scene_at, ref, image):
+    """:func:`errors_by_contours` of one CSG method (``scene_at(size, contours)`` builds the view)."""
+    return errors_by_contours(
+        lambda size, n: Renderer(csg=method).render(scene_at(size, n)).image,
+        lambda size: raycast_scene(scene_at(size, CONTOURS)), image.shape[0], ref, image,
+    )
+
+
 @VIEW_SETTINGS
 @given(trees, cameras(), lights(), materials, placements)
 def test_random_trees_match_the_ray_caster_on_first_and_later_views(tree, camera, light_list, material, placement):
-    offset, scale = placement
-    scene = Scene(
-        _placed_camera(camera, offset, scale),
-        tuple(_placed_light(li, offset, scale) for li in light_list),
-        (SceneObject(placed(tree, offset, scale), material),),
-        RenderSettings(contours=CONTOURS),
-    )
+    def scene_at(size, contours):
+        return _scene(tree, camera, light_list, material, placement, contours, size)
+
+    scene = scene_at(SIZE, CONTOURS)
     ref = raycast_scene(scene)
     assume(ref.mask.sum() >= MIN_PIXELS)
     for method in ("pixel", "surface"):
@@ -155,6 +177,34 @@ def test_random_trees_match_the_ray_caster_on_first_and_later_views(tree, camera
         assert result.iou >= MIN_IOU, f"{method}: {result.summary()}"
         # (an image whose exact range is below float32 resolution is judged at a few float32 steps)
         assert fraction_within(image, ref, result) >= MIN_FRACTION, f"{method}: {result.summary()}"
+        errors = view_errors(method, scene_at, ref, image)
+        if errors is not None:
+            assert converges(*errors[:2]), f"{method}: mean |err| at {errors[2]} px, N = 16 and 64: {errors[:2]}"
         if LOG:
             with open(LOG, "a") as fh:
-                fh.write(f"{method}\t{len(tree.leaves()) if hasattr(tree, 'leaves') else 1}\t{result.summary()}\n")
+                shrink = "" if errors is None else f"\tN16 {errors[0]:.5f} N64 {errors[1]:.5f} @{errors[2]}"
+                fh.write(f"{method}\t{len(tree.leaves()) if hasattr(tree, 'leaves') else 1}\t{result.summary()}{shrink}\n")
+
+
+def test_the_convergence_check_fails_on_a_renderer_that_ignores_n():
+    """The N check of the search is not vacuous: on a tree whose error falls from N = 16 to 64
+    on both views, a renderer that ignores N (16 contours whatever it is asked) fails it."""
+    tree = Sphere((0, 0, 0), 1.0) - Truncus((0.3, 0, 0), (0, 0, 3.0), 0.4, 0.4)
+    camera = Camera((3.0, -4.0, 2.5), (0, 0, 0), fov=30.0, width=64, height=64)
+    light_list = [PointLight((4.0, -2.0, 6.0))]
+
+    def scene_at(size, contours):
+        return _scene(tree, camera, light_list, Material(), ((0.0, 0.0, 0.0), 1.0), contours, size)
+
+    ref = raycast_scene(scene_at(64, CONTOURS))
+    for method in ("pixel", "surface"):
+        image = Renderer(csg=method).render(scene_at(64, CONTOURS)).image
+        e16, e64, _ = view_errors(method, scene_at, ref, image)
+        assert converges(e16, e64), (method, e16, e64)
+
+        def ignores_n(size, n, method=method):
+            return Renderer(csg=method).render(scene_at(size, 16)).image
+
+        stuck = errors_by_contours(ignores_n, lambda size: raycast_scene(scene_at(size, CONTOURS)), 64, ref,
+                                   ignores_n(64, CONTOURS))
+        assert not converges(*stuck[:2]), (method, stuck)
