@@ -921,60 +921,69 @@ def _cancel_partial_overlaps(
     nrm = nrm / np.where(ok, area2, 1.0)[:, None]
     off = np.einsum("ij,ij->i", nrm, p[:, 0])
     key = np.column_stack([nrm, off])
-    # Opposite orientations: (n, d) of one near (-n, -d) of the other.
-    pairs = cKDTree(key).query_ball_point(-key, r=1e-3)
+    # Opposite orientations: (n, d) of one near (-n, -d) of the other; then boxes that meet
+    # and every vertex of the other within tol of the first's plane.
+    near = cKDTree(key).sparse_distance_matrix(cKDTree(-key), 1e-3, output_type="ndarray")
+    i, j = near["i"].astype(np.int64), near["j"].astype(np.int64)
     lo, hi = p.min(axis=1) - tol, p.max(axis=1) + tol
-    partners: dict[int, list[int]] = {}
-    for a in np.flatnonzero(ok).tolist():
-        for b in pairs[a]:
-            if not ok[b] or np.any(lo[a] > hi[b]) or np.any(lo[b] > hi[a]):
-                continue
-            if np.all(np.abs(p[b] @ nrm[a] - off[a]) <= tol):
-                partners.setdefault(a, []).append(b)
-    if not partners:
+    sel = ok[i] & ok[j] & np.all(lo[i] <= hi[j], axis=1) & np.all(lo[j] <= hi[i], axis=1)
+    i, j = i[sel], j[sel]
+    sel = np.all(np.abs(np.einsum("kvx,kx->kv", p[j], nrm[i]) - off[i][:, None]) <= tol, axis=1)
+    i, j = i[sel], j[sel]
+    if not len(i):
         return v, t, origin, drop
-    new_v, new_t, new_o = [], [], []
+    # Each pair in the plane of i's triangle, seen along its normal's largest axis (areas in
+    # a fixed ratio there); the layers facing one way do not overlap, so pairwise overlaps sum.
+    axis = np.argmax(np.abs(nrm), axis=1)
+    keep2 = np.array([[1, 2], [0, 2], [0, 1]])[axis]
+
+    def flat(tri: NDArray[np.float64], ax: NDArray[np.int64]) -> Any:
+        return shapely.polygons(np.take_along_axis(tri, ax[:, None, :], axis=2))
+
+    # (a triangle with an opposite twin on the same vertices is covered whole)
+    corners = np.sort(t[cand], axis=1)
+    twin = np.zeros(len(cand), bool)
+    twin[i[np.all(corners[i] == corners[j], axis=1)]] = True
+    i, j = i[~twin[i]], j[~twin[i]]
+    own = flat(p[i], keep2[i])
+    covered = np.bincount(i, shapely.area(shapely.intersection(own, flat(p[j], keep2[i]))), minlength=len(cand))
+    whole = shapely.area(flat(p, keep2))
+    covered[twin] = whole[twin]
+    partial = np.flatnonzero((covered > whole * 1e-9) & (covered < whole * (1 - 1e-9)))
+    if not len(partial):
+        return v, t, origin, drop
+    # The partly covered triangles minus their opposite partners, one partner rank at a time.
+    mine = np.isin(i, partial)
+    i, j = i[mine], j[mine]
+    order = np.argsort(i, kind="stable")
+    i, j = i[order], j[order]
+    rank = np.arange(len(i)) - np.searchsorted(i, i)
+    slot = np.searchsorted(partial, i)
+    rest = flat(p[partial], keep2[partial])
+    for r in range(int(rank.max()) + 1):
+        at = rank == r
+        rest[slot[at]] = shapely.difference(rest[slot[at]], flat(p[j[at]], keep2[i[at]]))
+    pieces, which = shapely.get_parts(shapely.constrained_delaunay_triangles(rest), return_index=True)
+    a = partial[which]
+    big = shapely.area(pieces) > whole[a] * 1e-12
+    pieces, a = pieces[big], a[big]
+    xy = shapely.get_coordinates(shapely.get_exterior_ring(pieces)).reshape(len(pieces), 4, 2)[:, :3]
+    # back into the plane of each triangle: the dropped coordinate from n . x = d
+    q = np.empty((len(a), 3, 3))
+    rows = np.arange(len(a))[:, None]
+    q[rows, :, keep2[a]] = np.moveaxis(xy, 2, 1)
+    kept_n = np.take_along_axis(nrm[a], keep2[a], axis=1)
+    q[rows[:, 0], :, axis[a]] = (off[a][:, None] - np.einsum("tvk,tk->tv", xy, kept_n)) / nrm[a, axis[a]][:, None]
+    # each keeps its triangle's own orientation
+    flip = np.einsum("ij,ij->i", np.cross(q[:, 1] - q[:, 0], q[:, 2] - q[:, 0]), nrm[a]) < 0
+    q[flip] = q[flip, ::-1]
     replaced = np.zeros(n_tri, bool)
-    start = len(v)
-    for a, bs in partners.items():
-        # A frame in the plane of triangle a: its first edge and the normal.
-        e1 = p[a, 1] - p[a, 0]
-        e1 = e1 / np.linalg.norm(e1)
-        e2 = np.cross(nrm[a], e1)
-        base = p[a, 0]
-
-        def flat(q: NDArray[np.float64]) -> NDArray[np.float64]:
-            d = q - base
-            return np.column_stack([d @ e1, d @ e2])
-
-        tri = shapely.Polygon(flat(p[a]))
-        cover = shapely.union_all(shapely.polygons(np.stack([flat(p[b]) for b in bs])))
-        whole = tri.area
-        rest = tri.difference(cover)
-        if rest.area >= whole * (1 - 1e-9) or rest.area <= whole * 1e-9:
-            continue  # not covered, or covered whole: the centroid rule is right
-        replaced[cand[a]] = True
-        pieces = shapely.get_parts(shapely.constrained_delaunay_triangles(rest))
-        for piece in pieces:
-            xy = np.asarray(piece.exterior.coords)[:3]
-            if shapely.area(piece) <= whole * 1e-12:
-                continue
-            # counter-clockwise in the frame is the triangle's own orientation
-            if (xy[1, 0] - xy[0, 0]) * (xy[2, 1] - xy[0, 1]) - (xy[1, 1] - xy[0, 1]) * (xy[2, 0] - xy[0, 0]) < 0:
-                xy = xy[::-1]
-            new_v.append(base + xy[:, :1] * e1 + xy[:, 1:] * e2)
-            new_t.append(start + np.arange(3))
-            new_o.append(cand[a])
-            start += 3
-    if not replaced.any():
-        return v, t, origin, drop
-    out_drop = np.concatenate([drop | replaced, np.zeros(len(new_t), bool)])
-    if not new_t:
-        return v, t, origin, out_drop
+    replaced[cand[partial]] = True
+    out_drop = np.concatenate([drop | replaced, np.zeros(len(a), bool)])
     return (
-        np.vstack([v, *new_v]),
-        np.vstack([t, np.array(new_t, np.int64)]),
-        np.concatenate([origin, np.array(new_o, np.int64)]),
+        np.vstack([v, q.reshape(-1, 3)]),
+        np.vstack([t, len(v) + 3 * np.arange(len(a), dtype=np.int64)[:, None] + np.arange(3)]),
+        np.concatenate([origin, cand[a]]),
         out_drop,
     )
 
