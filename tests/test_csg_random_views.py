@@ -11,7 +11,10 @@ both views the mean error must also fall from N = 16 to N = 64, judged as
 ``tests/test_accuracy_random.py`` judges single primitives (its
 :func:`errors_by_contours`: over enough distinct exact intensities that the
 sawtooth of the band quantisation averages out, the view enlarged where there
-are too few).
+are too few). Under ``CI`` the later view's N check runs on one example in
+LATER_N_STRIDE (chosen by the scene, so a replay judges the same), which keeps
+the fixed set's time near what it was without the check; a local search
+judges every example on both views.
 
 ``ISOCSG_SEARCH_EXAMPLES=2000 python -m pytest tests/test_csg_random_views.py``
 runs a longer search than the fixed set CI draws; ``ISOCSG_SEARCH_LOG=file``
@@ -24,6 +27,7 @@ import dataclasses
 import math
 import os
 import sys
+import zlib
 from pathlib import Path
 
 import numpy as np
@@ -58,6 +62,8 @@ SIZE = 96
 CONTOURS = 64
 MIN_IOU = 0.99
 MIN_FRACTION = 0.98
+#: Under CI, one example in this many gets the later view's N check (it builds a second surface).
+LATER_N_STRIDE = 4 if os.environ.get("CI") else 1
 #: Silhouettes smaller than this are left out of the IoU bar (a pixel is then over 0.25 % of it).
 MIN_PIXELS = 400
 
@@ -177,7 +183,8 @@ def test_random_trees_match_the_ray_caster_on_first_and_later_views(tree, camera
         assert result.iou >= MIN_IOU, f"{method}: {result.summary()}"
         # (an image whose exact range is below float32 resolution is judged at a few float32 steps)
         assert fraction_within(image, ref, result) >= MIN_FRACTION, f"{method}: {result.summary()}"
-        errors = view_errors(method, scene_at, ref, image)
+        judged = method == "pixel" or zlib.crc32(repr(scene).encode()) % LATER_N_STRIDE == 0
+        errors = view_errors(method, scene_at, ref, image) if judged else None
         if errors is not None:
             assert converges(*errors[:2]), f"{method}: mean |err| at {errors[2]} px, N = 16 and 64: {errors[:2]}"
         if LOG:
