@@ -31,7 +31,8 @@ volume fins and shells) where operands' faces coincide, e.g. in
 ``(S | C) - C`` or ``A - A``. Where two leaves have band triangles in one
 plane, the result's triangles in those planes are tested, and those lying on
 an opposite-facing triangle of the result are dropped
-(:data:`COINCIDENT_DISTANCE`).
+(:data:`COINCIDENT_DISTANCE`); a triangle only partly covered by opposite ones
+keeps its part outside them.
 """
 
 from __future__ import annotations
