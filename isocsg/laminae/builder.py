@@ -191,6 +191,7 @@ def build_bands(
     eye: ArrayLike | None = None,
     segments: int | None = None,
     hidden: ArrayLike | None = None,
+    keep: bool = True,
 ) -> LaminaSet:
     """The band mesh of one primitive, without the laminae (what a renderer fills).
 
@@ -221,6 +222,12 @@ def build_bands(
         is constant), so that its geometry still bounds the solid at the
         cost of its base mesh alone. Other parts are cut as without it.
         ``None``: every part is cut. Part of the cache key.
+    keep : bool, default True
+        Whether a set built here is kept in the cache. ``False`` for a caller
+        that keeps what it needs itself (a renderer's prepared band meshes of
+        a large tree): the cache would otherwise hold a second, different
+        share of the same model (up to :data:`CACHE_BYTES` more memory). A
+        cached set is returned either way.
 
     Returns
     -------
@@ -253,7 +260,7 @@ def build_bands(
     True
     """
     box = None if hidden is None else _hidden_box(hidden)
-    return _cached(primitive, lights, material, contours, eye, segments, bands_only=True, hidden=box)
+    return _cached(primitive, lights, material, contours, eye, segments, bands_only=True, hidden=box, keep=bool(keep))
 
 
 def _hidden_box(hidden: ArrayLike) -> tuple[tuple[float, float, float], tuple[float, float, float]]:
@@ -272,7 +279,7 @@ def _hidden_box(hidden: ArrayLike) -> tuple[tuple[float, float, float], tuple[fl
 
 def _cached(
     primitive: Primitive, lights: Sequence[Light], material: Material | None, contours: int, eye: ArrayLike | None,
-    segments: int | None, *, bands_only: bool, hidden: tuple[Any, Any] | None = None,
+    segments: int | None, *, bands_only: bool, hidden: tuple[Any, Any] | None = None, keep: bool = True,
 ) -> LaminaSet:
     if hook_for(primitive, "surface") is None:
         raise InvalidParameterError(
@@ -319,6 +326,8 @@ def _cached(
         key = part
     else:
         out = _build(primitive, lights_t, mat, n, eye_a, None if known is None else known[0].bands)
+    if not keep:
+        return out
     size = _nbytes(out)
     limit = min(CACHE_BYTES, memory_budget() // 4)
     with _LOCK:
@@ -475,6 +484,7 @@ def _cut(surf: Surface, fams: list[FieldFamily], mat: Material, n: int, hidden: 
     order = np.argsort(tri_part, kind="stable")
     ends = np.cumsum(counts)
     remap = np.full(len(local), -1, np.int64)
+    box = None if hidden is None else (np.asarray(hidden[0]) - surf.origin, np.asarray(hidden[1]) - surf.origin)
     for part in np.flatnonzero(counts):
         if single:
             vertices, values, tri = local, fields, triangles
@@ -486,7 +496,7 @@ def _cut(surf: Surface, fams: list[FieldFamily], mat: Material, n: int, hidden: 
             remap[used] = np.arange(len(used))
             vertices, values, tri = local[used], fields[used], remap[tri]
         _unlight_grazed(values, fams)
-        unseen = hidden is not None and _outside(vertices, surf.origin, hidden)
+        unseen = box is not None and _outside(vertices, *box)
         band = np.zeros((len(tri), k), np.int64)
         for i, fam in enumerate(fams):
             col = values[:, i]
@@ -550,15 +560,13 @@ def _cut(surf: Surface, fams: list[FieldFamily], mat: Material, n: int, hidden: 
 _KIND_CODES = {"diffuse": 0, "specular_out": 1, "specular_in": 2}
 
 
-def _outside(local: NDArray[np.float64], origin: NDArray[np.float64], box: tuple[Any, Any]) -> bool:
-    """Whether the points ``origin + local`` all lie strictly beyond one face of ``box`` (lo, hi).
+def _outside(local: NDArray[np.float64], lo: NDArray[np.float64], hi: NDArray[np.float64]) -> bool:
+    """Whether the points ``local`` all lie strictly beyond one face of the box ``[lo, hi]``.
 
     The part's triangles are then outside too (they are convex combinations of their corners)."""
     if not len(local):
         return False
-    lo = np.asarray(box[0]) - origin
-    hi = np.asarray(box[1]) - origin
-    return bool(np.any(local.min(axis=0) > hi) or np.any(local.max(axis=0) < lo))
+    return bool((local.min(axis=0) > hi).any() or (local.max(axis=0) < lo).any())
 
 
 def _unlight_grazed(values: NDArray[np.float64], fams: list[FieldFamily]) -> None:
