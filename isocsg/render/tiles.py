@@ -30,7 +30,7 @@ from numpy.typing import NDArray
 
 from ..camera import Camera
 from ..errors import InvalidGeometryError
-from ..geometry.primitives import Box, Cylinder, Primitive, Sphere, Truncus
+from ..geometry.primitives import Box, Cone, Cylinder, Primitive, Sphere, Truncus
 from .raster import NEAR_RELATIVE
 
 __all__ = [
@@ -332,9 +332,13 @@ def clip_leaves(
     truncus (cylinder, cone) along its axis to the box's extent along that
     axis, and an axis-aligned box to the box, each with a margin of
     :data:`CLIP_MARGIN` of the box's diagonal, so that the new ends lie
-    strictly outside the box and never show. Other kinds, leaves within the
-    slab, and cuts that would give a primitive below the documented smallest
-    lengths, are kept as they are.
+    strictly outside the box and never show. A truncus is cut to the
+    tighter of two ranges of its axis, each holding all of it that can meet
+    the box: the box's extent along the axis, and where the axis runs through
+    the box grown by the larger radius (any point of the truncus lies within
+    that radius of its axis; the latter is what a tilted hole in a wide plate
+    needs). Other kinds, leaves within the slab, and cuts that would give a
+    primitive below the documented smallest lengths, are kept as they are.
 
     Examples
     --------
@@ -359,11 +363,13 @@ def clip_leaves(
     for i in beyond:
         p = leaves[i]
         try:
-            if type(p) in (Truncus, Cylinder):
+            if type(p) in (Truncus, Cylinder, Cone):
                 u = p.unit_axis
-                s = (corners - p.center_array) @ u  # the box's extent along the axis
+                c = p.center_array
+                s = (corners - c) @ u  # the box's extent along the axis
                 half = 0.5 * p.height
-                s1, s0 = min(half, float(s.max())), max(-half, float(s.min()))
+                t0, t1 = _line_in_box(c, u, glo - max(p.r1, p.r2), ghi + max(p.r1, p.r2))
+                s1, s0 = min(half, float(s.max()), t1), max(-half, float(s.min()), t0)
                 if s0 >= s1 or (s1 == half and s0 == -half):
                     continue  # off the box altogether (pruned elsewhere), or within the slab
                 centre = p.center_array + 0.5 * (s0 + s1) * u
@@ -383,6 +389,21 @@ def clip_leaves(
         except InvalidGeometryError:
             out[i] = p  # too thin or too flat once cut: built whole
     return out
+
+
+def _line_in_box(
+    c: NDArray[np.float64], u: NDArray[np.float64], lo: NDArray[np.float64], hi: NDArray[np.float64],
+) -> tuple[float, float]:
+    """The parameters ``[t0, t1]`` where the line ``c + t u`` lies in the box ``[lo, hi]`` (slabs;
+    an empty range, ``t0 > t1``, when it misses the box)."""
+    t0, t1 = -np.inf, np.inf
+    for k in range(3):
+        if u[k] != 0.0:
+            a, b = (lo[k] - c[k]) / u[k], (hi[k] - c[k]) / u[k]
+            t0, t1 = max(t0, min(a, b)), min(t1, max(a, b))
+        elif not lo[k] <= c[k] <= hi[k]:
+            return np.inf, -np.inf
+    return float(t0), float(t1)
 
 
 def combine_boxes(
