@@ -25,6 +25,8 @@ are built for each one.
 
 from __future__ import annotations
 
+import functools
+import inspect
 import math
 import threading
 from collections import OrderedDict
@@ -372,12 +374,24 @@ def _origin(primitive: Primitive) -> NDArray[np.float64]:
 
 def _surface(
     primitive: Primitive, lights: tuple[Light, ...], n: int, eye: NDArray[np.float64] | None, shininess: float,
-    weights: tuple[float, float] = (1.0, 1.0), segments: int | None = None,
+    weights: tuple[float, float] = (1.0, 1.0), segments: int | None = None, hidden: tuple[Any, Any] | None = None,
 ) -> Surface:
     hook = hook_for(primitive, "surface")
     if hook is None:  # pragma: no cover - _cached refuses such a primitive first
         raise InvalidParameterError(f"primitive {type(primitive).__name__} has no registered band surface")
+    if hidden is not None and _takes_hidden(hook):
+        # A hook that knows which of its parts lie outside the box need not refine them.
+        return hook(primitive, list(lights), n, eye, shininess, weights, segments, hidden=hidden)  # type: ignore[no-any-return]
     return hook(primitive, list(lights), n, eye, shininess, weights, segments)  # type: ignore[no-any-return]
+
+
+@functools.lru_cache(maxsize=64)
+def _takes_hidden(hook: Any) -> bool:
+    """Whether a surface hook takes the optional ``hidden`` box (a keyword of the built-in trunci's)."""
+    try:
+        return "hidden" in inspect.signature(hook).parameters
+    except (TypeError, ValueError):
+        return False
 
 
 def _paper_laminae(primitive: Primitive, light: Light, n: int) -> list[tuple[NDArray[np.float64], NDArray[np.float64], float, str]]:
@@ -420,7 +434,8 @@ def _build_bands(
     """The band mesh alone: the primitive's surface cut along its contour families' level lines."""
     origin = _origin(primitive)
     eye_local = None if eye is None else eye - origin
-    surf = _surface(primitive, lights, n, eye_local, float(mat.shininess), (float(mat.kd), float(mat.ks)), segments)
+    surf = _surface(primitive, lights, n, eye_local, float(mat.shininess), (float(mat.kd), float(mat.ks)), segments,
+                    hidden)
     fams: list[FieldFamily] = []
     for j, light in enumerate(lights):
         fams.append(diffuse_family(j, light, mat, incidence(light, surf.vertices, surf.normals, surf.origin)))
