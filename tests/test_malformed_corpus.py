@@ -846,6 +846,19 @@ API_CASES += [
      ("EllipticTruncus.matrix",)),
     ("EllipticTruncus.r1-negative", lambda: isocsg.EllipticTruncus((0, 0, 0), np.eye(3), -1, 1), G, ("EllipticTruncus.r1",)),
 ]
+def _bands_hidden(hidden: Any) -> Any:
+    from isocsg.laminae import build_bands
+
+    return build_bands(isocsg.Sphere((0, 0, 0), 1), [isocsg.PointLight((0, 0, 5))], contours=8, hidden=hidden)
+
+
+API_CASES += [
+    ("build_bands.hidden-shape", lambda: _bands_hidden([(0, 0, 0)]), P, ("hidden",)),
+    ("build_bands.hidden-nan", lambda: _bands_hidden([(NAN, 0, 0), (1, 1, 1)]), P, ("hidden",)),
+    ("build_bands.hidden-inverted", lambda: _bands_hidden([(1, 1, 1), (0, 0, 0)]), P, ("hidden",)),
+    ("build_bands.hidden-strings", lambda: _bands_hidden([("a", "b", "c"), (1, 1, 1)]), P, ("hidden",)),
+    ("build_bands.hidden-object", lambda: _bands_hidden(object()), P, ("hidden",)),
+]
 API_CASES += [
     ("Box.size-thin", lambda: isocsg.Box((0, 0, 0), (1, 1, 1e-300)), G, ("Box.size",)),
     ("Box.size-aspect", lambda: isocsg.Box((0, 0, 0), (1, 1, 1e-7)), G, ("Box.size",)),

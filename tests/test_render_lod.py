@@ -167,3 +167,113 @@ def test_a_model_that_overflows_keeps_a_stable_part_of_its_bands(monkeypatch):
     assert per_view[0] == 82
     assert per_view[1] < 0.75 * per_view[0] and per_view[2] == per_view[1] == per_view[3], per_view
     assert r.cache_info()["prepared_bytes"] <= total // 2
+
+
+# ----------------------------------------------------------------------------- the visible part of large trees' leaves
+
+
+def _tilted_plate_tree():
+    """A plate minus tilted holes, cones and slots longer than it is thick, plus a boss (a union
+    inside the difference), so that clip_leaves meets every case it handles: trunci along tilted
+    axes (their ends reach past the plate), cones cut to frusta, axis-aligned boxes poking out."""
+    from isocsg import Box, Cone, Cylinder, Truncus
+
+    plate = Box((0.0, 0.0, 0.0), (4.0, 3.0, 0.4)) | Cylinder((1.2, 0.8, 0.3), (0.0, 0.0, 0.6), 0.4)
+    cutters = []
+    rng = np.random.default_rng(7)
+    for k in range(12):
+        x, y = rng.uniform(-1.6, 1.6), rng.uniform(-1.2, 1.2)
+        axis = (rng.uniform(-0.5, 0.5), rng.uniform(-0.5, 0.5), 1.5)
+        kind = k % 4
+        if kind == 0:
+            cutters.append(Cylinder((x, y, 0.0), axis, 0.12))
+        elif kind == 1:
+            cutters.append(Cone((x, y, 0.2), axis, 0.2))
+        elif kind == 2:
+            cutters.append(Truncus((x, y, -0.1), axis, 0.15, 0.05))
+        else:
+            cutters.append(Box((x, y, 0.0), (0.3, 0.1, 2.0)))
+    tree = plate
+    for c in cutters:
+        tree = tree - c
+    return tree
+
+
+def test_clipped_leaves_give_the_same_solid():
+    prog = compile_program(_tilted_plate_tree())
+    geom = tiles.leaf_geometry(prog.leaves)
+    lo, hi = tiles.combine_boxes(prog.op, prog.arg, geom.lo, geom.hi)
+    clipped = tiles.clip_leaves(prog.leaves, geom, lo, hi)
+    changed = [i for i, (a, b) in enumerate(zip(prog.leaves, clipped)) if a is not b]
+    assert len(changed) >= 10  # the cutters (and the boss's cylinder is within the box: kept)
+    for i in changed:
+        a, b = prog.leaves[i], clipped[i]
+        assert type(b).__name__ in ("Cylinder", "Truncus", "Box")
+        assert b.volume < a.volume
+    # Membership of points in and around the object's box, by each leaf's own exact test:
+    # the program over the cut leaves is the program over the whole ones.
+    rng = np.random.default_rng(3)
+    span = hi - lo
+    pts = lo - 0.3 * span + rng.random((200_000, 3)) * 1.6 * span
+
+    def inside(leaves):
+        masks = [leaf.contains(pts) for leaf in leaves]
+        from isocsg.csg.program import combine_masks
+
+        return prog.evaluate(lambda i, _p: masks[i], combine_masks)
+
+    whole, cut = inside(prog.leaves), inside(clipped)
+    assert whole.sum() > 1000
+    np.testing.assert_array_equal(whole, cut)
+
+
+def test_hidden_parts_keep_their_geometry_and_are_not_cut():
+    from isocsg import Cylinder, PointLight
+    from isocsg.laminae import build_bands
+
+    hole = Cylinder((0.3, -0.2, 0.0), (0.0, 0.0, 1.2), 0.2)
+    light = [PointLight((3.0, -4.0, 6.0))]
+    plate_box = [(-2.0, -1.5, -0.2), (2.0, 1.5, 0.2)]
+    full = build_bands(hole, light, None, 32, keep=False).bands
+    seen = build_bands(hole, light, None, 32, hidden=plate_box, keep=False).bands
+    around = build_bands(hole, light, None, 32, hidden=[(-2.0, -1.5, -1.0), (2.0, 1.5, 1.0)], keep=False).bands
+    for a, b in zip((full.vertices, full.triangles, full.value_out, full.value_in),
+                    (around.vertices, around.triangles, around.value_out, around.value_in)):
+        np.testing.assert_array_equal(a, b)  # nothing outside the box: the same bands
+
+    def split(bands):
+        v = bands.vertices[bands.triangles]
+        end = np.all(np.abs(np.abs(v[:, :, 2]) - 0.6) < 1e-12, axis=1)
+        area = 0.5 * np.linalg.norm(np.cross(v[:, 1] - v[:, 0], v[:, 2] - v[:, 0]), axis=1)
+        return end, area, v
+
+    end_f, area_f, v_f = split(full)
+    end_s, area_s, v_s = split(seen)
+    # The side is cut exactly as before, triangle for triangle and value for value.
+    np.testing.assert_array_equal(v_f[~end_f], v_s[~end_s])
+    np.testing.assert_array_equal(full.value_out[~end_f], seen.value_out[~end_s])
+    np.testing.assert_array_equal(full.value_in[~end_f], seen.value_in[~end_s])
+    # The ends, outside the box, keep their base triangles (far fewer than their bands had)
+    # with the ambient value, and cover the same discs.
+    assert end_s.sum() < 0.3 * end_f.sum()
+    np.testing.assert_allclose(area_s[end_s].sum(), area_f[end_f].sum(), rtol=1e-12)
+    assert np.all(seen.value_out[end_s] == 0.1) and np.all(seen.value_in[end_s] == 0.1)
+
+
+def test_large_trees_build_only_the_visible_part(monkeypatch):
+    # A plate of 82 leaves whose holes are twice as long as it is thick: every hole is built
+    # cut to the plate's slab (and margins), with its ends outside the plate's box left uncut.
+    calls = []
+    real = laminae.build_bands
+
+    def spy(primitive, lights, material, contours, **kw):
+        calls.append((primitive, kw.get("hidden"), kw.get("keep", True)))
+        return real(primitive, lights, material, contours, **kw)
+
+    monkeypatch.setattr(laminae, "build_bands", spy)
+    scene = plate_scene(9, 120, 96, contours=64)
+    Renderer().render(scene)
+    holes = [p for p, _, _ in calls if type(p).__name__ == "Cylinder"]
+    assert len(holes) == 81
+    assert all(1.0 < p.height < 1.3 for p in holes)  # cut from 2 to the plate's 1 and the margins
+    assert all(h is not None and not keep for _, h, keep in calls)

@@ -25,6 +25,8 @@ are built for each one.
 
 from __future__ import annotations
 
+import functools
+import inspect
 import math
 import threading
 from collections import OrderedDict
@@ -190,6 +192,8 @@ def build_bands(
     *,
     eye: ArrayLike | None = None,
     segments: int | None = None,
+    hidden: ArrayLike | None = None,
+    keep: bool = True,
 ) -> LaminaSet:
     """The band mesh of one primitive, without the laminae (what a renderer fills).
 
@@ -210,6 +214,22 @@ def build_bands(
         screen, as a renderer's level of detail asks. The fields' own needs
         (contour lines, bending near a point light) still refine it. ``None``:
         the defaults. Other kinds ignore it. Part of the cache key.
+    hidden : array_like, shape (2, 3), optional
+        ``(lo, hi)``: a box outside which nothing of this primitive can be
+        seen (a renderer knows it for a CSG leaf: the box of the whole
+        object, which holds every visible point). A part of the surface (a
+        truncus end, a polyhedron face) lying entirely beyond one of the
+        box's faces is not cut along the level lines: it keeps its base
+        triangles with the ambient value (the exact value where its field
+        is constant), so that its geometry still bounds the solid at the
+        cost of its base mesh alone. Other parts are cut as without it.
+        ``None``: every part is cut. Part of the cache key.
+    keep : bool, default True
+        Whether a set built here is kept in the cache. ``False`` for a caller
+        that keeps what it needs itself (a renderer's prepared band meshes of
+        a large tree): the cache would otherwise hold a second, different
+        share of the same model (up to :data:`CACHE_BYTES` more memory). A
+        cached set is returned either way.
 
     Returns
     -------
@@ -230,13 +250,38 @@ def build_bands(
     >>> full = build_laminae(Sphere((0, 0, 0), 1.0), [PointLight((0, 0, 5))], contours=8)
     >>> full.bands is ls.bands, len(full.laminae)
     (True, 8)
+
+    A cylinder whose ends lie outside the box where it can be seen (a hole
+    through a plate 0.4 thick) keeps its ends uncut:
+
+    >>> from isocsg import Cylinder
+    >>> hole = Cylinder((0, 0, 0), (0, 0, 1.2), 0.1)
+    >>> cut = build_bands(hole, [PointLight((2, -3, 5))], contours=16).bands
+    >>> seen = build_bands(hole, [PointLight((2, -3, 5))], contours=16, hidden=[(-2, -2, -0.2), (2, 2, 0.2)]).bands
+    >>> bool(seen.n_triangles < cut.n_triangles)
+    True
     """
-    return _cached(primitive, lights, material, contours, eye, segments, bands_only=True)
+    box = None if hidden is None else _hidden_box(hidden)
+    return _cached(primitive, lights, material, contours, eye, segments, bands_only=True, hidden=box, keep=bool(keep))
+
+
+def _hidden_box(hidden: ArrayLike) -> tuple[tuple[float, float, float], tuple[float, float, float]]:
+    """``hidden`` checked: a finite ``(lo, hi)`` box with ``lo <= hi``, as tuples (a cache key)."""
+    try:
+        box = np.asarray(hidden, dtype=np.float64)
+    except (TypeError, ValueError):
+        raise InvalidParameterError(f"hidden must be a (2, 3) array of numbers (lo, hi), got {type(hidden).__name__}") from None
+    if box.shape != (2, 3):
+        raise InvalidParameterError(f"hidden must have shape (2, 3) (lo, hi), got {box.shape}")
+    if not np.all(np.isfinite(box)) or np.any(box[0] > box[1]):
+        raise InvalidParameterError(f"hidden must be a finite box with lo <= hi, got {box.tolist()}")
+    lo, hi = box.tolist()
+    return (tuple(lo), tuple(hi))  # type: ignore[return-value]
 
 
 def _cached(
     primitive: Primitive, lights: Sequence[Light], material: Material | None, contours: int, eye: ArrayLike | None,
-    segments: int | None, *, bands_only: bool,
+    segments: int | None, *, bands_only: bool, hidden: tuple[Any, Any] | None = None, keep: bool = True,
 ) -> LaminaSet:
     if hook_for(primitive, "surface") is None:
         raise InvalidParameterError(
@@ -261,8 +306,11 @@ def _cached(
             segments = None  # the defaults
     key = (primitive, lights_t, mat, n, eye_t)
     part = (*key, "bands") if segments is None else (*key, "bands", segments)  # a set without laminae
+    if hidden is not None:
+        part = (*part, "hidden", hidden)
+    full_serves = bands_only and segments is None and hidden is None
     with _LOCK:
-        for k in (key, part) if bands_only and segments is None else (part,) if bands_only else (key,):  # a full set serves a bands-only request too
+        for k in (key, part) if full_serves else (part,) if bands_only else (key,):  # a full set serves a bands-only request too
             hit = _CACHE.get(k)
             if hit is not None:
                 _CACHE.move_to_end(k)
@@ -275,11 +323,13 @@ def _cached(
             _BYTES[0] -= known[1]
     eye_a = None if eye_t is None else np.asarray(eye_t)
     if bands_only:
-        out = LaminaSet(primitive, (), (), _build_bands(primitive, lights_t, mat, n, eye_a, segments),
+        out = LaminaSet(primitive, (), (), _build_bands(primitive, lights_t, mat, n, eye_a, segments, hidden),
                         view_dependent=eye_a is not None)
         key = part
     else:
         out = _build(primitive, lights_t, mat, n, eye_a, None if known is None else known[0].bands)
+    if not keep:
+        return out
     size = _nbytes(out)
     limit = min(CACHE_BYTES, memory_budget() // 4)
     with _LOCK:
@@ -324,12 +374,24 @@ def _origin(primitive: Primitive) -> NDArray[np.float64]:
 
 def _surface(
     primitive: Primitive, lights: tuple[Light, ...], n: int, eye: NDArray[np.float64] | None, shininess: float,
-    weights: tuple[float, float] = (1.0, 1.0), segments: int | None = None,
+    weights: tuple[float, float] = (1.0, 1.0), segments: int | None = None, hidden: tuple[Any, Any] | None = None,
 ) -> Surface:
     hook = hook_for(primitive, "surface")
     if hook is None:  # pragma: no cover - _cached refuses such a primitive first
         raise InvalidParameterError(f"primitive {type(primitive).__name__} has no registered band surface")
+    if hidden is not None and _takes_hidden(hook):
+        # A hook that knows which of its parts lie outside the box need not refine them.
+        return hook(primitive, list(lights), n, eye, shininess, weights, segments, hidden=hidden)  # type: ignore[no-any-return]
     return hook(primitive, list(lights), n, eye, shininess, weights, segments)  # type: ignore[no-any-return]
+
+
+@functools.lru_cache(maxsize=64)
+def _takes_hidden(hook: Any) -> bool:
+    """Whether a surface hook takes the optional ``hidden`` box (a keyword of the built-in trunci's)."""
+    try:
+        return "hidden" in inspect.signature(hook).parameters
+    except (TypeError, ValueError):
+        return False
 
 
 def _paper_laminae(primitive: Primitive, light: Light, n: int) -> list[tuple[NDArray[np.float64], NDArray[np.float64], float, str]]:
@@ -367,18 +429,19 @@ def _virtual_light(primitive: Primitive, light: Light, eye: NDArray[np.float64])
 
 def _build_bands(
     primitive: Primitive, lights: tuple[Light, ...], mat: Material, n: int, eye: NDArray[np.float64] | None,
-    segments: int | None = None,
+    segments: int | None = None, hidden: tuple[Any, Any] | None = None,
 ) -> BandMesh:
     """The band mesh alone: the primitive's surface cut along its contour families' level lines."""
     origin = _origin(primitive)
     eye_local = None if eye is None else eye - origin
-    surf = _surface(primitive, lights, n, eye_local, float(mat.shininess), (float(mat.kd), float(mat.ks)), segments)
+    surf = _surface(primitive, lights, n, eye_local, float(mat.shininess), (float(mat.kd), float(mat.ks)), segments,
+                    hidden)
     fams: list[FieldFamily] = []
     for j, light in enumerate(lights):
         fams.append(diffuse_family(j, light, mat, incidence(light, surf.vertices, surf.normals, surf.origin)))
         if eye_local is not None:
             fams.extend(specular_families(j, light, mat, surf.vertices, surf.normals, eye - surf.origin, surf.origin))
-    return _cut(surf, fams, mat, n)
+    return _cut(surf, fams, mat, n, hidden)
 
 
 def _build(
@@ -407,7 +470,7 @@ def _build(
     return LaminaSet(primitive, tuple(laminae), families, bands, view_dependent=eye is not None)
 
 
-def _cut(surf: Surface, fams: list[FieldFamily], mat: Material, n: int) -> BandMesh:
+def _cut(surf: Surface, fams: list[FieldFamily], mat: Material, n: int, hidden: tuple[Any, Any] | None = None) -> BandMesh:
     """Cut the surface along every family's levels and give each piece its value.
 
     Each smooth part (sphere, truncus side or end, polyhedron face) is cut at
@@ -416,7 +479,7 @@ def _cut(surf: Surface, fams: list[FieldFamily], mat: Material, n: int) -> BandM
     steps across it. Parts share no vertex, so cutting them apart changes
     nothing along their common rims (the fields differ there anyway). Work
     is done relative to the surface's origin; the output is in world
-    coordinates.
+    coordinates. Parts lying entirely outside ``hidden`` (see :func:`build_bands`) are not cut.
     """
     local, triangles = surf.vertices, surf.triangles
     if not fams:
@@ -436,6 +499,7 @@ def _cut(surf: Surface, fams: list[FieldFamily], mat: Material, n: int) -> BandM
     order = np.argsort(tri_part, kind="stable")
     ends = np.cumsum(counts)
     remap = np.full(len(local), -1, np.int64)
+    box = None if hidden is None else (np.asarray(hidden[0]) - surf.origin, np.asarray(hidden[1]) - surf.origin)
     for part in np.flatnonzero(counts):
         if single:
             vertices, values, tri = local, fields, triangles
@@ -447,10 +511,11 @@ def _cut(surf: Surface, fams: list[FieldFamily], mat: Material, n: int) -> BandM
             remap[used] = np.arange(len(used))
             vertices, values, tri = local[used], fields[used], remap[tri]
         _unlight_grazed(values, fams)
+        unseen = box is not None and _outside(vertices, *box)
         band = np.zeros((len(tri), k), np.int64)
         for i, fam in enumerate(fams):
             col = _lit_side(values, fams, i)
-            if float(col.max() - col.min()) <= 1e-12:
+            if unseen or float(col.max() - col.min()) <= 1e-12:
                 # Constant on the part: every piece takes the exact value (see _pieces).
                 lv = np.zeros(0)
             else:
@@ -523,6 +588,15 @@ def _lit_side(values: NDArray[np.float64], fams: list[FieldFamily], i: int) -> N
         return col
     side = 1.0 if fam.kind == "specular_out" else -1.0
     return np.where(side * values[:, d] >= -TERMINATOR_COSINE, col, -1.0)
+
+
+def _outside(local: NDArray[np.float64], lo: NDArray[np.float64], hi: NDArray[np.float64]) -> bool:
+    """Whether the points ``local`` all lie strictly beyond one face of the box ``[lo, hi]``.
+
+    The part's triangles are then outside too (they are convex combinations of their corners)."""
+    if not len(local):
+        return False
+    return bool((local.min(axis=0) > hi).any() or (local.max(axis=0) < lo).any())
 
 
 def _unlight_grazed(values: NDArray[np.float64], fams: list[FieldFamily]) -> None:

@@ -49,12 +49,13 @@ def sphere_band_surface(
 
 def truncus_band_surface(
     t: Truncus, lights: list[Light], n: int, eye: NDArray[np.float64] | None, shininess: float,
-    weights: tuple[float, float] = (1.0, 1.0), segments: int | None = None,
+    weights: tuple[float, float] = (1.0, 1.0), segments: int | None = None, *, hidden: tuple | None = None,
 ) -> Surface:
     """Side and end meshes of a truncus (:func:`~isocsg.laminae.truncus.truncus_surface`), with at
-    least ``segments`` generators (by default ``truncus.GENERATORS``)."""
+    least ``segments`` generators (by default ``truncus.GENERATORS``); ends outside the box
+    ``hidden`` (see :func:`~isocsg.laminae.build_bands`) are not refined."""
     seg = GENERATORS if segments is None else segments
-    return truncus_surface(t, lights, n, eye=eye, shininess=shininess, weights=weights, segments=seg)
+    return truncus_surface(t, lights, n, eye=eye, shininess=shininess, weights=weights, segments=seg, hidden=hidden)
 
 
 def polyhedron_band_surface(

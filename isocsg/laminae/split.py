@@ -217,12 +217,16 @@ def split_by_levels(
     _snap(vals, column, lv, 1e-11 * scale)
     f = vals[:, column].copy()
 
+    kmin, kmax, _, inside = _level_ranges(f, t, lv)
+    if inside == 0:
+        # No level strictly inside any triangle (a sphere's rings are its contour circles), so
+        # none strictly inside any edge: every triangle stays whole, as the cut below would leave it.
+        return SplitMesh(v.copy(), vals, t.copy(), np.arange(len(t), dtype=np.int64), kmin)
     edges, tri_edge = mesh_edges(t)
     k0, _, off, n_cuts = _level_ranges(f, edges, lv)  # the cut points, edge after edge
     new_v = np.empty((n_cuts, 3))
     new_vals = np.empty((n_cuts, vals.shape[1]))
     _cut_points(v, vals, column, f, edges, lv, k0, off, new_v, new_vals)
-    kmin, kmax, _, inside = _level_ranges(f, t, lv)
     cap = 3 * (inside + len(t))  # k levels cut a triangle into k + 1 polygons of at most 5 corners
     if cap > MAX_PIECES:
         raise InvalidParameterError(

@@ -270,6 +270,14 @@ def _graded_rings(zs: list[float], truncus: Truncus) -> list[float]:
     return out
 
 
+def _disc_outside(centre: NDArray[np.float64], r: float, normal: NDArray[np.float64], box: tuple) -> bool:
+    """Whether the disc (``centre``, radius ``r``, unit ``normal``) lies strictly beyond one face of
+    the box ``(lo, hi)``: along axis k it spans ``centre[k] +- r sqrt(1 - normal[k]**2)``."""
+    half = r * np.sqrt(np.maximum(1.0 - normal * normal, 0.0))
+    lo, hi = np.asarray(box[0], dtype=np.float64), np.asarray(box[1], dtype=np.float64)
+    return bool(((centre - half) > hi).any() or ((centre + half) < lo).any())
+
+
 def truncus_surface(
     truncus: Truncus,
     lights: list[Light],
@@ -279,6 +287,7 @@ def truncus_surface(
     shininess: float = 1.0,
     weights: tuple[float, float] = (1.0, 1.0),
     segments: int = GENERATORS,
+    hidden: tuple | None = None,
 ) -> Surface:
     """Band mesh base of a truncus, relative to its centre.
 
@@ -299,6 +308,12 @@ def truncus_surface(
     generators: a renderer asks for fewer for a truncus small on screen (the
     chord error then stays a small fraction of a pixel), never fewer than the
     fields' bending needs.
+
+    ``hidden`` (world ``(lo, hi)``, optional): the box outside which nothing
+    of the truncus can be seen. An end disc lying entirely beyond one of its
+    faces (a hole's end outside the plate) is a plain fan of its rim, not
+    refined for the fields: its bands are not cut (see
+    :func:`~isocsg.laminae.build_bands`), only its geometry counts.
 
     Parts: 0 the lateral surface, 1 the end E1, 2 the end E2.
     """
@@ -381,13 +396,16 @@ def truncus_surface(
     for part, (z, r, n) in enumerate(((0.5 * h, truncus.r1, a), (-0.5 * h, truncus.r2, -a)), start=1):
         if r <= 0:
             continue
-        n_rad = max(refinement(r, dist), specular_refinement(r, d_eye, shininess, contours))
         centre = z * a
-        if lights:
-            spokes = centre + t * (r * probe[::2])[:, None, :]
-            spacing = curvature_spacing(spokes, np.broadcast_to(n, spokes.shape), lights, origin, contours,
-                                        eye=eye, shininess=shininess, weights=weights)
-            n_rad = max(n_rad, pieces(r, spacing))
+        if hidden is not None and _disc_outside(ct + centre, r, a, hidden):
+            n_rad = 1  # never seen: its geometry alone, a fan of the rim
+        else:
+            n_rad = max(refinement(r, dist), specular_refinement(r, d_eye, shininess, contours))
+            if lights:
+                spokes = centre + t * (r * probe[::2])[:, None, :]
+                spacing = curvature_spacing(spokes, np.broadcast_to(n, spokes.shape), lights, origin, contours,
+                                            eye=eye, shininess=shininess, weights=weights)
+                n_rad = max(n_rad, pieces(r, spacing))
         verts.append(centre[None, :])
         rings = [ring(z, r * i / n_rad) if i < n_rad else ring(z, r) for i in range(1, n_rad + 1)]
         verts.extend(rings)

@@ -60,8 +60,8 @@ from .raster import (
 )
 from .scratch import SCRATCH
 from .tiles import (
-    LEAF_PIXEL_BYTES, LeafGeometry, combine_boxes, combine_rects, leaf_geometry, leaf_rects, leaf_screen_sizes,
-    open_tile_pixels, plan_tiles, tile_leaves,
+    LEAF_PIXEL_BYTES, LeafGeometry, clip_leaves, combine_boxes, combine_rects, leaf_geometry, leaf_rects,
+    leaf_screen_sizes, open_tile_pixels, plan_tiles, tile_leaves,
 )
 
 __all__ = ["RenderResult", "RenderTimings", "Renderer", "render", "default_renderer"]
@@ -742,14 +742,22 @@ class Renderer:
         return self._bands(primitive, lights, material, contours, eye)[0]
 
     def _bands(
-        self, primitive: Primitive, lights: Sequence[Any], material: Any, contours: int, eye: Any
+        self, primitive: Primitive, lights: Sequence[Any], material: Any, contours: int, eye: Any,
+        hidden: Any = None,
     ) -> tuple[BandMesh, bool]:
-        # ``contours`` may carry the tessellation's segments above _SEGMENT_SHIFT (see _contours).
+        # ``contours`` may carry the tessellation's segments above _SEGMENT_SHIFT (see _contours);
+        # ``hidden`` (the default builder only, see _visible_leaves) the box outside which nothing shows.
         n, segments = int(contours) & _CONTOUR_MASK, int(contours) >> _SEGMENT_SHIFT
+        extra: dict[str, Any] = {}
         if segments:
-            out = self._builder()(primitive, tuple(lights), material, n, eye=eye, segments=segments)
-        else:
-            out = self._builder()(primitive, tuple(lights), material, n, eye=eye)
+            extra["segments"] = segments
+        if hidden is not None:
+            # A large tree's bands are kept here, by request, and only here: the lamina cache
+            # would hold another share of the same model (the union of 1000 spheres peaked at
+            # 1.47 GB with both, 1.20 GB without).
+            extra["hidden"] = hidden
+            extra["keep"] = False
+        out = self._builder()(primitive, tuple(lights), material, n, eye=eye, **extra)
         bands = getattr(out, "bands", out)
         if not isinstance(bands, BandMesh):
             raise InvalidParameterError(f"build_laminae must return a LaminaSet or BandMesh, got {type(out).__name__}")
@@ -763,6 +771,25 @@ class Renderer:
         geom = leaf_geometry(program.leaves)
         self._geometry.put(id(program), (program, geom), geom.nbytes + 64 * program.n_leaves)
         return geom
+
+    def _visible_leaves(self, program: Program, geom: LeafGeometry) -> tuple[list[Primitive], LeafGeometry, Any]:
+        """The leaves of a tree under the level of detail cut to where they can be seen, their
+        geometry and the object's box (:func:`~isocsg.render.tiles.clip_leaves`): the bands of a
+        hole through a plate are built for the plate's thickness, and the parts of a leaf outside
+        the object's box (the hole's ends) are not cut into bands (``build_bands(hidden=...)``).
+        The image is the same solid's; band values follow each leaf's visible range. Kept per
+        program, as the leaf geometry is (it does not depend on the view)."""
+        key = ("visible", id(program))
+        hit = self._geometry.get(key)
+        if hit is not None and hit[0] is program:
+            return hit[1]
+        lo, hi = combine_boxes(program.op, program.arg, geom.lo, geom.hi)
+        leaves = clip_leaves(program.leaves, geom, lo, hi)
+        changed = any(a is not b for a, b in zip(leaves, program.leaves))
+        geom_v = leaf_geometry(leaves) if changed else geom
+        plan = (leaves, geom_v, (tuple(lo.tolist()), tuple(hi.tolist())))
+        self._geometry.put(key, (program, plan), geom_v.nbytes + 256 * program.n_leaves)
+        return plan
 
     def _contours(
         self, leaves: Sequence[Primitive], lights: Any, material: Any, geom: LeafGeometry, cam: Camera,
@@ -897,16 +924,17 @@ class Renderer:
 
     def _leaf(
         self, primitive: Primitive, lights: Sequence[Any], material: Any, contours: int, eye: Any,
-        built: tuple[BandMesh, bool] | None = None, *, tiled: bool = False,
+        built: tuple[BandMesh, bool] | None = None, *, tiled: bool = False, hidden: Any = None,
     ) -> tuple[_Prepared, bool]:
         """One primitive's prepared band mesh and whether it depends on the view (``tiled``: for
         the screen tiles only, which keep no projection with it)."""
-        key = ("request", primitive, tuple(lights), material, int(contours)) if self._by_request else None
+        key = ("request", primitive, tuple(lights), material, int(contours), hidden) if self._by_request else None
         if key is not None:
             hit = self._prepared.get(key)
             if hit is not None:
                 return hit[1], False
-        bands, view_dependent = built if built is not None else self._bands(primitive, lights, material, contours, eye)
+        bands, view_dependent = built if built is not None else self._bands(
+            primitive, lights, material, contours, eye, hidden)
         return self._prepare(bands, view_dependent, key, tiled=tiled), view_dependent
 
     def _prepare(self, bands: BandMesh, view_dependent: bool, request: Any = None, *, tiled: bool = False) -> _Prepared:
@@ -1060,8 +1088,12 @@ class Renderer:
             obj_of.extend([k] * len(leaves))
             leaf_of.extend(range(len(leaves)))
             geom = self._leaf_geometry(program)
-            rects, nears, _ = leaf_rects(geom, cam)
             counts = self._contours(leaves, scene.lights, obj.material, geom, cam, program, n_contours)
+            hidden = None
+            if self._by_request and self.adaptive_contours and program.n_leaves > LOD_MIN_LEAVES:
+                # Sizes (hence counts) came from the whole leaves; what is built is their visible part.
+                leaves, geom, hidden = self._visible_leaves(program, geom)
+            rects, nears, _ = leaf_rects(geom, cam)
             rect = tuple(int(x) for x in combine_rects(program.op, program.arg, rects))
             seen_key = (obj.shape, scene.lights, obj.material, n_contours)
             built: list[tuple[BandMesh, bool]] | None = None
@@ -1071,7 +1103,8 @@ class Renderer:
                 continue
             if not self._per_pixel(seen_key, len(leaves)):
                 t = time.perf_counter()
-                built = [self._bands(p, scene.lights, obj.material, c, cam.eye) for p, c in zip(leaves, counts.tolist())]
+                built = [self._bands(p, scene.lights, obj.material, c, cam.eye, hidden)
+                         for p, c in zip(leaves, counts.tolist())]
                 build += time.perf_counter() - t
                 parts = self._surface(program, built)
                 if parts is None and self.csg == "auto":
@@ -1090,12 +1123,12 @@ class Renderer:
             if n <= DENSE_MAX_LEAVES and n * h * w * LEAF_PIXEL_BYTES <= min(DENSE_MAX_BYTES, memory_budget() // 4):
                 seconds, view_dependent = self._render_per_pixel(
                     leaves, program, scene.lights, obj.material, counts, cam, rect, nears, base, zkey, value, gid,
-                    built, report,
+                    built, report, hidden,
                 )
             else:
                 seconds, view_dependent = self._render_tiled(
                     leaves, program, scene.lights, obj.material, counts, cam, rects, rect, nears, base,
-                    zkey, value, gid, built, report,
+                    zkey, value, gid, built, report, hidden,
                 )
             build += seconds
             grow((rect[1], rect[3], rect[0], rect[2]))
@@ -1162,7 +1195,7 @@ class Renderer:
         self, leaves: Sequence[Primitive], program: Program, lights: Sequence[Any], material: Any,
         counts: NDArray[np.int64], cam: Camera, rect: tuple[int, int, int, int], nears: NDArray[np.float64], base: int,
         zkey: NDArray[np.float64], value: NDArray[np.float32], gid: NDArray[np.int32],
-        built: list[tuple[BandMesh, bool]] | None, report: _Progress,
+        built: list[tuple[BandMesh, bool]] | None, report: _Progress, hidden: Any = None,
     ) -> tuple[float, bool | None]:
         """Resolve a small CSG object per pixel over its whole screen rectangle, into the image buffers.
 
@@ -1230,7 +1263,7 @@ class Renderer:
                 for k, i in enumerate(order):
                     t = time.perf_counter()
                     prep, vd = self._leaf(leaves[i], lights, material, counts[i], cam.eye,
-                                          None if built is None else built[i])
+                                          None if built is None else built[i], hidden=hidden)
                     view_dependent |= vd
                     seconds += time.perf_counter() - t
                     if not concurrent:
@@ -1265,7 +1298,7 @@ class Renderer:
         self, leaves: Sequence[Primitive], program: Program, lights: Sequence[Any], material: Any,
         counts: NDArray[np.int64], cam: Camera, rects: NDArray[np.int64], rect: tuple[int, int, int, int],
         nears: NDArray[np.float64], base: int, zkey: NDArray[np.float64], value: NDArray[np.float32],
-        gid: NDArray[np.int32], built: list[tuple[BandMesh, bool]] | None, report: _Progress,
+        gid: NDArray[np.int32], built: list[tuple[BandMesh, bool]] | None, report: _Progress, hidden: Any = None,
     ) -> tuple[float, bool | None]:
         """Resolve a CSG object per pixel in screen tiles (see :mod:`isocsg.render.tiles`).
 
@@ -1446,7 +1479,7 @@ class Renderer:
                                 open_tile(tr * plan.cols + tc)
                     t = time.perf_counter()
                     prep, vd = self._leaf(leaves[i], lights, material, counts_l[i], cam.eye,
-                                          None if built is None else built[i], tiled=True)
+                                          None if built is None else built[i], tiled=True, hidden=hidden)
                     seconds += time.perf_counter() - t
                     view_dependent = bool(view_dependent) or vd
                     with cond:

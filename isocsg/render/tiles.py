@@ -29,13 +29,18 @@ from numba import njit
 from numpy.typing import NDArray
 
 from ..camera import Camera
-from ..geometry.primitives import Box, Primitive, Sphere, Truncus
+from ..errors import InvalidGeometryError
+from ..geometry.primitives import Box, Cone, Cylinder, Primitive, Sphere, Truncus
 from .raster import NEAR_RELATIVE
 
 __all__ = [
     "LeafGeometry", "leaf_geometry", "leaf_rects", "leaf_screen_sizes", "combine_rects", "combine_boxes", "prune_program", "tile_leaves", "TilePlan", "plan_tiles",
-    "open_tile_pixels",
+    "open_tile_pixels", "clip_leaves", "CLIP_MARGIN",
 ]
+
+#: :func:`clip_leaves` keeps this fraction of the object box's diagonal beyond the box, so that
+#: the new ends lie strictly outside it (never on the object's surface, never coincident with it).
+CLIP_MARGIN = 1e-3
 
 #: Bytes per pixel of a leaf in the per-pixel CSG buffers: front and back depth
 #: keys (float64) and values (float32).
@@ -309,6 +314,96 @@ def combine_rects(op: NDArray[np.int8], arg: NDArray[np.int64], rects: NDArray[n
         stack[base, 0], stack[base, 1], stack[base, 2], stack[base, 3] = c0, r0, c1, r1
         sp = base + 1
     return stack[0].copy()
+
+
+def clip_leaves(
+    leaves: Sequence[Primitive], geom: LeafGeometry, lo: NDArray[np.float64], hi: NDArray[np.float64],
+) -> list[Primitive]:
+    """The leaves cut down to the slab of the object's box ``[lo, hi]`` where they can be seen.
+
+    A tree's value is inside the box :func:`combine_boxes` gives (a union
+    holds its operands' boxes, an intersection lies in their overlap, a
+    difference in its first operand's box), and replacing every leaf ``L``
+    by ``L n S`` with ``S`` any set holding that box changes nothing:
+    ``f(L n S) = f(L) n S`` for unions, intersections and differences, and
+    the value of the cut leaves still lies in the box. So a hole three times
+    longer than the plate it pierces can be built for the plate's thickness
+    alone (fewer band triangles, a smaller screen rectangle). Cut here: a
+    truncus (cylinder, cone) along its axis to the box's extent along that
+    axis, and an axis-aligned box to the box, each with a margin of
+    :data:`CLIP_MARGIN` of the box's diagonal, so that the new ends lie
+    strictly outside the box and never show. A truncus is cut to the
+    tighter of two ranges of its axis, each holding all of it that can meet
+    the box: the box's extent along the axis, and where the axis runs through
+    the box grown by the larger radius (any point of the truncus lies within
+    that radius of its axis; the latter is what a tilted hole in a wide plate
+    needs). Other kinds, leaves within the slab, and cuts that would give a
+    primitive below the documented smallest lengths, are kept as they are.
+
+    Examples
+    --------
+    >>> from isocsg import Box, Cylinder
+    >>> from isocsg.csg.program import compile_program
+    >>> prog = compile_program(Box((0, 0, 0), (2, 2, 0.4)) - Cylinder((0, 0, 0), (0, 0, 3), 0.2))
+    >>> g = leaf_geometry(prog.leaves)
+    >>> hole = clip_leaves(prog.leaves, g, *combine_boxes(prog.op, prog.arg, g.lo, g.hi))[1]
+    >>> type(hole).__name__, round(hole.height, 4), hole.radius
+    ('Cylinder', 0.4057, 0.2)
+    """
+    out = list(leaves)
+    lo = np.asarray(lo, dtype=np.float64)
+    hi = np.asarray(hi, dtype=np.float64)
+    if not (np.all(np.isfinite(lo)) and np.all(np.isfinite(hi)) and np.all(lo <= hi)):
+        return out
+    margin = CLIP_MARGIN * float(np.linalg.norm(hi - lo))
+    glo, ghi = lo - margin, hi + margin
+    # Leaves whose box reaches beyond the grown box: only those can be cut.
+    beyond = np.flatnonzero(np.any(geom.lo < glo, axis=1) | np.any(geom.hi > ghi, axis=1)).tolist()
+    corners = np.array([[x, y, z] for x in (glo[0], ghi[0]) for y in (glo[1], ghi[1]) for z in (glo[2], ghi[2])])
+    for i in beyond:
+        p = leaves[i]
+        try:
+            if type(p) in (Truncus, Cylinder, Cone):
+                u = p.unit_axis
+                c = p.center_array
+                s = (corners - c) @ u  # the box's extent along the axis
+                half = 0.5 * p.height
+                t0, t1 = _line_in_box(c, u, glo - max(p.r1, p.r2), ghi + max(p.r1, p.r2))
+                s1, s0 = min(half, float(s.max()), t1), max(-half, float(s.min()), t0)
+                if s0 >= s1 or (s1 == half and s0 == -half):
+                    continue  # off the box altogether (pruned elsewhere), or within the slab
+                centre = p.center_array + 0.5 * (s0 + s1) * u
+                axis = (s1 - s0) * u
+                if type(p) is Cylinder:
+                    out[i] = Cylinder(tuple(centre.tolist()), tuple(axis.tolist()), p.r1)
+                else:
+                    r1, r0 = (max(float(r), 0.0) for r in p.radius_at(np.array([s1, s0])))
+                    r1 = p.r1 if s1 == half else r1
+                    r0 = p.r2 if s0 == -half else r0
+                    out[i] = Truncus(tuple(centre.tolist()), tuple(axis.tolist()), r1, r0)
+            elif type(p) is Box and p.axis_aligned:
+                blo = np.maximum(geom.lo[i], glo)
+                bhi = np.minimum(geom.hi[i], ghi)
+                if np.all(blo < bhi):
+                    out[i] = Box(tuple((0.5 * (blo + bhi)).tolist()), tuple((bhi - blo).tolist()))
+        except InvalidGeometryError:
+            out[i] = p  # too thin or too flat once cut: built whole
+    return out
+
+
+def _line_in_box(
+    c: NDArray[np.float64], u: NDArray[np.float64], lo: NDArray[np.float64], hi: NDArray[np.float64],
+) -> tuple[float, float]:
+    """The parameters ``[t0, t1]`` where the line ``c + t u`` lies in the box ``[lo, hi]`` (slabs;
+    an empty range, ``t0 > t1``, when it misses the box)."""
+    t0, t1 = -np.inf, np.inf
+    for k in range(3):
+        if u[k] != 0.0:
+            a, b = (lo[k] - c[k]) / u[k], (hi[k] - c[k]) / u[k]
+            t0, t1 = max(t0, min(a, b)), min(t1, max(a, b))
+        elif not lo[k] <= c[k] <= hi[k]:
+            return np.inf, -np.inf
+    return float(t0), float(t1)
 
 
 def combine_boxes(
