@@ -44,7 +44,7 @@ import numpy as np
 from numba import njit
 from numpy.typing import NDArray
 
-from ..errors import InvalidGeometryError, InvalidParameterError
+from ..errors import InvalidGeometryError, InvalidParameterError, ResourceLimitError
 from ..laminae.model import BandMesh
 from ..laminae.split import mesh_edges
 from ..limits import check_memory
@@ -387,6 +387,104 @@ def _points_on_edges(
 
 
 
+#: Margin, in the local frame (the leaves' box mapped to [-1, 1]^3), between a
+#: trimmed operand's cut and the box it is trimmed to: the cut's caps lie strictly
+#: outside everything the operand can still touch.
+TRIM_MARGIN = 1e-4
+
+
+def _trim_to_box(
+    v: NDArray[np.float64], t: NDArray[np.int64], lo: NDArray[np.float64], hi: NDArray[np.float64]
+) -> tuple[NDArray[np.float64], NDArray[np.int64], NDArray[np.int64]]:
+    """A closed triangle soup of a convex solid cut to a box (plus :data:`TRIM_MARGIN`), each cut capped.
+
+    Used for operands whose surface matters only inside a box (what a
+    difference subtracts from its first operand, the operands of an
+    intersection): the part outside never reaches the result, so it need not
+    enter a Boolean. Each plane of the box that crosses the solid cuts it; the
+    cut is capped by a fan from the centre of the section, which is convex for
+    a convex solid. Cut points are computed from each edge's ends in a fixed
+    order, so neighbours that share an edge share the point bit for bit (the
+    soup is welded afterwards). Returns vertices, triangles and the source
+    triangle of each (a cap takes a source of the triangle it closes).
+    """
+    src = np.arange(len(t), dtype=np.int64)
+    for axis in range(3):
+        for side, bound in ((1.0, hi[axis] + TRIM_MARGIN), (-1.0, lo[axis] - TRIM_MARGIN)):
+            x = v[:, axis]
+            if not len(t) or np.max(side * (x - bound)) <= 0:
+                continue
+            # Keep the cut away from vertices, so no vertex lies on it.
+            step = max(abs(bound), 1.0) * 1e-9
+            for _ in range(64):
+                if np.abs(x - bound).min() > step:
+                    break
+                bound += side * 4 * step
+            v, t, src = _cut(v, t, src, axis, bound, side)
+    return v, t, src
+
+
+def _cut(
+    v: NDArray[np.float64], t: NDArray[np.int64], src: NDArray[np.int64], axis: int, bound: float, side: float
+) -> tuple[NDArray[np.float64], NDArray[np.int64], NDArray[np.int64]]:
+    """Keep the part of a closed soup where ``side * (x[axis] - bound) < 0``; cap the cut with a fan."""
+    s = side * (v[:, axis] - bound)
+    inside = s < 0
+    count = inside[t].sum(axis=1)
+    whole = count == 3
+    if whole.all():
+        return v, t, src
+    keep_t, keep_s = t[whole], src[whole]
+    one, two = count == 1, count == 2
+    if not (one.any() or two.any()):
+        return v, keep_t, keep_s  # nothing crosses: the soup lies on one side
+    # Rotate each crossing triangle so that its odd vertex (alone on its side) comes first.
+    ct = t[one | two]
+    cs = src[one | two]
+    odd_in = inside[ct] == (count[one | two] == 1)[:, None]  # the lone vertex
+    first = np.argmax(odd_in, axis=1)
+    rows = np.arange(len(ct))[:, None]
+    ct = ct[rows, (first[:, None] + np.arange(3)) % 3]
+    a, b, c = ct[:, 0], ct[:, 1], ct[:, 2]
+    lone_inside = inside[a]
+
+    def point(p: NDArray[np.int64], q: NDArray[np.int64]) -> NDArray[np.float64]:
+        # From the inside end to the outside end, whichever triangle asks: bit-equal for neighbours.
+        pin = np.where(inside[p], p, q)
+        pout = np.where(inside[p], q, p)
+        w = s[pin] / (s[pin] - s[pout])
+        out = v[pin] + (v[pout] - v[pin]) * w[:, None]
+        out[:, axis] = bound
+        return out
+
+    m = len(ct)
+    nv = len(v)
+    ab = nv + np.arange(m)
+    ca = nv + m + np.arange(m)
+    centre_pts = np.vstack([point(a, b), point(c, a)])
+    centre = centre_pts.mean(axis=0)
+    centre[axis] = bound
+    cidx = nv + 2 * m
+    v2 = np.vstack([v, centre_pts, centre[None, :]])
+    # Lone vertex inside: the triangle (a, ab, ca), whose cut edge runs ab -> ca.
+    # Lone vertex outside: the quad ab, b, c, ca, whose cut edge runs ca -> ab.
+    li = lone_inside
+    tri_in = np.column_stack([a[li], ab[li], ca[li]])
+    lo = ~li
+    quad1 = np.column_stack([ab[lo], b[lo], c[lo]])
+    quad2 = np.column_stack([ab[lo], c[lo], ca[lo]])
+    # The cap: each cut edge reversed, closed to the centre.
+    cap = np.vstack([
+        np.column_stack([ca[li], ab[li], np.full(int(li.sum()), cidx)]),
+        np.column_stack([ab[lo], ca[lo], np.full(int(lo.sum()), cidx)]),
+    ])
+    cap_s = np.concatenate([cs[li], cs[lo]])
+    t2 = np.vstack([keep_t, tri_in, quad1, quad2, cap])
+    s2 = np.concatenate([keep_s, cs[li], cs[lo], cs[lo], cap_s])
+    used, inv = np.unique(t2, return_inverse=True)
+    return v2[used], inv.reshape(-1, 3), s2
+
+
 @dataclass(slots=True)
 class _Comp:
     """A box-disjoint piece of an operand's value: a leaf as it is (``ref >= 0``: leaf
@@ -406,9 +504,26 @@ class _Plan:
 
     def __init__(self) -> None:
         self.nodes: list[tuple[str, list[int]]] = []  # (manifold3d operation or "compose", operand refs)
+        # Leaves whose surface matters only inside a box (what they are subtracted from, the
+        # box common to an intersection's operands): leaf -> (lo, hi) over all such uses.
+        self.trim: dict[int, tuple[NDArray[np.float64], NDArray[np.float64]]] = {}
+        self.whole: set[int] = set()  # leaves used where all of their surface may matter
 
-    def node(self, op: str, parts: list[_Comp]) -> _Comp:
+    def node(self, op: str, parts: list[_Comp], boxes: list[Any] | None = None) -> _Comp:
+        """A planned operation; ``boxes[k]``, where given, is the box outside which
+        operand ``k`` cannot change the result (None: all of it may)."""
         self.nodes.append((op, [p.ref for p in parts]))
+        for k, p in enumerate(parts):
+            box = None if boxes is None else boxes[k]
+            if p.ref < 0:
+                continue
+            if box is None:
+                self.whole.add(p.ref)
+            elif p.ref in self.trim:
+                lo0, hi0 = self.trim[p.ref]
+                self.trim[p.ref] = (np.minimum(lo0, box[0]), np.maximum(hi0, box[1]))
+            else:
+                self.trim[p.ref] = (np.asarray(box[0], np.float64), np.asarray(box[1], np.float64))
         lo = np.min([p.lo for p in parts], axis=0)
         hi = np.max([p.hi for p in parts], axis=0)
         return _Comp(lo, hi, -len(self.nodes))
@@ -467,7 +582,8 @@ class _Plan:
             if not hit:
                 out.append(c)
                 continue
-            d = self.node("Subtract", [c] + [cut[x] for x in hit])
+            # What is subtracted matters only inside the first operand's box.
+            d = self.node("Subtract", [c] + [cut[x] for x in hit], [None] + [(c.lo, c.hi)] * len(hit))
             out.append(_Comp(c.lo, c.hi, d.ref))
         return out
 
@@ -484,8 +600,8 @@ class _Plan:
             if not kept:
                 return []
             # The pieces of one operand are box-disjoint: joined without a Boolean.
-            operands.append(kept[0] if len(kept) == 1 else self.node("compose", kept))
-        inter = self.node("Intersect", operands)
+            operands.append(kept[0] if len(kept) == 1 else self.node("compose", kept, [(lo, hi)] * len(kept)))
+        inter = self.node("Intersect", operands, [(lo, hi)] * len(operands))
         return [_Comp(np.maximum(inter.lo, lo), np.minimum(inter.hi, hi), inter.ref)]
 
 
@@ -544,7 +660,9 @@ def _groups(n: int, i: NDArray[np.int64], j: NDArray[np.int64]) -> NDArray[np.in
     return parent
 
 
-def surface_from_bands(program: Program, bands: Sequence[BandMesh]) -> CSGSurface:
+def surface_from_bands(
+    program: Program, bands: Sequence[BandMesh], *, trim: bool = False, max_bytes: int | None = None
+) -> CSGSurface:
     """Clip the leaves' band meshes against each other along a CSG program.
 
     The tree is first evaluated on the leaves' boxes (see the module
@@ -559,6 +677,17 @@ def surface_from_bands(program: Program, bands: Sequence[BandMesh]) -> CSGSurfac
         The tree's flat program (:meth:`isocsg.csg.CSGNode.program`).
     bands : sequence of BandMesh
         One band mesh per leaf, each tiling the leaf's closed surface.
+    trim : bool, default False
+        Cut each leaf that matters only inside a box (subtracted from an
+        operand, or an operand of an intersection) to that box before the
+        Booleans, capping the cuts (:data:`TRIM_MARGIN` outside the box): the
+        same solid where it counts, with fewer triangles in the Booleans (a
+        hole three times longer than its plate is thick keeps about a tenth of
+        its band triangles). Leaves must be convex, as isocsg's primitives are.
+        The result's triangulation may differ from an untrimmed build's.
+    max_bytes : int, optional
+        A bound on the Booleans' working memory besides the budget (e.g. the
+        share of it a background build may take).
 
     Returns
     -------
@@ -572,7 +701,7 @@ def surface_from_bands(program: Program, bands: Sequence[BandMesh]) -> CSGSurfac
     InvalidParameterError
         If the program and the band meshes do not match.
     ResourceLimitError
-        If the Booleans would need more than the memory budget.
+        If the Booleans would need more than the memory budget (or ``max_bytes``).
     """
     if not isinstance(program, Program) or program.n_leaves != len(bands):
         raise InvalidParameterError(f"{program!r} does not match {len(bands)} band meshes")
@@ -604,12 +733,28 @@ def surface_from_bands(program: Program, bands: Sequence[BandMesh]) -> CSGSurfac
     members = {c.ref: plan.leaves(c.ref) for c in final if c.ref < 0}
     boolean_leaves = {x for m in members.values() for x in m}
     plain_leaves = [c.ref for c in final if c.ref >= 0]
-    n_bool = sum(len(bands[i].triangles) for i in boolean_leaves)
+    # Trimmed leaves, welded in the local frame: leaf -> (vertices, triangles, source).
+    trimmed: dict[int, tuple[NDArray[np.float64], NDArray[np.int64], NDArray[np.int64]]] = {}
+    if trim:
+        for i in sorted(boolean_leaves & set(plan.trim) - plan.whole):
+            lo, hi = plan.trim[i]
+            bm = bands[i]
+            v, t, src = _trim_to_box((np.asarray(bm.vertices, np.float64) - centre) / half,
+                                     np.asarray(bm.triangles, np.int64), lo, hi)
+            if len(t) < len(bm.triangles):  # welded below, once the budget is known to allow it
+                trimmed[i] = (v, t, src)
+    n_bool = sum(len(trimmed[i][1]) if i in trimmed else len(bands[i].triangles) for i in boolean_leaves)
     n_plain = sum(len(bands[i].triangles) for i in plain_leaves)
-    check_memory(
-        f"the clipped CSG surface ({n_bool} band triangles in Booleans, {n_plain} kept as they are)",
-        n_bool * BYTES_PER_BOOLEAN_TRIANGLE + n_plain * BYTES_PER_PLAIN_TRIANGLE,
-    )
+    what = f"the clipped CSG surface ({n_bool} band triangles in Booleans, {n_plain} kept as they are)"
+    need = n_bool * BYTES_PER_BOOLEAN_TRIANGLE + n_plain * BYTES_PER_PLAIN_TRIANGLE
+    check_memory(what, need)
+    if max_bytes is not None and need > max_bytes:
+        raise ResourceLimitError(f"{what} needs about {need / 1e9:.2f} GB, over the {max_bytes / 1e9:.2f} GB allowed")
+    for i in list(trimmed):
+        v, t, src = trimmed.pop(i)
+        v, t, s2, ok = _close(v, t)
+        if ok:  # else the whole leaf (a cut that did not close)
+            trimmed[i] = (v, t, src[s2])
 
     closed: dict[int, tuple[NDArray[np.float64], NDArray[np.int64], NDArray[np.int64], bool]] = {}
 
@@ -644,17 +789,18 @@ def surface_from_bands(program: Program, bands: Sequence[BandMesh]) -> CSGSurfac
                 if r < 0:
                     needed[-1 - r] = True
     if needed.any():
-        pieces.extend(_booleans(plan, needed, final, members, bands, weld, centre, half))
+        pieces.extend(_booleans(plan, needed, final, members, bands, weld, centre, half, trimmed))
     return _assemble(pieces)
 
 
 def _booleans(
     plan: _Plan, needed: NDArray[np.bool_], final: list[_Comp], members: dict[int, list[int]], bands: Sequence[BandMesh],
-    weld: Any, centre: NDArray[np.float64], half: float,
+    weld: Any, centre: NDArray[np.float64], half: float, trimmed: dict[int, Any] | None = None,
 ) -> list[tuple[Any, ...]]:
     """Build the planned Booleans (manifold3d, local frame) and read their results back."""
     m3 = _manifold3d()
     M = m3.Manifold
+    trimmed = {} if trimmed is None else trimmed
     # One original id per leaf: manifold3d tags each result triangle with it.
     first_id = int(M.reserve_ids(len(bands)))
     leaf_solid: dict[int, Any] = {}
@@ -663,9 +809,13 @@ def _booleans(
         if ref < 0:
             return built[-1 - ref]
         if ref not in leaf_solid:
-            v, t, src, _ = weld(ref)
+            if ref in trimmed:
+                v, t, src = trimmed[ref]  # already in the local frame
+            else:
+                v, t, src, _ = weld(ref)
+                v = (v - centre) / half
             mesh = m3.Mesh64(
-                vert_properties=np.ascontiguousarray((v - centre) / half),
+                vert_properties=np.ascontiguousarray(v),
                 tri_verts=np.ascontiguousarray(t, dtype=np.uint64),
                 face_id=np.ascontiguousarray(src, dtype=np.uint64),
                 run_index=np.array([0, 3 * len(t)], dtype=np.uint64),
@@ -690,7 +840,9 @@ def _booleans(
             built.append(M.compose(parts))
         else:
             built.append(M.batch_boolean(parts, getattr(m3.OpType, op)))
-    shared = _shared_planes(bands, sorted({x for m in members.values() for x in m}), centre, half)
+    # The band triangles each trimmed leaf brings into the Booleans (the others: all of theirs).
+    subset = {i: np.unique(trimmed[i][2]) for i in trimmed}
+    shared = _shared_planes(bands, sorted({x for m in members.values() for x in m}), centre, half, subset)
     pieces = []
     for c in final:
         if c.ref >= 0:
@@ -704,15 +856,27 @@ def _booleans(
         run_index = np.asarray(out.run_index, dtype=np.int64) // 3
         run_leaf = np.asarray(out.run_original_id, dtype=np.int64) - first_id
         leaf = np.repeat(run_leaf, np.diff(run_index)).astype(np.int32)
-        # The comp's leaves' band triangles, concatenated: global index base[leaf] + face.
+        # The comp's leaves' band triangles (of a trimmed leaf, those it kept), concatenated:
+        # global index base[leaf] + the face's position among its leaf's.
         leaves_in = members[c.ref]
-        sizes = np.array([len(bands[i].triangles) for i in leaves_in], np.int64)
+        sizes = np.array([len(subset[i]) if i in subset else len(bands[i].triangles) for i in leaves_in], np.int64)
         base = np.zeros(len(bands), np.int64)
         base[leaves_in] = np.concatenate([[0], np.cumsum(sizes)[:-1]])
-        g = base[leaf] + face
-        normals = np.vstack([_triangle_normals(np.asarray(bands[i].vertices, np.float64), np.asarray(bands[i].triangles, np.int64)) for i in leaves_in])
-        vin = np.concatenate([np.asarray(bands[i].value_in, np.float64) for i in leaves_in])
-        vout = np.concatenate([np.asarray(bands[i].value_out, np.float64) for i in leaves_in])
+        pos = face.copy()
+        for r0, r1, i in zip(run_index[:-1].tolist(), run_index[1:].tolist(), run_leaf.tolist()):
+            if i in subset:
+                pos[r0:r1] = np.searchsorted(subset[i], face[r0:r1])
+        g = base[leaf] + pos
+
+        def gather(i: int, a: NDArray[Any]) -> NDArray[Any]:
+            return a[subset[i]] if i in subset else a
+
+        normals = np.vstack([
+            _triangle_normals(np.asarray(bands[i].vertices, np.float64), gather(i, np.asarray(bands[i].triangles, np.int64)))
+            for i in leaves_in
+        ])
+        vin = np.concatenate([gather(i, np.asarray(bands[i].value_in, np.float64)) for i in leaves_in])
+        vout = np.concatenate([gather(i, np.asarray(bands[i].value_out, np.float64)) for i in leaves_in])
         on_shared = np.concatenate([shared[i] for i in leaves_in])[g]
         if on_shared.any():
             drop = np.zeros(len(tris), bool)
@@ -727,14 +891,19 @@ def _booleans(
 
 
 def _shared_planes(
-    bands: Sequence[BandMesh], leaves: list[int], centre: NDArray[np.float64], half: float
+    bands: Sequence[BandMesh], leaves: list[int], centre: NDArray[np.float64], half: float,
+    subset: dict[int, NDArray[np.int64]] | None = None,
 ) -> dict[int, NDArray[np.bool_]]:
-    """For each of ``leaves``, which band triangles lie in a plane (either orientation)
-    that a band triangle of another of ``leaves`` lies in too: only there can faces coincide."""
+    """For each of ``leaves``, which band triangles (those of ``subset[leaf]`` where given, in
+    its order) lie in a plane (either orientation) that a band triangle of another of
+    ``leaves`` lies in too: only there can faces coincide."""
     keys, owner, flat = [], [], []
+    subset = {} if subset is None else subset
     for i in leaves:
         v = (np.asarray(bands[i].vertices, np.float64) - centre) / half
         t = np.asarray(bands[i].triangles, np.int64)
+        if i in subset:
+            t = t[subset[i]]
         n = _triangle_normals(v, t)
         length = np.linalg.norm(n, axis=1)
         ok = length > 0

@@ -459,10 +459,20 @@ PREPARED_CACHE_BYTES = 1 << 30
 SURFACE_CACHE_BYTES = 512 << 20
 GEOMETRY_CACHE_BYTES = 64 << 20
 
-#: Under ``csg="auto"``, the clipped surface is built (on an object's second
-#: view) only for trees of at most this many leaves whose bands have at most
-#: this many triangles in all; larger trees stay per pixel on every view.
+#: Under ``csg="auto"``, trees of at most this many leaves whose bands have at
+#: most :data:`SURFACE_MAX_TRIANGLES` triangles in all get the clipped surface
+#: from their second view on (its build started by that view). Larger trees
+#: get it too, on the terms of :data:`LARGE_SURFACE_SHARE`.
 SURFACE_MAX_LEAVES = 64
+#: Trees of more than :data:`SURFACE_MAX_LEAVES` leaves: their clipped surface is
+#: always built in the background (started by the second view, whatever
+#: ``surface_build`` says), its operands trimmed to the boxes where they matter
+#: (:func:`isocsg.csg.surface.surface_from_bands`, ``trim``), and given up, the tree
+#: staying per pixel, when its Booleans would need more than this fraction of
+#: the memory budget (the views go on meanwhile and need the rest). Every view
+#: until it is ready is per pixel; a view whose level of detail asks more
+#: contours of a leaf than the surface has is per pixel and starts a new build.
+LARGE_SURFACE_SHARE = 0.5
 #: Leaves whose level-of-detail count a renderer remembers (the oldest are forgotten).
 LOD_MEMORY = 1 << 18
 SURFACE_MAX_TRIANGLES = 1_000_000
@@ -845,6 +855,61 @@ class Renderer:
                 return _PENDING
         return self._build_surface(key, program, bands, view_dependent)
 
+    def _large_surface(
+        self, seen_key: tuple[Any, ...], program: Program, lights: Sequence[Any], material: Any,
+        counts: NDArray[np.int64], eye: Any,
+    ) -> list[tuple[int, _Prepared]] | None:
+        """The clipped surface of a tree of more than :data:`SURFACE_MAX_LEAVES` leaves, if ready
+        (see :data:`LARGE_SURFACE_SHARE`); else None, and its background build is started when
+        an earlier view found the tree's bands view-independent."""
+        key = ("tree", seen_key)
+        with self._surface_lock:
+            hit = self._surfaces.get(key)
+            if hit is not None:
+                if hit[1] is None:
+                    return None  # too large (or not closed): per pixel for good
+                if _covers(hit[0], counts):
+                    return hit[1]
+                counts = _merge_counts(hit[0], counts)  # a finer surface, built for this view's needs
+            if self._csg_seen.get(seen_key) is not False or key in self._building:
+                return None  # a first view, view-dependent bands, or being built
+            self._building[key] = _surface_pool().submit(
+                self._build_large_surface, key, program, lights, material, counts.copy(), eye)
+        return None
+
+    def _build_large_surface(
+        self, key: tuple[Any, ...], program: Program, lights: Sequence[Any], material: Any,
+        counts: NDArray[np.int64], eye: Any,
+    ) -> None:
+        """On the surface thread: the bands (from the caches, or built here), the trimmed
+        Booleans within the share of the budget, and the parts ready to fill."""
+        try:
+            try:
+                built = [self._bands(p, lights, material, c, eye) for p, c in zip(program.leaves, counts.tolist())]
+                if any(vd for _, vd in built):
+                    raise InvalidGeometryError("view-dependent bands")
+                bands = [b for b, _ in built]
+                del built
+                surface = surface_from_bands(program, bands, trim=True,
+                                             max_bytes=int(LARGE_SURFACE_SHARE * memory_budget()))
+            except (InvalidGeometryError, ResourceLimitError):
+                with self._surface_lock:  # too large, or bands that do not close: per pixel from now on
+                    self._surfaces.put(key, (counts, None), 64)
+                return
+            parts = [(int(i), self._prepare(surface.leaf_bands(int(i)), True)) for i in np.unique(surface.leaf)]
+            del surface
+            for _, p in parts:
+                p.quads()
+                p.proj(_STRIPES - 1)
+                for scratch in p.projs:
+                    scratch.fill(0.0)
+            with self._surface_lock:
+                if not self._surfaces.put(key, (counts, parts), sum(p.nbytes for _, p in parts)):
+                    self._surfaces.put(key, (counts, None), 64)  # more than the cache keeps: not again
+        finally:
+            with self._surface_lock:
+                self._building.pop(key, None)
+
     def _build_surface(
         self, key: tuple[Any, ...], program: Program, bands: tuple[BandMesh, ...], view_dependent: bool = False,
     ) -> list[tuple[int, _Prepared]] | None:
@@ -1069,7 +1134,9 @@ class Renderer:
             if not (rect[0] < rect[2] and rect[1] < rect[3]):  # off screen
                 report.add(len(leaves))
                 continue
-            if not self._per_pixel(seen_key, len(leaves)):
+            if len(leaves) > SURFACE_MAX_LEAVES and self.csg == "auto":
+                parts = self._large_surface(seen_key, program, scene.lights, obj.material, counts, cam.eye)
+            if parts is None and not self._per_pixel(seen_key, len(leaves)):
                 t = time.perf_counter()
                 built = [self._bands(p, scene.lights, obj.material, c, cam.eye) for p, c in zip(leaves, counts.tolist())]
                 build += time.perf_counter() - t
@@ -1572,6 +1639,25 @@ def _pool() -> ThreadPoolExecutor:
 
 
 _LEAF_POOL: ThreadPoolExecutor | None = None
+
+
+def _split_counts(codes: NDArray[np.int64]) -> tuple[NDArray[np.int64], NDArray[np.int64]]:
+    """Contours and segments of :meth:`Renderer._contours`'s codes (segments 0: the default)."""
+    segs = codes >> _SEGMENT_SHIFT
+    return codes & _CONTOUR_MASK, np.where(segs == 0, DEFAULT_SEGMENTS, segs)
+
+
+def _covers(have: NDArray[np.int64], need: NDArray[np.int64]) -> bool:
+    """Whether bands built at ``have`` are at least as fine as ``need`` asks, leaf by leaf."""
+    (c0, s0), (c1, s1) = _split_counts(have), _split_counts(need)
+    return bool(np.all(c0 >= c1) and np.all(s0 >= s1))
+
+
+def _merge_counts(a: NDArray[np.int64], b: NDArray[np.int64]) -> NDArray[np.int64]:
+    """The finer of two count codes, leaf by leaf."""
+    (c0, s0), (c1, s1) = _split_counts(a), _split_counts(b)
+    c, seg = np.maximum(c0, c1), np.maximum(s0, s1)
+    return np.where(seg < DEFAULT_SEGMENTS, c | (seg << _SEGMENT_SHIFT), c)
 
 
 _SURFACE_POOL: ThreadPoolExecutor | None = None
