@@ -110,18 +110,32 @@ def _trim_trees():
 @pytest.mark.parametrize("name", list(_trim_trees()), ids=str)
 def test_trimmed_operands_give_the_same_solid(name):
     """``trim=True`` cuts what is subtracted, and the operands of intersections, to the
-    boxes where they matter before the Booleans: fewer band triangles go in (read from
-    the budget's message), and the result is still a closed surface with manifold3d's
-    volume of the tree (256 segments) and the untrimmed surface's area."""
+    boxes where they matter before the Booleans: fewer triangles go into manifold3d, and
+    the result is still a closed surface with manifold3d's volume of the tree (256
+    segments) and the untrimmed surface's area."""
     tree = _trim_trees()[name]
     prog, bands = _bands(tree, contours=16)
-    counts = []
+    real = surface_module._manifold3d()
+
+    class Counting:  # manifold3d, counting the triangles of the meshes made for it
+        n = 0
+
+        def __getattr__(self, name):
+            return getattr(real, name)
+
+        def Mesh64(self, **kw):
+            Counting.n += len(kw["tri_verts"])
+            return real.Mesh64(**kw)
+
+    surfaces, counts = [], []
     for trim in (False, True):
-        with pytest.raises(ResourceLimitError, match="band triangles in Booleans") as err:
-            surface_from_bands(prog, bands, trim=trim, max_bytes=1)
-        counts.append(int(str(err.value).split("(")[1].split()[0]))
-    assert counts[1] < counts[0]
-    plain, trimmed = surface_from_bands(prog, bands), surface_from_bands(prog, bands, trim=True)
+        Counting.n = 0
+        with pytest.MonkeyPatch.context() as mp:
+            mp.setattr(surface_module, "_manifold3d", Counting)
+            surfaces.append(surface_from_bands(prog, bands, trim=trim))
+        counts.append(Counting.n)
+    assert 0 < counts[1] < counts[0]
+    plain, trimmed = surfaces
     mesh = trimesh.Trimesh(trimmed.vertices, trimmed.triangles, process=True)
     assert mesh.is_watertight
     ref = to_manifold(tree, 256).volume()
@@ -134,6 +148,21 @@ def test_trimmed_operands_give_the_same_solid(name):
         vin = np.concatenate([b.value_in for b in bands])[src[surf.leaf] + surf.source]
         vout = np.concatenate([b.value_out for b in bands])[src[surf.leaf] + surf.source]
         np.testing.assert_array_equal(surf.value, np.where(surf.reversed, vin, vout))
+
+
+def test_a_trimmed_surface_over_its_bound_is_refused_before_all_is_trimmed(monkeypatch):
+    """``max_bytes`` bounds the Booleans besides the budget; the leaves that cannot be
+    trimmed count first and the others as they are trimmed, so a model over the bound
+    is refused early (here after one of 16 holes) with ResourceLimitError."""
+    tree = _trim_trees()["plate-minus-tilted-holes"]
+    prog, bands = _bands(tree, contours=16)
+    calls = []
+    real = surface_module._trim_to_box
+    monkeypatch.setattr(surface_module, "_trim_to_box", lambda *a: calls.append(1) or real(*a))
+    bound = (len(bands[0].triangles) + 1) * surface_module.BYTES_PER_BOOLEAN_TRIANGLE
+    with pytest.raises(ResourceLimitError, match=r"over the .* GB allowed"):
+        surface_from_bands(prog, bands, trim=True, max_bytes=bound)
+    assert calls == [1]
 
 
 def _box_bands(box: Box) -> BandMesh:

@@ -47,7 +47,7 @@ from numpy.typing import NDArray
 from ..errors import InvalidGeometryError, InvalidParameterError, ResourceLimitError
 from ..laminae.model import BandMesh
 from ..laminae.split import mesh_edges
-from ..limits import check_memory
+from ..limits import check_memory, memory_budget
 from .mesh import _manifold3d
 from .program import OP_DIFFERENCE, OP_INTERSECTION, OP_UNION, Program
 from .tree import CSGNode
@@ -735,21 +735,31 @@ def surface_from_bands(
     plain_leaves = [c.ref for c in final if c.ref >= 0]
     # Trimmed leaves, welded in the local frame: leaf -> (vertices, triangles, source).
     trimmed: dict[int, tuple[NDArray[np.float64], NDArray[np.int64], NDArray[np.int64]]] = {}
-    if trim:
-        for i in sorted(boolean_leaves & set(plan.trim) - plan.whole):
-            lo, hi = plan.trim[i]
-            bm = bands[i]
-            v, t, src = _trim_to_box((np.asarray(bm.vertices, np.float64) - centre) / half,
-                                     np.asarray(bm.triangles, np.int64), lo, hi)
-            if len(t) < len(bm.triangles):  # welded below, once the budget is known to allow it
-                trimmed[i] = (v, t, src)
-    n_bool = sum(len(trimmed[i][1]) if i in trimmed else len(bands[i].triangles) for i in boolean_leaves)
+    to_trim = sorted(boolean_leaves & set(plan.trim) - plan.whole) if trim else []
     n_plain = sum(len(bands[i].triangles) for i in plain_leaves)
-    what = f"the clipped CSG surface ({n_bool} band triangles in Booleans, {n_plain} kept as they are)"
-    need = n_bool * BYTES_PER_BOOLEAN_TRIANGLE + n_plain * BYTES_PER_PLAIN_TRIANGLE
-    check_memory(what, need)
-    if max_bytes is not None and need > max_bytes:
-        raise ResourceLimitError(f"{what} needs about {need / 1e9:.2f} GB, over the {max_bytes / 1e9:.2f} GB allowed")
+    # What cannot shrink first, then leaf by leaf as trimmed: a model over the bound
+    # is known as such before all of it is trimmed.
+    n_bool = sum(len(bands[i].triangles) for i in boolean_leaves - set(to_trim))
+    bound = memory_budget() if max_bytes is None else min(memory_budget(), max_bytes)
+
+    def check(partial: bool) -> None:
+        what = f"the clipped CSG surface ({'at least ' if partial else ''}{n_bool} band triangles in Booleans, " \
+            f"{n_plain} kept as they are)"
+        need = n_bool * BYTES_PER_BOOLEAN_TRIANGLE + n_plain * BYTES_PER_PLAIN_TRIANGLE
+        check_memory(what, need)
+        if need > bound:
+            raise ResourceLimitError(f"{what} needs about {need / 1e9:.2f} GB, over the {bound / 1e9:.2f} GB allowed")
+
+    for i in to_trim:
+        check(True)
+        lo, hi = plan.trim[i]
+        bm = bands[i]
+        v, t, src = _trim_to_box((np.asarray(bm.vertices, np.float64) - centre) / half,
+                                 np.asarray(bm.triangles, np.int64), lo, hi)
+        n_bool += min(len(t), len(bm.triangles))
+        if len(t) < len(bm.triangles):  # welded below, once the budget is known to allow it
+            trimmed[i] = (v, t, src)
+    check(False)
     for i in list(trimmed):
         v, t, src = trimmed.pop(i)
         v, t, s2, ok = _close(v, t)
