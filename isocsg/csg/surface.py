@@ -508,6 +508,8 @@ class _Plan:
         # box common to an intersection's operands): leaf -> (lo, hi) over all such uses.
         self.trim: dict[int, tuple[NDArray[np.float64], NDArray[np.float64]]] = {}
         self.whole: set[int] = set()  # leaves used where all of their surface may matter
+        self.boxes: list[tuple[NDArray[np.float64], NDArray[np.float64]]] = []  # each node's box
+        self.slabs: dict[int, tuple[int, float, float]] = {}  # "slab" node -> (axis, lo, hi)
 
     def node(self, op: str, parts: list[_Comp], boxes: list[Any] | None = None) -> _Comp:
         """A planned operation; ``boxes[k]``, where given, is the box outside which
@@ -526,7 +528,64 @@ class _Plan:
                 self.trim[p.ref] = (np.asarray(box[0], np.float64), np.asarray(box[1], np.float64))
         lo = np.min([p.lo for p in parts], axis=0)
         hi = np.max([p.hi for p in parts], axis=0)
+        self.boxes.append((lo, hi))
         return _Comp(lo, hi, -len(self.nodes))
+
+    def nodes_of(self, ref: int) -> list[int]:
+        """The nodes a piece is built from (itself included), in building order."""
+        out, todo = set(), [ref]
+        while todo:
+            r = todo.pop()
+            if r < 0 and -1 - r not in out:
+                out.add(-1 - r)
+                todo.extend(self.nodes[-1 - r][1])
+        return sorted(out)
+
+    def split_difference(self, c: _Comp, count: Any, most: int, leaf_box: Any) -> list[_Comp]:
+        """A difference of many box-disjoint cuts as several, each of the first operand's
+        slab between two planes that cross no cut (boxes with gaps between them), so that
+        each Boolean takes at most about ``most`` triangles (``count(ref)``: a piece's
+        triangles); the slabs' cut faces are dropped when the results are read back.
+        Returns ``[c]`` when one Boolean is within ``most`` or no plane can part the cuts."""
+        op, refs = self.nodes[-1 - c.ref]
+        if op != "Subtract" or len(refs) < 3:
+            return [c]
+        first, cuts = refs[0], refs[1:]
+        sizes = np.array([count(r) for r in cuts], np.int64)
+        room = most - count(first)
+        if count(first) + int(sizes.sum()) <= most or room <= 0:
+            return [c]
+        box = [leaf_box(r) if r >= 0 else self.boxes[-1 - r] for r in [first] + cuts]
+        axis = int(np.argmax(box[0][1] - box[0][0]))
+        lo = np.array([b[0][axis] for b in box[1:]])
+        hi = np.array([b[1][axis] for b in box[1:]])
+        order = np.argsort(lo, kind="stable")
+        reach = np.maximum.accumulate(hi[order])  # the farthest end of the cuts so far
+        n = len(order)
+        cum = np.concatenate([[0], np.cumsum(sizes[order])])
+        # Where a plane may pass: after position e - 1 when no cut so far reaches the next one.
+        ends = [e for e in range(1, n) if reach[e - 1] < lo[order[e]]] + [n]
+        groups, start = [], 0
+        while start < n:
+            fit = [e for e in ends if e > start and cum[e] - cum[start] <= room]
+            end = fit[-1] if fit else next(e for e in ends if e > start)  # the largest that fits, else the least
+            groups.append((start, end))
+            start = end
+        if len(groups) < 2:
+            return [c]
+        first_comp = _Comp(box[0][0], box[0][1], first)
+        out = []
+        for g, (a, b) in enumerate(groups):
+            s_lo = -np.inf if g == 0 else float((reach[a - 1] + lo[order[a]]) / 2)
+            s_hi = np.inf if g == len(groups) - 1 else float((reach[b - 1] + lo[order[b]]) / 2)
+            slab = self.node("slab", [first_comp])
+            self.slabs[-1 - slab.ref] = (axis, s_lo, s_hi)
+            slab.lo, slab.hi = slab.lo.copy(), slab.hi.copy()
+            slab.lo[axis], slab.hi[axis] = max(slab.lo[axis], s_lo), min(slab.hi[axis], s_hi)
+            parts = [_Comp(box[1 + x][0], box[1 + x][1], cuts[x]) for x in order[a:b].tolist()]
+            d = self.node("Subtract", [slab] + parts, [None] + [(first_comp.lo, first_comp.hi)] * len(parts))
+            out.append(_Comp(slab.lo, slab.hi, d.ref))
+        return out
 
     def leaves(self, ref: int) -> list[int]:
         """The leaves a piece is made of (a walk of the nodes with a stack), sorted."""
@@ -737,29 +796,40 @@ def surface_from_bands(
     trimmed: dict[int, tuple[NDArray[np.float64], NDArray[np.int64], NDArray[np.int64]]] = {}
     to_trim = sorted(boolean_leaves & set(plan.trim) - plan.whole) if trim else []
     n_plain = sum(len(bands[i].triangles) for i in plain_leaves)
-    # What cannot shrink first, then leaf by leaf as trimmed: a model over the bound
-    # is known as such before all of it is trimmed.
-    n_bool = sum(len(bands[i].triangles) for i in boolean_leaves - set(to_trim))
     bound = memory_budget() if max_bytes is None else min(memory_budget(), max_bytes)
-
-    def check(partial: bool) -> None:
-        what = f"the clipped CSG surface ({'at least ' if partial else ''}{n_bool} band triangles in Booleans, " \
-            f"{n_plain} kept as they are)"
-        need = n_bool * BYTES_PER_BOOLEAN_TRIANGLE + n_plain * BYTES_PER_PLAIN_TRIANGLE
-        check_memory(what, need)
-        if need > bound:
-            raise ResourceLimitError(f"{what} needs about {need / 1e9:.2f} GB, over the {bound / 1e9:.2f} GB allowed")
-
     for i in to_trim:
-        check(True)
         lo, hi = plan.trim[i]
         bm = bands[i]
         v, t, src = _trim_to_box((np.asarray(bm.vertices, np.float64) - centre) / half,
                                  np.asarray(bm.triangles, np.int64), lo, hi)
-        n_bool += min(len(t), len(bm.triangles))
         if len(t) < len(bm.triangles):  # welded below, once the budget is known to allow it
             trimmed[i] = (v, t, src)
-    check(False)
+    size = [len(trimmed[i][1]) if i in trimmed else len(b.triangles) for i, b in enumerate(bands)]
+    n_bool = sum(size[i] for i in boolean_leaves)
+    if trim:
+        # The Booleans run one result at a time (what one holds is released before the
+        # next), so a difference of many cuts is parted into slabs that each fit.
+        most = max(1, (bound - (n_bool + n_plain) * BYTES_PER_PLAIN_TRIANGLE) // BYTES_PER_BOOLEAN_TRIANGLE)
+        counts: dict[int, int] = {}
+
+        def count(ref: int) -> int:
+            if ref not in counts:
+                counts[ref] = size[ref] if ref >= 0 else sum(size[x] for x in plan.leaves(ref))
+            return counts[ref]
+
+        final = [p for c in final for p in (plan.split_difference(c, count, int(most), lambda r: (box_lo[r], box_hi[r]))
+                                            if c.ref < 0 else [c])]
+        members = {c.ref: plan.leaves(c.ref) for c in final if c.ref < 0}
+        largest = max([sum(size[x] for x in m) for m in members.values()], default=0)
+        what = (f"the clipped CSG surface ({n_bool} band triangles in Booleans, at most {largest} at a time, "
+                f"{n_plain} kept as they are)")
+        need = largest * BYTES_PER_BOOLEAN_TRIANGLE + (n_bool + n_plain) * BYTES_PER_PLAIN_TRIANGLE
+    else:
+        what = f"the clipped CSG surface ({n_bool} band triangles in Booleans, {n_plain} kept as they are)"
+        need = n_bool * BYTES_PER_BOOLEAN_TRIANGLE + n_plain * BYTES_PER_PLAIN_TRIANGLE
+    check_memory(what, need)
+    if need > bound:
+        raise ResourceLimitError(f"{what} needs about {need / 1e9:.2f} GB, over the {bound / 1e9:.2f} GB allowed")
     for i in list(trimmed):
         v, t, src = trimmed.pop(i)
         v, t, s2, ok = _close(v, t)
@@ -799,15 +869,18 @@ def surface_from_bands(
                 if r < 0:
                     needed[-1 - r] = True
     if needed.any():
-        pieces.extend(_booleans(plan, needed, final, members, bands, weld, centre, half, trimmed))
+        pieces.extend(_booleans(plan, needed, final, members, bands, weld, centre, half, trimmed, one_at_a_time=trim))
     return _assemble(pieces)
 
 
 def _booleans(
     plan: _Plan, needed: NDArray[np.bool_], final: list[_Comp], members: dict[int, list[int]], bands: Sequence[BandMesh],
     weld: Any, centre: NDArray[np.float64], half: float, trimmed: dict[int, Any] | None = None,
+    one_at_a_time: bool = False,
 ) -> list[tuple[Any, ...]]:
-    """Build the planned Booleans (manifold3d, local frame) and read their results back."""
+    """Build the planned Booleans (manifold3d, local frame) and read their results back:
+    all at once, or (``one_at_a_time``) result by result, each solid released once the
+    last Boolean that takes it is built."""
     m3 = _manifold3d()
     M = m3.Manifold
     trimmed = {} if trimmed is None else trimmed
@@ -838,18 +911,59 @@ def _booleans(
             leaf_solid[ref] = s
         return leaf_solid[ref]
 
-    built: list[Any] = []
-    for k, (op, refs) in enumerate(plan.nodes):
-        if not needed[k]:
-            built.append(None)
-            continue
+    built: list[Any] = [None] * len(plan.nodes)
+    # Consumers of each solid still to come (Booleans, and results to read back).
+    uses = np.zeros(len(plan.nodes), np.int64)
+    leaf_uses: dict[int, int] = {}
+    for k in np.flatnonzero(needed).tolist():
+        for r in plan.nodes[k][1]:
+            if r < 0:
+                uses[-1 - r] += 1
+            else:
+                leaf_uses[r] = leaf_uses.get(r, 0) + 1
+    for c in final:
+        if c.ref < 0:
+            uses[-1 - c.ref] += 1
+
+    def release(r: int) -> None:
+        if not one_at_a_time:
+            return
+        if r < 0:
+            uses[-1 - r] -= 1
+            if not uses[-1 - r]:
+                built[-1 - r] = None
+        else:
+            leaf_uses[r] -= 1
+            if not leaf_uses[r]:
+                leaf_solid.pop(r, None)
+
+    def build(k: int) -> None:
+        op, refs = plan.nodes[k]
         parts = [solid(r) for r in refs]
         if op == "as is":
-            built.append(parts[0])
+            built[k] = parts[0]
         elif op == "compose":
-            built.append(M.compose(parts))
+            built[k] = M.compose(parts)
+        elif op == "slab":
+            axis, lo, hi = plan.slabs[k]
+            out = parts[0]
+            normal = np.zeros(3)
+            if np.isfinite(lo):  # keeps the side the normal points to
+                normal[axis] = 1.0
+                out = out.trim_by_plane(tuple(normal), lo)
+            if np.isfinite(hi):
+                normal[axis] = -1.0
+                out = out.trim_by_plane(tuple(normal), -hi)
+            built[k] = out
         else:
-            built.append(M.batch_boolean(parts, getattr(m3.OpType, op)))
+            built[k] = M.batch_boolean(parts, getattr(m3.OpType, op))
+        del parts
+        for r in refs:
+            release(r)
+
+    if not one_at_a_time:
+        for k in np.flatnonzero(needed).tolist():
+            build(k)
     # The band triangles each trimmed leaf brings into the Booleans (the others: all of theirs).
     subset = {i: np.unique(trimmed[i][2]) for i in trimmed}
     shared = _shared_planes(bands, sorted({x for m in members.values() for x in m}), centre, half, subset)
@@ -857,7 +971,12 @@ def _booleans(
     for c in final:
         if c.ref >= 0:
             continue
+        if one_at_a_time:
+            for k in plan.nodes_of(c.ref):
+                if built[k] is None:
+                    build(k)
         out = built[-1 - c.ref].to_mesh64()
+        release(c.ref)
         tris = np.asarray(out.tri_verts, dtype=np.int64).reshape(-1, 3)
         if not len(tris):
             continue
@@ -865,7 +984,14 @@ def _booleans(
         face = np.asarray(out.face_id, dtype=np.int64).reshape(-1)
         run_index = np.asarray(out.run_index, dtype=np.int64) // 3
         run_leaf = np.asarray(out.run_original_id, dtype=np.int64) - first_id
+        del out
         leaf = np.repeat(run_leaf, np.diff(run_index)).astype(np.int32)
+        ours = (leaf >= 0) & (leaf < len(bands))
+        if not ours.all():  # a slab's cut faces: the neighbouring slab's result continues there
+            keep_runs = (run_leaf >= 0) & (run_leaf < len(bands))
+            tris, face, leaf = tris[ours], face[ours], leaf[ours]
+            run_leaf = run_leaf[keep_runs]
+            run_index = np.concatenate([[0], np.cumsum(np.diff(run_index)[keep_runs])])
         # The comp's leaves' band triangles (of a trimmed leaf, those it kept), concatenated:
         # global index base[leaf] + the face's position among its leaf's.
         leaves_in = members[c.ref]
