@@ -56,7 +56,8 @@ from ..laminae.model import BandMesh
 from ..limits import check_memory, memory_budget
 from ..scene.model import MAX_CONTOURS, Scene
 from .raster import (
-    _RAW, camera_affine, fill_front_kernel, fill_projected, fill_rect, key_to_depth, pair_quads, project_kernel,
+    _RAW, camera_affine, fill_front_kernel, fill_front_runs, fill_projected, fill_rect, key_to_depth, pair_quads,
+    project_kernel,
 )
 from .scratch import SCRATCH
 from .tiles import (
@@ -383,6 +384,46 @@ class _Prepared:
         return self.nbytes - (0 if self.projs else 56 * len(self.vertices))
 
 
+@dataclass(eq=False)
+class _Runs:
+    """A large tree's clipped surface as one mesh to fill: the leaves' parts' quads in
+    consecutive runs, one per leaf, so a view projects and fills it in one call each."""
+
+    vertices: NDArray[np.float64]
+    polys: NDArray[np.int32]
+    values: NDArray[np.float32]
+    starts: NDArray[np.int64]  # run r: polys starts[r] .. starts[r + 1]
+    leaves: NDArray[np.int64]  # the leaf of each run
+    projs: list[NDArray[np.float64]] = field(default_factory=list)
+
+    @classmethod
+    def of(cls, parts: list[tuple[int, _Prepared]]) -> "_Runs":
+        if not parts:  # an empty result
+            return cls(np.zeros((0, 3)), np.zeros((0, 4), np.int32), np.zeros(0, np.float32), np.zeros(1, np.int64),
+                       np.zeros(0, np.int64))
+        nv = np.cumsum([0] + [len(p.vertices) for _, p in parts])
+        quads = [p.quads() for _, p in parts]
+        polys = np.vstack([np.where(q[0] >= 0, q[0] + np.int32(o), -1) for q, o in zip(quads, nv[:-1])]).astype(np.int32)
+        values = np.concatenate([q[1] for q in quads]).astype(np.float32)
+        starts = np.cumsum([0] + [len(q[0]) for q in quads]).astype(np.int64)
+        vertices = np.vstack([p.vertices for _, p in parts])
+        return cls(vertices, polys, values, starts, np.array([i for i, _ in parts], np.int64))
+
+    def quads(self) -> tuple[NDArray[np.int32], NDArray[np.float32]]:
+        return self.polys, self.values
+
+    def proj(self, k: int = 0) -> NDArray[np.float64]:
+        while len(self.projs) <= k:
+            self.projs.append(np.empty((7, len(self.vertices))))
+        return self.projs[k]
+
+    @property
+    def nbytes(self) -> int:
+        """The arrays and the projection scratch (made or to be made, one per fill thread)."""
+        arrays = sum(a.nbytes for a in (self.vertices, self.polys, self.values, self.starts, self.leaves))
+        return arrays + max(len(self.projs), _STRIPES) * 56 * len(self.vertices)
+
+
 def _band_bytes(bands: BandMesh) -> int:
     """Bytes of a band mesh's arrays that a prepared mesh does not share."""
     return sum(a.nbytes for a in (bands.value_out, bands.value_in, bands.band))
@@ -471,7 +512,8 @@ SURFACE_MAX_LEAVES = 64
 #: staying per pixel, when its Booleans would need more than this fraction of
 #: the memory budget (the views go on meanwhile and need the rest). Every view
 #: until it is ready is per pixel; a view whose level of detail asks more
-#: contours of a leaf than the surface has is per pixel and starts a new build.
+#: contours of a leaf than the surface has, or more than twice its segments, is
+#: per pixel and starts a new build (at the finer of both counts).
 LARGE_SURFACE_SHARE = 0.5
 #: Leaves whose level-of-detail count a renderer remembers (the oldest are forgotten).
 LOD_MEMORY = 1 << 18
@@ -628,9 +670,11 @@ class Renderer:
         its second render on (a new viewpoint of the same bands), the surface,
         built then and cached, if the tree has at most
         :data:`SURFACE_MAX_LEAVES` leaves and its bands at most
-        :data:`SURFACE_MAX_TRIANGLES` triangles (larger trees stay per pixel).
-        Objects with view-dependent (specular) bands use ``"pixel"`` under
-        ``"auto"``.
+        :data:`SURFACE_MAX_TRIANGLES` triangles. Larger trees get it too,
+        always built in the background with their operands trimmed, and only
+        if its Booleans fit :data:`LARGE_SURFACE_SHARE` of the memory budget
+        (else they stay per pixel). Objects with view-dependent (specular)
+        bands use ``"pixel"`` under ``"auto"``.
     surface_build : {"background", "now"}, default "background"
         Under ``csg="auto"``, where the clipped surface is built.
         ``"background"``: on a thread of its own, started by the object's
@@ -858,7 +902,7 @@ class Renderer:
     def _large_surface(
         self, seen_key: tuple[Any, ...], program: Program, lights: Sequence[Any], material: Any,
         counts: NDArray[np.int64], eye: Any,
-    ) -> list[tuple[int, _Prepared]] | None:
+    ) -> _Runs | None:
         """The clipped surface of a tree of more than :data:`SURFACE_MAX_LEAVES` leaves, if ready
         (see :data:`LARGE_SURFACE_SHARE`); else None, and its background build is started when
         an earlier view found the tree's bands view-independent."""
@@ -896,15 +940,14 @@ class Renderer:
                 with self._surface_lock:  # too large, or bands that do not close: per pixel from now on
                     self._surfaces.put(key, (counts, None), 64)
                 return
-            parts = [(int(i), self._prepare(surface.leaf_bands(int(i)), True)) for i in np.unique(surface.leaf)]
+            runs = _Runs.of([(int(i), self._prepare(surface.leaf_bands(int(i)), True))
+                             for i in np.unique(surface.leaf)])
             del surface
-            for _, p in parts:
-                p.quads()
-                p.proj(_STRIPES - 1)
-                for scratch in p.projs:
-                    scratch.fill(0.0)
+            runs.proj(_STRIPES - 1)  # pages touched here, not by the first view that fills it
+            for scratch in runs.projs:
+                scratch.fill(0.0)
             with self._surface_lock:
-                if not self._surfaces.put(key, (counts, parts), sum(p.nbytes for _, p in parts)):
+                if not self._surfaces.put(key, (counts, runs), runs.nbytes):
                     self._surfaces.put(key, (counts, None), 64)  # more than the cache keeps: not again
         finally:
             with self._surface_lock:
@@ -1135,8 +1178,12 @@ class Renderer:
                 report.add(len(leaves))
                 continue
             if len(leaves) > SURFACE_MAX_LEAVES and self.csg == "auto":
-                parts = self._large_surface(seen_key, program, scene.lights, obj.material, counts, cam.eye)
-            if parts is None and not self._per_pixel(seen_key, len(leaves)):
+                runs = self._large_surface(seen_key, program, scene.lights, obj.material, counts, cam.eye)
+                if runs is not None:
+                    plain.append((runs, base + runs.leaves, nears[runs.leaves]))
+                    report.add(len(leaves))
+                    continue
+            if not self._per_pixel(seen_key, len(leaves)):
                 t = time.perf_counter()
                 built = [self._bands(p, scene.lights, obj.material, c, cam.eye) for p, c in zip(leaves, counts.tolist())]
                 build += time.perf_counter() - t
@@ -1211,6 +1258,10 @@ class Renderer:
             for p, base, near, quads, quad_value in meshes:
                 proj = p.proj(k)
                 project_kernel(p.vertices, eye, a, b, persp, proj, 0, len(p.vertices))
+                if isinstance(p, _Runs):  # labels and near planes per run (leaf)
+                    fill_front_runs(proj, quads, quad_value, p.starts, base, near, persp, r0, zkey[r0:r1],
+                                    value[r0:r1], gid[r0:r1], bounds[k])
+                    continue
                 fill_front_kernel(
                     proj, quads, quad_value, near, persp, base, r0, zkey[r0:r1], value[r0:r1], gid[r0:r1], bounds[k],
                 )
@@ -1648,9 +1699,12 @@ def _split_counts(codes: NDArray[np.int64]) -> tuple[NDArray[np.int64], NDArray[
 
 
 def _covers(have: NDArray[np.int64], need: NDArray[np.int64]) -> bool:
-    """Whether bands built at ``have`` are at least as fine as ``need`` asks, leaf by leaf."""
+    """Whether a large tree's surface built at ``have`` serves a view asking ``need``: every
+    leaf has the contours asked and at least half the segments (a chord error within four
+    times :data:`CHORD_PIXELS`, 0.05 pixel), so a view that finds a few leaves grown on
+    screen does not wait for a new Boolean of the whole tree."""
     (c0, s0), (c1, s1) = _split_counts(have), _split_counts(need)
-    return bool(np.all(c0 >= c1) and np.all(s0 >= s1))
+    return bool(np.all(c0 >= c1) and np.all(2 * s0 >= s1))
 
 
 def _merge_counts(a: NDArray[np.int64], b: NDArray[np.int64]) -> NDArray[np.int64]:

@@ -740,6 +740,24 @@ def fill_front_kernel(
                 np.empty((1, 1)), np.empty((1, 1), np.float32), bounds, np.empty((3, 4)))
 
 
+@njit(cache=True, nogil=True)
+def fill_front_runs(
+    proj: NDArray[np.float64], polys: NDArray[np.int32], values: NDArray[np.float32], starts: NDArray[np.int64],
+    tags: NDArray[np.int64], nears: NDArray[np.float64], perspective: bool, oy: int,
+    zf: NDArray[np.float64], vf: NDArray[np.float32], tf: NDArray[np.int32], bounds: NDArray[np.int64],
+) -> None:
+    """:func:`fill_front_kernel` of consecutive runs of polygons in one call, run ``r``
+    (polygons ``starts[r]`` to ``starts[r + 1]``) with its own tag and near plane: the
+    parts of a large clipped CSG surface (one per leaf) without a call per part."""
+    scratch = np.empty((3, 4))
+    zb = np.empty((1, 1))
+    vb = np.empty((1, 1), np.float32)
+    for r in range(tags.shape[0]):
+        a, b = starts[r], starts[r + 1]
+        _fill_polys(proj, polys[a:b], values[a:b], values[a:b], nears[r], perspective, np.bool_(False), tags[r],
+                    np.int64(0), oy, zf, vf, tf, zb, vb, bounds, scratch)
+
+
 @njit(cache=True, inline="always")
 def _extent(t: NDArray[np.float64], a: int, b: int, c: int, d: int) -> tuple[float, float]:
     """Smallest and largest ``t`` over the corners of a quad (``d < 0``: a triangle)."""
