@@ -464,6 +464,34 @@ def test_auto_builds_large_trees_in_the_background_within_the_budget_share(monke
     assert len(calls) == 3
 
 
+def test_a_large_union_over_the_share_is_given_up_before_its_bands_are_all_asked_for(monkeypatch):
+    """A union of 80 overlapping spheres can be neither trimmed nor parted: its Boolean takes
+    every band triangle. The background build asks for the bands of such leaves first and
+    gives up (per pixel for good) as soon as they pass the share of the budget, here after
+    the first sphere's, instead of building all 80 to find out."""
+    from isocsg.laminae import build_bands
+
+    calls = []
+
+    def counting(*a, **kw):
+        calls.append(1)
+        return build_bands(*a, **kw)
+
+    monkeypatch.setattr(painter, "LARGE_SURFACE_SHARE", 1e-9)
+    spheres = [Sphere((0.6 * (i % 5), 0.6 * (i // 5 % 4), 0.6 * (i // 20)), 0.4) for i in range(80)]
+    cam = Camera((6.0, -8.0, 6.0), (1.2, 0.9, 0.9), fov=40, width=64, height=64)
+    scene = Scene(cam, LIGHTS, (SceneObject(Union(*spheres)),), RenderSettings(contours=16))
+    r = Renderer(build_laminae=counting)
+    r.render(scene)
+    assert len(calls) == 80  # this builder keeps nothing: each per-pixel view asks for every leaf
+    r.render(scene, camera=cam.with_view((-6.0, -8.0, 6.0)))
+    assert r.wait_surfaces(timeout=300)
+    assert len(calls) == 2 * 80 + 1  # the second view's, and one in the background
+    r.render(scene, camera=cam.with_view((6.0, 8.0, 6.0)))
+    assert r.wait_surfaces(timeout=300)
+    assert len(calls) == 3 * 80 + 1  # the third view per pixel; not tried again
+
+
 @pytest.mark.parametrize("k", [10], ids=lambda k: f"{k * k}-holes")
 def test_large_tree_surface_views_match_the_ray_caster(k, monkeypatch):
     """A plate of 100 holes (101 leaves, more than SURFACE_MAX_LEAVES): once its trimmed

@@ -42,7 +42,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 from numba import njit
-from numpy.typing import NDArray
+from numpy.typing import ArrayLike, NDArray
 
 from ..errors import InvalidGeometryError, InvalidParameterError, ResourceLimitError
 from ..laminae.model import BandMesh
@@ -62,6 +62,7 @@ __all__ = [
     "estimate_surface_bytes",
     "estimate_surface_triangles",
     "surface_from_bands",
+    "untrimmed_groups",
 ]
 
 # Relative distance (to the mesh size) within which a vertex lies on an open edge.
@@ -717,6 +718,40 @@ def _groups(n: int, i: NDArray[np.int64], j: NDArray[np.int64]) -> NDArray[np.in
             r = parent[r]
         parent[k] = r
     return parent
+
+
+def untrimmed_groups(program: Program, lo: ArrayLike, hi: ArrayLike) -> list[list[int]]:
+    """For each Boolean that ``surface_from_bands(program, bands, trim=True)`` would build
+    on leaves within these boxes, the leaves it takes whole (none of their triangles can go).
+
+    Known from the leaves' boxes alone, before any band exists: the sum of their band
+    triangles is a lower bound of that Boolean's, e.g. to give up on a union of many
+    overlapping leaves without building all their bands.
+
+    Parameters
+    ----------
+    program : Program
+    lo, hi : array_like, shape (n, 3)
+        The leaves' bounding boxes.
+
+    Returns
+    -------
+    list of list of int
+
+    Examples
+    --------
+    >>> from isocsg import Box, Cylinder, Sphere
+    >>> prog = ((Sphere((0, 0, 0), 1) | Sphere((1, 0, 0), 1)) - Cylinder((0, 0, 0), (0, 0, 3), 0.2)).program()
+    >>> lo = np.array([[-1, -1, -1], [0, -1, -1], [-0.2, -0.2, -1.5]]); hi = lo + [[2, 2, 2], [2, 2, 2], [0.4, 0.4, 3]]
+    >>> untrimmed_groups(prog, lo, hi)
+    [[0, 1]]
+    """
+    lo = np.asarray(lo, np.float64).reshape(-1, 3)
+    hi = np.asarray(hi, np.float64).reshape(-1, 3)
+    plan = _Plan()
+    final = program.evaluate(lambda i, _: [_Comp(lo[i], hi[i], i)], plan.combine)
+    trimmable = set(plan.trim) - plan.whole
+    return [[x for x in plan.leaves(c.ref) if x not in trimmable] for c in final if c.ref < 0]
 
 
 def surface_from_bands(

@@ -45,7 +45,7 @@ from numpy.typing import NDArray
 
 from .._validation import integer, light_budget
 from ..camera import Camera
-from ..csg.surface import surface_from_bands
+from ..csg.surface import BYTES_PER_BOOLEAN_TRIANGLE, surface_from_bands, untrimmed_groups
 from ..csg.program import Program, evaluate_mask
 from ..csg.tree import CSGNode
 from ..errors import InvalidGeometryError, InvalidParameterError, ResourceLimitError
@@ -929,10 +929,27 @@ class Renderer:
         Booleans within the share of the budget, and the parts ready to fill."""
         try:
             try:
-                built = [self._bands(p, lights, material, c, eye) for p, c in zip(program.leaves, counts.tolist())]
-                if any(vd for _, vd in built):
+                leaves, codes = program.leaves, counts.tolist()
+                # Leaves that no trim can shrink first, Boolean by Boolean: a tree whose
+                # untrimmable part alone is over the bound (a union of many overlapping
+                # leaves) is given up before the rest of its bands is asked for.
+                geom = leaf_geometry(leaves)
+                most = LARGE_SURFACE_SHARE * memory_budget() / BYTES_PER_BOOLEAN_TRIANGLE
+                built: dict[int, tuple[BandMesh, bool]] = {}
+                for group in untrimmed_groups(program, geom.lo, geom.hi):
+                    n_tri = 0
+                    for i in group:
+                        if i not in built:
+                            built[i] = self._bands(leaves[i], lights, material, codes[i], eye)
+                        n_tri += len(built[i][0].triangles)
+                        if n_tri > most:
+                            raise ResourceLimitError(f"{n_tri} band triangles in one Boolean, over the bound")
+                for i in range(len(leaves)):
+                    if i not in built:
+                        built[i] = self._bands(leaves[i], lights, material, codes[i], eye)
+                if any(vd for _, vd in built.values()):
                     raise InvalidGeometryError("view-dependent bands")
-                bands = [b for b, _ in built]
+                bands = [built[i][0] for i in range(len(leaves))]
                 del built
                 surface = surface_from_bands(program, bands, trim=True,
                                              max_bytes=int(LARGE_SURFACE_SHARE * memory_budget()))
