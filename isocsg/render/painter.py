@@ -393,6 +393,7 @@ class _Runs:
     polys: NDArray[np.int32]
     values: NDArray[np.float32]
     starts: NDArray[np.int64]  # run r: polys starts[r] .. starts[r + 1]
+    vstarts: NDArray[np.int64]  # run r's polygons use vertices vstarts[r] .. vstarts[r + 1]
     leaves: NDArray[np.int64]  # the leaf of each run
     projs: list[NDArray[np.float64]] = field(default_factory=list)
 
@@ -400,14 +401,14 @@ class _Runs:
     def of(cls, parts: list[tuple[int, _Prepared]]) -> "_Runs":
         if not parts:  # an empty result
             return cls(np.zeros((0, 3)), np.zeros((0, 4), np.int32), np.zeros(0, np.float32), np.zeros(1, np.int64),
-                       np.zeros(0, np.int64))
+                       np.zeros(1, np.int64), np.zeros(0, np.int64))
         nv = np.cumsum([0] + [len(p.vertices) for _, p in parts])
         quads = [p.quads() for _, p in parts]
         polys = np.vstack([np.where(q[0] >= 0, q[0] + np.int32(o), -1) for q, o in zip(quads, nv[:-1])]).astype(np.int32)
         values = np.concatenate([q[1] for q in quads]).astype(np.float32)
         starts = np.cumsum([0] + [len(q[0]) for q in quads]).astype(np.int64)
         vertices = np.vstack([p.vertices for _, p in parts])
-        return cls(vertices, polys, values, starts, np.array([i for i, _ in parts], np.int64))
+        return cls(vertices, polys, values, starts, nv.astype(np.int64), np.array([i for i, _ in parts], np.int64))
 
     def quads(self) -> tuple[NDArray[np.int32], NDArray[np.float32]]:
         return self.polys, self.values
@@ -420,7 +421,7 @@ class _Runs:
     @property
     def nbytes(self) -> int:
         """The arrays and the projection scratch (made or to be made, one per fill thread)."""
-        arrays = sum(a.nbytes for a in (self.vertices, self.polys, self.values, self.starts, self.leaves))
+        arrays = sum(a.nbytes for a in (self.vertices, self.polys, self.values, self.starts, self.vstarts, self.leaves))
         return arrays + max(len(self.projs), _STRIPES) * 56 * len(self.vertices)
 
 
@@ -1276,7 +1277,7 @@ class Renderer:
                 proj = p.proj(k)
                 project_kernel(p.vertices, eye, a, b, persp, proj, 0, len(p.vertices))
                 if isinstance(p, _Runs):  # labels and near planes per run (leaf)
-                    fill_front_runs(proj, quads, quad_value, p.starts, base, near, persp, r0, zkey[r0:r1],
+                    fill_front_runs(proj, quads, quad_value, p.starts, p.vstarts, base, near, persp, r0, zkey[r0:r1],
                                     value[r0:r1], gid[r0:r1], bounds[k])
                     continue
                 fill_front_kernel(
