@@ -448,20 +448,21 @@ def test_auto_builds_large_trees_in_the_background_within_the_budget_share(monke
     for eye in eyes:
         r2.render(other, camera=other.camera.with_view(eye))
         assert r2.wait_surfaces(timeout=300)
-    assert calls[1:] == [(65, True)] and len(tiled) == 5
+    # (given up before the Booleans: the plate alone, which no trim shrinks, is over the share)
+    assert calls == [(82, True)] and len(tiled) == 5
     # small trees keep their path: the surface from the second view, untrimmed
     small = plate_scene(2, 96, 80)  # 5 leaves
     r.render(small)
     r.render(small, camera=small.camera.with_view(eyes[1]))
     assert r.wait_surfaces(timeout=120)
-    assert calls[2:] == [(5, False)]
+    assert calls[1:] == [(5, False)]
     # and under the triangle bound too
     monkeypatch.setattr(painter, "SURFACE_MAX_TRIANGLES", 10)
     other = plate_scene(3, 96, 80)
     r.render(other)
     r.render(other, camera=other.camera.with_view(eyes[1]))
     assert r.wait_surfaces(timeout=120)
-    assert len(calls) == 3
+    assert len(calls) == 2
 
 
 def test_a_large_union_over_the_share_is_given_up_before_its_bands_are_all_asked_for(monkeypatch):

@@ -824,6 +824,8 @@ def _fill_polys(
         ymin, ymax = _extent(sy, a, b, c, d)
         if ymax <= r_lo or ymin >= r_hi + 0.5:
             continue  # no pixel centre of the viewport's rows
+        if math.ceil(ymin - 0.5) >= math.ceil(ymax - 0.5):
+            continue  # no row's centre between its top and bottom: _fill_convex would write nothing
         ax, ay = sx[a], sy[a]
         if not back:
             # Back faces first (about half of a closed mesh): a planar polygon is
