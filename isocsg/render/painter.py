@@ -758,6 +758,8 @@ class Renderer:
         # CSG objects already resolved per pixel -> whether they stay per pixel (view-dependent
         # bands, or a surface too large to build). Keys only: bounded by a count.
         self._csg_seen: OrderedDict[tuple[Any, ...], bool] = OrderedDict()
+        # Large trees' surface builds decided by the render in progress, started at its end.
+        self._deferred: dict[tuple[Any, ...], tuple[Any, ...]] = {}
 
     def _buffer(self, name: str, shape: tuple[int, ...], dtype: Any) -> NDArray[Any]:
         key = (name, shape, np.dtype(dtype).str)
@@ -916,10 +918,11 @@ class Renderer:
                 if _covers(hit[0], counts):
                     return hit[1]
                 counts = _merge_counts(hit[0], counts)  # a finer surface, built for this view's needs
-            if self._csg_seen.get(seen_key) is not False or key in self._building:
+            if self._csg_seen.get(seen_key) is not False or key in self._building or key in self._deferred:
                 return None  # a first view, view-dependent bands, or being built
-            self._building[key] = _surface_pool().submit(
-                self._build_large_surface, key, program, lights, material, counts.copy(), eye)
+        # Started once this view is done (see _render): the build's Python work would
+        # otherwise hold the interpreter lock against this view's own.
+        self._deferred[key] = (program, lights, material, counts.copy(), eye)
         return None
 
     def _build_large_surface(
@@ -939,12 +942,14 @@ class Renderer:
                 built: dict[int, tuple[BandMesh, bool]] = {}
                 for group in untrimmed_groups(program, geom.lo, geom.hi):
                     n_tri = 0
-                    for i in group:
+                    for k, i in enumerate(group, 1):
                         if i not in built:
                             built[i] = self._bands(leaves[i], lights, material, codes[i], eye)
                         n_tri += len(built[i][0].triangles)
-                        if n_tri > most:
-                            raise ResourceLimitError(f"{n_tri} band triangles in one Boolean, over the bound")
+                        # Over the bound, or clearly bound to be at this rate (four times over
+                        # after a sample of eight leaves): given up without the rest.
+                        if n_tri > most or (k >= 8 and n_tri * len(group) > 4 * most * k):
+                            raise ResourceLimitError(f"{n_tri} band triangles of {k} leaves in one Boolean, over the bound")
                 for i in range(len(leaves)):
                     if i not in built:
                         built[i] = self._bands(leaves[i], lights, material, codes[i], eye)
@@ -1125,7 +1130,15 @@ class Renderer:
         """
         with self._lock:
             self._prepared.new_pass()
-            return self._render(scene, camera, contours, progress)
+            self._deferred.clear()
+            try:
+                return self._render(scene, camera, contours, progress)
+            finally:
+                with self._surface_lock:
+                    for key, args in self._deferred.items():
+                        if key not in self._building:
+                            self._building[key] = _surface_pool().submit(self._build_large_surface, key, *args)
+                self._deferred.clear()
 
     def _render(
         self, scene: Scene, camera: Camera | None, contours: int | None, progress: Callable[[int, int], None] | None,
