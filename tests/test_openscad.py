@@ -283,7 +283,7 @@ def read_openscad_text(text: str):
 
 def test_skip_counts_add_up(tmp_path) -> None:
     text = (
-        "difference() {\n  cube(size = [3, 3, 3]);\n  hull() { sphere(r = 1); }\n  hull() { cube(size = 1); }\n"
+        "difference() {\n  cube(size = [3, 3, 3]);\n  hull() { sphere(r = 1); }\n  hull() { cube(size = 1); sphere(r = 0.5); }\n"
         "  minkowski() { cube(size = 1); sphere(r = 1); }\n}\nlinear_extrude(height = 1, twist = 5) { square(size = 1); }\n"
     )
     path = tmp_path / "m.csg"
@@ -294,7 +294,7 @@ def test_skip_counts_add_up(tmp_path) -> None:
     with pytest.warns(OpenSCADSkipWarning, match=re.escape("skipped 4 unsupported OpenSCAD nodes: 2 hull, 1 linear_extrude, 1 minkowski")):
         isocsg.load_openscad(path, skip_unsupported=True)
     with pytest.raises(OpenSCADError, match=re.escape("the model is empty: nothing of it has a volume (skipped: 1 hull)")):
-        load("hull() { cube(size = 1); }", skip_unsupported=True)
+        load("hull() { sphere(r = 1); }", skip_unsupported=True)
 
 
 # ----------------------------------------------------------------------------- files and the program
@@ -402,14 +402,20 @@ POLYHEDRAL = {
 
 @pytest.mark.parametrize("name", list(POLYHEDRAL), ids=str)
 def test_six_digit_polyhedra_stay_convex(name: str, tmp_path) -> None:
-    """A convex polyhedron keeps 6 digits of its vertices (no short map places them all): the
-    loader judges flatness to that precision, so the rounded file is still a convex polyhedron."""
+    """The readable form (``polyhedra="points"``) keeps 6 digits of the vertices (no short map
+    places them all): the loader judges flatness to that precision, so the rounded file is still
+    a convex polyhedron. The default form (the hull of exactly placed corners) keeps them all."""
     solid = POLYHEDRAL[name]
-    back = loads_openscad(dumps_openscad(solid, digits=6))
+    back = loads_openscad(dumps_openscad(solid, digits=6, polyhedra="points"))
+    assert isinstance(back, ConvexPolyhedron)
     assert volume(back) == pytest.approx(volume(solid), rel=1e-5)
+    back = loads_openscad(dumps_openscad(solid, digits=6))
+    assert isinstance(back, ConvexPolyhedron)
+    assert volume(back) == pytest.approx(volume(solid), rel=1e-12)
     if shutil.which("openscad"):
         back = isocsg.load_openscad(isocsg.save_openscad(solid, tmp_path / "m.scad"))
-        assert volume(back) == pytest.approx(volume(solid), rel=1e-5)
+        assert volume(back) == pytest.approx(volume(solid), rel=1e-12)
+        assert np.allclose(back.bounds, solid.bounds, rtol=0, atol=1e-12 * float(np.abs(solid.bounds).max()))
 
 
 @pytest.mark.skipif(shutil.which("openscad") is None, reason="the openscad program is not installed (apt install openscad)")

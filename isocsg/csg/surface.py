@@ -31,7 +31,8 @@ volume fins and shells) where operands' faces coincide, e.g. in
 ``(S | C) - C`` or ``A - A``. Where two leaves have band triangles in one
 plane, the result's triangles in those planes are tested, and those lying on
 an opposite-facing triangle of the result are dropped
-(:data:`COINCIDENT_DISTANCE`).
+(:data:`COINCIDENT_DISTANCE`); a triangle only partly covered by opposite ones
+keeps its part outside them.
 """
 
 from __future__ import annotations
@@ -1053,9 +1054,10 @@ def _booleans(
             drop = np.zeros(len(tris), bool)
             cand = np.flatnonzero(on_shared)
             drop[cand] = _on_opposite_face(verts, tris, cand, COINCIDENT_DISTANCE)
+            verts, tris, origin, drop = _cancel_partial_overlaps(verts, tris, cand, drop, COINCIDENT_DISTANCE)
             if drop.any():
-                keep = ~drop
-                tris, leaf, face, g = tris[keep], leaf[keep], face[keep], g[keep]
+                keep = np.flatnonzero(~drop)
+                tris, leaf, face, g = tris[keep], leaf[origin[keep]], face[origin[keep]], g[origin[keep]]
         rev = np.einsum("ij,ij->i", _triangle_normals(verts, tris), normals[g]) < 0
         pieces.append((verts * half + centre, tris, leaf, face, rev, np.where(rev, vin[g], vout[g])))
     return pieces
@@ -1222,6 +1224,109 @@ def _on_opposite_face(
         # difference across the plane); of the layers left, one is kept.
         out[k] = other > 0 and below >= min(same - other, 1)
     return out
+
+
+def _cancel_partial_overlaps(
+    v: NDArray[np.float64], t: NDArray[np.int64], cand: NDArray[np.int64], drop: NDArray[np.bool_], tol: float
+) -> tuple[NDArray[np.float64], NDArray[np.int64], NDArray[np.int64], NDArray[np.bool_]]:
+    """Cancel opposite layers of a coincident face where they overlap only in part.
+
+    :func:`_on_opposite_face` judges a triangle at its centroid, which is
+    right where the opposite layer covers it whole. manifold3d may leave one
+    layer as large triangles and the other as small ones (``A - (A & B)``: the
+    face of ``A`` and the pieces of ``A & B``'s copy of it cut by ``B``); a
+    large triangle half covered is then dropped or kept whole. Such a
+    triangle is replaced by its part outside the opposite triangles
+    (a fin or shell has one layer each way: they cancel where both are).
+
+    Returns
+    -------
+    vertices, triangles
+        The input with the replacing triangles (and their vertices) appended.
+    origin : ndarray of int64
+        For every output triangle, the input triangle it lies in.
+    drop : ndarray of bool
+        Which output triangles to drop (the replaced ones among them).
+    """
+    import shapely
+    from scipy.spatial import cKDTree
+
+    n_tri = len(t)
+    origin = np.arange(n_tri, dtype=np.int64)
+    if len(cand) < 2:
+        return v, t, origin, drop
+    p = v[t[cand]]  # (m, 3, 3)
+    nrm = np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0])
+    area2 = np.linalg.norm(nrm, axis=1)
+    ok = area2 > 0
+    nrm = nrm / np.where(ok, area2, 1.0)[:, None]
+    off = np.einsum("ij,ij->i", nrm, p[:, 0])
+    key = np.column_stack([nrm, off])
+    # Opposite orientations: (n, d) of one near (-n, -d) of the other; then boxes that meet
+    # and every vertex of the other within tol of the first's plane.
+    near = cKDTree(key).sparse_distance_matrix(cKDTree(-key), 1e-3, output_type="ndarray")
+    i, j = near["i"].astype(np.int64), near["j"].astype(np.int64)
+    lo, hi = p.min(axis=1) - tol, p.max(axis=1) + tol
+    sel = ok[i] & ok[j] & np.all(lo[i] <= hi[j], axis=1) & np.all(lo[j] <= hi[i], axis=1)
+    i, j = i[sel], j[sel]
+    sel = np.all(np.abs(np.einsum("kvx,kx->kv", p[j], nrm[i]) - off[i][:, None]) <= tol, axis=1)
+    i, j = i[sel], j[sel]
+    if not len(i):
+        return v, t, origin, drop
+    # Each pair in the plane of i's triangle, seen along its normal's largest axis (areas in
+    # a fixed ratio there); the layers facing one way do not overlap, so pairwise overlaps sum.
+    axis = np.argmax(np.abs(nrm), axis=1)
+    keep2 = np.array([[1, 2], [0, 2], [0, 1]])[axis]
+
+    def flat(tri: NDArray[np.float64], ax: NDArray[np.int64]) -> Any:
+        return shapely.polygons(np.take_along_axis(tri, ax[:, None, :], axis=2))
+
+    # (a triangle with an opposite twin on the same vertices is covered whole)
+    corners = np.sort(t[cand], axis=1)
+    twin = np.zeros(len(cand), bool)
+    twin[i[np.all(corners[i] == corners[j], axis=1)]] = True
+    i, j = i[~twin[i]], j[~twin[i]]
+    own = flat(p[i], keep2[i])
+    covered = np.bincount(i, shapely.area(shapely.intersection(own, flat(p[j], keep2[i]))), minlength=len(cand))
+    whole = shapely.area(flat(p, keep2))
+    covered[twin] = whole[twin]
+    partial = np.flatnonzero((covered > whole * 1e-9) & (covered < whole * (1 - 1e-9)))
+    if not len(partial):
+        return v, t, origin, drop
+    # The partly covered triangles minus their opposite partners, one partner rank at a time.
+    mine = np.isin(i, partial)
+    i, j = i[mine], j[mine]
+    order = np.argsort(i, kind="stable")
+    i, j = i[order], j[order]
+    rank = np.arange(len(i)) - np.searchsorted(i, i)
+    slot = np.searchsorted(partial, i)
+    rest = flat(p[partial], keep2[partial])
+    for r in range(int(rank.max()) + 1):
+        at = rank == r
+        rest[slot[at]] = shapely.difference(rest[slot[at]], flat(p[j[at]], keep2[i[at]]))
+    pieces, which = shapely.get_parts(shapely.constrained_delaunay_triangles(rest), return_index=True)
+    a = partial[which]
+    big = shapely.area(pieces) > whole[a] * 1e-12
+    pieces, a = pieces[big], a[big]
+    xy = shapely.get_coordinates(shapely.get_exterior_ring(pieces)).reshape(len(pieces), 4, 2)[:, :3]
+    # back into the plane of each triangle: the dropped coordinate from n . x = d
+    q = np.empty((len(a), 3, 3))
+    rows = np.arange(len(a))[:, None]
+    q[rows, :, keep2[a]] = np.moveaxis(xy, 2, 1)
+    kept_n = np.take_along_axis(nrm[a], keep2[a], axis=1)
+    q[rows[:, 0], :, axis[a]] = (off[a][:, None] - np.einsum("tvk,tk->tv", xy, kept_n)) / nrm[a, axis[a]][:, None]
+    # each keeps its triangle's own orientation
+    flip = np.einsum("ij,ij->i", np.cross(q[:, 1] - q[:, 0], q[:, 2] - q[:, 0]), nrm[a]) < 0
+    q[flip] = q[flip, ::-1]
+    replaced = np.zeros(n_tri, bool)
+    replaced[cand[partial]] = True
+    out_drop = np.concatenate([drop | replaced, np.zeros(len(a), bool)])
+    return (
+        np.vstack([v, q.reshape(-1, 3)]),
+        np.vstack([t, len(v) + 3 * np.arange(len(a), dtype=np.int64)[:, None] + np.arange(3)]),
+        np.concatenate([origin, cand[a]]),
+        out_drop,
+    )
 
 
 def _assemble(pieces: list[tuple[Any, ...]]) -> CSGSurface:

@@ -449,7 +449,7 @@ def _cut(surf: Surface, fams: list[FieldFamily], mat: Material, n: int) -> BandM
         _unlight_grazed(values, fams)
         band = np.zeros((len(tri), k), np.int64)
         for i, fam in enumerate(fams):
-            col = values[:, i]
+            col = _lit_side(values, fams, i)
             if float(col.max() - col.min()) <= 1e-12:
                 # Constant on the part: every piece takes the exact value (see _pieces).
                 lv = np.zeros(0)
@@ -508,6 +508,21 @@ def _cut(surf: Surface, fams: list[FieldFamily], mat: Material, n: int) -> BandM
 
 
 _KIND_CODES = {"diffuse": 0, "specular_out": 1, "specular_in": 2}
+
+
+def _lit_side(values: NDArray[np.float64], fams: list[FieldFamily], i: int) -> NDArray[np.float64]:
+    """Family ``i``'s column as its levels see it: a Phong field is -1 where its side is unlit
+    (beyond ``TERMINATOR_COSINE`` by its light's diffuse field), so that its levels span the
+    lit vertices only and an unlit part is not cut; the column cut keeps the smooth field."""
+    fam = fams[i]
+    col = values[:, i]
+    if fam.kind == "diffuse":
+        return col
+    d = next((j for j, f in enumerate(fams) if f.kind == "diffuse" and f.light_index == fam.light_index), None)
+    if d is None:
+        return col
+    side = 1.0 if fam.kind == "specular_out" else -1.0
+    return np.where(side * values[:, d] >= -TERMINATOR_COSINE, col, -1.0)
 
 
 def _unlight_grazed(values: NDArray[np.float64], fams: list[FieldFamily]) -> None:

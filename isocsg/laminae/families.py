@@ -206,9 +206,11 @@ def specular_families(
     """The two Phong families of one light (outward and reversed normal).
 
     The field is ``rf . v`` (``rf = 2 (n . l) n - l``, ``v`` towards the eye)
-    where that side of the surface is lit or on the terminator (within
-    ``TERMINATOR_COSINE``), and -1 elsewhere. ``points`` and
-    ``eye`` are relative to ``origin``.
+    at every vertex, lit or not: it is smooth across the terminator, so that a
+    cut point on the terminator (a level of the diffuse family, between a lit
+    and an unlit vertex) gets the lit side's limit by interpolation. Where the
+    side is unlit the band builder gives no highlight and takes no levels from
+    it (see ``builder``). ``points`` and ``eye`` are relative to ``origin``.
     """
     lvec = light_direction_at(light, points, origin)
     ndotl = np.einsum("ij,ij->i", normals, lvec)
@@ -218,8 +220,9 @@ def specular_families(
     rv = np.einsum("ij,ij->i", rf, v)
     n = float(material.shininess)
     w = float(material.ks * light.intensity)
-    # Vertices on the terminator keep the lit side's limit, so that the highlight reaches it;
-    # the pieces beyond it take no highlight (the band builder checks the diffuse field's side).
-    out = FieldFamily(light_index, "specular_out", np.where(ndotl >= -TERMINATOR_COSINE, rv, -1.0), n, w, w)
-    inn = FieldFamily(light_index, "specular_in", np.where(ndotl <= TERMINATOR_COSINE, rv, -1.0), n, w, w)
+    # Smooth across the terminator: with -1 on the unlit side, a cut point on the terminator took
+    # a value interpolated towards -1, and the highlight stopped up to a mesh cell short of it at
+    # every N. The pieces beyond it take no highlight (the band builder checks the diffuse side).
+    out = FieldFamily(light_index, "specular_out", rv.copy(), n, w, w)
+    inn = FieldFamily(light_index, "specular_in", rv.copy(), n, w, w)
     return [out, inn]

@@ -133,16 +133,24 @@ def eye_reference_distance(eye: NDArray[np.float64] | None, center: NDArray[np.f
 def _terms(
     points: NDArray[np.float64], normals: NDArray[np.float64], lights: list, origin: NDArray[np.float64],
     eye: NDArray[np.float64] | None, shininess: float, weights: tuple[float, float] = (1.0, 1.0),
-) -> list[tuple[NDArray[np.float64], NDArray[np.bool_], float]]:
+) -> list[tuple[NDArray[np.float64], NDArray[np.bool_], float, int, float]]:
     """Each family's field in the units its levels are uniform in (points and ``eye`` relative to
     ``origin``): ``n . l`` per light, and ``(rf . v) ** s`` on each lit side with an eye; with the
-    samples where it is smooth and its weight in the image (``weights`` = (kd, ks) times the
-    light's intensity)."""
+    samples where it is smooth, its weight in the image (``weights`` = (kd, ks) times the
+    light's intensity), the image it shows in (0 outward, 1 the reversed normal) and its range
+    there.
+
+    The diffuse field appears once per image: its levels cut the lit range of each side into N
+    steps (``families.diffuse_levels``), so its band step in the outward image is the range of
+    ``max(n . l, 0)`` over N, and in the reversed one that of ``max(-n . l, 0)``."""
     out = []
     for light in lights:
         ldir = light_direction_at(light, points, origin)
         ndl = np.einsum("ij,ij->i", normals, ldir)
-        out.append((ndl, np.ones(len(ndl), bool), weights[0] * light.intensity))
+        wd = weights[0] * light.intensity
+        everywhere = np.ones(len(ndl), bool)
+        for side, lit in ((0, np.maximum(ndl, 0.0)), (1, np.maximum(-ndl, 0.0))):
+            out.append((ndl, everywhere, wd, side, float(lit.max() - lit.min()) if lit.size else 0.0))
         if eye is not None:
             rf = 2.0 * ndl[:, None] * normals - ldir
             v = eye - points
@@ -153,9 +161,21 @@ def _terms(
             # inside the highlight on the lit side measure how the term bends.
             w = weights[1] * light.intensity
             lit_out, lit_in = ndl > GRAZING, ndl < -GRAZING
-            out.append((np.where(lit_out, np.maximum(rv, 0.0) ** shininess, 0.0), lit_out & (rv > 0), w))
-            out.append((np.where(lit_in, np.maximum(rv, 0.0) ** shininess, 0.0), lit_in & (rv > 0), w))
+            for side, lit in ((0, lit_out), (1, lit_in)):
+                f = np.where(lit, np.maximum(rv, 0.0) ** shininess, 0.0)
+                out.append((f, lit & (rv > 0), w, side, float(f.max() - f.min()) if f.size else 0.0))
     return out
+
+
+def _dominant(terms: list) -> list[float]:
+    """The largest weighted range ``w R`` of the families shown in each image (outward, reversed):
+    the band step of that image is at least it over N. A family is followed within a quarter of
+    the step of the image it shows in; a family bright in the other image (a light behind the
+    part, lit for the reversed normal) says nothing of this one's step."""
+    dom = [0.0, 0.0]
+    for _, _, w, side, r in terms:
+        dom[side] = max(dom[side], w * r)
+    return dom
 
 
 def curvature_spacing(
@@ -196,10 +216,12 @@ def curvature_spacing(
         (``f''`` from second differences of the samples). Keeping that below
         ``R / (4 N)`` gives ``h = sqrt(2 R / (N |f''|))``, with N taken up to
         ``SPECULAR_CONTOURS``. A family whose weighted range ``w R`` is below the
-        part's largest one ``D`` is followed within ``D / (4 N w)`` instead: its
-        error in the image stays below a quarter of the part's band step (a
-        faint highlight's edge spanning 1e-5 would otherwise ask for thousands
-        of generators). Only samples where the field is smooth count (see ``_terms``).
+        largest one ``D`` of the image it shows in (outward or reversed normal) is
+        followed within ``D / (4 N w)`` instead: its error in that image stays below
+        a quarter of the image's band step (a faint highlight's edge spanning 1e-5
+        would otherwise ask for thousands of generators). ``R`` of a diffuse field
+        is the range of its lit side. Only samples where the field is smooth count
+        (see ``_terms``).
     """
     n_lines, m, _ = lines.shape
     if step is None:
@@ -210,20 +232,17 @@ def curvature_spacing(
         return np.inf
     n = min(contours, SPECULAR_CONTOURS)
     best = np.inf
-    terms = []
-    for f, smooth, w in _terms(lines.reshape(-1, 3), normals.reshape(-1, 3), lights, origin, eye, shininess, weights):
-        f = f.reshape(n_lines, m)
-        r = float(f.max() - f.min())
-        if r > 1e-12 and w > 0:
-            terms.append((f, smooth.reshape(n_lines, m), w, r))
-    dominant = max((w * r for _, _, w, r in terms), default=0.0)
-    for f, smooth, w, r in terms:
+    terms = [(f.reshape(n_lines, m), smooth.reshape(n_lines, m), w, side, r)
+             for f, smooth, w, side, r in _terms(lines.reshape(-1, 3), normals.reshape(-1, 3), lights, origin, eye, shininess, weights)
+             if r > 1e-12 and w > 0]
+    dominant = _dominant(terms)
+    for f, smooth, w, side, r in terms:
         inside = smooth[:, :-2] & smooth[:, 1:-1] & smooth[:, 2:]
         if not inside.any():
             continue
         d2 = float(np.max(np.where(inside, np.abs(f[:, :-2] - 2.0 * f[:, 1:-1] + f[:, 2:]), 0.0) / (step[:, None] ** 2)))
         if d2 > 0:
-            best = min(best, float(np.sqrt(2.0 * dominant / (n * w * d2))))
+            best = min(best, float(np.sqrt(2.0 * dominant[side] / (n * w * d2))))
     return best
 
 
@@ -267,20 +286,18 @@ def mixed_spacing(
         return np.inf
     n = min(contours, SPECULAR_CONTOURS)
     best = np.inf
-    terms = []
-    for f, smooth, w in _terms(grid.reshape(-1, 3), normals.reshape(-1, 3), lights, origin, eye, shininess, weights):
-        f = f.reshape(m0, m1)
-        r = float(f.max() - f.min())
-        if r > 1e-12 and w > 0:
-            terms.append((f, smooth.reshape(m0, m1), w))
-    # As in curvature_spacing: a faint family is followed within the part's largest band step,
-    # and only cells where the field is smooth (all four corners) measure its mixed term.
-    dominant = max((w * float(f.max() - f.min()) for f, _, w in terms), default=0.0)
-    for f, smooth, w in terms:
+    terms = [(f.reshape(m0, m1), smooth.reshape(m0, m1), w, side, r)
+             for f, smooth, w, side, r in _terms(grid.reshape(-1, 3), normals.reshape(-1, 3), lights, origin, eye, shininess, weights)
+             if r > 1e-12 and w > 0]
+    # As in curvature_spacing: a faint family is followed within the largest band step of the
+    # image it shows in, and only cells where the field is smooth (all four corners) measure its
+    # mixed term.
+    dominant = _dominant(terms)
+    for f, smooth, w, side, _ in terms:
         cells = smooth[:-1, :-1] & smooth[1:, :-1] & smooth[:-1, 1:] & smooth[1:, 1:]
         if not cells.any():
             continue
         mixed = float(np.max(np.where(cells, np.abs(np.diff(np.diff(f, axis=0), axis=1)), 0.0))) / (step0 * step1)
         if mixed > 0:
-            best = min(best, dominant / (n * w * mixed * step1))
+            best = min(best, dominant[side] / (n * w * mixed * step1))
     return best

@@ -8,7 +8,10 @@ What each node becomes:
   ``$fn``, ``$fa`` and ``$fs`` are ignored: the primitives are exact, not tessellated.
 - ``multmatrix(m)`` -> ``solid.transform(m)`` of the union of its children.
 - ``union``, ``group``, ``render``, ``color`` and the ``#`` and ``!`` modifiers -> a union;
-  ``difference`` and ``intersection`` -> the same Boolean. ``%`` (background) and
+  ``difference`` and ``intersection`` -> the same Boolean.
+- ``hull`` of polyhedral children (cubes, polyhedra, under maps and groups) -> the
+  :class:`~isocsg.ConvexPolyhedron` of all their corners, exactly (what the writer's
+  exact form of a convex polyhedron is); a hull of a curved or cut child is refused. ``%`` (background) and
   ``*`` (disabled) nodes are not part of the model and are left out.
 - ``linear_extrude(height, center)`` without twist or scale, of 2D children
   (``square``, ``circle``, ``polygon``, 2D ``multmatrix`` and Booleans). A straight
@@ -17,7 +20,7 @@ What each node becomes:
   cylinder, a ``square`` a box (or a prism when rotated), a ``polygon`` the union
   of convex prisms of :func:`~isocsg.geometry.extrude.extrude`.
 
-Nodes without an exact equivalent (``hull``, ``minkowski``, ``rotate_extrude``,
+Nodes without an exact equivalent (``hull`` of curved solids, ``minkowski``, ``rotate_extrude``,
 twisted or scaled extrusions, ``text``, ``import``, ``surface``, ``projection``,
 ``offset``, ``resize``, 2D objects outside an extrusion, non-convex polyhedra and
 unknown modules) raise :class:`~isocsg.errors.UnsupportedOpenSCADError` naming the
@@ -40,14 +43,13 @@ from numpy.typing import NDArray
 
 from ..csg import Difference, Intersection, Union
 from ..errors import InvalidGeometryError, InvalidParameterError, OpenSCADError, UnsupportedOpenSCADError
-from ..geometry.primitives import Box, ConvexPolyhedron, Cylinder, Solid, Sphere, Truncus
+from ..geometry.primitives import Box, ConvexPolyhedron, Cylinder, Primitive, Solid, Sphere, Truncus
 from .parser import CSGCall
 
 __all__ = ["lower", "LoweredModel", "UNSUPPORTED_NODES"]
 
 #: OpenSCAD modules that have no exact isocsg equivalent, with the reason given in errors.
 UNSUPPORTED_NODES: dict[str, str] = {
-    "hull": "a convex hull of curved solids is not an exact isocsg solid",
     "minkowski": "Minkowski sums are not exact isocsg solids",
     "rotate_extrude": "surfaces of revolution other than spheres and cones are not isocsg primitives",
     "text": "glyph outlines are not read",
@@ -61,7 +63,10 @@ UNSUPPORTED_NODES: dict[str, str] = {
 }
 
 _UNION_LIKE = {"union", "group", "render", "color"}
-_BOOLEANS = _UNION_LIKE | {"difference", "intersection"}
+_BOOLEANS = _UNION_LIKE | {"difference", "intersection", "hull"}
+
+#: Why a ``hull`` is refused when a child is not polyhedral.
+HULL_OF_CURVED = "a convex hull of curved solids is not an exact isocsg solid"
 _LEAVES_3D = {"cube", "sphere", "cylinder", "polyhedron"}
 _LEAVES_2D = {"square", "circle", "polygon"}
 
@@ -209,10 +214,20 @@ class _Lowerer:
             return self.make(call, Cylinder, (0.0, 0.0, zc), (0.0, 0.0, h), r1)
         return self.make(call, Truncus, (0.0, 0.0, zc), (0.0, 0.0, h), r2, r1)
 
-    def polyhedron(self, call: CSGCall) -> Solid | None:
+    def polyhedron_faces(self, call: CSGCall) -> tuple[NDArray[np.float64], list[list[int]]]:
         pts = self.points(call, "points", self.arg(call, "points", 0, []), 3)
         faces_value = call.kwargs.get("faces", call.kwargs.get("triangles", call.args[1] if len(call.args) > 1 else []))
-        faces = self.index_lists(call, "faces", faces_value, len(pts))
+        return pts, self.index_lists(call, "faces", faces_value, len(pts))
+
+    def polyhedron_points(self, call: CSGCall) -> NDArray[np.float64] | None:
+        """The points a ``hull`` takes from a polyhedron: those of its faces (its faces' order
+        and convexity do not matter to a hull)."""
+        pts, faces = self.polyhedron_faces(call)
+        used = sorted({i for f in faces for i in f})
+        return pts[used] if used else None
+
+    def polyhedron(self, call: CSGCall) -> Solid | None:
+        pts, faces = self.polyhedron_faces(call)
         if len(pts) < 4 or not faces:
             return None
         try:
@@ -484,6 +499,13 @@ def _enter(lw: _Lowerer, call: CSGCall, ex: _Extrusion | None) -> tuple[Solid | 
     if name in UNSUPPORTED_NODES:
         lw.unsupported(call, UNSUPPORTED_NODES[name])
         return None, ex, False
+    if name == "hull" and ex is not None:
+        lw.unsupported(call, "a 2D hull is not supported")
+        return None, ex, False
+    if name == "hull":
+        pts = _hull_points(lw, call)
+        if pts is not _NOT_POINTS:
+            return _hull_of(pts), None, False  # type: ignore[arg-type]
     if name in _BOOLEANS:
         return None, ex, True
     if name == "multmatrix":
@@ -531,4 +553,81 @@ def _leave(lw: _Lowerer, call: CSGCall, ex: _Extrusion | None, parts: list[Solid
         return _transform(lw, call, solid, m)
     if name in ("difference", "intersection"):
         return _combine(name, parts)
+    if name == "hull":
+        return _hull(lw, call, parts)
     return _combine("union", parts)
+
+
+_NOT_POINTS = object()  # a hull's subtree that is not only maps, groups, cubes and polyhedra
+_HULL_GROUPS = _UNION_LIKE | {"multmatrix"}
+
+
+def _hull_points(lw: _Lowerer, call: CSGCall) -> NDArray[np.float64] | None | object:
+    """The corners of a ``hull``'s children when they are cubes and polyhedra under maps and
+    groups (what the writer's exact polyhedra are): mapped as point arrays, each map applied in
+    turn from the innermost as ``transform`` would, without building a solid per node. None when
+    nothing has a volume; ``_NOT_POINTS`` for any other subtree (the general walk takes it)."""
+
+    def kept(c: CSGCall) -> list[CSGCall]:
+        return [k for k in c.children if "%" not in k.modifiers and "*" not in k.modifiers]
+
+    stack: list[tuple[CSGCall, list[CSGCall], list[NDArray[np.float64] | None]]] = [(call, kept(call), [])]
+    while stack:
+        node, kids, got = stack[-1]
+        if len(got) < len(kids):
+            child = kids[len(got)]
+            if child.name in _HULL_GROUPS:
+                if child.name == "multmatrix":
+                    _matrix(lw, child)  # malformed matrices fail here, naming their line
+                stack.append((child, kept(child), []))
+            elif child.name == "cube":
+                box = lw.cube(child)
+                got.append(None if box is None else np.asarray(box.corners, dtype=np.float64))  # type: ignore[union-attr]
+            elif child.name == "polyhedron":
+                got.append(lw.polyhedron_points(child))
+            else:
+                return _NOT_POINTS
+            continue
+        stack.pop()
+        present = [g for g in got if g is not None]
+        pts = np.vstack(present) if present else None
+        if node.name == "multmatrix" and pts is not None:
+            m = _matrix(lw, node)
+            if abs(np.linalg.det(m[:3, :3])) <= 1e-15 * max(1.0, float(np.abs(m[:3, :3]).max()) ** 3):
+                pts = None  # flattened: no volume, as in OpenSCAD
+            elif not np.array_equal(m, np.eye(4)):
+                pts = pts @ m[:3, :3].T + m[:3, 3]
+        if not stack:
+            return pts
+        stack[-1][2].append(pts)
+    return None  # pragma: no cover - the loop returns at the root
+
+
+def _hull_of(pts: NDArray[np.float64] | None) -> Solid | None:
+    if pts is None:
+        return None
+    try:
+        hull = ConvexPolyhedron(pts)
+    except InvalidGeometryError:
+        return None  # flat: no volume, as in OpenSCAD
+    return ConvexPolyhedron(hull.hull_vertices)  # its vertices alone: interior corners are not kept
+
+
+def _hull(lw: _Lowerer, call: CSGCall, parts: list[Solid | None]) -> Solid | None:
+    """``hull()`` of polyhedral children (boxes, convex polyhedra, their unions): the convex
+    polyhedron of all their corners, exactly; a curved or cut child is refused."""
+    corners: list[NDArray[np.float64]] = []
+    todo = [p for p in parts if p is not None]
+    while todo:
+        s = todo.pop()
+        if isinstance(s, Union):
+            todo.extend(s.children)
+        elif isinstance(s, ConvexPolyhedron):
+            corners.append(np.asarray(s.hull_vertices, dtype=np.float64))
+        elif isinstance(s, Box):
+            corners.append(np.asarray(s.corners, dtype=np.float64))
+        else:
+            what = type(s).__name__.lower()
+            lw.unsupported(call, HULL_OF_CURVED if isinstance(s, Primitive) else f"a hull of {'an' if what[0] in 'aeiou' else 'a'} {what} is not supported")
+            return None
+    return _hull_of(np.vstack(corners) if corners else None)

@@ -5,7 +5,7 @@ ellipsoids and elliptic trunci as a ``multmatrix`` of a cube, sphere or
 cylinder), convex polyhedra and Boolean trees. The text uses only the calls of
 OpenSCAD's flattened export (``multmatrix``,
 ``cube``, ``sphere``, ``cylinder``, ``polyhedron``, ``union``, ``difference``,
-``intersection``), so it is both a ``.scad`` model and a ``.csg`` file that
+``intersection``, and ``hull`` for the exact form of a convex polyhedron), so it is both a ``.scad`` model and a ``.csg`` file that
 :func:`isocsg.openscad.loads_openscad` reads back without the ``openscad``
 program. Numbers are written with ``repr`` (the shortest text that reads back
 to the same float), so that round trip keeps every bit.
@@ -15,13 +15,16 @@ significant digits, but keeps nested ``multmatrix`` nodes. With ``digits``
 (what :func:`save_openscad` uses for ``.scad`` files) every number has at
 most that many digits and the exact values are composed from them, so that
 the model comes through ``openscad`` as the same solid (see
-:func:`dumps_openscad` and the README's OpenSCAD section). Each kind's
+:func:`dumps_openscad` and ``docs/openscad.md``): a convex polyhedron, whose
+points the export rounds like any number, as the ``hull()`` of one small
+tetrahedron per vertex, its tip moved onto the vertex by nested translations. Each kind's
 statement comes from its registered ``openscad`` hook.
 """
 
 from __future__ import annotations
 
 import functools
+import itertools
 import math
 import os
 from pathlib import Path
@@ -216,8 +219,10 @@ def _truncus_body(r_low: float, r_high: float, d: int) -> tuple[str, float]:
     return f"cylinder(h = 1, r1 = {lo}, r2 = {hi}, center = true);", big / q
 
 
-def _leaf(solid: Solid, digits: int | None) -> str:
+def _leaf(solid: Solid, digits: int | None, polyhedra: str = "hull") -> str:
     """One primitive as an OpenSCAD statement, through its kind's ``openscad`` hook."""
+    if polyhedra == "points" and isinstance(solid, ConvexPolyhedron):
+        return polyhedron_scad(solid, digits, exact=False)
     hook = hook_for(solid, "openscad")
     if hook is None:
         raise InvalidParameterError(f"save_openscad: cannot write a {type(solid).__name__} (kind {getattr(solid, 'kind', '?')!r})")
@@ -287,14 +292,29 @@ def elliptic_truncus_scad(solid: EllipticTruncus, digits: int | None = None) -> 
     return f"multmatrix({_mat(m)}) {{ {body} }}"
 
 
-def polyhedron_scad(solid: ConvexPolyhedron, digits: int | None = None) -> str:
-    """``polyhedron(points, faces)`` of the hull.
+def polyhedron_scad(solid: ConvexPolyhedron, digits: int | None = None, *, exact: bool = True) -> str:
+    """``polyhedron(points, faces)`` of the hull; with ``digits``, the hull of exactly placed corners.
 
-    With ``digits``: the points in the frame of the polyhedron's principal axes scaled to its
-    extents (the frame written exactly, as any map), each coordinate rounded to ``digits``, and
-    the faces of the hull of the rounded points, so that the file stays a convex polyhedron. No map of few digits can place
-    every vertex of a general polyhedron: its volume keeps about ``digits`` digits.
+    With ``digits`` and ``exact`` (the default): ``hull()`` of one spike per vertex, a small
+    tetrahedron whose tip is the vertex and whose base lies deep inside the solid. Only the tip
+    must be exact, and it is the origin of the spike's frame, moved to the vertex by nested
+    translations whose short terms sum to its coordinates (see :func:`_corner_spikes`); the
+    base points may keep ``digits`` digits, as they stay well inside (a thin solid's in its
+    principal frame). The hull of the spikes is the hull of the vertices: the same solid, every
+    vertex to about one unit in the last place. A sliver whose vertices' mean lies within 1e-10
+    of its size from a face (thinner than about 1e-9 of its size) is written in the rounded
+    form instead.
+
+    With ``digits`` and ``exact=False``: a plain ``polyhedron`` of the points in the frame of the
+    principal axes scaled to the extents (the frame written exactly, as any map), each coordinate
+    rounded to ``digits``, and the faces of the hull of the rounded points: readable, but the
+    volume keeps only about ``digits`` digits (no map of few digits places every vertex of a
+    general polyhedron).
     """
+    if digits is not None and exact:
+        spikes = _corner_spikes(solid, digits)
+        if spikes is not None:
+            return spikes
     if digits is not None:
         # in the frame of its principal axes, scaled to its extents: every coordinate is O(1), so
         # that rounding it moves the vertex by the same small fraction of the size in every direction
@@ -316,6 +336,108 @@ def polyhedron_scad(solid: ConvexPolyhedron, digits: int | None = None) -> str:
     return f"polyhedron(points = [{pts}], faces = [{faces}]);"
 
 
+#: How deep inside the solid the base of a corner spike must stay (a fraction of the depth of
+#: the base's centre): the margin covers the rounding of the base points to ``digits``.
+_SPIKE_MARGIN = 0.25
+
+
+def _exact_translations(x: NDArray[np.float64], d: int) -> list[NDArray[np.float64]]:
+    """Vectors of ``d``-digit entries whose sum, added smallest first, is ``x`` to its last bit
+    (each the rounding of what is left; every subtraction is exact)."""
+    parts: list[NDArray[np.float64]] = []
+    rest = np.asarray(x, dtype=np.float64).copy()
+    size = float(np.abs(rest).max())
+    while np.any(rest) and float(np.abs(rest).max()) > 2.0**-60 * size and len(parts) < 8:
+        part = np.array([_round_sig(v, d) for v in rest])
+        parts.append(part)
+        rest = rest - part
+    return parts
+
+
+def _corner_spikes(solid: ConvexPolyhedron, d: int) -> str | None:
+    """``hull()`` of one tetrahedron per vertex: the tip exactly at the vertex (nested
+    translations), the base three points halfway between the vertices' mean and three extreme
+    vertices (those of the principal axes that make the fattest spike).
+
+    A base point halfway to the mean c is inside every face plane by at least half c's depth
+    (convexity); rounded to ``d`` digits, every one is checked to stay inside by
+    :data:`_SPIKE_MARGIN` of that depth, so that the hull's vertices are the tips alone (in
+    OpenSCAD's exact hull and in the loader's). None when a base cannot stay inside.
+    """
+    v = np.asarray(solid.hull_vertices, dtype=np.float64)
+    normals = np.asarray(solid.face_normals, dtype=np.float64)
+    offsets = np.asarray(solid.face_offsets, dtype=np.float64)
+    size = float(np.max(np.ptp(v, axis=0)))
+    c = v.mean(axis=0)
+    depth = float(np.min(offsets - normals @ c))  # the radius of the largest ball about c inside
+    if not depth > 1e-10 * size:  # the margin below must stay far above the hulls' round-off
+        return None
+    _, _, axes = np.linalg.svd(v - c)
+    along = (v - c) @ axes.T
+    extreme = np.unique(np.concatenate([along.argmin(axis=0), along.argmax(axis=0)]))
+    if len(extreme) < 4:
+        extreme = np.arange(len(v))
+    bases = c + 0.5 * (v[extreme] - c)
+    triples = np.array([t for t in itertools.combinations(range(len(bases)), 3)])
+    # A thin solid's bases are written in its principal frame scaled to its extents (a short
+    # matrix that keeps the tip at the origin), so that rounding them moves them across the thin
+    # side by a small fraction of its thickness; a plain solid needs no frame.
+    frame = np.vectorize(lambda x: _round_sig(x, d))(axes.T * (np.ptp(along, axis=0) / 2))
+    for framed in (False, True):
+        lines = _spikes(v, bases, triples, frame if framed else None, normals, offsets, _SPIKE_MARGIN * depth, d)
+        if lines is not None:
+            return "\n".join(["hull() {", *lines, "}"])
+    return None
+
+
+def _spikes(
+    v: NDArray[np.float64],
+    bases: NDArray[np.float64],
+    triples: NDArray[np.int64],
+    frame: NDArray[np.float64] | None,
+    normals: NDArray[np.float64],
+    offsets: NDArray[np.float64],
+    margin: float,
+    d: int,
+) -> list[str] | None:
+    """One line per vertex of :func:`_corner_spikes`; None when a rounded base point leaves the
+    solid's faces by less than ``margin`` or a spike is flat."""
+    lines = []
+    for p in v:
+        spans = bases[triples] - p  # (triples, 3 points, 3)
+        best = triples[int(np.argmax(np.abs(np.linalg.det(spans))))]
+        if frame is None:
+            local = np.vectorize(lambda x: _round_sig(x, d))(bases[best] - p)
+            rel = local
+        else:
+            local = np.vectorize(lambda x: _round_sig(x, d))(np.linalg.solve(frame, (bases[best] - p).T).T)
+            rel = local @ frame.T  # as a reader maps them
+        if np.min(offsets[None, :] - (p + rel) @ normals.T) < margin:
+            return None
+        if abs(float(np.linalg.det(rel))) <= 1e-9 * float(np.ptp(np.vstack([np.zeros(3), rel]), axis=0).max()) ** 3:
+            return None  # a flat spike, which a reader drops
+        pts = np.vstack([np.zeros(3), local])
+        faces = []
+        for tri, other in (((0, 1, 2), 3), ((0, 1, 3), 2), ((0, 2, 3), 1), ((1, 2, 3), 0)):
+            i, j, k = tri
+            inward = float(np.dot(np.cross(pts[j] - pts[i], pts[k] - pts[i]), pts[other] - pts[i])) > 0
+            faces.append((i, j, k) if inward else (i, k, j))  # clockwise seen from outside
+        body = (
+            "polyhedron(points = [" + ", ".join("[" + ", ".join(_num_sig(x, d) for x in q) + "]" for q in pts) + "], "
+            "faces = [" + ", ".join("[" + ", ".join(map(str, f)) + "]" for f in faces) + "]);"
+        )
+        if frame is not None:
+            m = np.eye(4)
+            m[:3, :3] = frame
+            body = f"multmatrix({_short_mat(m, d)}) {{ {body} }}"
+        for part in reversed(_exact_translations(p, d)):  # the smallest term innermost: added first
+            m = np.eye(4)
+            m[:3, 3] = part
+            body = f"multmatrix({_short_mat(m, d)}) {{ {body} }}"
+        lines.append("  " + body)
+    return lines
+
+
 #: The range of ``digits`` (the search of a split product tries 10**(digits - 1) mantissas).
 MIN_DIGITS, MAX_DIGITS = 4, 7
 #: What OpenSCAD 2021 prints in its .csg export.
@@ -332,7 +454,17 @@ def _check_digits(digits: object) -> int | None:
     return digits
 
 
-def dumps_openscad(solid: Solid, *, digits: int | None = None) -> str:
+#: The forms of a convex polyhedron with ``digits``: exact corners, or rounded points.
+POLYHEDRON_FORMS = ("hull", "points")
+
+
+def _check_polyhedra(polyhedra: object) -> str:
+    if polyhedra not in POLYHEDRON_FORMS:
+        raise InvalidParameterError(f"save_openscad: polyhedra must be 'hull' or 'points', got {polyhedra!r}")
+    return polyhedra  # type: ignore[return-value]
+
+
+def dumps_openscad(solid: Solid, *, digits: int | None = None, polyhedra: str = "hull") -> str:
     """OpenSCAD source of a solid (see the module docstring).
 
     Parameters
@@ -347,9 +479,18 @@ def dumps_openscad(solid: Solid, *, digits: int | None = None) -> str:
         which prints 6 digits in its ``.csg`` export): positions as sums of
         nested translations, sizes as products of nested scales, turns and
         shears as products of a rounded matrix and unit triangular
-        corrections. Convex polyhedra keep their vertices to ``digits`` only;
-        turned boxes come back as convex polyhedra (a sheared correction) and
-        turned trunci as elliptic trunci, of the same volume.
+        corrections, convex polyhedra as the ``hull()`` of one spike per
+        vertex placed exactly (see ``polyhedra``). Turned boxes come back as
+        convex polyhedra (a sheared correction) and turned trunci as elliptic
+        trunci, of the same volume.
+    polyhedra : {"hull", "points"}
+        With ``digits``, how a convex polyhedron is written. ``"hull"`` (the
+        default): exactly, as the hull of small tetrahedra whose tips are its
+        vertices, each moved by nested translations that sum to the vertex to
+        its last bit; it comes back as an equal :class:`ConvexPolyhedron`.
+        ``"points"``: a plain, readable ``polyhedron`` whose points are
+        rounded to ``digits`` (the volume keeps about that many digits).
+        Ignored without ``digits``.
 
     Returns
     -------
@@ -359,7 +500,8 @@ def dumps_openscad(solid: Solid, *, digits: int | None = None) -> str:
     Raises
     ------
     InvalidParameterError
-        For a solid kind that has no OpenSCAD form.
+        For a solid kind that has no OpenSCAD form, or a bad ``digits`` or
+        ``polyhedra``.
 
     Examples
     --------
@@ -373,6 +515,7 @@ def dumps_openscad(solid: Solid, *, digits: int | None = None) -> str:
     if not isinstance(solid, Solid):
         raise InvalidParameterError(f"save_openscad: solid must be an isocsg Solid, got {type(solid).__name__}")
     d = _check_digits(digits)
+    form = _check_polyhedra(polyhedra)
     lines: list[str] = []
     # Explicit stack: (solid, depth) to open, or a closing brace at a depth.
     todo: list[tuple[Solid | None, int]] = [(solid, 0)]
@@ -388,11 +531,13 @@ def dumps_openscad(solid: Solid, *, digits: int | None = None) -> str:
             todo.append((None, depth))
             todo.extend((c, depth + 1) for c in reversed(s.children))
             continue
-        lines.append(pad + _leaf(s, d))
+        lines.extend(pad + line for line in _leaf(s, d, form).split("\n"))
     return "\n".join(lines) + "\n"
 
 
-def save_openscad(solid: Solid, path: str | os.PathLike[str], *, digits: int | None | str = "auto") -> Path:
+def save_openscad(
+    solid: Solid, path: str | os.PathLike[str], *, digits: int | None | str = "auto", polyhedra: str = "hull"
+) -> Path:
     """Write a solid as an OpenSCAD model (``.scad``, also readable as ``.csg``).
 
     Read it back with :func:`isocsg.load_openscad`: a ``.csg`` name reads it
@@ -402,6 +547,9 @@ def save_openscad(solid: Solid, path: str | os.PathLike[str], *, digits: int | N
     so that the export still equals the solid (see :func:`dumps_openscad`;
     measured: volumes within 1e-12), and a ``.csg`` file with every number's
     full ``repr``. ``digits=None`` or an integer chooses either form.
+    ``polyhedra`` chooses how convex polyhedra are written with digits:
+    ``"hull"`` (exact) or ``"points"`` (readable, rounded; see
+    :func:`dumps_openscad`).
 
     Returns
     -------
@@ -419,6 +567,6 @@ def save_openscad(solid: Solid, path: str | os.PathLike[str], *, digits: int | N
         raise InvalidParameterError(f"save_openscad: path must end in .scad or .csg, got {str(p)!r}")
     if digits == "auto":
         digits = OPENSCAD_DIGITS if p.suffix.lower() == ".scad" else None
-    p.write_text(dumps_openscad(solid, digits=digits), encoding="utf-8")  # type: ignore[arg-type]
+    p.write_text(dumps_openscad(solid, digits=digits, polyhedra=polyhedra), encoding="utf-8")  # type: ignore[arg-type]
     return p
 
