@@ -507,8 +507,9 @@ GEOMETRY_CACHE_BYTES = 64 << 20
 #: get it too, on the terms of :data:`LARGE_SURFACE_SHARE`.
 SURFACE_MAX_LEAVES = 64
 #: Trees of more than :data:`SURFACE_MAX_LEAVES` leaves: their clipped surface is
-#: always built in the background (started by the second view, whatever
-#: ``surface_build`` says), its operands trimmed to the boxes where they matter
+#: always built in the background (started once the second view is done,
+#: whatever ``surface_build`` says, on a daemon thread that a process ending
+#: meanwhile does not wait for; one such build at a time), its operands trimmed to the boxes where they matter
 #: (:func:`isocsg.csg.surface.surface_from_bands`, ``trim``), and given up, the tree
 #: staying per pixel, when its Booleans would need more than this fraction of
 #: the memory budget (the views go on meanwhile and need the rest). Every view
@@ -929,52 +930,59 @@ class Renderer:
         self, key: tuple[Any, ...], program: Program, lights: Sequence[Any], material: Any,
         counts: NDArray[np.int64], eye: Any,
     ) -> None:
-        """On the surface thread: the bands (from the caches, or built here), the trimmed
+        """On a thread of its own: the bands (from the caches, or built here), the trimmed
         Booleans within the share of the budget, and the parts ready to fill."""
         try:
-            try:
-                leaves, codes = program.leaves, counts.tolist()
-                # Leaves that no trim can shrink first, Boolean by Boolean: a tree whose
-                # untrimmable part alone is over the bound (a union of many overlapping
-                # leaves) is given up before the rest of its bands is asked for.
-                geom = leaf_geometry(leaves)
-                most = LARGE_SURFACE_SHARE * memory_budget() / BYTES_PER_BOOLEAN_TRIANGLE
-                built: dict[int, tuple[BandMesh, bool]] = {}
-                for group in untrimmed_groups(program, geom.lo, geom.hi):
-                    n_tri = 0
-                    for k, i in enumerate(group, 1):
-                        if i not in built:
-                            built[i] = self._bands(leaves[i], lights, material, codes[i], eye)
-                        n_tri += len(built[i][0].triangles)
-                        # Over the bound, or clearly bound to be at this rate (four times over
-                        # after a sample of eight leaves): given up without the rest.
-                        if n_tri > most or (k >= 8 and n_tri * len(group) > 4 * most * k):
-                            raise ResourceLimitError(f"{n_tri} band triangles of {k} leaves in one Boolean, over the bound")
-                for i in range(len(leaves)):
-                    if i not in built:
-                        built[i] = self._bands(leaves[i], lights, material, codes[i], eye)
-                if any(vd for _, vd in built.values()):
-                    raise InvalidGeometryError("view-dependent bands")
-                bands = [built[i][0] for i in range(len(leaves))]
-                del built
-                surface = surface_from_bands(program, bands, trim=True,
-                                             max_bytes=int(LARGE_SURFACE_SHARE * memory_budget()))
-            except (InvalidGeometryError, ResourceLimitError):
-                with self._surface_lock:  # too large, or bands that do not close: per pixel from now on
-                    self._surfaces.put(key, (counts, None), 64)
-                return
-            runs = _Runs.of([(int(i), self._prepare(surface.leaf_bands(int(i)), True))
-                             for i in np.unique(surface.leaf)])
-            del surface
-            runs.proj(_STRIPES - 1)  # pages touched here, not by the first view that fills it
-            for scratch in runs.projs:
-                scratch.fill(0.0)
-            with self._surface_lock:
-                if not self._surfaces.put(key, (counts, runs), runs.nbytes):
-                    self._surfaces.put(key, (counts, None), 64)  # more than the cache keeps: not again
+            with _LARGE_LOCK:  # one large build at a time: each may take its share of the budget
+                self._build_large_surface_locked(key, program, lights, material, counts, eye)
         finally:
             with self._surface_lock:
                 self._building.pop(key, None)
+
+    def _build_large_surface_locked(
+        self, key: tuple[Any, ...], program: Program, lights: Sequence[Any], material: Any,
+        counts: NDArray[np.int64], eye: Any,
+    ) -> None:
+        try:
+            leaves, codes = program.leaves, counts.tolist()
+            # Leaves that no trim can shrink first, Boolean by Boolean: a tree whose
+            # untrimmable part alone is over the bound (a union of many overlapping
+            # leaves) is given up before the rest of its bands is asked for.
+            geom = leaf_geometry(leaves)
+            most = LARGE_SURFACE_SHARE * memory_budget() / BYTES_PER_BOOLEAN_TRIANGLE
+            built: dict[int, tuple[BandMesh, bool]] = {}
+            for group in untrimmed_groups(program, geom.lo, geom.hi):
+                n_tri = 0
+                for k, i in enumerate(group, 1):
+                    if i not in built:
+                        built[i] = self._bands(leaves[i], lights, material, codes[i], eye)
+                    n_tri += len(built[i][0].triangles)
+                    # Over the bound, or clearly bound to be at this rate (four times over
+                    # after a sample of eight leaves): given up without the rest.
+                    if n_tri > most or (k >= 8 and n_tri * len(group) > 4 * most * k):
+                        raise ResourceLimitError(f"{n_tri} band triangles of {k} leaves in one Boolean, over the bound")
+            for i in range(len(leaves)):
+                if i not in built:
+                    built[i] = self._bands(leaves[i], lights, material, codes[i], eye)
+            if any(vd for _, vd in built.values()):
+                raise InvalidGeometryError("view-dependent bands")
+            bands = [built[i][0] for i in range(len(leaves))]
+            del built
+            surface = surface_from_bands(program, bands, trim=True,
+                                         max_bytes=int(LARGE_SURFACE_SHARE * memory_budget()))
+        except (InvalidGeometryError, ResourceLimitError):
+            with self._surface_lock:  # too large, or bands that do not close: per pixel from now on
+                self._surfaces.put(key, (counts, None), 64)
+            return
+        runs = _Runs.of([(int(i), self._prepare(surface.leaf_bands(int(i)), True))
+                         for i in np.unique(surface.leaf)])
+        del surface
+        runs.proj(_STRIPES - 1)  # pages touched here, not by the first view that fills it
+        for scratch in runs.projs:
+            scratch.fill(0.0)
+        with self._surface_lock:
+            if not self._surfaces.put(key, (counts, runs), runs.nbytes):
+                self._surfaces.put(key, (counts, None), 64)  # more than the cache keeps: not again
 
     def _build_surface(
         self, key: tuple[Any, ...], program: Program, bands: tuple[BandMesh, ...], view_dependent: bool = False,
@@ -1137,7 +1145,7 @@ class Renderer:
                 with self._surface_lock:
                     for key, args in self._deferred.items():
                         if key not in self._building:
-                            self._building[key] = _surface_pool().submit(self._build_large_surface, key, *args)
+                            self._building[key] = _in_daemon(self._build_large_surface, key, *args)
                 self._deferred.clear()
 
     def _render(
@@ -1743,6 +1751,27 @@ def _merge_counts(a: NDArray[np.int64], b: NDArray[np.int64]) -> NDArray[np.int6
     (c0, s0), (c1, s1) = _split_counts(a), _split_counts(b)
     c, seg = np.maximum(c0, c1), np.maximum(s0, s1)
     return np.where(seg < DEFAULT_SEGMENTS, c | (seg << _SEGMENT_SHIFT), c)
+
+
+#: Large trees' surface builds run one at a time (each may take its share of the budget).
+_LARGE_LOCK = threading.Lock()
+
+
+def _in_daemon(fn: Callable[..., None], *args: Any) -> Future[None]:
+    """Run ``fn(*args)`` on a daemon thread: a large tree's surface build can take a minute,
+    and a process that ends meanwhile does not wait for it (its result would only be cached)."""
+    fut: Future[None] = Future()
+
+    def run() -> None:
+        if not fut.set_running_or_notify_cancel():
+            return
+        try:
+            fut.set_result(fn(*args))
+        except BaseException as exc:  # noqa: BLE001 - handed to whoever waits
+            fut.set_exception(exc)
+
+    threading.Thread(target=run, name="isocsg-large-surface", daemon=True).start()
+    return fut
 
 
 _SURFACE_POOL: ThreadPoolExecutor | None = None
