@@ -20,9 +20,11 @@ timeout are kept).
 
 - isocsg: first render of a new ``Renderer`` (caches cleared; per-pixel CSG),
   the second render from a new viewpoint (per pixel too; under ``csg="auto"``
-  it starts the clipped CSG surface's build on a background thread for trees
-  of at most 64 leaves), the wait for that build once the second view is done
-  (``wait``), a re-render from new viewpoints (the surface ready where there is
+  it starts the clipped CSG surface's build on a background thread; for trees
+  of more than 64 leaves it is trimmed, parted and given up when over half the
+  memory budget, see ``docs/csg.md``), the wait for that build once the second
+  view is done (``wait``: the surface's build time, less what the second view
+  overlapped), a re-render from new viewpoints (the surface ready where there is
   one), ``volume(tol=1e-3)`` and one ``section()``;
 - peer: manifold3d's Boolean of the leaves tessellated at 64 segments
   (``Manifold.batch_boolean``, then ``to_mesh``), pyvista's off-screen first
@@ -155,7 +157,7 @@ def child_isocsg(model: str, n: int, size: int, repeats: int, contours: int) -> 
             break
     _emit("iso_second", times)
     t, _ = _timed(renderer.wait_surfaces)
-    _emit("iso_wait", t)
+    _emit("iso_wait", t, surface_bytes=renderer.cache_info()["surfaces_bytes"])  # ~64: given up
     views = [cams[2], cams[1]] * repeats
     times = [_timed(lambda c=c: renderer.render(scene, camera=c))[0] for c in views[: max(1, repeats)]]
     _emit("iso_re", times)

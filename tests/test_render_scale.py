@@ -412,27 +412,109 @@ def test_renderer_caches_are_bounded_by_bytes():
     assert r.cache_info()["prepared"] == 0
 
 
-def test_auto_keeps_large_trees_per_pixel(monkeypatch):
+def test_auto_builds_large_trees_in_the_background_within_the_budget_share(monkeypatch):
+    """Trees of more than SURFACE_MAX_LEAVES leaves: per pixel on their first view; the
+    second starts the trimmed surface's build in the background (also under
+    surface_build="now"), which later views fill; a surface over its share of the memory
+    budget is given up once, and the tree stays per pixel."""
     calls = []
     real = painter.surface_from_bands
-    monkeypatch.setattr(painter, "surface_from_bands", lambda program, bands: calls.append(1) or real(program, bands))
+
+    def spy(program, bands, **kw):
+        calls.append((program.n_leaves, kw.get("trim", False)))
+        return real(program, bands, **kw)
+
+    monkeypatch.setattr(painter, "surface_from_bands", spy)
+    tiled = []
+    real_tiled = Renderer._render_tiled
+    monkeypatch.setattr(Renderer, "_render_tiled", lambda self, *a, **k: tiled.append(1) or real_tiled(self, *a, **k))
     big = plate_scene(9, 96, 80)  # 82 leaves
+    eyes = [(20.0, -70.0, 90.0), (-30.0, -65.0, 90.0), (35.0, -60.0, 95.0)]
+    r = Renderer(surface_build="now")
+    first = r.render(big, camera=big.camera.with_view(eyes[0]))
+    assert calls == [] and len(tiled) == 1
+    r.render(big, camera=big.camera.with_view(eyes[1]))  # per pixel, the build started
+    assert r.wait_surfaces(timeout=300)
+    assert calls == [(82, True)] and len(tiled) == 2
+    again = r.render(big, camera=big.camera.with_view(eyes[0]))  # the surface: no per-pixel resolve
+    assert len(tiled) == 2 and calls == [(82, True)]
+    view = Scene(big.camera.with_view(eyes[0]), big.lights, big.objects, big.render)
+    assert compare(again.image, plate_reference(view)).iou >= 0.99
+    np.testing.assert_array_equal(np.isfinite(again.image), np.isfinite(first.image))
+    # over its share of the budget: given up, per pixel from then on, not retried
+    monkeypatch.setattr(painter, "LARGE_SURFACE_SHARE", 1e-9)
+    other = plate_scene(8, 96, 80)  # 65 leaves
+    r2 = Renderer()
+    for eye in eyes:
+        r2.render(other, camera=other.camera.with_view(eye))
+        assert r2.wait_surfaces(timeout=300)
+    # (given up before the Booleans: the plate alone, which no trim shrinks, is over the share)
+    assert calls == [(82, True)] and len(tiled) == 5
+    # small trees keep their path: the surface from the second view, untrimmed
     small = plate_scene(2, 96, 80)  # 5 leaves
-    r = Renderer()
-    for eye in [(20.0, -70.0, 90.0), (-30.0, -65.0, 90.0), (35.0, -60.0, 95.0)]:
-        r.render(big, camera=big.camera.with_view(eye))
-    assert calls == []
     r.render(small)
-    r.render(small, camera=small.camera.with_view((-30.0, -65.0, 90.0)))
-    assert r.wait_surfaces(timeout=120)  # built in the background
-    assert calls == [1]
-    # under the triangle bound too
+    r.render(small, camera=small.camera.with_view(eyes[1]))
+    assert r.wait_surfaces(timeout=120)
+    assert calls[1:] == [(5, False)]
+    # and under the triangle bound too
     monkeypatch.setattr(painter, "SURFACE_MAX_TRIANGLES", 10)
     other = plate_scene(3, 96, 80)
     r.render(other)
-    r.render(other, camera=other.camera.with_view((-30.0, -65.0, 90.0)))
+    r.render(other, camera=other.camera.with_view(eyes[1]))
     assert r.wait_surfaces(timeout=120)
-    assert calls == [1]
+    assert len(calls) == 2
+
+
+def test_a_large_union_over_the_share_is_given_up_before_its_bands_are_all_asked_for(monkeypatch):
+    """A union of 80 overlapping spheres can be neither trimmed nor parted: its Boolean takes
+    every band triangle. The background build asks for the bands of such leaves first and
+    gives up (per pixel for good) as soon as they pass the share of the budget, here after
+    the first sphere's, instead of building all 80 to find out."""
+    from isocsg.laminae import build_bands
+
+    calls = []
+
+    def counting(*a, **kw):
+        calls.append(1)
+        return build_bands(*a, **kw)
+
+    monkeypatch.setattr(painter, "LARGE_SURFACE_SHARE", 1e-9)
+    spheres = [Sphere((0.6 * (i % 5), 0.6 * (i // 5 % 4), 0.6 * (i // 20)), 0.4) for i in range(80)]
+    cam = Camera((6.0, -8.0, 6.0), (1.2, 0.9, 0.9), fov=40, width=64, height=64)
+    scene = Scene(cam, LIGHTS, (SceneObject(Union(*spheres)),), RenderSettings(contours=16))
+    r = Renderer(build_laminae=counting)
+    r.render(scene)
+    assert len(calls) == 80  # this builder keeps nothing: each per-pixel view asks for every leaf
+    r.render(scene, camera=cam.with_view((-6.0, -8.0, 6.0)))
+    assert r.wait_surfaces(timeout=300)
+    assert len(calls) == 2 * 80 + 1  # the second view's, and one in the background
+    r.render(scene, camera=cam.with_view((6.0, 8.0, 6.0)))
+    assert r.wait_surfaces(timeout=300)
+    assert len(calls) == 3 * 80 + 1  # the third view per pixel; not tried again
+
+
+@pytest.mark.parametrize("k", [10], ids=lambda k: f"{k * k}-holes")
+def test_large_tree_surface_views_match_the_ray_caster(k, monkeypatch):
+    """A plate of 100 holes (101 leaves, more than SURFACE_MAX_LEAVES): once its trimmed
+    surface is built, new views fill it (no per-pixel resolve); each is judged by the
+    analytic ray caster with the catalogue's bars (IoU >= 0.99, 98 % of compared pixels
+    within 0.05)."""
+    tiled = []
+    real_tiled = Renderer._render_tiled
+    monkeypatch.setattr(Renderer, "_render_tiled", lambda self, *a, **kw: tiled.append(1) or real_tiled(self, *a, **kw))
+    scene = plate_scene(k, 224, 176, contours=64)
+    r = Renderer()
+    r.render(scene)
+    r.render(scene, camera=scene.camera.with_view((-30.0, -65.0, 90.0)))
+    assert r.wait_surfaces(timeout=600)
+    assert r.cache_info()["surfaces"] == 1
+    for eye in [(20.0, -70.0, 90.0), (-30.0, -65.0, 90.0), (40.0, -60.0, 80.0)]:
+        cam = scene.camera.with_view(eye)
+        view = Scene(cam, scene.lights, scene.objects, scene.render)
+        result = compare(r.render(view).image, plate_reference(view))
+        assert result.iou >= 0.99, result.summary()
+        assert result.fraction >= 0.98, result.summary()
+    assert len(tiled) == 2  # the first two views only
 
 
 def test_progress_is_reported_as_tiles_build(monkeypatch):

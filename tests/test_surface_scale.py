@@ -93,6 +93,117 @@ def test_plate_with_holes_matches_the_closed_form_volume():
     assert surf.reversed[surf.leaf > 0].all() and not surf.reversed[surf.leaf == 0].any()
 
 
+def _trim_trees():
+    plate = Box((1.75, 1.75, 0.0), (4.0, 4.0, 0.2))
+    part = plate
+    for i in range(16):
+        part = part - Cylinder((0.5 * (i % 4), 0.5 * (i // 4), 0.0), (0.1, 0.05, 1.5), 0.15)
+    rod = Cylinder((0.1, 0.0, 0.0), (3.0, 0.4, 0.3), 0.3)
+    return {
+        "plate-minus-tilted-holes": part,
+        "intersection": (S | C) & rod & Box((0.0, 0.0, 0.1), (1.2, 1.0, 0.9)),
+        "nested": (Box((0, 0, 0), (1.6, 1.2, 0.8)) - (rod | Sphere((0.8, 0.5, 0.4), 0.35))) & Sphere((0, 0, 0), 0.9),
+        "difference-of-unions": (S | Sphere((0.9, 0.2, 0.0), 0.5)) - (C | Cylinder((-0.5, 0, 0), (0, 2.5, 0.2), 0.2)),
+    }
+
+
+@pytest.mark.parametrize("name", list(_trim_trees()), ids=str)
+def test_trimmed_operands_give_the_same_solid(name):
+    """``trim=True`` cuts what is subtracted, and the operands of intersections, to the
+    boxes where they matter before the Booleans: fewer triangles go into manifold3d, and
+    the result is still a closed surface with manifold3d's volume of the tree (256
+    segments) and the untrimmed surface's area."""
+    tree = _trim_trees()[name]
+    prog, bands = _bands(tree, contours=16)
+    real = surface_module._manifold3d()
+
+    class Counting:  # manifold3d, counting the triangles of the meshes made for it
+        n = 0
+
+        def __getattr__(self, name):
+            return getattr(real, name)
+
+        def Mesh64(self, **kw):
+            Counting.n += len(kw["tri_verts"])
+            return real.Mesh64(**kw)
+
+    surfaces, counts = [], []
+    for trim in (False, True):
+        Counting.n = 0
+        with pytest.MonkeyPatch.context() as mp:
+            mp.setattr(surface_module, "_manifold3d", Counting)
+            surfaces.append(surface_from_bands(prog, bands, trim=trim))
+        counts.append(Counting.n)
+    assert 0 < counts[1] < counts[0]
+    plain, trimmed = surfaces
+    mesh = trimesh.Trimesh(trimmed.vertices, trimmed.triangles, process=True)
+    assert mesh.is_watertight
+    ref = to_manifold(tree, 256).volume()
+    assert abs(mesh.volume - ref) <= 0.01 * ref
+    assert abs(_area(trimmed) - _area(plain)) <= 1e-6 * _area(plain)
+    assert set(np.unique(trimmed.leaf).tolist()) == set(np.unique(plain.leaf).tolist())
+    # each triangle shows its band's value: the same per leaf and side as untrimmed
+    for surf in (plain, trimmed):
+        src = np.concatenate([[0], np.cumsum([len(b.triangles) for b in bands])])
+        vin = np.concatenate([b.value_in for b in bands])[src[surf.leaf] + surf.source]
+        vout = np.concatenate([b.value_out for b in bands])[src[surf.leaf] + surf.source]
+        np.testing.assert_array_equal(surf.value, np.where(surf.reversed, vin, vout))
+
+
+def test_a_difference_of_many_cuts_is_built_in_slabs_within_its_bound(monkeypatch):
+    """Under ``trim=True`` the Booleans run one result at a time; a difference whose
+    cuts do not fit ``max_bytes`` at once is parted into slabs of its first operand
+    between planes that cross no cut, each with its cuts. The slabs' cut faces are
+    dropped: the surface is the one built at once (area, manifold3d's volume, leaves),
+    and no Boolean took more than the bound allows. A bound that no parting meets is
+    refused with ResourceLimitError."""
+    plate = Box((1.75, 1.75, 0.0), (4.0, 4.0, 0.2))
+    part = plate
+    for i in range(64):
+        part = part - Cylinder((0.5 * (i % 8), 0.5 * (i // 8), 0.0), (0, 0, 0.4), 0.15)
+    prog, bands = _bands(part, contours=8)
+    whole = surface_from_bands(prog, bands, trim=True)
+    real = surface_module._manifold3d()
+    largest = []
+
+    class Counting:  # manifold3d, recording the triangles each batch Boolean takes
+        Manifold = None
+
+        def __getattr__(self, name):
+            return getattr(real, name)
+
+    class Solids:
+        def __getattr__(self, name):
+            return getattr(real.Manifold, name)
+
+        def __call__(self, mesh):
+            return real.Manifold(mesh)
+
+        @staticmethod
+        def batch_boolean(parts, op):
+            largest.append(sum(p.num_tri() for p in parts))
+            return real.Manifold.batch_boolean(parts, op)
+
+    Counting.Manifold = Solids()
+    monkeypatch.setattr(surface_module, "_manifold3d", Counting)
+    per = surface_module.BYTES_PER_BOOLEAN_TRIANGLE
+    n_tri = sum(len(b.triangles) for b in bands)
+    bound = n_tri * surface_module.BYTES_PER_PLAIN_TRIANGLE + (len(bands[0].triangles) + n_tri // 3) * per
+    parted = surface_from_bands(prog, bands, trim=True, max_bytes=bound)
+    assert len(largest) >= 3  # slabs
+    assert max(largest) <= bound // per
+    assert abs(_area(parted) - _area(whole)) <= 1e-6 * _area(whole)
+    assert set(np.unique(parted.leaf).tolist()) == set(range(65))
+    # Open along the slabs' planes, whose dropped faces came in opposite pairs: the
+    # signed volume of what is left is the solid's (closed form; bands within 0.1 %).
+    v = parted.vertices[parted.triangles.astype(np.int64)]
+    signed = float(np.einsum("ij,ij->i", v[:, 0], np.cross(v[:, 1], v[:, 2])).sum() / 6)
+    ref = 4.0 * 4.0 * 0.2 - 64 * np.pi * 0.15**2 * 0.2
+    assert abs(signed - ref) <= 0.005 * ref
+    with pytest.raises(ResourceLimitError, match=r"over the .* GB allowed"):
+        surface_from_bands(prog, bands, trim=True, max_bytes=len(bands[0].triangles) * per)
+
+
 def _box_bands(box: Box) -> BandMesh:
     """A box's 12 faces as a band mesh (one band per face)."""
     m = trimesh.creation.box(box.size)

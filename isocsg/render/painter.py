@@ -45,7 +45,7 @@ from numpy.typing import NDArray
 
 from .._validation import integer, light_budget
 from ..camera import Camera
-from ..csg.surface import surface_from_bands
+from ..csg.surface import BYTES_PER_BOOLEAN_TRIANGLE, surface_from_bands, untrimmed_groups
 from ..csg.program import Program, evaluate_mask
 from ..csg.tree import CSGNode
 from ..errors import InvalidGeometryError, InvalidParameterError, ResourceLimitError
@@ -56,7 +56,8 @@ from ..laminae.model import BandMesh
 from ..limits import check_memory, memory_budget
 from ..scene.model import MAX_CONTOURS, Scene
 from .raster import (
-    _RAW, camera_affine, fill_front_kernel, fill_projected, fill_rect, key_to_depth, pair_quads, project_kernel,
+    _RAW, camera_affine, fill_front_kernel, fill_front_runs, fill_projected, fill_rect, key_to_depth, pair_quads,
+    project_kernel,
 )
 from .scratch import SCRATCH
 from .tiles import (
@@ -383,6 +384,47 @@ class _Prepared:
         return self.nbytes - (0 if self.projs else 56 * len(self.vertices))
 
 
+@dataclass(eq=False)
+class _Runs:
+    """A large tree's clipped surface as one mesh to fill: the leaves' parts' quads in
+    consecutive runs, one per leaf, so a view projects and fills it in one call each."""
+
+    vertices: NDArray[np.float64]
+    polys: NDArray[np.int32]
+    values: NDArray[np.float32]
+    starts: NDArray[np.int64]  # run r: polys starts[r] .. starts[r + 1]
+    vstarts: NDArray[np.int64]  # run r's polygons use vertices vstarts[r] .. vstarts[r + 1]
+    leaves: NDArray[np.int64]  # the leaf of each run
+    projs: list[NDArray[np.float64]] = field(default_factory=list)
+
+    @classmethod
+    def of(cls, parts: list[tuple[int, _Prepared]]) -> "_Runs":
+        if not parts:  # an empty result
+            return cls(np.zeros((0, 3)), np.zeros((0, 4), np.int32), np.zeros(0, np.float32), np.zeros(1, np.int64),
+                       np.zeros(1, np.int64), np.zeros(0, np.int64))
+        nv = np.cumsum([0] + [len(p.vertices) for _, p in parts])
+        quads = [p.quads() for _, p in parts]
+        polys = np.vstack([np.where(q[0] >= 0, q[0] + np.int32(o), -1) for q, o in zip(quads, nv[:-1])]).astype(np.int32)
+        values = np.concatenate([q[1] for q in quads]).astype(np.float32)
+        starts = np.cumsum([0] + [len(q[0]) for q in quads]).astype(np.int64)
+        vertices = np.vstack([p.vertices for _, p in parts])
+        return cls(vertices, polys, values, starts, nv.astype(np.int64), np.array([i for i, _ in parts], np.int64))
+
+    def quads(self) -> tuple[NDArray[np.int32], NDArray[np.float32]]:
+        return self.polys, self.values
+
+    def proj(self, k: int = 0) -> NDArray[np.float64]:
+        while len(self.projs) <= k:
+            self.projs.append(np.empty((7, len(self.vertices))))
+        return self.projs[k]
+
+    @property
+    def nbytes(self) -> int:
+        """The arrays and the projection scratch (made or to be made, one per fill thread)."""
+        arrays = sum(a.nbytes for a in (self.vertices, self.polys, self.values, self.starts, self.vstarts, self.leaves))
+        return arrays + max(len(self.projs), _STRIPES) * 56 * len(self.vertices)
+
+
 def _band_bytes(bands: BandMesh) -> int:
     """Bytes of a band mesh's arrays that a prepared mesh does not share."""
     return sum(a.nbytes for a in (bands.value_out, bands.value_in, bands.band))
@@ -459,10 +501,22 @@ PREPARED_CACHE_BYTES = 1 << 30
 SURFACE_CACHE_BYTES = 512 << 20
 GEOMETRY_CACHE_BYTES = 64 << 20
 
-#: Under ``csg="auto"``, the clipped surface is built (on an object's second
-#: view) only for trees of at most this many leaves whose bands have at most
-#: this many triangles in all; larger trees stay per pixel on every view.
+#: Under ``csg="auto"``, trees of at most this many leaves whose bands have at
+#: most :data:`SURFACE_MAX_TRIANGLES` triangles in all get the clipped surface
+#: from their second view on (its build started by that view). Larger trees
+#: get it too, on the terms of :data:`LARGE_SURFACE_SHARE`.
 SURFACE_MAX_LEAVES = 64
+#: Trees of more than :data:`SURFACE_MAX_LEAVES` leaves: their clipped surface is
+#: always built in the background (started once the second view is done,
+#: whatever ``surface_build`` says, on a daemon thread that a process ending
+#: meanwhile does not wait for; one such build at a time), its operands trimmed to the boxes where they matter
+#: (:func:`isocsg.csg.surface.surface_from_bands`, ``trim``), and given up, the tree
+#: staying per pixel, when its Booleans would need more than this fraction of
+#: the memory budget (the views go on meanwhile and need the rest). Every view
+#: until it is ready is per pixel; a view whose level of detail asks more
+#: contours of a leaf than the surface has, or more than twice its segments, is
+#: per pixel and starts a new build (at the finer of both counts).
+LARGE_SURFACE_SHARE = 0.5
 #: Leaves whose level-of-detail count a renderer remembers (the oldest are forgotten).
 LOD_MEMORY = 1 << 18
 SURFACE_MAX_TRIANGLES = 1_000_000
@@ -618,9 +672,11 @@ class Renderer:
         its second render on (a new viewpoint of the same bands), the surface,
         built then and cached, if the tree has at most
         :data:`SURFACE_MAX_LEAVES` leaves and its bands at most
-        :data:`SURFACE_MAX_TRIANGLES` triangles (larger trees stay per pixel).
-        Objects with view-dependent (specular) bands use ``"pixel"`` under
-        ``"auto"``.
+        :data:`SURFACE_MAX_TRIANGLES` triangles. Larger trees get it too,
+        always built in the background with their operands trimmed, and only
+        if its Booleans fit :data:`LARGE_SURFACE_SHARE` of the memory budget
+        (else they stay per pixel). Objects with view-dependent (specular)
+        bands use ``"pixel"`` under ``"auto"``.
     surface_build : {"background", "now"}, default "background"
         Under ``csg="auto"``, where the clipped surface is built.
         ``"background"``: on a thread of its own, started by the object's
@@ -703,6 +759,8 @@ class Renderer:
         # CSG objects already resolved per pixel -> whether they stay per pixel (view-dependent
         # bands, or a surface too large to build). Keys only: bounded by a count.
         self._csg_seen: OrderedDict[tuple[Any, ...], bool] = OrderedDict()
+        # Large trees' surface builds decided by the render in progress, started at its end.
+        self._deferred: dict[tuple[Any, ...], tuple[Any, ...]] = {}
 
     def _buffer(self, name: str, shape: tuple[int, ...], dtype: Any) -> NDArray[Any]:
         key = (name, shape, np.dtype(dtype).str)
@@ -872,6 +930,87 @@ class Renderer:
                 return _PENDING
         return self._build_surface(key, program, bands, view_dependent)
 
+    def _large_surface(
+        self, seen_key: tuple[Any, ...], program: Program, lights: Sequence[Any], material: Any,
+        counts: NDArray[np.int64], eye: Any,
+    ) -> _Runs | None:
+        """The clipped surface of a tree of more than :data:`SURFACE_MAX_LEAVES` leaves, if ready
+        (see :data:`LARGE_SURFACE_SHARE`); else None, and its background build is started when
+        an earlier view found the tree's bands view-independent."""
+        key = ("tree", seen_key)
+        with self._surface_lock:
+            hit = self._surfaces.get(key)
+            if hit is not None:
+                if hit[1] is None:
+                    return None  # too large (or not closed): per pixel for good
+                if _covers(hit[0], counts):
+                    return hit[1]
+                counts = _merge_counts(hit[0], counts)  # a finer surface, built for this view's needs
+            if self._csg_seen.get(seen_key) is not False or key in self._building or key in self._deferred:
+                return None  # a first view, view-dependent bands, or being built
+        # Started once this view is done (see _render): the build's Python work would
+        # otherwise hold the interpreter lock against this view's own.
+        self._deferred[key] = (program, lights, material, counts.copy(), eye)
+        return None
+
+    def _build_large_surface(
+        self, key: tuple[Any, ...], program: Program, lights: Sequence[Any], material: Any,
+        counts: NDArray[np.int64], eye: Any,
+    ) -> None:
+        """On a thread of its own: the bands (from the caches, or built here), the trimmed
+        Booleans within the share of the budget, and the parts ready to fill."""
+        try:
+            with _LARGE_LOCK:  # one large build at a time: each may take its share of the budget
+                self._build_large_surface_locked(key, program, lights, material, counts, eye)
+        finally:
+            with self._surface_lock:
+                self._building.pop(key, None)
+
+    def _build_large_surface_locked(
+        self, key: tuple[Any, ...], program: Program, lights: Sequence[Any], material: Any,
+        counts: NDArray[np.int64], eye: Any,
+    ) -> None:
+        try:
+            leaves, codes = program.leaves, counts.tolist()
+            # Leaves that no trim can shrink first, Boolean by Boolean: a tree whose
+            # untrimmable part alone is over the bound (a union of many overlapping
+            # leaves) is given up before the rest of its bands is asked for.
+            geom = leaf_geometry(leaves)
+            most = LARGE_SURFACE_SHARE * memory_budget() / BYTES_PER_BOOLEAN_TRIANGLE
+            built: dict[int, tuple[BandMesh, bool]] = {}
+            for group in untrimmed_groups(program, geom.lo, geom.hi):
+                n_tri = 0
+                for k, i in enumerate(group, 1):
+                    if i not in built:
+                        built[i] = self._bands(leaves[i], lights, material, codes[i], eye)
+                    n_tri += len(built[i][0].triangles)
+                    # Over the bound, or clearly bound to be at this rate (four times over
+                    # after a sample of eight leaves): given up without the rest.
+                    if n_tri > most or (k >= 8 and n_tri * len(group) > 4 * most * k):
+                        raise ResourceLimitError(f"{n_tri} band triangles of {k} leaves in one Boolean, over the bound")
+            for i in range(len(leaves)):
+                if i not in built:
+                    built[i] = self._bands(leaves[i], lights, material, codes[i], eye)
+            if any(vd for _, vd in built.values()):
+                raise InvalidGeometryError("view-dependent bands")
+            bands = [built[i][0] for i in range(len(leaves))]
+            del built
+            surface = surface_from_bands(program, bands, trim=True,
+                                         max_bytes=int(LARGE_SURFACE_SHARE * memory_budget()))
+        except (InvalidGeometryError, ResourceLimitError):
+            with self._surface_lock:  # too large, or bands that do not close: per pixel from now on
+                self._surfaces.put(key, (counts, None), 64)
+            return
+        runs = _Runs.of([(int(i), self._prepare(surface.leaf_bands(int(i)), True))
+                         for i in np.unique(surface.leaf)])
+        del surface
+        runs.proj(_STRIPES - 1)  # pages touched here, not by the first view that fills it
+        for scratch in runs.projs:
+            scratch.fill(0.0)
+        with self._surface_lock:
+            if not self._surfaces.put(key, (counts, runs), runs.nbytes):
+                self._surfaces.put(key, (counts, None), 64)  # more than the cache keeps: not again
+
     def _build_surface(
         self, key: tuple[Any, ...], program: Program, bands: tuple[BandMesh, ...], view_dependent: bool = False,
     ) -> list[tuple[int, _Prepared]] | None:
@@ -1027,7 +1166,15 @@ class Renderer:
         """
         with self._lock:
             self._prepared.new_pass()
-            return self._render(scene, camera, contours, progress)
+            self._deferred.clear()
+            try:
+                return self._render(scene, camera, contours, progress)
+            finally:
+                with self._surface_lock:
+                    for key, args in self._deferred.items():
+                        if key not in self._building:
+                            self._building[key] = _in_daemon(self._build_large_surface, key, *args)
+                self._deferred.clear()
 
     def _render(
         self, scene: Scene, camera: Camera | None, contours: int | None, progress: Callable[[int, int], None] | None,
@@ -1101,6 +1248,12 @@ class Renderer:
             if not (rect[0] < rect[2] and rect[1] < rect[3]):  # off screen
                 report.add(len(leaves))
                 continue
+            if len(leaves) > SURFACE_MAX_LEAVES and self.csg == "auto":
+                runs = self._large_surface(seen_key, program, scene.lights, obj.material, counts, cam.eye)
+                if runs is not None:
+                    plain.append((runs, base + runs.leaves, nears[runs.leaves]))
+                    report.add(len(leaves))
+                    continue
             if not self._per_pixel(seen_key, len(leaves)):
                 t = time.perf_counter()
                 built = [self._bands(p, scene.lights, obj.material, c, cam.eye, hidden)
@@ -1177,6 +1330,10 @@ class Renderer:
             for p, base, near, quads, quad_value in meshes:
                 proj = p.proj(k)
                 project_kernel(p.vertices, eye, a, b, persp, proj, 0, len(p.vertices))
+                if isinstance(p, _Runs):  # labels and near planes per run (leaf)
+                    fill_front_runs(proj, quads, quad_value, p.starts, p.vstarts, base, near, persp, r0, zkey[r0:r1],
+                                    value[r0:r1], gid[r0:r1], bounds[k])
+                    continue
                 fill_front_kernel(
                     proj, quads, quad_value, near, persp, base, r0, zkey[r0:r1], value[r0:r1], gid[r0:r1], bounds[k],
                 )
@@ -1605,6 +1762,49 @@ def _pool() -> ThreadPoolExecutor:
 
 
 _LEAF_POOL: ThreadPoolExecutor | None = None
+
+
+def _split_counts(codes: NDArray[np.int64]) -> tuple[NDArray[np.int64], NDArray[np.int64]]:
+    """Contours and segments of :meth:`Renderer._contours`'s codes (segments 0: the default)."""
+    segs = codes >> _SEGMENT_SHIFT
+    return codes & _CONTOUR_MASK, np.where(segs == 0, DEFAULT_SEGMENTS, segs)
+
+
+def _covers(have: NDArray[np.int64], need: NDArray[np.int64]) -> bool:
+    """Whether a large tree's surface built at ``have`` serves a view asking ``need``: every
+    leaf has the contours asked and at least half the segments (a chord error within four
+    times :data:`CHORD_PIXELS`, 0.05 pixel), so a view that finds a few leaves grown on
+    screen does not wait for a new Boolean of the whole tree."""
+    (c0, s0), (c1, s1) = _split_counts(have), _split_counts(need)
+    return bool(np.all(c0 >= c1) and np.all(2 * s0 >= s1))
+
+
+def _merge_counts(a: NDArray[np.int64], b: NDArray[np.int64]) -> NDArray[np.int64]:
+    """The finer of two count codes, leaf by leaf."""
+    (c0, s0), (c1, s1) = _split_counts(a), _split_counts(b)
+    c, seg = np.maximum(c0, c1), np.maximum(s0, s1)
+    return np.where(seg < DEFAULT_SEGMENTS, c | (seg << _SEGMENT_SHIFT), c)
+
+
+#: Large trees' surface builds run one at a time (each may take its share of the budget).
+_LARGE_LOCK = threading.Lock()
+
+
+def _in_daemon(fn: Callable[..., None], *args: Any) -> Future[None]:
+    """Run ``fn(*args)`` on a daemon thread: a large tree's surface build can take a minute,
+    and a process that ends meanwhile does not wait for it (its result would only be cached)."""
+    fut: Future[None] = Future()
+
+    def run() -> None:
+        if not fut.set_running_or_notify_cancel():
+            return
+        try:
+            fut.set_result(fn(*args))
+        except BaseException as exc:  # noqa: BLE001 - handed to whoever waits
+            fut.set_exception(exc)
+
+    threading.Thread(target=run, name="isocsg-large-surface", daemon=True).start()
+    return fut
 
 
 _SURFACE_POOL: ThreadPoolExecutor | None = None

@@ -740,6 +740,42 @@ def fill_front_kernel(
                 np.empty((1, 1)), np.empty((1, 1), np.float32), bounds, np.empty((3, 4)))
 
 
+@njit(cache=True, nogil=True)
+def fill_front_runs(
+    proj: NDArray[np.float64], polys: NDArray[np.int32], values: NDArray[np.float32], starts: NDArray[np.int64],
+    vstarts: NDArray[np.int64], tags: NDArray[np.int64], nears: NDArray[np.float64], perspective: bool, oy: int,
+    zf: NDArray[np.float64], vf: NDArray[np.float32], tf: NDArray[np.int32], bounds: NDArray[np.int64],
+) -> None:
+    """:func:`fill_front_kernel` of consecutive runs of polygons in one call, run ``r``
+    (polygons ``starts[r]`` to ``starts[r + 1]``, using only vertices ``vstarts[r]`` to
+    ``vstarts[r + 1]``) with its own tag and near plane: the parts of a large clipped CSG
+    surface (one per leaf) without a call per part. A run whose vertices all lie in front
+    of its near plane and outside the buffers' rows or the image's columns is skipped
+    whole (a row stripe meets few of a model's leaves)."""
+    scratch = np.empty((3, 4))
+    zb = np.empty((1, 1))
+    vb = np.empty((1, 1), np.float32)
+    hd, sx, sy = proj[3], proj[4], proj[5]
+    r_lo, r_hi = float(oy), float(oy + zf.shape[0])
+    c_hi = float(zf.shape[1])
+    for r in range(tags.shape[0]):
+        a, b = starts[r], starts[r + 1]
+        v0, v1 = vstarts[r], vstarts[r + 1]
+        if v1 > v0:
+            near_ok = True
+            ymin, ymax, xmin, xmax = np.inf, -np.inf, np.inf, -np.inf
+            for v in range(v0, v1):
+                if not hd[v] >= nears[r]:
+                    near_ok = False
+                    break
+                ymin, ymax = min(ymin, sy[v]), max(ymax, sy[v])
+                xmin, xmax = min(xmin, sx[v]), max(xmax, sx[v])
+            if near_ok and (ymax <= r_lo or ymin >= r_hi + 0.5 or xmax <= 0.0 or xmin >= c_hi + 0.5):
+                continue  # as _fill_polys would cull each of its polygons
+        _fill_polys(proj, polys[a:b], values[a:b], values[a:b], nears[r], perspective, np.bool_(False), tags[r],
+                    np.int64(0), oy, zf, vf, tf, zb, vb, bounds, scratch)
+
+
 @njit(cache=True, inline="always")
 def _extent(t: NDArray[np.float64], a: int, b: int, c: int, d: int) -> tuple[float, float]:
     """Smallest and largest ``t`` over the corners of a quad (``d < 0``: a triangle)."""
@@ -788,6 +824,8 @@ def _fill_polys(
         ymin, ymax = _extent(sy, a, b, c, d)
         if ymax <= r_lo or ymin >= r_hi + 0.5:
             continue  # no pixel centre of the viewport's rows
+        if math.ceil(ymin - 0.5) >= math.ceil(ymax - 0.5):
+            continue  # no row's centre between its top and bottom: _fill_convex would write nothing
         ax, ay = sx[a], sy[a]
         if not back:
             # Back faces first (about half of a closed mesh): a planar polygon is
