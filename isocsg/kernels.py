@@ -25,6 +25,7 @@ from __future__ import annotations
 
 import importlib
 import json
+import math
 import os
 import subprocess
 import sys
@@ -217,10 +218,20 @@ def _compile(kernels: Sequence[Kernel]) -> None:
 
 
 def _default_processes() -> int:
+    """One process per idle core: the cores this process may use less the 1-minute load average, at least 1.
+
+    On a loaded machine a second process gets no more of it than one does,
+    and costs its own start and numba's set-up (about 2 s of CPU time).
+    """
     try:
-        return max(1, len(os.sched_getaffinity(0)))
+        cores = len(os.sched_getaffinity(0))
     except AttributeError:  # not on Linux
-        return max(1, os.cpu_count() or 1)
+        cores = os.cpu_count() or 1
+    try:
+        load = os.getloadavg()[0]
+    except (AttributeError, OSError):  # not available here
+        load = 0.0
+    return max(1, min(cores, math.floor(cores - load + 0.5)))
 
 
 def compile_kernels(
@@ -237,8 +248,9 @@ def compile_kernels(
     paths : sequence of str, default ("isoluminance",)
         Items of :data:`PATHS`.
     processes : int, keyword-only, optional
-        Processes that compile, this one included (default: the cores this
-        process may use). Workers are started only when they have work.
+        Processes that compile, this one included (default: one per idle
+        core, see :func:`_default_processes`). Workers are started only when
+        they have work.
     progress : callable, keyword-only, optional
         ``progress(done, total)`` after each kernel this process compiles,
         ``total`` counting every kernel compiled.

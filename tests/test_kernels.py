@@ -62,7 +62,7 @@ def test_the_listing_is_what_a_render_compiles(path: str) -> None:
 
 
 # The lightest kernels instead of the listing (a few seconds of compiling in all, more than a
-# worker's start, so that a worker gets a share).
+# worker's start, so that a worker gets a share); two processes, whatever the machine's load.
 _COMPILE = """
 import io, json
 import isocsg.kernels as K
@@ -72,6 +72,7 @@ for k in sorted(K.path_kernels("isoluminance"), key=lambda k: k.seconds):
     if sum(x.seconds for x in light) < 3.0:
         light.append(k)
 K._listing = lambda: {p: tuple(light) for p in K.PATHS}
+K._default_processes = lambda: 2
 print(json.dumps([kernels_cached("isoluminance"), len(K.missing_kernels()), len(light)]))
 f = io.StringIO()
 said = compile_notice("isoluminance", file=f)
@@ -82,7 +83,6 @@ print(json.dumps([r.kernels, r.processes]))
 """
 
 
-@pytest.mark.skipif(len(os.sched_getaffinity(0)) < 2, reason="needs two cores")
 def test_two_processes_fill_the_disk_cache_and_say_so(tmp_path: Path) -> None:
     lines = _python(_COMPILE, NUMBA_CACHE_DIR=str(tmp_path)).splitlines()
     before, after, again = (json.loads(line) for line in lines[-3:])
@@ -98,6 +98,15 @@ def test_two_processes_fill_the_disk_cache_and_say_so(tmp_path: Path) -> None:
     assert missing == 0 and cached and 0 < in_memory < n
     assert again == [0, 1]
     assert list(tmp_path.rglob("*.nbc"))
+
+
+@pytest.mark.parametrize("cores,load,expected", [(2, 0.0, 2), (2, 0.4, 2), (2, 0.6, 1), (2, 12.0, 1), (8, 3.2, 5), (1, 0.0, 1)])
+def test_one_process_per_idle_core(monkeypatch: pytest.MonkeyPatch, cores: int, load: float, expected: int) -> None:
+    import isocsg.kernels as K
+
+    monkeypatch.setattr(os, "sched_getaffinity", lambda pid: set(range(cores)))
+    monkeypatch.setattr(os, "getloadavg", lambda: (load, load, load))
+    assert K._default_processes() == expected
 
 
 def test_errors() -> None:

@@ -15,7 +15,7 @@ DESCRIPTION = """\
 Compile isocsg's kernels (numba, cached on disk next to the package) for every
 kind of render: a CSG image per pixel, later views through its clipped surface,
 and soft shadows. The listed kernels are compiled on one process per core (about
-55 s of CPU time in all), then the built-in scenes are rendered at a tiny size
+45 s of CPU time in all), then the built-in scenes are rendered at a tiny size
 to compile anything else they use. Without it, the first render of each kind
 compiles its kernels (the command line says so). Later runs find the cache and
 take a few seconds.
