@@ -8,7 +8,7 @@ the kernels of one CSG image. Those kernels are listed in
 seconds their compilation took), recorded from the built-in scenes by ``python -m isocsg.kernels --record``.
 
 :func:`compile_kernels` compiles the listed kernels that the cache lacks,
-shared between this process and worker processes (one per further core): each
+shared between this process and worker processes (one per further idle core): each
 worker fills the disk cache, this process keeps its share in memory, waits
 for the workers, and later calls load their kernels from the cache. Kernels
 that call the same compiled kernel are compiled by one process, so none is
@@ -249,8 +249,8 @@ def compile_kernels(
         Items of :data:`PATHS`.
     processes : int, keyword-only, optional
         Processes that compile, this one included (default: one per idle
-        core, see :func:`_default_processes`). Workers are started only when
-        they have work.
+        core, the cores this process may use less the 1-minute load average,
+        at least one). Workers are started only when they have work.
     progress : callable, keyword-only, optional
         ``progress(done, total)`` after each kernel this process compiles,
         ``total`` counting every kernel compiled.
