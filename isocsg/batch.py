@@ -127,17 +127,12 @@ _warmed: set[str] = set()
 
 def _warm(paths: tuple[str, ...]) -> None:
     """Load the listed kernels of ``paths`` into this worker process (compiling what the disk cache lacks), once."""
-    from .kernels import path_kernels
+    from .kernels import _compile, path_kernels
 
     for path in paths:
-        if path in _warmed:
-            continue
-        for k in path_kernels(path):
-            try:
-                k.dispatcher().compile(k.signature())
-            except Exception:  # noqa: BLE001 - a kernel this numba cannot take is compiled on first call
-                pass
-        _warmed.add(path)
+        if path not in _warmed:
+            _compile(path_kernels(path))
+            _warmed.add(path)
 
 
 def render_views(

@@ -114,3 +114,12 @@ def test_errors() -> None:
         path_kernels("x")
     with pytest.raises(InvalidParameterError, match=re.escape("processes must be at least 1, got 0")):
         compile_kernels(processes=0)
+
+
+def test_a_stale_entry_is_left_to_the_first_call() -> None:
+    from isocsg.kernels import Kernel, _compile
+
+    k = path_kernels("isoluminance")[0]
+    stale = Kernel(k.module, k.name, k.args[:-1], k.seconds)  # one argument short: numba refuses it
+    _compile([stale])  # no error: the kernel is compiled when first called
+    assert tuple(stale.signature()) not in k.dispatcher().overloads
