@@ -162,9 +162,10 @@ def compile_notice(kind: str, *, file: IO[str] | None = None) -> bool:
 
     def start(kernels: int, processes: int, seconds: float) -> None:
         on = f"on {processes} processes" if processes > 1 else "on one process"
+        idle = "on idle cores" if processes > 1 else "on an idle core"
         print(
             f"isocsg: compiling {kernels} {_COMPILE_NAMES[kind]} kernel{'s' if kernels != 1 else ''} {on}, once for this install "
-            f"(about {max(1, round(seconds))} s on idle cores); later runs read them from numba's disk cache "
+            f"(about {max(1, round(seconds))} s {idle}); later runs read them from numba's disk cache "
             "(`isocsg warmup` compiles every kind ahead of time)",
             file=stream,
             flush=True,
