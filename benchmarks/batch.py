@@ -3,7 +3,8 @@
 The serial runs are :func:`isocsg.batch.render_views` with ``workers=1`` and
 :func:`isocsg.shadows.luxmap.illuminance_map`; the cluster runs are the same
 calls with a ``dask.distributed`` client of two worker processes (one thread
-each). Both must give equal arrays (checked). Each process first renders two views with 4 contours
+each; each worker loads its kernels once before its tasks and gets one task, a
+contiguous run of the views, while the lux grid's row blocks are one task each). Both must give equal arrays (checked). Each process first renders two views with 4 contours
 and a small grid (its numba kernels are loaded from the disk cache, not
 timed); the timed turntable (12 contours) then starts from no band mesh or CSG
 surface in either, as a new scene's would: the first view of each process

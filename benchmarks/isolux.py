@@ -5,8 +5,10 @@ Both trace the same lines (tests/test_luxreport.py checks the points to
 on a real lux map (two area sources and a box on the floor, the exact
 illuminance at n x n nodes, computed once) and on a synthetic field. The
 pure-Python tracer's time grows with the number of cells the lines cross,
-contourpy's with the whole grid per level: the ratio grows with the lines'
-length and count, and falls where few short lines cross a large grid.
+contourpy's with the nodes it is given per level: isocsg gives it, for each
+level, the rectangle of nodes holding that level's lines (or the whole grid
+once, for the levels that cross most of it), so few short lines on a large
+grid cost little too.
 
     .venv/bin/python benchmarks/isolux.py            # 128, 256 and 512 nodes a side
     .venv/bin/python benchmarks/isolux.py --quick    # 128 and 512, fewer repeats

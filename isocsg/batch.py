@@ -4,7 +4,9 @@
 :func:`turntable` around its target); :func:`illuminance_grid` computes a
 large lux map in row blocks. Both run the blocks on a ``dask.distributed``
 client when one is passed (scenes, lights and solids are plain picklable
-values), otherwise on a local thread pool. Results are in input order and
+values, sent to each worker once; each worker loads the kernels it needs
+before the tasks; each worker thread gets one task, a contiguous run of the
+views, while row blocks are one task each, dealt as threads free up), otherwise on a local thread pool. Results are in input order and
 equal to the serial ones: every view and every node is computed by the same
 code as :func:`isocsg.render.render` and
 :func:`isocsg.shadows.luxmap.illuminance_map`.
@@ -88,6 +90,9 @@ def _render_one(scene: Scene, camera: Camera, contours: int | None) -> Any:
 
 def _run(
     fn: Callable[..., Any], shared: tuple[Any, ...], args: list[tuple[Any, ...]], client: Any, workers: int | None,
+    paths: Sequence[str] = (),
+    *,
+    chunk: bool = True,
 ) -> list[Any]:
     """``[fn(*shared, *a) for a in args]`` on the client, on threads or serially."""
     if client is not None:
@@ -96,12 +101,38 @@ def _run(
         # renderer's caches (band meshes, CSG surfaces) then serve its later
         # views, as they do in one process, instead of one fresh copy per task.
         held = tuple(client.scatter([x], broadcast=True)[0] for x in shared)
-        futures = [client.submit(fn, *held, *a, pure=False) for a in args]
-        return client.gather(futures)
+        # With ``chunk``, one task per worker thread, each a contiguous run of
+        # the items: a view after the second is shorter than a task's round
+        # trip. Without, one task per item, dealt as threads free up: blocks of
+        # a lux grid are long and unequal (those in penumbra cost most).
+        slots = sum(client.nthreads().values()) or 1
+        if paths:
+            client.run(_warm, tuple(paths))  # each worker loads its kernels once, not inside a timed task
+        size = max(1, math.ceil(len(args) / slots)) if chunk else 1
+        chunks = [args[i : i + size] for i in range(0, len(args), size)]
+        futures = [client.submit(_chunk, fn, held, chunk, pure=False) for chunk in chunks]
+        return [r for part in client.gather(futures) for r in part]
     if workers == 1 or len(args) <= 1:
         return [fn(*shared, *a) for a in args]
     with ThreadPoolExecutor(max_workers=workers) as pool:
         return list(pool.map(lambda a: fn(*shared, *a), args))
+
+
+def _chunk(fn: Callable[..., Any], shared: tuple[Any, ...], chunk: list[tuple[Any, ...]]) -> list[Any]:
+    return [fn(*shared, *a) for a in chunk]
+
+
+_warmed: set[str] = set()
+
+
+def _warm(paths: tuple[str, ...]) -> None:
+    """Load the listed kernels of ``paths`` into this worker process (compiling what the disk cache lacks), once."""
+    from .kernels import _compile, path_kernels
+
+    for path in paths:
+        if path not in _warmed:
+            _compile(path_kernels(path))
+            _warmed.add(path)
 
 
 def render_views(
@@ -149,7 +180,9 @@ def render_views(
     for i, c in enumerate(cams):
         if not isinstance(c, Camera):
             raise InvalidParameterError(f"cameras[{i}] must be a Camera, got {type(c).__name__}")
-    return _run(_render_one, (scene,), [(c, contours) for c in cams], client, workers)
+    halftone = scene.render.mode == "halftone"
+    paths = ("halftone",) if halftone else ("isoluminance", "surface")
+    return _run(_render_one, (scene,), [(c, contours) for c in cams], client, workers, paths)
 
 
 def _rows(lights: Any, occluders: Any, points: np.ndarray, normal: np.ndarray, resolution: int) -> np.ndarray:
@@ -207,5 +240,5 @@ def illuminance_grid(
     pts = grid.points()
     n = grid.normal
     blocks = [(np.ascontiguousarray(pts[j : j + step]), n, res) for j in range(0, grid.ny, step)]
-    E = np.vstack(_run(_rows, (lights, occluders), blocks, client, workers))
+    E = np.vstack(_run(_rows, (lights, occluders), blocks, client, workers, ("halftone",), chunk=False))
     return LuxMap(grid, E, occluded_nodes(grid, occluders))

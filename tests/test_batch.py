@@ -66,3 +66,42 @@ def test_errors():
         render_views(SCENE, [SCENE.camera, "top"])
     with pytest.raises(InvalidParameterError, match="rows_per_task must be"):
         illuminance_grid(GRID, LAMP, rows_per_task=0)
+
+
+class _RecordingClient:
+    """The part of dask.distributed.Client that the batch functions use, run in this process."""
+
+    def __init__(self, nthreads: dict[str, int]) -> None:
+        self._nthreads = nthreads
+        self.tasks: list[int] = []
+        self.runs: list[tuple] = []
+
+    def scatter(self, values, broadcast=False):
+        return list(values)
+
+    def nthreads(self):
+        return self._nthreads
+
+    def run(self, fn, *args):
+        self.runs.append(args)
+        return {w: fn(*args) for w in self._nthreads}
+
+    def submit(self, fn, *args, pure=True):
+        self.tasks.append(len(args[2]))  # _chunk(fn, shared, chunk)
+        return fn(*args)
+
+    def gather(self, futures):
+        return list(futures)
+
+
+def test_a_cluster_gets_one_contiguous_run_of_views_per_worker_thread():
+    cams = turntable(SCENE.camera, 5)
+    client = _RecordingClient({"a": 1, "b": 1})
+    views = render_views(SCENE, cams, client=client)
+    assert client.tasks == [3, 2] and client.runs == [(("isoluminance", "surface"),)]
+    for v, ref in zip(views, _serial_views(cams), strict=True):
+        np.testing.assert_array_equal(v.image, ref)
+    client = _RecordingClient({"a": 2, "b": 1})
+    m = illuminance_grid(GRID, LAMP, OCCLUDERS, rows_per_task=2, client=client)
+    assert client.tasks == [1] * -(-GRID.ny // 2)  # long, unequal blocks: one task each
+    np.testing.assert_array_equal(m.E, illuminance_map(GRID, LAMP, OCCLUDERS).E)

@@ -82,6 +82,12 @@ def _fields():
     holes = rng.random((30, 25))
     holes[rng.random(holes.shape) < 0.08] = np.nan
     yield "noise-with-nan", holes, [0.3, 0.6]
+    # Levels that cross small parts of the grid (traced on their own rectangles of nodes):
+    # a peak whose lines end on the grid's edges near a corner, and one with a hole of NaN.
+    yield "corner-peak", np.exp(-20 * ((x - 0.1) ** 2 + (y - 0.9) ** 2)), [0.05, 0.3, 0.6, 0.9, 0.999]
+    peak = np.exp(-30 * ((x - 0.6) ** 2 + (y - 0.5) ** 2))
+    peak[28:33, 40:44] = np.nan
+    yield "peak-with-nan", peak, [0.02, 0.2, 0.5, 0.8]
 
 
 @pytest.mark.parametrize("name,E,levels", list(_fields()), ids=[f[0] for f in _fields()])

@@ -127,46 +127,54 @@ def apply_overrides(scene: Scene, *, size: tuple[int, int] | None = None, contou
     return scene
 
 
-# What a new install's first render of each kind spends compiling (CPU time measured
-# on 2 cores; README, "Command line"), and the kernel whose cache tells whether it will.
-_COMPILE_SECONDS = {"isoluminance": 15, "halftone": 15}
+# The kernel paths (isocsg.kernels.PATHS) of each kind of render, and how the messages name them.
+_COMPILE_PATHS = {"isoluminance": ("isoluminance",), "halftone": ("halftone",)}
 _COMPILE_NAMES = {"isoluminance": "isoluminance", "halftone": "soft-shadow"}
-_COMPILE_PROBES = {
-    "isoluminance": ("isocsg.render.raster", "_fill_polys"),
-    "halftone": ("isocsg.shadows.visibility", "_kernel"),
-}
 _NOTICED: set[str] = set()
 
 
 def kernels_cached(kind: str) -> bool:
-    """Whether numba's on-disk cache holds the kernels of ``kind`` ("isoluminance" or "halftone").
+    """Whether numba's on-disk cache holds the listed kernels of ``kind`` ("isoluminance" or "halftone").
 
-    Reads the cache index of the kernel that costs most to compile (one small
-    file); any doubt (a numba without these internals) answers True, so that
-    nothing is said.
+    Reads the kernels' cache indexes (small files; see :mod:`isocsg.kernels`).
     """
-    import importlib
+    from ..kernels import missing_kernels
 
-    module, name = _COMPILE_PROBES[kind]
-    try:
-        dispatcher = getattr(importlib.import_module(module), name)
-        return bool(dispatcher._cache._cache_file._load_index())
-    except Exception:  # noqa: BLE001 - private numba API: silence rather than fail a render
-        return True
+    return not missing_kernels(_COMPILE_PATHS[kind])
 
 
 def compile_notice(kind: str, *, file: IO[str] | None = None) -> bool:
-    """Say on stderr, once per process, that the first render compiles the kernels; True if it did."""
-    if kind in _NOTICED or kernels_cached(kind):
+    """Compile the kernels of ``kind`` that the disk cache lacks, saying so on stderr; True if it did.
+
+    A new install's first render would compile them one after the other on
+    its first calls; they are compiled here first, on as many processes as
+    there are cores (:func:`isocsg.kernels.compile_kernels`). Two lines are
+    printed: what is compiled, on how many processes, with the time the
+    recorded compile times predict; then the time it took. Nothing is said
+    (or done) when the cache holds them, nor a second time in one process.
+    """
+    from ..kernels import compile_kernels
+
+    if kind in _NOTICED:
         return False
     _NOTICED.add(kind)
-    print(
-        f"isocsg: compiling its {_COMPILE_NAMES[kind]} kernels, once for this install (about {_COMPILE_SECONDS[kind]} s); "
-        "later runs read them from the cache (`isocsg warmup` compiles them ahead of time)",
-        file=file if file is not None else sys.stderr,
-        flush=True,
-    )
-    return True
+    stream = file if file is not None else sys.stderr
+
+    def start(kernels: int, processes: int, seconds: float) -> None:
+        on = f"on {processes} processes" if processes > 1 else "on one process"
+        idle = "on idle cores" if processes > 1 else "on an idle core"
+        print(
+            f"isocsg: compiling {kernels} {_COMPILE_NAMES[kind]} kernel{'s' if kernels != 1 else ''} {on}, once for this install "
+            f"(about {max(1, round(seconds))} s {idle}); later runs read them from numba's disk cache "
+            "(`isocsg warmup` compiles every kind ahead of time)",
+            file=stream,
+            flush=True,
+        )
+
+    report = compile_kernels(_COMPILE_PATHS[kind], on_start=start)
+    if report.kernels:
+        print(f"isocsg: compiled in {report.seconds:.1f} s", file=stream, flush=True)
+    return report.kernels > 0
 
 
 def render_scene(scene: Scene, *, progress: ProgressCallback | None = None) -> Any:

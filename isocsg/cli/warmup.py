@@ -12,12 +12,13 @@ from ..scene.io import builtin_scene_path, load_scene
 __all__ = ["register", "run"]
 
 DESCRIPTION = """\
-Compile isocsg's compiled kernels (numba, cached on disk next to the package)
-by rendering the built-in scenes at a tiny size: the CSG part per pixel and
-through its clipped surface, and the soft-shadow scene. A new install compiles
-them on its first render (about 15 s of CPU time for the first CSG image, as
-much again for the first soft-shadow image); run this once after installing so
-that no later call waits. Later runs find the cache and take a few seconds.
+Compile isocsg's kernels (numba, cached on disk next to the package) for every
+kind of render: a CSG image per pixel, later views through its clipped surface,
+and soft shadows. The listed kernels are compiled on one process per core (about
+45 s of CPU time in all), then the built-in scenes are rendered at a tiny size
+to compile anything else they use. Without it, the first render of each kind
+compiles its kernels (the command line says so). Later runs find the cache and
+take a few seconds.
 """
 
 
@@ -29,12 +30,19 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
 
 
 def run(args: argparse.Namespace) -> int:
-    """Render the built-in scenes at a tiny size; prints what it did and how long it took."""
+    """Compile the listed kernels, render the built-in scenes at a tiny size; prints what it did and how long it took."""
+    from ..kernels import PATHS, compile_kernels
     from ..render import Renderer
     from ..shadows.halftone import render_halftone
 
     start = time.perf_counter()
     print("isocsg warmup: compiling kernels (once per install; later runs read the on-disk cache)", flush=True)
+
+    def say(kernels: int, processes: int, seconds: float) -> None:
+        print(f"isocsg warmup: {kernels} kernels on {processes} processes (about {max(1, round(seconds))} s on idle cores)",
+              flush=True)
+
+    compile_kernels(PATHS, on_start=say)
     scene = load_scene(builtin_scene_path("demo"))
     small = replace(scene, camera=replace(scene.camera, width=48, height=36), render=replace(scene.render, contours=8))
     for csg in ("pixel", "surface"):

@@ -313,6 +313,12 @@ def isolux_lines(E: ArrayLike, levels: ArrayLike) -> list[list[tuple[NDArray[np.
     lying exactly on the level, the two may split it into polylines
     differently there; the segments are the same).
 
+    Each level is traced on the smallest rectangle of nodes that holds all
+    its lines (found from the extremes of each row and column of nodes), or
+    on the whole grid when that costs less: contourpy's time grows with the
+    nodes it is given, and most levels of a lux map cross a small part of it.
+    The lines are those of the whole grid, point for point.
+
     Parameters
     ----------
     E : array_like, shape (ny, nx)
@@ -342,33 +348,102 @@ def isolux_lines(E: ArrayLike, levels: ArrayLike) -> list[list[tuple[NDArray[np.
     >>> closed, len(ring)
     (True, 13)
     """
-    import contourpy
-
     Z = np.asarray(E, dtype=np.float64)
     if Z.ndim != 2 or min(Z.shape) < 2:
         raise InvalidParameterError(f"E must be a 2-D array with at least 2 x 2 values, got shape {Z.shape}")
     bad = ~np.isfinite(Z)
     mask = bad if bad.any() else None
     z = np.where(bad, 0.0, Z) if mask is not None else np.ascontiguousarray(Z)
-    # The generator class itself, not contourpy.contour_generator(): that front
-    # end also validates through masked arrays and builds the coordinate grids,
-    # which cost as much as tracing a few levels on a 512 x 512 grid. Node
-    # coordinates are the indices, as there.
-    ny, nx = Z.shape
-    x, y = np.meshgrid(np.arange(nx, dtype=np.float64), np.arange(ny, dtype=np.float64))
-    gen = contourpy.SerialContourGenerator(
-        x, y, z, mask, corner_mask=False, quad_as_tri=False, z_interp=contourpy.ZInterp.Linear,
-        line_type=contourpy.LineType.SeparateCode, fill_type=contourpy.FillType.OuterCode,
-        x_chunk_size=0, y_chunk_size=0,
-    )
+    lv = [float(level) for level in np.asarray(levels, dtype=np.float64).reshape(-1)]
+    boxes = _level_boxes(z, lv)
+    shared = _shared_levels(boxes, z.size)
+    full = None
     out = []
-    for level in np.asarray(levels, dtype=np.float64).reshape(-1):
-        points, codes = gen.lines(float(level))
+    for k, (level, box) in enumerate(zip(lv, boxes)):
+        if box is None:
+            out.append([])
+            continue
+        if k in shared:
+            if full is None:
+                full = _generator(z, mask, (0, z.shape[0], 0, z.shape[1]))
+            gen = full
+        else:
+            gen = _generator(z, mask, box)
+        points, codes = gen.lines(level)
         out.append([
             (np.asarray(pts, dtype=np.float64), bool(len(code) and code[-1] == _CLOSEPOLY))
             for pts, code in zip(points, codes)
         ])
     return out
+
+
+def _level_boxes(z: NDArray[np.float64], levels: list[float]) -> list[tuple[int, int, int, int] | None]:
+    """The node rectangle ``(j0, j1, i0, i1)`` (ends excluded) holding every line of each level, or None.
+
+    A cell row (node rows j and j + 1) holds a line of a level only if the
+    level lies between the smallest and the largest value of those two node
+    rows (inclusive); so does a cell column. The rectangle of those cell rows
+    and columns holds every cell the level crosses, and contourpy traces the
+    same lines on it as on the whole grid: no line reaches its edges except
+    where the grid's edges are.
+    """
+    rmin, rmax = z.min(axis=1), z.max(axis=1)
+    cmin, cmax = z.min(axis=0), z.max(axis=0)
+    row_lo, row_hi = np.minimum(rmin[:-1], rmin[1:]), np.maximum(rmax[:-1], rmax[1:])
+    col_lo, col_hi = np.minimum(cmin[:-1], cmin[1:]), np.maximum(cmax[:-1], cmax[1:])
+    boxes: list[tuple[int, int, int, int] | None] = []
+    for level in levels:
+        rows = np.flatnonzero((row_lo <= level) & (level <= row_hi))
+        cols = np.flatnonzero((col_lo <= level) & (level <= col_hi))
+        if len(rows) == 0 or len(cols) == 0:
+            boxes.append(None)
+        else:
+            boxes.append((int(rows[0]), int(rows[-1]) + 2, int(cols[0]), int(cols[-1]) + 2))
+    return boxes
+
+
+# contourpy's cost per grid node, in units of one level's tracing on the whole grid:
+# building a generator (and copying its coordinates) costs about 1.6 traces, so a
+# level traced on its own rectangle costs 2.6 traces per node of the rectangle.
+# Measured on 512 x 512 grids (benchmarks/isolux.py).
+_GENERATOR_COST = 1.6
+_CROPPED_COST = 2.6
+
+
+def _shared_levels(boxes: list[tuple[int, int, int, int] | None], nodes: int) -> set[int]:
+    """Indices of the levels cheaper to trace on one generator over the whole grid than on their rectangles.
+
+    Levels whose rectangles are largest move to the shared generator first; the
+    number moved is the one of least estimated cost.
+    """
+    area = [0 if b is None else (b[1] - b[0]) * (b[3] - b[2]) for b in boxes]
+    order = sorted(range(len(boxes)), key=lambda k: -area[k])
+    cropped = _CROPPED_COST * sum(area)
+    best, best_k = cropped, 0
+    cost = _GENERATOR_COST * nodes
+    for k, idx in enumerate(order, 1):
+        cropped -= _CROPPED_COST * area[idx]
+        cost += nodes
+        if cost + cropped < best:
+            best, best_k = cost + cropped, k
+    return set(order[:best_k])
+
+
+def _generator(z: NDArray[np.float64], mask: NDArray[np.bool_] | None, box: tuple[int, int, int, int]) -> Any:
+    """contourpy's serial generator on the node rectangle ``box`` (node coordinates are the grid indices)."""
+    import contourpy
+
+    j0, j1, i0, i1 = box
+    x, y = np.meshgrid(np.arange(i0, i1, dtype=np.float64), np.arange(j0, j1, dtype=np.float64))
+    # The generator class itself, not contourpy.contour_generator(): that front
+    # end also validates through masked arrays and builds the coordinate grids,
+    # which cost as much as tracing a few levels on a 512 x 512 grid.
+    return contourpy.SerialContourGenerator(
+        x, y, np.ascontiguousarray(z[j0:j1, i0:i1]), None if mask is None else np.ascontiguousarray(mask[j0:j1, i0:i1]),
+        corner_mask=False, quad_as_tri=False, z_interp=contourpy.ZInterp.Linear,
+        line_type=contourpy.LineType.SeparateCode, fill_type=contourpy.FillType.OuterCode,
+        x_chunk_size=0, y_chunk_size=0,
+    )
 
 
 # contourpy's (matplotlib's) path code that closes a line.
