@@ -345,8 +345,21 @@ def _resolve_packed(
 _QUADS_LOCK = threading.Lock()
 
 
+class _Projected:
+    """A mesh's projection scratch: one (7, V) array per fill thread, made on first use and reused."""
+
+    __slots__ = ()
+    vertices: NDArray[np.float64]
+    projs: list[NDArray[np.float64]]
+
+    def proj(self, k: int = 0) -> NDArray[np.float64]:
+        while len(self.projs) <= k:
+            self.projs.append(np.empty((7, len(self.vertices))))
+        return self.projs[k]
+
+
 @dataclass(frozen=True, slots=True, eq=False)
-class _Prepared:
+class _Prepared(_Projected):
     vertices: NDArray[np.float64]
     triangles: NDArray[np.int32]
     value_out: NDArray[np.float32]
@@ -362,11 +375,6 @@ class _Prepared:
                     quads, source = pair_quads(self.vertices, self.triangles, self.value_out, self.value_in)
                     self._quads.append((quads, self.value_out[source], self.value_in[source]))
         return self._quads[0]
-
-    def proj(self, k: int = 0) -> NDArray[np.float64]:
-        while len(self.projs) <= k:
-            self.projs.append(np.empty((7, len(self.vertices))))
-        return self.projs[k]
 
     @property
     def nbytes(self) -> int:
@@ -385,7 +393,7 @@ class _Prepared:
 
 
 @dataclass(eq=False)
-class _Runs:
+class _Runs(_Projected):
     """A large tree's clipped surface as one mesh to fill: the leaves' parts' quads in
     consecutive runs, one per leaf, so a view projects and fills it in one call each."""
 
@@ -412,11 +420,6 @@ class _Runs:
 
     def quads(self) -> tuple[NDArray[np.int32], NDArray[np.float32]]:
         return self.polys, self.values
-
-    def proj(self, k: int = 0) -> NDArray[np.float64]:
-        while len(self.projs) <= k:
-            self.projs.append(np.empty((7, len(self.vertices))))
-        return self.projs[k]
 
     @property
     def nbytes(self) -> int:
