@@ -25,7 +25,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from ..lighting.lights import DirectionalLight, PointLight
-from ..lighting.shading import TERMINATOR_COSINE, Material
+from ..lighting.shading import Material
 
 __all__ = [
     "FieldFamily", "diffuse_levels", "specular_levels", "incidence", "diffuse_family", "specular_families",
