@@ -8,7 +8,7 @@ the kernels of one CSG image. Those kernels are listed in
 seconds their compilation took), recorded from the built-in scenes by ``python -m isocsg.kernels --record``.
 
 :func:`compile_kernels` compiles the listed kernels that the cache lacks,
-shared between this process and worker processes (one per further idle core): each
+shared between this process and worker processes (one per further idle core, measured over 0.2 s): each
 worker fills the disk cache, this process keeps its share in memory, waits
 for the workers, and later calls load their kernels from the cache. Kernels
 that call the same compiled kernel are compiled by one process, so none is
@@ -220,8 +220,34 @@ def _compile(kernels: Sequence[Kernel]) -> None:
             pass
 
 
+def _busy_cores(interval: float = 0.2) -> float:
+    """How many cores other work keeps busy now: from ``/proc/stat`` over ``interval`` seconds,
+    or the 1-minute load average where that file is missing.
+
+    Not the load average alone: it lags by a minute, and a new install's first render comes right
+    after ``pip install`` has kept a core busy, when the machine is idle again.
+    """
+    def ticks() -> tuple[int, int]:
+        with open("/proc/stat", encoding="ascii") as f:
+            fields = [int(x) for x in f.readline().split()[1:]]
+        return sum(fields), fields[3] + (fields[4] if len(fields) > 4 else 0)  # total, idle + iowait
+
+    try:
+        total0, idle0 = ticks()
+        time.sleep(interval)
+        total1, idle1 = ticks()
+    except (OSError, ValueError, IndexError):  # not Linux
+        try:
+            return os.getloadavg()[0]
+        except (AttributeError, OSError):
+            return 0.0
+    if total1 <= total0:
+        return 0.0
+    return (1.0 - (idle1 - idle0) / (total1 - total0)) * (os.cpu_count() or 1)
+
+
 def _default_processes() -> int:
-    """One process per idle core: the cores this process may use less the 1-minute load average, at least 1.
+    """One process per idle core: the cores this process may use less the cores busy now, at least 1.
 
     On a loaded machine a second process gets no more of it than one does,
     and costs its own start and numba's set-up (about 2 s of CPU time).
@@ -230,11 +256,7 @@ def _default_processes() -> int:
         cores = len(os.sched_getaffinity(0))
     except AttributeError:  # not on Linux
         cores = os.cpu_count() or 1
-    try:
-        load = os.getloadavg()[0]
-    except (AttributeError, OSError):  # not available here
-        load = 0.0
-    return max(1, min(cores, math.floor(cores - load + 0.5)))
+    return max(1, min(cores, math.floor(cores - _busy_cores() + 0.5)))
 
 
 def compile_kernels(
@@ -252,8 +274,8 @@ def compile_kernels(
         Items of :data:`PATHS`.
     processes : int, keyword-only, optional
         Processes that compile, this one included (default: one per idle
-        core, the cores this process may use less the 1-minute load average,
-        at least one). Workers are started only when they have work.
+        core, the cores this process may use less those busy over the last
+        0.2 s, at least one). Workers are started only when they have work.
     progress : callable, keyword-only, optional
         ``progress(done, total)`` after each kernel this process compiles,
         ``total`` counting every kernel compiled.

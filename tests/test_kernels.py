@@ -105,8 +105,32 @@ def test_one_process_per_idle_core(monkeypatch: pytest.MonkeyPatch, cores: int, 
     import isocsg.kernels as K
 
     monkeypatch.setattr(os, "sched_getaffinity", lambda pid: set(range(cores)))
-    monkeypatch.setattr(os, "getloadavg", lambda: (load, load, load))
+    monkeypatch.setattr(K, "_busy_cores", lambda: load)
     assert K._default_processes() == expected
+
+
+def test_busy_cores_are_measured_now_within_the_machine() -> None:
+    import isocsg.kernels as K
+
+    busy = K._busy_cores(0.05)
+    assert 0.0 <= busy <= (os.cpu_count() or 1) + 1e-9
+
+
+def test_busy_cores_fall_back_to_the_load_average(monkeypatch: pytest.MonkeyPatch) -> None:
+    import builtins
+
+    import isocsg.kernels as K
+
+    real_open = builtins.open
+
+    def no_proc_stat(path, *args, **kwargs):
+        if str(path) == "/proc/stat":
+            raise FileNotFoundError(path)
+        return real_open(path, *args, **kwargs)
+
+    monkeypatch.setattr(builtins, "open", no_proc_stat)
+    monkeypatch.setattr(os, "getloadavg", lambda: (3.5, 1.0, 1.0))
+    assert K._busy_cores(0.0) == 3.5
 
 
 def test_errors() -> None:
