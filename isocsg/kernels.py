@@ -300,11 +300,13 @@ def compile_kernels(
     """
     for p in paths:
         path_kernels(p)
-    n = _default_processes() if processes is None else int(processes)
-    if n < 1:
+    if processes is not None and int(processes) < 1:
         raise InvalidParameterError(f"processes must be at least 1, got {processes!r}")
     start = time.perf_counter()
     todo = missing_kernels(paths)
+    # Idle cores are measured (0.2 s) only when there is something to compile: a warm render
+    # calls this too.
+    n = (_default_processes() if processes is None else int(processes)) if todo else 1
     shares = [s for s in _shares(todo, min(n, len(todo))) if s] if todo else []
     if on_start is not None and todo:
         loads = [sum(k.seconds for k in s) + (_WORKER_START_SECONDS if i else 0.0) for i, s in enumerate(shares)]
