@@ -20,6 +20,18 @@ geometry.
 The standard error comes from R independent replicates (different jitter):
 the mean of the replicates is the estimate, their standard deviation over
 sqrt(R) its standard error.
+
+Where no sample at all saw the source, the replicates agree on 0 with a
+standard error of 0, and that interval says nothing: a visible sliver smaller
+than a stratum is missed by every replicate with a fair probability. There
+the interval is the one-sided binomial bound instead (:attr:`MCResult.zero_hit_bound`):
+if a sample in stratum j hits with probability p_j and would contribute at
+most c (the largest single-sample contribution seen, ``L w cos cos / r^2``,
+or ``L w / r^2`` where no sample lay in front of both planes), then
+E <= c * sum p_j, and all R replicates miss with probability
+prod (1 - p_j)^R <= exp(-R E / c). So zero hits happen with probability
+below alpha only if E <= ln(1 / alpha) c / R; alpha = 1e-4, about that of a
+4-sigma interval.
 """
 
 from __future__ import annotations
@@ -31,6 +43,7 @@ import numba
 import numpy as np
 
 SEG_EPS = 1e-9  # a segment is blocked only if it runs at least this long (in t) inside an occluder
+ZERO_HIT_ALPHA = 1e-4  # false-alarm probability of the zero-hit bound (a 4-sigma interval's is 6e-5)
 
 
 @dataclass
@@ -155,7 +168,7 @@ def _blocked(p, q, pn, pd, poff, pocc, psign, nocc):
 
 
 @numba.njit(cache=True, parallel=True)
-def _mc_kernel(P, NR, tris, tri_L, k, R, pn, pd, poff, pocc, psign, nocc, seed, est, nvis, ngeo):
+def _mc_kernel(P, NR, tris, tri_L, k, R, pn, pd, poff, pocc, psign, nocc, seed, est, nvis, ngeo, cmax):
     n = P.shape[0]
     ntri = tris.shape[0]
     for i in numba.prange(n):
@@ -197,8 +210,10 @@ def _mc_kernel(P, NR, tris, tri_L, k, R, pn, pd, poff, pocc, psign, nocc, seed, 
                         cp = (nr[0] * dx + nr[1] * dy + nr[2] * dz) / rl
                         cq = -(nx * dx + ny * dy + nz * dz) / rl  # the triangle emits along its normal
                         if cp <= 0.0 or cq <= 0.0:
+                            cmax[i, 1] = max(cmax[i, 1], tri_L[t] * w / r2)
                             continue
                         ngeo[i] += 1
+                        cmax[i, 0] = max(cmax[i, 0], tri_L[t] * w * cp * cq / r2)
                         if _blocked(p, q, pn, pd, poff, pocc, psign, nocc):
                             continue
                         nvis[i] += 1
@@ -211,6 +226,17 @@ class MCResult:
     mean: np.ndarray
     se: np.ndarray
     visible_fraction: np.ndarray  # nan where no sample lies in front of both planes
+    zero_hit_bound: np.ndarray  # where no sample saw the source: E below this with probability 1 - ZERO_HIT_ALPHA; else 0
+
+    def tolerance(self, exact, sigmas: float = 4.0) -> np.ndarray:
+        """Half-width of the interval that ``exact`` must lie in around :attr:`mean`.
+
+        ``sigmas`` standard errors, widened to the zero-hit bound where no
+        sample saw the source (the standard error is 0 there and says nothing),
+        plus 1e-12 relative for rounding.
+        """
+        exact = np.asarray(exact, float)
+        return np.maximum(sigmas * self.se, self.zero_hit_bound) + 1e-12 * np.maximum(1.0, np.abs(exact))
 
 
 def mc_illuminance(points, normals, sources, occluders, *, k=16, replicates=32, seed=1) -> MCResult:
@@ -233,13 +259,16 @@ def mc_illuminance(points, normals, sources, occluders, *, k=16, replicates=32, 
     est = np.zeros((len(P), replicates))
     nvis = np.zeros(len(P), np.int64)
     ngeo = np.zeros(len(P), np.int64)
+    cmax = np.zeros((len(P), 2))  # largest single-sample contribution: in front of both planes; otherwise L w / r^2
     _mc_kernel(P, NR, tris, np.array(tri_L), k, replicates, np.ascontiguousarray(pn), pd, poff, pocc, psign,
-               len(occluders), seed, est, nvis, ngeo)
+               len(occluders), seed, est, nvis, ngeo, cmax)
     mean = est.mean(axis=1)
     se = est.std(axis=1, ddof=1) / math.sqrt(replicates)
     with np.errstate(invalid="ignore", divide="ignore"):
         frac = np.where(ngeo > 0, nvis / np.maximum(ngeo, 1), np.nan)
-    return MCResult(mean, se, frac)
+    c = np.where(ngeo > 0, cmax[:, 0], cmax[:, 1])
+    bound = np.where(nvis == 0, math.log(1.0 / ZERO_HIT_ALPHA) * c / replicates, 0.0)
+    return MCResult(mean, se, frac, bound)
 
 
 def mc_refined(points, normals, sources, occluders, *, k=16, replicates=32, seed=1, rare=0.01, k_fine=48,
@@ -259,6 +288,7 @@ def mc_refined(points, normals, sources, occluders, *, k=16, replicates=32, seed
     if len(redo):
         fine = mc_illuminance(P[redo], NR[redo], sources, occluders, k=k_fine, replicates=replicates_fine, seed=seed + 7919)
         res.mean[redo], res.se[redo], res.visible_fraction[redo] = fine.mean, fine.se, fine.visible_fraction
+        res.zero_hit_bound[redo] = fine.zero_hit_bound
     return res
 
 
@@ -272,10 +302,11 @@ def mc_recheck(points, normals, sources, occluders, exact, result: MCResult, *, 
     at those points.
     """
     exact = np.asarray(exact, float)
-    bad = np.nonzero(np.abs(exact - result.mean) > sigmas * result.se + 1e-12 * np.maximum(1.0, np.abs(exact)))[0]
+    bad = np.nonzero(np.abs(exact - result.mean) > result.tolerance(exact, sigmas))[0]
     if len(bad):
         P = np.atleast_2d(np.asarray(points, float))
         NR = np.broadcast_to(np.atleast_2d(np.asarray(normals, float)), P.shape)
         again = mc_illuminance(P[bad], NR[bad], sources, occluders, k=k, replicates=replicates, seed=seed)
         result.mean[bad], result.se[bad], result.visible_fraction[bad] = again.mean, again.se, again.visible_fraction
+        result.zero_hit_bound[bad] = again.zero_hit_bound
     return result

@@ -128,7 +128,7 @@ def check(points, normals, lights, occluders, mc_occluders, hulls, solid_hulls, 
     E, S = illuminance_and_state(points, normals, lights, occluders, resolution=RES)
     sources = [(light.emitting_polygons(), light.radiance) for light in lights]
     mc = mc_illuminance(points, normals, sources, mc_occluders, k=k, replicates=replicates)
-    tol = 4 * mc.se + 1e-12 * np.maximum(1.0, np.abs(E))
+    tol = mc.tolerance(E)
     bad = np.abs(E - mc.mean) > tol
     assert not bad.any(), (
         f"{bad.sum()} points outside 4 sigma: exact {E[bad][:5]}, mc {mc.mean[bad][:5]} +- {mc.se[bad][:5]}"

@@ -64,7 +64,7 @@ def judge(points, normals, lights, occluders, mc_occluders, hulls, solid_hulls, 
     E, S = illuminance_and_state(points, normals, lights, occluders, resolution=res)
     sources = [(light.emitting_polygons(), light.radiance) for light in lights]
     mc = mc_illuminance(points, normals, sources, mc_occluders, k=12, replicates=64)
-    tol = 4 * mc.se + 1e-12 * np.maximum(1.0, np.abs(E))
+    tol = mc.tolerance(E)
     bad = np.abs(E - mc.mean) > tol
     assert not bad.any(), f"{bad.sum()} points outside 4 sigma: {points[bad][:3]}, exact {E[bad][:3]}, mc {mc.mean[bad][:3]}"
     exp = expected_states(points, normals, [li.emitting_polygons() for li in lights], mc.visible_fraction, hulls, solid_hulls)
