@@ -40,6 +40,7 @@ from isocsg import (
 )
 from isocsg.csg.program import compile_program
 from isocsg.errors import ResourceLimitError
+from isocsg.laminae import build_bands
 from isocsg.limits import set_memory_budget
 from isocsg.render import Renderer, painter, tiles
 
@@ -338,8 +339,9 @@ def test_budget_error_is_raised_before_allocating():
 
 
 def test_budget_error_for_tiles_that_cannot_shrink_enough():
-    # 600 spheres over the same pixels: even 8-pixel tiles hold all of them.
-    balls = Union(*[Sphere((0.0, 0.0, 0.0), 1.0 + 0.001 * i) for i in range(600)])
+    # 600 spheres over the same pixels: even 8-pixel tiles hold all of them (an intersection:
+    # a union needs no per-pixel buffers, see the next test).
+    balls = Intersection(*[Sphere((0.0, 0.0, 0.0), 1.0 + 0.001 * i) for i in range(600)])
     cam = Camera((0.0, -6.0, 0.0), (0, 0, 0), width=64, height=64)
     built = []
 
@@ -354,6 +356,29 @@ def test_budget_error_for_tiles_that_cannot_shrink_enough():
     finally:
         set_memory_budget(None)
     assert built == []
+
+
+def test_union_needs_no_per_pixel_buffers_and_skips_hidden_leaves():
+    # The same 600 nested spheres as a union, under the same 1 MB budget: filled by the depth
+    # test nearest first, so the outermost sphere hides the others, whose bands are never built.
+    balls = Union(*[Sphere((0.0, 0.0, 0.0), 1.0 + 0.001 * i) for i in range(600)])
+    cam = Camera((0.0, -6.0, 0.0), (0, 0, 0), width=64, height=64)
+    built = []
+
+    def build(primitive, *args, **kwargs):
+        built.append(primitive)
+        return build_bands(primitive, *args, **kwargs)
+
+    set_memory_budget(1 << 20)
+    try:
+        res = Renderer(build_laminae=build, adaptive_contours=False).render(Scene(cam, LIGHTS, (SceneObject(balls),)))
+    finally:
+        set_memory_budget(None)
+    outer = Sphere((0.0, 0.0, 0.0), 1.599)
+    assert built == [outer]
+    alone = Renderer().render(Scene(cam, LIGHTS, (SceneObject(outer),)))
+    assert np.array_equal(res.image, alone.image, equal_nan=True)
+    assert set(np.unique(res.primitive_index).tolist()) == {-1, 599}
 
 
 @pytest.mark.parametrize("as_csg", [False, True], ids=["objects", "union"])
@@ -466,7 +491,8 @@ def test_auto_builds_large_trees_in_the_background_within_the_budget_share(monke
 
 
 def test_a_large_union_over_the_share_is_given_up_before_its_bands_are_all_asked_for(monkeypatch):
-    """A union of 80 overlapping spheres can be neither trimmed nor parted: its Boolean takes
+    """A union of 80 overlapping spheres (with a notch cut out, so that it is not a plain union,
+    which the depth test alone resolves) can be neither trimmed nor parted: its Boolean takes
     every band triangle. The background build asks for the bands of such leaves first and
     gives up (per pixel for good) as soon as they pass the share of the budget, here after
     the first sphere's, instead of building all 80 to find out."""
@@ -480,17 +506,18 @@ def test_a_large_union_over_the_share_is_given_up_before_its_bands_are_all_asked
 
     monkeypatch.setattr(painter, "LARGE_SURFACE_SHARE", 1e-9)
     spheres = [Sphere((0.6 * (i % 5), 0.6 * (i // 5 % 4), 0.6 * (i // 20)), 0.4) for i in range(80)]
+    notched = Union(*spheres) - Box((2.4, 0.0, 1.8), (0.3, 0.3, 0.3))
     cam = Camera((6.0, -8.0, 6.0), (1.2, 0.9, 0.9), fov=40, width=64, height=64)
-    scene = Scene(cam, LIGHTS, (SceneObject(Union(*spheres)),), RenderSettings(contours=16))
+    scene = Scene(cam, LIGHTS, (SceneObject(notched),), RenderSettings(contours=16))
     r = Renderer(build_laminae=counting)
     r.render(scene)
-    assert len(calls) == 80  # this builder keeps nothing: each per-pixel view asks for every leaf
+    assert len(calls) == 81  # this builder keeps nothing: each per-pixel view asks for every leaf
     r.render(scene, camera=cam.with_view((-6.0, -8.0, 6.0)))
     assert r.wait_surfaces(timeout=300)
-    assert len(calls) == 2 * 80 + 1  # the second view's, and one in the background
+    assert len(calls) == 2 * 81 + 1  # the second view's, and one in the background
     r.render(scene, camera=cam.with_view((6.0, 8.0, 6.0)))
     assert r.wait_surfaces(timeout=300)
-    assert len(calls) == 3 * 80 + 1  # the third view per pixel; not tried again
+    assert len(calls) == 3 * 81 + 1  # the third view per pixel; not tried again
 
 
 @pytest.mark.parametrize("k", [10], ids=lambda k: f"{k * k}-holes")

@@ -46,7 +46,7 @@ from numpy.typing import NDArray
 from .._validation import integer, light_budget
 from ..camera import Camera
 from ..csg.surface import BYTES_PER_BOOLEAN_TRIANGLE, surface_from_bands, untrimmed_groups
-from ..csg.program import Program, evaluate_mask
+from ..csg.program import OP_LEAF, OP_UNION, Program, evaluate_mask
 from ..csg.tree import CSGNode
 from ..errors import InvalidGeometryError, InvalidParameterError, ResourceLimitError
 from ..geometry.primitives import Primitive, Sphere
@@ -57,12 +57,12 @@ from ..limits import check_memory, memory_budget
 from ..scene.model import MAX_CONTOURS, Scene
 from .raster import (
     _RAW, camera_affine, fill_front_kernel, fill_front_runs, fill_projected, fill_rect, key_to_depth, pair_quads,
-    project_kernel,
+    ball_covered, camera_rays, project_kernel,
 )
 from .scratch import SCRATCH
 from .tiles import (
-    LEAF_PIXEL_BYTES, LeafGeometry, clip_leaves, combine_boxes, combine_rects, leaf_geometry, leaf_rects,
-    leaf_screen_sizes, open_tile_pixels, plan_tiles, tile_leaves,
+    LEAF_PIXEL_BYTES, LeafGeometry, clip_leaves, combine_boxes, combine_rects, leaf_geometry, leaf_near_keys,
+    leaf_rects, leaf_screen_sizes, open_tile_pixels, plan_tiles, tile_leaves,
 )
 
 __all__ = ["RenderResult", "RenderTimings", "Renderer", "render", "default_renderer"]
@@ -666,6 +666,8 @@ class Renderer:
         :func:`isocsg.laminae.build_bands` (the bands of
         :func:`~isocsg.laminae.build_laminae` without the laminae), which caches the
         view-independent bands, so rendering from a new viewpoint only fills.
+        The band mesh must lie within the primitive (CSG screen tiles and
+        occlusion culling bound it by the primitive's box and ball).
     csg : {"auto", "surface", "pixel"}, default "auto"
         How CSG objects are resolved. ``"pixel"``: per pixel on the leaves'
         depth intervals (exact, nothing to build). ``"surface"``: the leaves'
@@ -1251,6 +1253,16 @@ class Renderer:
             if not (rect[0] < rect[2] and rect[1] < rect[3]):  # off screen
                 report.add(len(leaves))
                 continue
+            if self.csg != "surface" and _is_union(program):
+                # A union needs no per-pixel CSG and no clipped surface: its surface is the
+                # nearest front face of its leaves, which the depth test finds.
+                if resets:
+                    _reset(resets)
+                    resets = []
+                build += self._render_union(leaves, scene.lights, obj.material, counts, cam, geom, rects, nears, base,
+                                            zkey, value, gid, report, hidden)
+                grow((rect[1], rect[3], rect[0], rect[2]))
+                continue
             if len(leaves) > SURFACE_MAX_LEAVES and self.csg == "auto":
                 runs = self._large_surface(seen_key, program, scene.lights, obj.material, counts, cam.eye)
                 if runs is not None:
@@ -1350,6 +1362,63 @@ class Renderer:
         for f in futures:
             f.result()
         return [int(bounds[:, 0].min()), int(bounds[:, 1].max()), int(bounds[:, 2].min()), int(bounds[:, 3].max())]
+
+    def _render_union(
+        self, leaves: Sequence[Primitive], lights: Sequence[Any], material: Any, counts: NDArray[np.int64],
+        cam: Camera, geom: LeafGeometry, rects: NDArray[np.int64], nears: NDArray[np.float64], base: int,
+        zkey: NDArray[np.float64], value: NDArray[np.float32], gid: NDArray[np.int32], report: _Progress,
+        hidden: Any = None,
+    ) -> float:
+        """Fill a union of leaves by the depth test, nearest leaves first, skipping hidden ones.
+
+        The leaves are taken in the order of their nearest possible depth
+        (:func:`~isocsg.render.tiles.leaf_near_keys`); a leaf whose screen
+        rectangle is already covered everywhere by nearer surfaces is skipped
+        without its bands being built or filled (occlusion culling: in a
+        lattice of 1000 spheres, 729 are hidden from any corner view). The
+        others' front faces are filled into the image buffers. Returns the
+        seconds spent obtaining bands.
+        """
+        keys = leaf_near_keys(geom, cam, nears)
+        # Each leaf's bounding ball: the sphere itself, or its box's circumscribed ball.
+        centers = np.where(geom.sphere[:, None], geom.center, 0.5 * (geom.lo + geom.hi))
+        radii = np.where(geom.sphere, geom.radius, 0.5 * np.linalg.norm(geom.hi - geom.lo, axis=1))
+        ray = camera_rays(cam)
+        persp = not cam.orthographic
+        a, b = camera_affine(cam)
+        eye = cam.eye_array
+        H, W = zkey.shape
+        bounds = np.empty((_STRIPES, 4), np.int64)
+        bounds[:] = (H, 0, W, 0)
+        # One projection scratch for all leaves (grown as needed), not one kept with each mesh.
+        proj = np.empty((7, 0))
+
+        def fill(quads: NDArray[np.int32], quad_value: NDArray[np.float32], i: int, r0: int, r1: int, k: int) -> None:
+            fill_front_kernel(proj, quads, quad_value, float(nears[i]), persp, base + i, r0, zkey[r0:r1], value[r0:r1],
+                              gid[r0:r1], bounds[k])
+
+        seconds = 0.0
+        for i in np.argsort(keys, kind="stable").tolist():
+            c0, r0, c1, r1 = rects[i].tolist()
+            if c0 < c1 and r0 < r1 and not ball_covered(zkey, r0, r1, c0, c1, float(keys[i]), float(nears[i]), ray,
+                                                        centers[i], float(radii[i])):
+                t = time.perf_counter()
+                prep, _ = self._leaf(leaves[i], lights, material, int(counts[i]), cam.eye, tiled=True, hidden=hidden)
+                seconds += time.perf_counter() - t
+                nv = len(prep.vertices)
+                if proj.shape[1] < nv:
+                    proj = np.empty((7, max(nv, 2 * proj.shape[1])))
+                project_kernel(prep.vertices, eye, a, b, persp, proj, 0, nv)
+                quads, quad_value = prep.quads()[:2]
+                # Rows split between threads when the leaf is large enough to pay for the hand-over.
+                parts = max(1, min(_STRIPES, (r1 - r0) * (c1 - c0) // _UNION_SPLIT_PIXELS, r1 - r0))
+                cuts = [r0 + (r1 - r0) * k // parts for k in range(parts + 1)]
+                jobs = [_pool().submit(fill, quads, quad_value, i, cuts[k], cuts[k + 1], k) for k in range(1, parts)]
+                fill(quads, quad_value, i, cuts[0], cuts[1], 0)
+                for job in jobs:
+                    job.result()
+            report.add(1)
+        return seconds
 
     def _render_per_pixel(
         self, leaves: Sequence[Primitive], program: Program, lights: Sequence[Any], material: Any,
@@ -1730,6 +1799,11 @@ def _screen_rect(program: Program, cam: Camera) -> Rect:
     return tuple(int(x) for x in combine_rects(program.op, program.arg, rects))  # type: ignore[return-value]
 
 
+def _is_union(program: Program) -> bool:
+    """Whether a program is a union of leaves (flattened, so one union instruction at most)."""
+    return bool(np.all((program.op == OP_LEAF) | (program.op == OP_UNION)))
+
+
 def _reset(resets: Sequence[tuple[NDArray[Any], tuple[int, int, int, int], Any]]) -> None:
     """Fill rectangles of buffers with their background, in concurrent row shares."""
     n = _STRIPES
@@ -1750,6 +1824,8 @@ _DEFAULT: Renderer | None = None
 #: Stripes filled concurrently for one primitive on images of at least ``_STRIPE_MIN_PIXELS``.
 _STRIPES = max(1, min(4, os.cpu_count() or 1))
 _STRIPE_MIN_PIXELS = 512 * 512
+#: A leaf of a union is filled by several threads (row bands) from this many pixels per thread.
+_UNION_SPLIT_PIXELS = 1024
 #: Row chunks of the last CSG leaf, shared by the main thread and the leaf worker.
 _LAST_CHUNKS = 6
 #: Rows of tiles the main thread may build ahead of the tiles done.

@@ -34,7 +34,7 @@ from ..geometry.primitives import Box, Cone, Cylinder, Primitive, Sphere, Truncu
 from .raster import NEAR_RELATIVE
 
 __all__ = [
-    "LeafGeometry", "leaf_geometry", "leaf_rects", "leaf_screen_sizes", "combine_rects", "combine_boxes", "prune_program", "tile_leaves", "TilePlan", "plan_tiles",
+    "LeafGeometry", "leaf_geometry", "leaf_rects", "leaf_near_keys", "leaf_screen_sizes", "combine_rects", "combine_boxes", "prune_program", "tile_leaves", "TilePlan", "plan_tiles",
     "open_tile_pixels", "clip_leaves", "CLIP_MARGIN",
 ]
 
@@ -179,6 +179,35 @@ def leaf_rects(geom: LeafGeometry, cam: Camera) -> tuple[Rects, NDArray[np.float
     rects[:, 3] = np.clip(np.ceil(np.clip(r1, -big, big)) + 1, 0, H)
     rects[behind] = (0, 0, W, H)
     return rects, near, extent
+
+
+def leaf_near_keys(geom: LeafGeometry, cam: Camera, near: NDArray[np.float64]) -> NDArray[np.float64]:
+    """The smallest depth key any point of each leaf can have (for occlusion culling).
+
+    The depth key is the fills' (:func:`~isocsg.render.raster.project_kernel`):
+    ``-1 / depth`` under perspective, the depth itself under an orthographic
+    camera; the depth of a leaf's points is bounded below by its box's
+    nearest corner, and for a sphere by its centre's depth less its radius.
+    ``-inf`` for a leaf that reaches its near plane ``near`` (never culled).
+
+    Examples
+    --------
+    >>> from isocsg import Camera, Sphere
+    >>> cam = Camera((0, -5, 0), (0, 0, 0), width=8, height=8)
+    >>> geom = leaf_geometry([Sphere((0, 0, 0), 1.0), Sphere((0, 6, 0), 1.0)])
+    >>> (-1 / leaf_near_keys(geom, cam, np.array([1e-9, 1e-9]))).round(9).tolist()
+    [4.0, 10.0]
+    """
+    f = cam.frame[0]
+    eye = cam.eye_array
+    mid, half = 0.5 * (geom.lo + geom.hi), 0.5 * (geom.hi - geom.lo)
+    depth = (mid - eye) @ f - half @ np.abs(f)
+    if geom.sphere.any():
+        k = np.flatnonzero(geom.sphere)
+        depth[k] = np.maximum(depth[k], (geom.center[k] - eye) @ f - geom.radius[k] * np.linalg.norm(f))
+    with np.errstate(divide="ignore", invalid="ignore"):
+        key = depth if cam.orthographic else -1.0 / depth
+    return np.where(np.isfinite(depth) & (depth > near), key, -np.inf)
 
 
 def leaf_screen_sizes(
