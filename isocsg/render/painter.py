@@ -681,7 +681,10 @@ class Renderer:
         always built in the background with their operands trimmed, and only
         if its Booleans fit :data:`LARGE_SURFACE_SHARE` of the memory budget
         (else they stay per pixel). Objects with view-dependent (specular)
-        bands use ``"pixel"`` under ``"auto"``.
+        bands use ``"pixel"`` under ``"auto"``. A union of leaves needs
+        neither under ``"auto"`` and ``"pixel"``: its leaves are filled by the
+        depth test, nearest first, and those hidden by nearer ones are skipped
+        before their bands are built (occlusion culling).
     surface_build : {"background", "now"}, default "background"
         Under ``csg="auto"``, where the clipped surface is built.
         ``"background"``: on a thread of its own, started by the object's
