@@ -84,14 +84,14 @@ def test_culling_skips_the_hidden_leaves_of_a_lattice():
     cam = Camera((6.0, -7.0, 5.0), (0, 0, 0), fov=30.0, width=128, height=128)
     scene = Scene(cam, (PointLight((3.0, -4.0, 6.0)),), (SceneObject(Union(*balls)),))
     built = []
-    real = painter.Renderer._leaf
+    real = painter.Renderer._front
 
     def counting(self, primitive, *a, **kw):
         built.append(primitive)
         return real(self, primitive, *a, **kw)
 
     monkeypatch = pytest.MonkeyPatch()
-    monkeypatch.setattr(painter.Renderer, "_leaf", counting)
+    monkeypatch.setattr(painter.Renderer, "_front", counting)
     culled = Renderer().render(scene).image
     assert len(set(built)) == 5 * 5 * 5 - 4 * 4 * 4
     monkeypatch.setattr(painter, "ball_covered", lambda *a: False)

@@ -392,6 +392,21 @@ class _Prepared(_Projected):
         return self.nbytes - (0 if self.projs else 56 * len(self.vertices))
 
 
+@dataclass(frozen=True, slots=True, eq=False)
+class _Front:
+    """What the front-face fill of a union's leaf needs of its band mesh: the vertices, the
+    quads and their outside values (about half the bytes of a :class:`_Prepared`, so that
+    twice as many leaves stay cached)."""
+
+    vertices: NDArray[np.float64]
+    polys: NDArray[np.int32]
+    values: NDArray[np.float32]
+
+    @property
+    def nbytes(self) -> int:
+        return self.vertices.nbytes + self.polys.nbytes + self.values.nbytes
+
+
 @dataclass(eq=False)
 class _Runs(_Projected):
     """A large tree's clipped surface as one mesh to fill: the leaves' parts' quads in
@@ -1084,7 +1099,31 @@ class Renderer:
             primitive, lights, material, contours, eye, hidden)
         return self._prepare(bands, view_dependent, key, tiled=tiled), view_dependent
 
-    def _prepare(self, bands: BandMesh, view_dependent: bool, request: Any = None, *, tiled: bool = False) -> _Prepared:
+    def _front(
+        self, primitive: Primitive, lights: Sequence[Any], material: Any, contours: int, eye: Any, hidden: Any = None,
+    ) -> _Front:
+        """One primitive's band mesh as its front-face fill needs it (a union's leaf), cached
+        apart from the prepared meshes of per-pixel CSG (:class:`_Front`)."""
+        key: Any = ("front", primitive, tuple(lights), material, int(contours), hidden)
+        if self._by_request:
+            hit = self._prepared.get(key)
+            if hit is not None:
+                return hit[1]
+        bands, view_dependent = self._bands(primitive, lights, material, contours, eye, hidden)
+        if not self._by_request:  # another builder's meshes are known by their identity
+            key = ("front", id(bands))
+            hit = self._prepared.get(key)
+            if hit is not None and hit[0] is bands:
+                return hit[1]
+        quads, values, _ = self._prepare(bands, view_dependent, keep=False).quads()
+        front = _Front(np.ascontiguousarray(bands.vertices, dtype=np.float64), quads, values)
+        if not view_dependent:
+            self._prepared.put(key, (bands, front), front.nbytes)
+        return front
+
+    def _prepare(
+        self, bands: BandMesh, view_dependent: bool, request: Any = None, *, tiled: bool = False, keep: bool = True,
+    ) -> _Prepared:
         # View-independent meshes come back from the builder's cache as the same
         # objects: keep their converted arrays too (under the request that gave
         # them, for the default builder). View-dependent ones are new every
@@ -1108,7 +1147,7 @@ class Renderer:
                 f"triangles {triangles.shape}, value_out {value_out.shape}, value_in {value_in.shape}"
             )
         prep = _Prepared(vertices, triangles, value_out, value_in, [])
-        if not view_dependent:
+        if keep and not view_dependent:
             size = prep.tiled_nbytes if tiled else prep.nbytes
             self._prepared.put(key, (bands, prep), size + (0 if request is None else _band_bytes(bands)))
         return prep
@@ -1406,13 +1445,13 @@ class Renderer:
             if c0 < c1 and r0 < r1 and not ball_covered(zkey, r0, r1, c0, c1, float(keys[i]), float(nears[i]), ray,
                                                         centers[i], float(radii[i])):
                 t = time.perf_counter()
-                prep, _ = self._leaf(leaves[i], lights, material, int(counts[i]), cam.eye, tiled=True, hidden=hidden)
+                front = self._front(leaves[i], lights, material, int(counts[i]), cam.eye, hidden)
                 seconds += time.perf_counter() - t
-                nv = len(prep.vertices)
+                nv = len(front.vertices)
                 if proj.shape[1] < nv:
                     proj = np.empty((7, max(nv, 2 * proj.shape[1])))
-                project_kernel(prep.vertices, eye, a, b, persp, proj, 0, nv)
-                quads, quad_value = prep.quads()[:2]
+                project_kernel(front.vertices, eye, a, b, persp, proj, 0, nv)
+                quads, quad_value = front.polys, front.values
                 # Rows split between threads when the leaf is large enough to pay for the hand-over.
                 parts = max(1, min(_STRIPES, (r1 - r0) * (c1 - c0) // _UNION_SPLIT_PIXELS, r1 - r0))
                 cuts = [r0 + (r1 - r0) * k // parts for k in range(parts + 1)]
