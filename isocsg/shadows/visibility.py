@@ -24,19 +24,23 @@ project to large but finite positions; the directions lost are those within
 about ``1e-9 h / d`` of the plane through p parallel to the source, for an
 occluder at distance d from p.
 
-All of it runs compiled (numba) over many points in parallel; an occluder
+All of it runs compiled (numba), one serial kernel over strided chunks of the
+points that releases the GIL, on this thread and a small thread pool (numba's
+``NUMBA_NUM_THREADS`` threads in all); an occluder
 piece is skipped cheaply when its bounding sphere lies outside the cone of
 directions from p to S_p.
 """
 
 from __future__ import annotations
 
+import itertools
 import math
+import os
 import threading
+from concurrent.futures import ThreadPoolExecutor
 
 import numba
 import numpy as np
-from numba import prange
 from numpy.typing import NDArray
 
 from .lambert import edge_term_nb
@@ -418,23 +422,24 @@ def _evaluate(p, nr, s, s_verts, s_off, s_normal, s_u, s_w, s_q0, scale,
     return max(efull - eu, 0.0), ST_PEN
 
 
-@numba.njit(cache=True, parallel=True)
+@numba.njit(cache=True, nogil=True)
 def _kernel(P, NR, s_verts, s_off, s_normal, s_u, s_w, s_q0, s_L, s_group, ngroups, scale,
             v_verts, v_voff, v_edges, v_eoff, v_center, v_radius, group, g_off, g_idx,
-            maxpts, vmax, nchunk, E, state, overflow):
+            maxpts, vmax, nchunk, c0, c1, E, state, overflow):
+    """Points ``i`` with ``i % nchunk`` in ``[c0, c1)``: a strided share, so that each holds near and far pixels alike."""
     n = P.shape[0]
     ns = s_L.shape[0]
-    for c in prange(nchunk):
-        P2 = np.empty((vmax, 2))
-        pts = np.empty((maxpts, 2))
-        hull = np.empty((maxpts + 1, 2))
-        tmp = np.empty((vmax, 2))
-        blk = np.empty((MAXB, vmax, 2))
-        blk_n = np.empty(MAXB, dtype=np.int64)
-        stk = np.empty((MAXB + 1, vmax, 2))
-        stk_n = np.empty(MAXB + 1, dtype=np.int64)
-        stk_next = np.empty(MAXB + 1, dtype=np.int64)
-        gstat = np.empty(ngroups, dtype=np.int64)
+    P2 = np.empty((vmax, 2))
+    pts = np.empty((maxpts, 2))
+    hull = np.empty((maxpts + 1, 2))
+    tmp = np.empty((vmax, 2))
+    blk = np.empty((MAXB, vmax, 2))
+    blk_n = np.empty(MAXB, dtype=np.int64)
+    stk = np.empty((MAXB + 1, vmax, 2))
+    stk_n = np.empty(MAXB + 1, dtype=np.int64)
+    stk_next = np.empty(MAXB + 1, dtype=np.int64)
+    gstat = np.empty(ngroups, dtype=np.int64)
+    for c in range(c0, c1):
         for i in range(c, n, nchunk):
             p = P[i]
             nr = NR[i]
@@ -508,34 +513,71 @@ def visible_illuminance(
         sources.verts, sources.off, sources.normal, sources.u, sources.w, sources.q0, sources.radiance,
         sources.group, sources.ngroups, float(scale),
         pieces.verts, pieces.voff, pieces.edges, pieces.eoff, pieces.center, pieces.radius, group, g_off, g_idx,
-        pieces.maxpts, _vmax(sources, pieces), min(n, 8 * numba.get_num_threads()), E, state, overflow,
+        pieces.maxpts, _vmax(sources, pieces),
     )
-    if parallel_launch_is_threadsafe():
-        _kernel(*args)
-    else:
-        with _LAUNCH_LOCK:
-            _kernel(*args)
+    _run_chunks(args, n, E, state, overflow)
     return E, state, overflow
 
 
-# numba's "workqueue" threading layer aborts the process when two threads launch
-# parallel kernels at once; the "omp" and "tbb" layers do not. Under workqueue
-# (and until the first launch has chosen a layer) launches take turns.
-_LAUNCH_LOCK = threading.Lock()
-_THREADSAFE_LAYERS = ("omp", "tbb")
+# The kernel is serial and releases the GIL: threads run its chunks side by side. A
+# parallel (prange) kernel did the same but took 12-17 s of CPU time to compile against
+# its serial body's few seconds, and numba's "workqueue" threading layer aborts the
+# process when two threads launch parallel kernels at once; plain threads are safe
+# under every layer, so callers in thread pools and Dask workers need no lock.
+CHUNKS_PER_THREAD = 8  # strided chunks per thread: threads that fall behind take fewer
+MIN_CHUNK = 32  # points per chunk at least (a call costs tens of microseconds)
+_POOL: ThreadPoolExecutor | None = None
+_POOL_LOCK = threading.Lock()
 
 
-def parallel_launch_is_threadsafe() -> bool:
-    """Whether several threads may launch the parallel kernel at once (numba's layer is omp or tbb).
+def _threads() -> int:
+    """Threads that evaluate points: numba's ``NUMBA_NUM_THREADS`` (default: the cores)."""
+    return max(1, int(numba.config.NUMBA_NUM_THREADS))
 
-    False before the first launch (the layer is chosen then) and under the
-    ``workqueue`` layer: such launches are serialised by a lock, so callers
-    in threads (thread pools, Dask workers) are safe under every layer.
-    """
+
+def _pool(workers: int) -> ThreadPoolExecutor:
+    global _POOL
+    with _POOL_LOCK:
+        if _POOL is None:
+            _POOL = ThreadPoolExecutor(max_workers=workers, thread_name_prefix="isocsg-visibility")
+        return _POOL
+
+
+def _forget_pool() -> None:
+    # A forked child has the pool object but not its threads.
+    global _POOL, _POOL_LOCK
+    _POOL, _POOL_LOCK = None, threading.Lock()
+
+
+if hasattr(os, "register_at_fork"):
+    os.register_at_fork(after_in_child=_forget_pool)
+
+
+def _run_chunks(args: tuple, n: int, E: np.ndarray, state: np.ndarray, overflow: np.ndarray) -> None:
+    """Evaluate all points: ``nchunk`` strided chunks taken in turn by this thread and the pool's helpers."""
+    threads = _threads()
+    nchunk = max(1, min(CHUNKS_PER_THREAD * threads, n // MIN_CHUNK))
+    if threads == 1 or nchunk == 1:
+        _kernel(*args, nchunk, 0, nchunk, E, state, overflow)
+        return
+    # next() on a shared count is atomic under the GIL: each chunk is taken once.
+    counter = itertools.count()
+
+    def work() -> None:
+        for c in counter:
+            if c >= nchunk:
+                return
+            _kernel(*args, nchunk, c, c + 1, E, state, overflow)
+
+    pool = _pool(threads - 1)
+    helpers = [pool.submit(work) for _ in range(min(threads, nchunk) - 1)]
     try:
-        return numba.threading_layer() in _THREADSAFE_LAYERS
-    except ValueError:  # no parallel kernel launched yet
-        return False
+        work()
+    finally:
+        # Helpers still queued (the pool busy with other callers' chunks) are not waited for.
+        for h in helpers:
+            if not h.cancel():
+                h.result()
 
 
 def _all_pieces(n: int, pieces: PieceArrays) -> tuple[NDArray[np.int64], NDArray[np.int64], NDArray[np.int64]]:
