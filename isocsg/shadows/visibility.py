@@ -183,12 +183,43 @@ def _cross(o0: float, o1: float, a0: float, a1: float, b0: float, b1: float) -> 
 
 
 @numba.njit(cache=True)
+def _order_xy(pts: np.ndarray, n: int) -> np.ndarray:
+    """Indices of pts[:n] by x, then y, then index: a stable bottom-up merge sort.
+
+    The order of two stable argsorts (by y, then by x), written out: numba's
+    generic argsort took 2 s of the kernel's compilation.
+    """
+    o = np.empty(n, dtype=np.int64)
+    t = np.empty(n, dtype=np.int64)
+    for k in range(n):
+        o[k] = k
+    width = 1
+    while width < n:
+        for lo in range(0, n, 2 * width):
+            mid = min(lo + width, n)
+            hi = min(lo + 2 * width, n)
+            a = lo
+            b = mid
+            for k in range(lo, hi):
+                # take from the right run only when strictly before: ties keep their order
+                if a < mid and (b >= hi or not (pts[o[b], 0] < pts[o[a], 0]
+                                                or (pts[o[b], 0] == pts[o[a], 0] and pts[o[b], 1] < pts[o[a], 1]))):
+                    t[k] = o[a]
+                    a += 1
+                else:
+                    t[k] = o[b]
+                    b += 1
+        o, t = t, o
+        width *= 2
+    return o
+
+
+@numba.njit(cache=True)
 def _hull(pts: np.ndarray, n: int, hull: np.ndarray) -> int:
     """Counter-clockwise convex hull (Andrew's monotone chain) of pts[:n]; returns its size."""
     if n < 3:
         return 0
-    o1 = np.argsort(pts[:n, 1], kind="mergesort")
-    o = o1[np.argsort(pts[o1, 0], kind="mergesort")]
+    o = _order_xy(pts, n)
     k = 0
     for ii in range(n):
         i = o[ii]
@@ -238,7 +269,7 @@ def _source_polygon(p, nr, s, s_verts, s_off, s_normal, s_u, s_w, s_q0, scale, P
     # 3D Sutherland-Hodgman against the receiving plane, written straight into 2D coordinates
     a0 = s_off[s]
     m = s_off[s + 1] - a0
-    cnt = 0
+    cnt = np.int64(0)  # not the literal 0: calls typed with it would compile a second, literal specialisation
     u = s_u[s]
     w = s_w[s]
     for k in range(m):
@@ -317,7 +348,7 @@ def _blockers(p, nr, s, h, P2, n2, A0, s_normal, s_u, s_w, s_q0,
             if ang - math.asin(r / dist) > theta_s + 1e-9:
                 continue
         # project the vertices of V n slab
-        npt = 0
+        npt = np.int64(0)  # (as cnt in _source_polygon)
         vb = v_voff[j]
         ve = v_voff[j + 1]
         for k in range(vb, ve):
@@ -338,7 +369,8 @@ def _blockers(p, nr, s, h, P2, n2, A0, s_normal, s_u, s_w, s_q0,
             xb = v_verts[vb + v_edges[e, 1]]
             sa = N[0] * (xa[0] - q0[0]) + N[1] * (xa[1] - q0[1]) + N[2] * (xa[2] - q0[2])
             sb = N[0] * (xb[0] - q0[0]) + N[1] * (xb[1] - q0[1]) + N[2] * (xb[2] - q0[2])
-            for lev in (0.0, htop):
+            for side in range(2):  # the two slab planes
+                lev = 0.0 if side == 0 else htop
                 if (sa < lev and sb > lev) or (sa > lev and sb < lev):
                     t = (lev - sa) / (sb - sa)
                     x0 = xa[0] + t * (xb[0] - xa[0]) - q0[0]
