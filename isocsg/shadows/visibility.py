@@ -556,7 +556,7 @@ def visible_illuminance(
 # its serial body's few seconds, and numba's "workqueue" threading layer aborts the
 # process when two threads launch parallel kernels at once; plain threads are safe
 # under every layer, so callers in thread pools and Dask workers need no lock.
-CHUNKS_PER_THREAD = 8  # strided chunks per thread: threads that fall behind take fewer
+CHUNKS_PER_THREAD = 4  # strided chunks per thread: a thread that falls behind (a busy core) takes fewer
 MIN_CHUNK = 32  # points per chunk at least (a call costs tens of microseconds)
 _POOL: ThreadPoolExecutor | None = None
 _POOL_LOCK = threading.Lock()
