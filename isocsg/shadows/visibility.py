@@ -552,10 +552,10 @@ def visible_illuminance(
 
 
 # The kernel is serial and releases the GIL: threads run its chunks side by side. A
-# parallel (prange) kernel did the same but took 12-17 s of CPU time to compile against
-# its serial body's few seconds, and numba's "workqueue" threading layer aborts the
-# process when two threads launch parallel kernels at once; plain threads are safe
-# under every layer, so callers in thread pools and Dask workers need no lock.
+# parallel (prange) kernel did the same but took 2 s more CPU time to compile, and
+# numba's "workqueue" threading layer aborts the process when two threads launch
+# parallel kernels at once; plain threads are safe under every layer, so callers in
+# thread pools and Dask workers need no lock.
 CHUNKS_PER_THREAD = 4  # strided chunks per thread: a thread that falls behind (a busy core) takes fewer
 MIN_CHUNK = 32  # points per chunk at least (a call costs tens of microseconds)
 _POOL: ThreadPoolExecutor | None = None
