@@ -458,7 +458,7 @@ def _evaluate(p, nr, s, s_verts, s_off, s_normal, s_u, s_w, s_q0, scale,
 def _kernel(P, NR, s_verts, s_off, s_normal, s_u, s_w, s_q0, s_L, s_group, ngroups, scale,
             v_verts, v_voff, v_edges, v_eoff, v_center, v_radius, group, g_off, g_idx,
             maxpts, vmax, nchunk, c0, c1, E, state, overflow):
-    """Points ``i`` with ``i % nchunk`` in ``[c0, c1)``: a strided share, so that each holds near and far pixels alike."""
+    """Points ``i`` with ``i % nchunk`` in ``[c0, c1)``: strided, so each share holds near and far pixels alike."""
     n = P.shape[0]
     ns = s_L.shape[0]
     P2 = np.empty((vmax, 2))
@@ -557,7 +557,7 @@ def visible_illuminance(
 # parallel kernels at once; plain threads are safe under every layer, so callers in
 # thread pools and Dask workers need no lock.
 CHUNKS_PER_THREAD = 4  # strided chunks per thread: a thread that falls behind (a busy core) takes fewer
-MIN_CHUNK = 32  # points per chunk at least (a call costs tens of microseconds)
+MIN_CHUNK = 32  # points per chunk at least (each call allocates its scratch buffers afresh)
 _POOL: ThreadPoolExecutor | None = None
 _POOL_LOCK = threading.Lock()
 
@@ -594,10 +594,11 @@ def _run_chunks(args: tuple, n: int, E: np.ndarray, state: np.ndarray, overflow:
         return
     # next() on a shared count is atomic under the GIL: each chunk is taken once.
     counter = itertools.count()
+    stop = [False]  # set when this thread leaves (an exception here): helpers take no more chunks
 
     def work() -> None:
         for c in counter:
-            if c >= nchunk:
+            if c >= nchunk or stop[0]:
                 return
             _kernel(*args, nchunk, c, c + 1, E, state, overflow)
 
@@ -606,6 +607,7 @@ def _run_chunks(args: tuple, n: int, E: np.ndarray, state: np.ndarray, overflow:
     try:
         work()
     finally:
+        stop[0] = True
         # Helpers still queued (the pool busy with other callers' chunks) are not waited for.
         for h in helpers:
             if not h.cancel():
