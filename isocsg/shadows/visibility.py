@@ -24,11 +24,11 @@ project to large but finite positions; the directions lost are those within
 about ``1e-9 h / d`` of the plane through p parallel to the source, for an
 occluder at distance d from p.
 
-All of it runs compiled (numba), one serial kernel over strided chunks of the
-points that releases the GIL, on this thread and a small thread pool (numba's
-``NUMBA_NUM_THREADS`` threads in all); an occluder
-piece is skipped cheaply when its bounding sphere lies outside the cone of
-directions from p to S_p.
+All of it runs compiled (numba): one serial kernel that releases the GIL,
+over strided chunks of the points, on this thread and a small thread pool
+(numba's ``NUMBA_NUM_THREADS`` threads in all). An occluder piece is skipped
+cheaply when its bounding sphere lies outside the cone of directions from p
+to S_p.
 """
 
 from __future__ import annotations
