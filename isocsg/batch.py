@@ -11,8 +11,9 @@ equal to the serial ones: every view and every node is computed by the same
 code as :func:`isocsg.render.render` and
 :func:`isocsg.shadows.luxmap.illuminance_map`.
 
-Threads are safe under every numba threading layer: the compiled kernels'
-launches take turns where the layer needs it (``workqueue``).
+Threads are safe under every numba threading layer: no compiled kernel on
+these paths is a parallel (``prange``) one, whose concurrent launches abort
+under ``workqueue``.
 """
 
 from __future__ import annotations

@@ -1,8 +1,9 @@
 """Callers in threads are safe under every numba threading layer.
 
 numba's ``workqueue`` layer aborts the whole process when two threads launch
-parallel kernels at once; the illuminance kernel serialises its launches
-there. Each layer runs in a child process (a process chooses its layer once).
+parallel kernels at once. The illuminance kernel is serial and runs on plain
+threads: it launches no parallel kernel, whichever layer is asked for. Each
+layer runs in a child process (a process chooses its layer once).
 """
 
 from __future__ import annotations
@@ -34,7 +35,11 @@ SCRIPT = textwrap.dedent(
     serial = [illuminance(p, (0, 0, 1), [lamp], occ) for p in chunks]
     assert all(np.array_equal(a, b) for a, b in zip(threaded, serial))
     assert all((a > 0).any() and (a == 0).any() for a in serial)  # lit and umbra nodes in each chunk
-    print("layer", numba.threading_layer())
+    try:
+        layer = numba.threading_layer()
+    except ValueError:  # no parallel kernel was launched
+        layer = "none"
+    print("layer", layer)
     """
 )
 
@@ -43,7 +48,5 @@ SCRIPT = textwrap.dedent(
 def test_threaded_callers_do_not_abort(layer: str) -> None:
     env = dict(os.environ, NUMBA_THREADING_LAYER=layer, PYTHONPATH=str(ROOT))
     proc = subprocess.run([sys.executable, "-c", SCRIPT], env=env, capture_output=True, text=True, timeout=600)
-    if layer != "workqueue" and proc.returncode != 0 and "No threading layer could be loaded" in proc.stderr:
-        pytest.skip(f"numba's {layer} layer is not available here")
     assert proc.returncode == 0, proc.stderr[-2000:]
-    assert proc.stdout.split() == ["layer", layer]
+    assert proc.stdout.split() == ["layer", "none"]

@@ -24,19 +24,23 @@ project to large but finite positions; the directions lost are those within
 about ``1e-9 h / d`` of the plane through p parallel to the source, for an
 occluder at distance d from p.
 
-All of it runs compiled (numba) over many points in parallel; an occluder
-piece is skipped cheaply when its bounding sphere lies outside the cone of
-directions from p to S_p.
+All of it runs compiled (numba): one serial kernel that releases the GIL,
+over strided chunks of the points, on this thread and a small thread pool
+(numba's ``NUMBA_NUM_THREADS`` threads in all). An occluder piece is skipped
+cheaply when its bounding sphere lies outside the cone of directions from p
+to S_p.
 """
 
 from __future__ import annotations
 
+import itertools
 import math
+import os
 import threading
+from concurrent.futures import ThreadPoolExecutor
 
 import numba
 import numpy as np
-from numba import prange
 from numpy.typing import NDArray
 
 from .lambert import edge_term_nb
@@ -179,12 +183,43 @@ def _cross(o0: float, o1: float, a0: float, a1: float, b0: float, b1: float) -> 
 
 
 @numba.njit(cache=True)
+def _order_xy(pts: np.ndarray, n: int) -> np.ndarray:
+    """Indices of pts[:n] by x, then y, then index: a stable bottom-up merge sort.
+
+    The order of two stable argsorts (by y, then by x), written out: numba's
+    generic argsort took 2 s of the kernel's compilation.
+    """
+    o = np.empty(n, dtype=np.int64)
+    t = np.empty(n, dtype=np.int64)
+    for k in range(n):
+        o[k] = k
+    width = 1
+    while width < n:
+        for lo in range(0, n, 2 * width):
+            mid = min(lo + width, n)
+            hi = min(lo + 2 * width, n)
+            a = lo
+            b = mid
+            for k in range(lo, hi):
+                # take from the right run only when strictly before: ties keep their order
+                if a < mid and (b >= hi or not (pts[o[b], 0] < pts[o[a], 0]
+                                                or (pts[o[b], 0] == pts[o[a], 0] and pts[o[b], 1] < pts[o[a], 1]))):
+                    t[k] = o[a]
+                    a += 1
+                else:
+                    t[k] = o[b]
+                    b += 1
+        o, t = t, o
+        width *= 2
+    return o
+
+
+@numba.njit(cache=True)
 def _hull(pts: np.ndarray, n: int, hull: np.ndarray) -> int:
     """Counter-clockwise convex hull (Andrew's monotone chain) of pts[:n]; returns its size."""
     if n < 3:
         return 0
-    o1 = np.argsort(pts[:n, 1], kind="mergesort")
-    o = o1[np.argsort(pts[o1, 0], kind="mergesort")]
+    o = _order_xy(pts, n)
     k = 0
     for ii in range(n):
         i = o[ii]
@@ -234,7 +269,7 @@ def _source_polygon(p, nr, s, s_verts, s_off, s_normal, s_u, s_w, s_q0, scale, P
     # 3D Sutherland-Hodgman against the receiving plane, written straight into 2D coordinates
     a0 = s_off[s]
     m = s_off[s + 1] - a0
-    cnt = 0
+    cnt = np.int64(0)  # not the literal 0: calls typed with it would compile a second, literal specialisation
     u = s_u[s]
     w = s_w[s]
     for k in range(m):
@@ -313,7 +348,7 @@ def _blockers(p, nr, s, h, P2, n2, A0, s_normal, s_u, s_w, s_q0,
             if ang - math.asin(r / dist) > theta_s + 1e-9:
                 continue
         # project the vertices of V n slab
-        npt = 0
+        npt = np.int64(0)  # (as cnt in _source_polygon)
         vb = v_voff[j]
         ve = v_voff[j + 1]
         for k in range(vb, ve):
@@ -334,7 +369,8 @@ def _blockers(p, nr, s, h, P2, n2, A0, s_normal, s_u, s_w, s_q0,
             xb = v_verts[vb + v_edges[e, 1]]
             sa = N[0] * (xa[0] - q0[0]) + N[1] * (xa[1] - q0[1]) + N[2] * (xa[2] - q0[2])
             sb = N[0] * (xb[0] - q0[0]) + N[1] * (xb[1] - q0[1]) + N[2] * (xb[2] - q0[2])
-            for lev in (0.0, htop):
+            for side in range(2):  # the two slab planes
+                lev = 0.0 if side == 0 else htop
                 if (sa < lev and sb > lev) or (sa > lev and sb < lev):
                     t = (lev - sa) / (sb - sa)
                     x0 = xa[0] + t * (xb[0] - xa[0]) - q0[0]
@@ -418,23 +454,24 @@ def _evaluate(p, nr, s, s_verts, s_off, s_normal, s_u, s_w, s_q0, scale,
     return max(efull - eu, 0.0), ST_PEN
 
 
-@numba.njit(cache=True, parallel=True)
+@numba.njit(cache=True, nogil=True)
 def _kernel(P, NR, s_verts, s_off, s_normal, s_u, s_w, s_q0, s_L, s_group, ngroups, scale,
             v_verts, v_voff, v_edges, v_eoff, v_center, v_radius, group, g_off, g_idx,
-            maxpts, vmax, nchunk, E, state, overflow):
+            maxpts, vmax, nchunk, c0, c1, E, state, overflow):
+    """Points ``i`` with ``i % nchunk`` in ``[c0, c1)``: strided, so each share holds near and far pixels alike."""
     n = P.shape[0]
     ns = s_L.shape[0]
-    for c in prange(nchunk):
-        P2 = np.empty((vmax, 2))
-        pts = np.empty((maxpts, 2))
-        hull = np.empty((maxpts + 1, 2))
-        tmp = np.empty((vmax, 2))
-        blk = np.empty((MAXB, vmax, 2))
-        blk_n = np.empty(MAXB, dtype=np.int64)
-        stk = np.empty((MAXB + 1, vmax, 2))
-        stk_n = np.empty(MAXB + 1, dtype=np.int64)
-        stk_next = np.empty(MAXB + 1, dtype=np.int64)
-        gstat = np.empty(ngroups, dtype=np.int64)
+    P2 = np.empty((vmax, 2))
+    pts = np.empty((maxpts, 2))
+    hull = np.empty((maxpts + 1, 2))
+    tmp = np.empty((vmax, 2))
+    blk = np.empty((MAXB, vmax, 2))
+    blk_n = np.empty(MAXB, dtype=np.int64)
+    stk = np.empty((MAXB + 1, vmax, 2))
+    stk_n = np.empty(MAXB + 1, dtype=np.int64)
+    stk_next = np.empty(MAXB + 1, dtype=np.int64)
+    gstat = np.empty(ngroups, dtype=np.int64)
+    for c in range(c0, c1):
         for i in range(c, n, nchunk):
             p = P[i]
             nr = NR[i]
@@ -508,34 +545,73 @@ def visible_illuminance(
         sources.verts, sources.off, sources.normal, sources.u, sources.w, sources.q0, sources.radiance,
         sources.group, sources.ngroups, float(scale),
         pieces.verts, pieces.voff, pieces.edges, pieces.eoff, pieces.center, pieces.radius, group, g_off, g_idx,
-        pieces.maxpts, _vmax(sources, pieces), min(n, 8 * numba.get_num_threads()), E, state, overflow,
+        pieces.maxpts, _vmax(sources, pieces),
     )
-    if parallel_launch_is_threadsafe():
-        _kernel(*args)
-    else:
-        with _LAUNCH_LOCK:
-            _kernel(*args)
+    _run_chunks(args, n, E, state, overflow)
     return E, state, overflow
 
 
+# The kernel is serial and releases the GIL: threads run its chunks side by side. A
+# parallel (prange) kernel did the same but took 2 s more CPU time to compile, and
 # numba's "workqueue" threading layer aborts the process when two threads launch
-# parallel kernels at once; the "omp" and "tbb" layers do not. Under workqueue
-# (and until the first launch has chosen a layer) launches take turns.
-_LAUNCH_LOCK = threading.Lock()
-_THREADSAFE_LAYERS = ("omp", "tbb")
+# parallel kernels at once; plain threads are safe under every layer, so callers in
+# thread pools and Dask workers need no lock.
+CHUNKS_PER_THREAD = 4  # strided chunks per thread: a thread that falls behind (a busy core) takes fewer
+MIN_CHUNK = 32  # points per chunk at least (each call allocates its scratch buffers afresh)
+_POOL: ThreadPoolExecutor | None = None
+_POOL_LOCK = threading.Lock()
 
 
-def parallel_launch_is_threadsafe() -> bool:
-    """Whether several threads may launch the parallel kernel at once (numba's layer is omp or tbb).
+def _threads() -> int:
+    """Threads that evaluate points: numba's ``NUMBA_NUM_THREADS`` (default: the cores)."""
+    return max(1, int(numba.config.NUMBA_NUM_THREADS))
 
-    False before the first launch (the layer is chosen then) and under the
-    ``workqueue`` layer: such launches are serialised by a lock, so callers
-    in threads (thread pools, Dask workers) are safe under every layer.
-    """
+
+def _pool(workers: int) -> ThreadPoolExecutor:
+    global _POOL
+    with _POOL_LOCK:
+        if _POOL is None:
+            _POOL = ThreadPoolExecutor(max_workers=workers, thread_name_prefix="isocsg-visibility")
+        return _POOL
+
+
+def _forget_pool() -> None:
+    # A forked child has the pool object but not its threads.
+    global _POOL, _POOL_LOCK
+    _POOL, _POOL_LOCK = None, threading.Lock()
+
+
+if hasattr(os, "register_at_fork"):
+    os.register_at_fork(after_in_child=_forget_pool)
+
+
+def _run_chunks(args: tuple, n: int, E: np.ndarray, state: np.ndarray, overflow: np.ndarray) -> None:
+    """Evaluate all points: ``nchunk`` strided chunks taken in turn by this thread and the pool's helpers."""
+    threads = _threads()
+    nchunk = max(1, min(CHUNKS_PER_THREAD * threads, n // MIN_CHUNK))
+    if threads == 1 or nchunk == 1:
+        _kernel(*args, nchunk, 0, nchunk, E, state, overflow)
+        return
+    # next() on a shared count is atomic under the GIL: each chunk is taken once.
+    counter = itertools.count()
+    stop = [False]  # set when this thread leaves (an exception here): helpers take no more chunks
+
+    def work() -> None:
+        for c in counter:
+            if c >= nchunk or stop[0]:
+                return
+            _kernel(*args, nchunk, c, c + 1, E, state, overflow)
+
+    pool = _pool(threads - 1)
+    helpers = [pool.submit(work) for _ in range(min(threads, nchunk) - 1)]
     try:
-        return numba.threading_layer() in _THREADSAFE_LAYERS
-    except ValueError:  # no parallel kernel launched yet
-        return False
+        work()
+    finally:
+        stop[0] = True
+        # Helpers still queued (the pool busy with other callers' chunks) are not waited for.
+        for h in helpers:
+            if not h.cancel():
+                h.result()
 
 
 def _all_pieces(n: int, pieces: PieceArrays) -> tuple[NDArray[np.int64], NDArray[np.int64], NDArray[np.int64]]:
