@@ -852,7 +852,7 @@ def surface_from_bands(
         v, t, src = _trim_to_box((np.asarray(bm.vertices, np.float64) - centre) / half,
                                  np.asarray(bm.triangles, np.int64), lo, hi)
         # Welded below, once the budget is known to allow it. Kept whenever the box cut
-        # something away, even with as many triangles left: a leaf's parts that no view
+        # something away, even with as many triangles left or more: a leaf's parts that no view
         # can show may come uncut (``build_bands(hidden=...)``), and cut away they make
         # the same trimmed mesh as its fully cut bands would.
         if len(t) != len(bm.triangles) or not np.array_equal(src, np.arange(len(t))):
@@ -1095,7 +1095,7 @@ def _booleans(
 def _malloc_trim() -> Callable[[int], int] | None:
     try:
         return ctypes.CDLL(None).malloc_trim  # glibc
-    except (AttributeError, OSError):
+    except (AttributeError, OSError, TypeError):  # another C library, or no CDLL(None) (Windows)
         return None
 
 
