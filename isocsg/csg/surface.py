@@ -40,7 +40,9 @@ keeps its part outside them.
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+import ctypes
+import functools
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
@@ -79,8 +81,11 @@ _ON_EDGE_ULPS = 64.0
 #: which a regularised boundary cannot have; both sides are dropped).
 COINCIDENT_DISTANCE = 1e-9
 #: Peak working memory of the Booleans per band triangle that enters manifold3d
-#: (measured: manifold3d's half-edge meshes of the operands and the result, the
-#: Mesh64 copies and the output arrays), and per triangle passed through unchanged.
+#: (manifold3d's half-edge meshes of the operands and the result, the Mesh64
+#: copies and the output arrays; measured on the 1000-hole plate's slabs of about
+#: 310 k trimmed triangles: 540 to 1100 bytes each, from a slab's first solid to
+#: the next slab, more where more of the input is kept), and per triangle passed
+#: through unchanged.
 BYTES_PER_BOOLEAN_TRIANGLE = 1200
 BYTES_PER_PLAIN_TRIANGLE = 200
 
@@ -846,7 +851,11 @@ def surface_from_bands(
         bm = bands[i]
         v, t, src = _trim_to_box((np.asarray(bm.vertices, np.float64) - centre) / half,
                                  np.asarray(bm.triangles, np.int64), lo, hi)
-        if len(t) < len(bm.triangles):  # welded below, once the budget is known to allow it
+        # Welded below, once the budget is known to allow it. Kept whenever the box cut
+        # something away, even with as many triangles left or more: a leaf's parts that no view
+        # can show may come uncut (``build_bands(hidden=...)``), and cut away they make
+        # the same trimmed mesh as its fully cut bands would.
+        if len(t) != len(bm.triangles) or not np.array_equal(src, np.arange(len(t))):
             trimmed[i] = (v, t, src)
     size = [len(trimmed[i][1]) if i in trimmed else len(b.triangles) for i, b in enumerate(bands)]
     n_bool = sum(size[i] for i in boolean_leaves)
@@ -882,12 +891,15 @@ def surface_from_bands(
 
     closed: dict[int, tuple[NDArray[np.float64], NDArray[np.int64], NDArray[np.int64], bool]] = {}
 
-    def weld(i: int) -> tuple[NDArray[np.float64], NDArray[np.int64], NDArray[np.int64], bool]:
+    def weld(i: int, keep: bool = True) -> tuple[NDArray[np.float64], NDArray[np.int64], NDArray[np.int64], bool]:
         bm = bands[i]
         key = id(bm)  # a repeated leaf shares its band mesh: weld it once
-        if key not in closed:
-            closed[key] = _close(bm.vertices, bm.triangles)
-        return closed[key]
+        if key in closed:
+            return closed[key] if keep else closed.pop(key)
+        out = _close(bm.vertices, bm.triangles)
+        if keep:
+            closed[key] = out
+        return out
 
     pieces: list[tuple[Any, ...]] = []
     for k, c in enumerate(final):
@@ -937,9 +949,13 @@ def _booleans(
             return built[-1 - ref]
         if ref not in leaf_solid:
             if ref in trimmed:
-                v, t, src = trimmed[ref]  # already in the local frame
+                # Already in the local frame; not needed once its solid exists (a leaf's
+                # solid is kept for all the Booleans that take it).
+                v, t, src = trimmed.pop(ref)
             else:
-                v, t, src, _ = weld(ref)
+                # Welded for this solid only when the Booleans run one result at a time
+                # (its solid is kept while a Boolean still takes it).
+                v, t, src, _ = weld(ref, not one_at_a_time)
                 v = (v - centre) / half
             mesh = m3.Mesh64(
                 vert_properties=np.ascontiguousarray(v),
@@ -1005,11 +1021,11 @@ def _booleans(
         for r in refs:
             release(r)
 
+    # The band triangles each trimmed leaf brings into the Booleans (the others: all of theirs).
+    subset = {i: np.unique(trimmed[i][2]) for i in trimmed}
     if not one_at_a_time:
         for k in np.flatnonzero(needed).tolist():
             build(k)
-    # The band triangles each trimmed leaf brings into the Booleans (the others: all of theirs).
-    subset = {i: np.unique(trimmed[i][2]) for i in trimmed}
     shared = _shared_planes(bands, sorted({x for m in members.values() for x in m}), centre, half, subset)
     pieces = []
     for c in final:
@@ -1067,8 +1083,35 @@ def _booleans(
                 keep = np.flatnonzero(~drop)
                 tris, leaf, face, g = tris[keep], leaf[origin[keep]], face[origin[keep]], g[origin[keep]]
         rev = np.einsum("ij,ij->i", _triangle_normals(verts, tris), normals[g]) < 0
-        pieces.append((verts * half + centre, tris, leaf, face, rev, np.where(rev, vin[g], vout[g])))
+        pieces.append((verts * half + centre, tris.astype(np.int32), leaf, face.astype(np.int32), rev,
+                       np.where(rev, vin[g], vout[g])))
+        del verts, tris, leaf, face, rev, g, normals, vin, vout
+        if one_at_a_time:
+            _release_freed_memory()
     return pieces
+
+
+@functools.cache
+def _malloc_trim() -> Callable[[int], int] | None:
+    try:
+        return ctypes.CDLL(None).malloc_trim  # glibc
+    except (AttributeError, OSError, TypeError):  # another C library, or no CDLL(None) (Windows)
+        return None
+
+
+def _release_freed_memory() -> None:
+    """Give the heap memory freed so far back to the system, where the C library allows it (glibc).
+
+    manifold3d allocates on its worker threads, whose malloc arenas keep what
+    a Boolean frees; a build that runs its Booleans one result at a time
+    (slabs) would otherwise hold every slab's working memory beside the next
+    one's: the 1000-hole plate's build in ten slabs grew from 0.76 to 1.10 GB
+    resident with 0.74 GB in use, and the renderer's arrays made from the
+    surface came on top of that.
+    """
+    trim = _malloc_trim()
+    if trim is not None:
+        trim(0)
 
 
 def _shared_planes(
@@ -1077,9 +1120,17 @@ def _shared_planes(
 ) -> dict[int, NDArray[np.bool_]]:
     """For each of ``leaves``, which band triangles (those of ``subset[leaf]`` where given, in
     its order) lie in a plane (either orientation) that a band triangle of another of
-    ``leaves`` lies in too: only there can faces coincide."""
-    keys, owner, flat = [], [], []
+    ``leaves`` lies in too: only there can faces coincide.
+
+    Leaf by leaf: a leaf's triangles lie in few planes (a faceted hole in one per facet), so
+    only each leaf's distinct plane keys are gathered, and the working memory stays in
+    proportion to the planes, not to the triangles of all the leaves at once.
+    """
     subset = {} if subset is None else subset
+    # Per leaf and per rounding of the offset: its distinct planes, and each triangle's among them.
+    distinct: list[list[NDArray[np.int64]]] = [[], []]
+    which: dict[int, list[NDArray[np.int32]]] = {}
+    flat: dict[int, NDArray[np.bool_]] = {}
     for i in leaves:
         v = (np.asarray(bands[i].vertices, np.float64) - centre) / half
         t = np.asarray(bands[i].triangles, np.int64)
@@ -1095,26 +1146,29 @@ def _shared_planes(
         sign = np.where(lead < 0, -1.0, 1.0)
         q *= sign[:, None]
         d = np.einsum("ij,ij->i", n, v[t[:, 0]]) * sign * 2.0**30
-        keys.append(np.column_stack([q, np.floor(d), np.floor(d + 0.5)]).astype(np.int64))
-        flat.append(ok)
-        owner.append(np.full(len(t), i, np.int64))
-    allk = np.vstack(keys) if keys else np.zeros((0, 5), np.int64)
-    who = np.concatenate(owner) if owner else np.zeros(0, np.int64)
-    shared = np.zeros(len(allk), bool)
-    degenerate = ~np.concatenate(flat) if flat else np.zeros(0, bool)
-    for col in (3, 4):  # two roundings of the offset: planes closer than a step share one
-        rows = np.ascontiguousarray(np.column_stack([allk[:, :3], allk[:, col], who]))
-        kv = rows.view(np.dtype((np.void, 40))).ravel()
-        _, first, inv = np.unique(kv, return_index=True, return_inverse=True)
-        plane_rows = np.ascontiguousarray(rows[first, :4]).view(np.dtype((np.void, 32))).ravel()
-        _, pinv, pcount = np.unique(plane_rows, return_inverse=True, return_counts=True)
-        # pcount: how many distinct leaves have this plane
-        shared |= (pcount[pinv] > 1)[inv.reshape(-1)]
-    shared[degenerate] = False  # no plane
-    out, start = {}, 0
-    for i, k in zip(leaves, keys):
-        out[i] = shared[start : start + len(k)]
-        start += len(k)
+        which[i] = []
+        for col, off in enumerate((np.floor(d), np.floor(d + 0.5))):  # planes closer than a step share one
+            rows = np.ascontiguousarray(np.column_stack([q, off]).astype(np.int64))
+            _, first, inv = np.unique(rows.view(np.dtype((np.void, 32))).ravel(), return_index=True,
+                                      return_inverse=True)
+            distinct[col].append(rows[first])
+            which[i].append(inv.reshape(-1).astype(np.int32))
+        flat[i] = ok
+    out = {i: np.zeros(len(flat[i]), bool) for i in leaves}
+    for col in (0, 1):
+        if not distinct[col]:
+            continue
+        # How many leaves have each plane (each leaf's planes are distinct).
+        allp = np.ascontiguousarray(np.vstack(distinct[col]))
+        _, pinv, pcount = np.unique(allp.view(np.dtype((np.void, 32))).ravel(), return_inverse=True,
+                                    return_counts=True)
+        many = pcount[pinv.reshape(-1)] > 1
+        start = 0
+        for i, planes in zip(leaves, distinct[col]):
+            out[i] |= many[start : start + len(planes)][which[i][col]]
+            start += len(planes)
+    for i in leaves:
+        out[i] &= flat[i]  # a degenerate triangle has no plane
     return out
 
 
@@ -1338,7 +1392,8 @@ def _cancel_partial_overlaps(
 
 
 def _assemble(pieces: list[tuple[Any, ...]]) -> CSGSurface:
-    """One surface from its pieces (vertices, triangles, leaf, source, reversed, value), filled in place."""
+    """One surface from its pieces (vertices, triangles, leaf, source, reversed, value), filled in
+    place; each piece is let go once copied (``pieces`` is left holding empty tuples)."""
     if not pieces:
         return _empty()
     nv = np.cumsum([0] + [len(p[0]) for p in pieces])
@@ -1351,11 +1406,14 @@ def _assemble(pieces: list[tuple[Any, ...]]) -> CSGSurface:
     source = np.empty(nt[-1], np.int32)
     rev = np.empty(nt[-1], bool)
     value = np.empty(nt[-1])
-    for k, p in enumerate(pieces):
+    for k in range(len(pieces)):
+        p = pieces[k]
+        pieces[k] = ()  # each piece goes once copied (the list is the caller's, and goes next)
         a, b = nt[k], nt[k + 1]
         verts[nv[k] : nv[k + 1]] = p[0]
         np.add(p[1], nv[k], out=tris[a:b], casting="unsafe")
         leaf[a:b], source[a:b], rev[a:b], value[a:b] = p[2], p[3], p[4], p[5]
+        del p
     return CSGSurface(verts, tris, value, leaf, source, rev)
 
 

@@ -45,7 +45,7 @@ from numpy.typing import NDArray
 
 from .._validation import integer, light_budget
 from ..camera import Camera
-from ..csg.surface import BYTES_PER_BOOLEAN_TRIANGLE, surface_from_bands, untrimmed_groups
+from ..csg.surface import BYTES_PER_BOOLEAN_TRIANGLE, _release_freed_memory, surface_from_bands, untrimmed_groups
 from ..csg.program import OP_LEAF, OP_UNION, Program, evaluate_mask
 from ..csg.tree import CSGNode
 from ..errors import InvalidGeometryError, InvalidParameterError, ResourceLimitError
@@ -999,13 +999,20 @@ class Renderer:
             # untrimmable part alone is over the bound (a union of many overlapping
             # leaves) is given up before the rest of its bands is asked for.
             geom = leaf_geometry(leaves)
+            # The parts of a leaf beyond the object's box (a hole's ends) cannot be on the
+            # result's boundary: they are built uncut (a few triangles instead of their bands)
+            # and then trimmed away or kept as they are, and these bands are kept by no cache.
+            hidden = None
+            if self._by_request:
+                lo, hi = combine_boxes(program.op, program.arg, geom.lo, geom.hi)
+                hidden = (tuple(lo.tolist()), tuple(hi.tolist()))
             most = LARGE_SURFACE_SHARE * memory_budget() / BYTES_PER_BOOLEAN_TRIANGLE
             built: dict[int, tuple[BandMesh, bool]] = {}
             for group in untrimmed_groups(program, geom.lo, geom.hi):
                 n_tri = 0
                 for k, i in enumerate(group, 1):
                     if i not in built:
-                        built[i] = self._bands(leaves[i], lights, material, codes[i], eye)
+                        built[i] = self._bands(leaves[i], lights, material, codes[i], eye, hidden)
                     n_tri += len(built[i][0].triangles)
                     # Over the bound, or clearly bound to be at this rate (four times over
                     # after a sample of eight leaves): given up without the rest.
@@ -1013,20 +1020,24 @@ class Renderer:
                         raise ResourceLimitError(f"{n_tri} band triangles of {k} leaves in one Boolean, over the bound")
             for i in range(len(leaves)):
                 if i not in built:
-                    built[i] = self._bands(leaves[i], lights, material, codes[i], eye)
+                    built[i] = self._bands(leaves[i], lights, material, codes[i], eye, hidden)
             if any(vd for _, vd in built.values()):
                 raise InvalidGeometryError("view-dependent bands")
             bands = [built[i][0] for i in range(len(leaves))]
             del built
             surface = surface_from_bands(program, bands, trim=True,
                                          max_bytes=int(LARGE_SURFACE_SHARE * memory_budget()))
+            del bands  # no cache holds them: gone before the parts below are made
         except (InvalidGeometryError, ResourceLimitError):
             with self._surface_lock:  # too large, or bands that do not close: per pixel from now on
                 self._surfaces.put(key, (counts, None), 64)
             return
-        runs = _Runs.of([(int(i), self._prepare(surface.leaf_bands(int(i)), True))
-                         for i in np.unique(surface.leaf)])
+        parts = [(int(i), self._prepare(surface.leaf_bands(int(i)), True)) for i in np.unique(surface.leaf)]
         del surface
+        runs = _Runs.of(parts)
+        del parts
+        # What the parts and the Booleans freed goes back to the system before any view runs.
+        _release_freed_memory()
         runs.proj(_STRIPES - 1)  # pages touched here, not by the first view that fills it
         for scratch in runs.projs:
             scratch.fill(0.0)
