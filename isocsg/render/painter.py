@@ -61,8 +61,8 @@ from .raster import (
 )
 from .scratch import SCRATCH
 from .tiles import (
-    LEAF_PIXEL_BYTES, LeafGeometry, clip_leaves, combine_boxes, combine_rects, leaf_geometry, leaf_near_keys,
-    leaf_rects, leaf_screen_sizes, open_tile_pixels, plan_tiles, tile_leaves,
+    LEAF_PIXEL_BYTES, LeafGeometry, clip_leaves, combine_boxes, combine_rects, hidden_box, leaf_geometry,
+    leaf_near_keys, leaf_rects, leaf_screen_sizes, open_tile_pixels, plan_tiles, tile_leaves,
 )
 
 __all__ = ["RenderResult", "RenderTimings", "Renderer", "render", "default_renderer"]
@@ -868,7 +868,7 @@ class Renderer:
         leaves = clip_leaves(program.leaves, geom, lo, hi)
         changed = any(a is not b for a, b in zip(leaves, program.leaves))
         geom_v = leaf_geometry(leaves) if changed else geom
-        plan = (leaves, geom_v, (tuple(lo.tolist()), tuple(hi.tolist())))
+        plan = (leaves, geom_v, hidden_box(lo, hi))
         self._geometry.put(key, (program, plan), geom_v.nbytes + 256 * program.n_leaves)
         return plan
 
@@ -1004,8 +1004,7 @@ class Renderer:
             # and then trimmed away or kept as they are, and these bands are kept by no cache.
             hidden = None
             if self._by_request:
-                lo, hi = combine_boxes(program.op, program.arg, geom.lo, geom.hi)
-                hidden = (tuple(lo.tolist()), tuple(hi.tolist()))
+                hidden = hidden_box(*combine_boxes(program.op, program.arg, geom.lo, geom.hi))
             most = LARGE_SURFACE_SHARE * memory_budget() / BYTES_PER_BOOLEAN_TRIANGLE
             built: dict[int, tuple[BandMesh, bool]] = {}
             for group in untrimmed_groups(program, geom.lo, geom.hi):

@@ -35,7 +35,7 @@ from .raster import NEAR_RELATIVE
 
 __all__ = [
     "LeafGeometry", "leaf_geometry", "leaf_rects", "leaf_near_keys", "leaf_screen_sizes", "combine_rects", "combine_boxes", "prune_program", "tile_leaves", "TilePlan", "plan_tiles",
-    "open_tile_pixels", "clip_leaves", "CLIP_MARGIN",
+    "open_tile_pixels", "clip_leaves", "hidden_box", "CLIP_MARGIN",
 ]
 
 #: :func:`clip_leaves` keeps this fraction of the object box's diagonal beyond the box, so that
@@ -343,6 +343,23 @@ def combine_rects(op: NDArray[np.int8], arg: NDArray[np.int64], rects: NDArray[n
         stack[base, 0], stack[base, 1], stack[base, 2], stack[base, 3] = c0, r0, c1, r1
         sp = base + 1
     return stack[0].copy()
+
+
+def hidden_box(lo: NDArray[np.float64], hi: NDArray[np.float64]) -> tuple[tuple[float, ...], tuple[float, ...]]:
+    """The box beyond which nothing of an object with box ``[lo, hi]`` can be seen, as
+    ``build_bands(hidden=...)`` takes it: the object's box grown by :data:`CLIP_MARGIN` of its
+    diagonal. The object's own boundary may lie on its box (a face of the leaf that spans it):
+    with the bare box, rounding could put that face's corners an ulp beyond it, and the face
+    would be left uncut, with the ambient value, though it shows.
+
+    Examples
+    --------
+    >>> hidden_box(np.array([0.0, 0.0, 0.0]), np.array([3.0, 4.0, 0.0]))
+    ((-0.005, -0.005, -0.005), (3.005, 4.005, 0.005))
+    """
+    lo, hi = np.asarray(lo, dtype=np.float64), np.asarray(hi, dtype=np.float64)
+    margin = CLIP_MARGIN * float(np.linalg.norm(hi - lo))
+    return tuple((lo - margin).tolist()), tuple((hi + margin).tolist())
 
 
 def clip_leaves(
