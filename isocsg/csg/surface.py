@@ -1346,11 +1346,23 @@ def _opposite_pairs(
 
     Only triangles whose boxes meet are paired (:func:`_opposite_box_pairs`), across
     the sides of :data:`_SIDE_DIRECTION`: normals within 1e-3 of opposite lie on
-    opposite sides of it, or within the margin of it on both.
+    opposite sides of it, or within the margin of it on both. Planes with no opposite
+    plane near them are left out first, through their distinct keys.
     """
+    from scipy.spatial import cKDTree
+
+    # Distinct keys, rounded to 1e-6: a plane's many triangles become one or two points
+    # (a k-d tree over many equal points degenerates); the radius covers the rounding.
+    step = 1e-6
+    q = np.ascontiguousarray(np.round(key[ok] / step).astype(np.int64))
+    _, first, which = np.unique(q.view(np.dtype((np.void, 32))).ravel(), return_index=True, return_inverse=True)
+    rounded = q[first] * step
+    near = cKDTree(rounded).query_ball_point(-rounded, 1e-3 + 4 * step, return_length=True)
+    paired = np.zeros(len(key), bool)
+    paired[np.flatnonzero(ok)] = (near > 0)[which.reshape(-1)]
     side = nrm @ _SIDE_DIRECTION
     margin = 4e-3  # > 1e-3, the farthest two paired normals are from opposite
-    a, b = _opposite_box_pairs(lo, hi, nrm, ok & (side >= -margin), ok & (side <= margin))
+    a, b = _opposite_box_pairs(lo, hi, nrm, paired & (side >= -margin), paired & (side <= margin))
     i = np.concatenate([a, b])
     j = np.concatenate([b, a])
     sel = np.linalg.norm(key[i] + key[j], axis=1) <= 1e-3
