@@ -6,6 +6,7 @@ every 5 ms while the surface is built, minus what it held before):
     python benchmarks/surface_scale.py spheres 40 128     # K disjoint unit spheres, N contours
     python benchmarks/surface_scale.py plate 100 64       # a plate minus H through holes
     python benchmarks/surface_scale.py grid 16 64         # the union of a k x k grid of touching unit boxes
+    python benchmarks/surface_scale.py layers 64          # coincident opposite layers alone (see _layers)
     python benchmarks/surface_scale.py all                # the table of docs/csg.md, one process per case
 
 ``--module path/to/surface.py`` times another implementation of
@@ -41,6 +42,44 @@ def _tree(kind: str, count: int):  # type: ignore[no-untyped-def]
     for h in holes:  # a modelling loop: one difference per hole
         out = out - h
     return out
+
+
+def _layers(k: int):  # type: ignore[no-untyped-def]
+    """One plane holding two opposite layers: k x k unit squares facing +z (two triangles
+    each) and in each square a small triangle facing -z across its diagonal, the input
+    of the step that cancels partly overlapping coincident faces."""
+    a, b = np.meshgrid(np.arange(k, dtype=float), np.arange(k, dtype=float), indexing="ij")
+    corner = np.column_stack([a.ravel(), b.ravel(), np.zeros(k * k)])
+    local = np.array([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0], [0.2, 0.1, 0], [0.4, 0.1, 0], [0.2, 0.3, 0]])
+    v = (corner[:, None, :] + local[None]).reshape(-1, 3)
+    t = (7 * np.arange(k * k)[:, None, None] + np.array([[0, 1, 2], [0, 2, 3], [4, 6, 5]])[None]).reshape(-1, 3)
+    drop = np.zeros(len(t), bool)
+    drop[2::3] = True
+    return v, t.astype(np.int64), np.arange(len(t)), drop
+
+
+def run_layers(k: int, module: str | None) -> dict:
+    """Median seconds of the cancelling step alone on :func:`_layers` (k x k squares)."""
+    import statistics
+
+    if module:
+        spec = importlib.util.spec_from_file_location("other_surface", module)
+        mod = importlib.util.module_from_spec(spec)  # type: ignore[arg-type]
+        sys.modules["other_surface"] = mod
+        spec.loader.exec_module(mod)  # type: ignore[union-attr]
+    else:
+        import isocsg.csg.surface as mod
+    mod._cancel_partial_overlaps(*_layers(2), mod.COINCIDENT_DISTANCE)  # compiled kernels warm
+    args = _layers(k)
+    times = []
+    for _ in range(3):
+        t0 = time.perf_counter()
+        out = mod._cancel_partial_overlaps(*args, mod.COINCIDENT_DISTANCE)
+        times.append(time.perf_counter() - t0)
+    kept = out[1][~out[3]]
+    area = 0.5 * np.cross(out[0][kept[:, 1]] - out[0][kept[:, 0]], out[0][kept[:, 2]] - out[0][kept[:, 0]])[:, 2].sum()
+    return {"case": "layers", "count": k, "triangles": len(args[1]), "seconds": round(statistics.median(times), 4),
+            "us_per_square": round(1e6 * statistics.median(times) / k**2, 1), "kept_area_error": float(area - 0.98 * k * k)}
 
 
 def _peak_rss(fn):  # type: ignore[no-untyped-def]
@@ -112,11 +151,14 @@ def run(kind: str, count: int, contours: int, module: str | None) -> dict:
 
 def main() -> None:
     ap = argparse.ArgumentParser()
-    ap.add_argument("case", choices=["spheres", "plate", "grid", "all"])
+    ap.add_argument("case", choices=["spheres", "plate", "grid", "layers", "all"])
     ap.add_argument("count", type=int, nargs="?", default=0)
     ap.add_argument("contours", type=int, nargs="?", default=64)
     ap.add_argument("--module", default=None)
     args = ap.parse_args()
+    if args.case == "layers":
+        print(json.dumps(run_layers(args.count, args.module)), flush=True)
+        return
     if args.case != "all":
         print(json.dumps(run(args.case, args.count, args.contours, args.module)), flush=True)
         return
