@@ -1424,14 +1424,16 @@ def _cancel_partial_overlaps(
         return shapely.polygons(np.take_along_axis(tri, ax[:, None, :], axis=2))
 
     # (a triangle with an opposite twin on the same vertices is covered whole)
-    corners = np.sort(t[cand], axis=1)
+    same_corners = np.all(np.sort(t[cand[i]], axis=1) == np.sort(t[cand[j]], axis=1), axis=1)
     twin = np.zeros(len(cand), bool)
-    twin[i[np.all(corners[i] == corners[j], axis=1)]] = True
+    twin[i[same_corners]] = True
     i, j = i[~twin[i]], j[~twin[i]]
     own = flat(p[i], keep2[i])
     overlap = shapely.area(shapely.intersection(own, flat(p[j], keep2[i])))
     covered = np.bincount(i, overlap, minlength=len(cand))
-    whole = shapely.area(flat(p, keep2))
+    whole = np.zeros(len(cand))  # only the paired triangles' areas are read
+    some = np.union1d(i, np.flatnonzero(twin))
+    whole[some] = shapely.area(flat(p[some], keep2[some]))
     covered[twin] = whole[twin]
     partial = np.flatnonzero((covered > whole * 1e-9) & (covered < whole * (1 - 1e-9)))
     if not len(partial):
