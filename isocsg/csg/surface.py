@@ -1351,6 +1351,8 @@ def _opposite_pairs(
     """
     from scipy.spatial import cKDTree
 
+    if not ok.any():
+        return np.zeros(0, np.int64), np.zeros(0, np.int64)
     # Distinct keys, rounded to 1e-6: a plane's many triangles become one or two points
     # (a k-d tree over many equal points degenerates); the radius covers the rounding.
     step = 1e-6
