@@ -1288,6 +1288,148 @@ def _on_opposite_face(
     return out
 
 
+# A fixed direction no axis-aligned or simple face is perpendicular to: triangles facing
+# opposite ways lie on opposite sides of the plane normal to it, except near that plane.
+_SIDE_DIRECTION = np.array([1.0, np.e, np.pi]) / np.linalg.norm([1.0, np.e, np.pi])
+
+
+@njit(cache=True)
+def _opposite_box_pairs(
+    lo: NDArray[np.float64], hi: NDArray[np.float64], nrm: NDArray[np.float64], first: NDArray[np.bool_],
+    second: NDArray[np.bool_],
+) -> tuple[NDArray[np.int64], NDArray[np.int64]]:
+    """Pairs ``(a, b)``, ``first[a]`` and ``second[b]``, whose boxes ``[lo, hi]`` meet
+    (closed boxes) and whose unit normals ``nrm`` are nearly opposite (cosine below
+    -0.9), each once, found through a uniform grid over the boxes.
+
+    The work is the sum over grid cells of the product of the two kinds' entries
+    there, so the pairs within one plane no longer grow as the product of the
+    triangles of its two layers.
+    """
+    m = len(lo)
+    use = np.flatnonzero(first | second)
+    if len(use) == 0:
+        return np.zeros(0, np.int64), np.zeros(0, np.int64)
+    g0 = np.array([lo[use, 0].min(), lo[use, 1].min(), lo[use, 2].min()])
+    span = max(hi[use, 0].max() - g0[0], hi[use, 1].max() - g0[1], hi[use, 2].max() - g0[2])
+    ext = np.empty(len(use))
+    for u in range(len(use)):
+        k = use[u]
+        ext[u] = max(hi[k, 0] - lo[k, 0], hi[k, 1] - lo[k, 1], hi[k, 2] - lo[k, 2])
+    h = max(np.median(ext), span / 2.0**20, 1e-300)
+    while True:  # coarser cells until the entries stay in proportion to the triangles
+        count = 0
+        for k in use:
+            c = 1
+            for x in range(3):
+                c *= int((hi[k, x] - g0[x]) / h) - int((lo[k, x] - g0[x]) / h) + 1
+            count += c
+        if count <= 16 * len(use) + 1_000_000:
+            break
+        h *= 2.0
+    dims = int(span / h) + 2
+    keys = np.empty(count, np.int64)
+    tri = np.empty(count, np.int64)
+    e = 0
+    for k in use:
+        i0, j0, l0 = int((lo[k, 0] - g0[0]) / h), int((lo[k, 1] - g0[1]) / h), int((lo[k, 2] - g0[2]) / h)
+        i1, j1, l1 = int((hi[k, 0] - g0[0]) / h), int((hi[k, 1] - g0[1]) / h), int((hi[k, 2] - g0[2]) / h)
+        for i in range(i0, i1 + 1):
+            for j in range(j0, j1 + 1):
+                for l in range(l0, l1 + 1):
+                    keys[e] = (i * dims + j) * dims + l
+                    tri[e] = k
+                    e += 1
+    order = np.argsort(keys, kind="mergesort")
+    keys = keys[order]
+    tri = tri[order]
+    out_a = np.empty(max(16, m), np.int64)
+    out_b = np.empty(max(16, m), np.int64)
+    in_a = np.empty(count, np.int64)  # one cell's entries of each kind
+    in_b = np.empty(count, np.int64)
+    n = 0
+    s = 0
+    while s < count:
+        f = s
+        na = 0
+        nb = 0
+        while f < count and keys[f] == keys[s]:
+            if first[tri[f]]:
+                in_a[na] = tri[f]
+                na += 1
+            if second[tri[f]]:
+                in_b[nb] = tri[f]
+                nb += 1
+            f += 1
+        cell = keys[s]
+        for ea in range(na):
+            a = in_a[ea]
+            for eb in range(nb):
+                b = in_b[eb]
+                if b == a or nrm[a, 0] * nrm[b, 0] + nrm[a, 1] * nrm[b, 1] + nrm[a, 2] * nrm[b, 2] > -0.9:
+                    continue
+                if not (lo[a, 0] <= hi[b, 0] and lo[b, 0] <= hi[a, 0] and lo[a, 1] <= hi[b, 1]
+                        and lo[b, 1] <= hi[a, 1] and lo[a, 2] <= hi[b, 2] and lo[b, 2] <= hi[a, 2]):
+                    continue
+                # each pair once: in the cell of the lower corner of the boxes' overlap
+                ci = int((max(lo[a, 0], lo[b, 0]) - g0[0]) / h)
+                cj = int((max(lo[a, 1], lo[b, 1]) - g0[1]) / h)
+                cl = int((max(lo[a, 2], lo[b, 2]) - g0[2]) / h)
+                if (ci * dims + cj) * dims + cl != cell:
+                    continue
+                if n == len(out_a):
+                    grown_a = np.empty(2 * n, np.int64)
+                    grown_b = np.empty(2 * n, np.int64)
+                    grown_a[:n] = out_a
+                    grown_b[:n] = out_b
+                    out_a, out_b = grown_a, grown_b
+                out_a[n] = a
+                out_b[n] = b
+                n += 1
+        s = f
+    return out_a[:n].copy(), out_b[:n].copy()
+
+
+def _opposite_pairs(
+    p: NDArray[np.float64], nrm: NDArray[np.float64], ok: NDArray[np.bool_], key: NDArray[np.float64],
+    lo: NDArray[np.float64], hi: NDArray[np.float64], tol: float,
+) -> tuple[NDArray[np.int64], NDArray[np.int64]]:
+    """Ordered pairs ``(i, j)`` of triangles ``p`` facing opposite ways in one plane
+    (``key`` = (n, d) of one within 1e-3 of (-n, -d) of the other), whose boxes meet
+    and with every vertex of ``j`` within ``tol`` of ``i``'s plane; sorted by ``(i, j)``.
+
+    Only triangles whose boxes meet are paired (:func:`_opposite_box_pairs`), across
+    the sides of :data:`_SIDE_DIRECTION`: normals within 1e-3 of opposite lie on
+    opposite sides of it, or within the margin of it on both. Planes with no opposite
+    plane near them are left out first, through their distinct keys.
+    """
+    from scipy.spatial import cKDTree
+
+    if not ok.any():
+        return np.zeros(0, np.int64), np.zeros(0, np.int64)
+    # Distinct keys, rounded to 1e-6: a plane's many triangles become one or two points
+    # (a k-d tree over many equal points degenerates); the radius covers the rounding.
+    step = 1e-6
+    q = np.ascontiguousarray(np.round(key[ok] / step).astype(np.int64))
+    _, first, which = np.unique(q.view(np.dtype((np.void, 32))).ravel(), return_index=True, return_inverse=True)
+    rounded = q[first] * step
+    near = cKDTree(rounded).query_ball_point(-rounded, 1e-3 + 4 * step, return_length=True)
+    paired = np.zeros(len(key), bool)
+    paired[np.flatnonzero(ok)] = (near > 0)[which.reshape(-1)]
+    side = nrm @ _SIDE_DIRECTION
+    margin = 4e-3  # > 1e-3, the farthest two paired normals are from opposite
+    a, b = _opposite_box_pairs(lo, hi, nrm, paired & (side >= -margin), paired & (side <= margin))
+    i = np.concatenate([a, b])
+    j = np.concatenate([b, a])
+    sel = np.linalg.norm(key[i] + key[j], axis=1) <= 1e-3
+    i, j = i[sel], j[sel]
+    if len(i):  # a triangle near the margin on both sides: a pair found both ways
+        ij = np.unique(np.column_stack([i, j]), axis=0)
+        i, j = ij[:, 0], ij[:, 1]
+    sel = np.all(np.abs(np.einsum("kvx,kx->kv", p[j], nrm[i]) - key[i, 3][:, None]) <= tol, axis=1)
+    return i[sel], j[sel]
+
+
 def _cancel_partial_overlaps(
     v: NDArray[np.float64], t: NDArray[np.int64], cand: NDArray[np.int64], drop: NDArray[np.bool_], tol: float
 ) -> tuple[NDArray[np.float64], NDArray[np.int64], NDArray[np.int64], NDArray[np.bool_]]:
@@ -1311,7 +1453,6 @@ def _cancel_partial_overlaps(
         Which output triangles to drop (the replaced ones among them).
     """
     import shapely
-    from scipy.spatial import cKDTree
 
     n_tri = len(t)
     origin = np.arange(n_tri, dtype=np.int64)
@@ -1324,15 +1465,10 @@ def _cancel_partial_overlaps(
     nrm = nrm / np.where(ok, area2, 1.0)[:, None]
     off = np.einsum("ij,ij->i", nrm, p[:, 0])
     key = np.column_stack([nrm, off])
-    # Opposite orientations: (n, d) of one near (-n, -d) of the other; then boxes that meet
+    # Opposite orientations: (n, d) of one near (-n, -d) of the other, boxes that meet,
     # and every vertex of the other within tol of the first's plane.
-    near = cKDTree(key).sparse_distance_matrix(cKDTree(-key), 1e-3, output_type="ndarray")
-    i, j = near["i"].astype(np.int64), near["j"].astype(np.int64)
     lo, hi = p.min(axis=1) - tol, p.max(axis=1) + tol
-    sel = ok[i] & ok[j] & np.all(lo[i] <= hi[j], axis=1) & np.all(lo[j] <= hi[i], axis=1)
-    i, j = i[sel], j[sel]
-    sel = np.all(np.abs(np.einsum("kvx,kx->kv", p[j], nrm[i]) - off[i][:, None]) <= tol, axis=1)
-    i, j = i[sel], j[sel]
+    i, j = _opposite_pairs(p, nrm, ok, key, lo, hi, tol)
     if not len(i):
         return v, t, origin, drop
     # Each pair in the plane of i's triangle, seen along its normal's largest axis (areas in
@@ -1344,19 +1480,24 @@ def _cancel_partial_overlaps(
         return shapely.polygons(np.take_along_axis(tri, ax[:, None, :], axis=2))
 
     # (a triangle with an opposite twin on the same vertices is covered whole)
-    corners = np.sort(t[cand], axis=1)
+    same_corners = np.all(np.sort(t[cand[i]], axis=1) == np.sort(t[cand[j]], axis=1), axis=1)
     twin = np.zeros(len(cand), bool)
-    twin[i[np.all(corners[i] == corners[j], axis=1)]] = True
+    twin[i[same_corners]] = True
     i, j = i[~twin[i]], j[~twin[i]]
     own = flat(p[i], keep2[i])
-    covered = np.bincount(i, shapely.area(shapely.intersection(own, flat(p[j], keep2[i]))), minlength=len(cand))
-    whole = shapely.area(flat(p, keep2))
+    overlap = shapely.area(shapely.intersection(own, flat(p[j], keep2[i])))
+    covered = np.bincount(i, overlap, minlength=len(cand))
+    whole = np.zeros(len(cand))  # only the paired triangles' areas are read
+    some = np.union1d(i, np.flatnonzero(twin))
+    whole[some] = shapely.area(flat(p[some], keep2[some]))
     covered[twin] = whole[twin]
     partial = np.flatnonzero((covered > whole * 1e-9) & (covered < whole * (1 - 1e-9)))
     if not len(partial):
         return v, t, origin, drop
-    # The partly covered triangles minus their opposite partners, one partner rank at a time.
-    mine = np.isin(i, partial)
+    # The partly covered triangles minus their opposite partners, one partner rank at a time;
+    # a partner that only touches is left out: subtracting it is a no-op exactly, but not
+    # always in floating point (a sliver's edge, whose result then depended on the order).
+    mine = np.isin(i, partial) & (overlap > 0)
     i, j = i[mine], j[mine]
     order = np.argsort(i, kind="stable")
     i, j = i[order], j[order]
