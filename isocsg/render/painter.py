@@ -443,6 +443,11 @@ class _Runs(_Projected):
         return arrays + max(len(self.projs), _STRIPES) * 56 * len(self.vertices)
 
 
+def _mesh_bytes(bands: BandMesh) -> int:
+    """Bytes of a band mesh's arrays."""
+    return sum(a.nbytes for a in (bands.vertices, bands.triangles, bands.value_out, bands.value_in, bands.band))
+
+
 def _band_bytes(bands: BandMesh) -> int:
     """Bytes of a band mesh's arrays that a prepared mesh does not share."""
     return sum(a.nbytes for a in (bands.value_out, bands.value_in, bands.band))
@@ -1017,15 +1022,22 @@ class Renderer:
                     # after a sample of eight leaves): given up without the rest.
                     if n_tri > most or (k >= 8 and n_tri * len(group) > 4 * most * k):
                         raise ResourceLimitError(f"{n_tri} band triangles of {k} leaves in one Boolean, over the bound")
-            for i in range(len(leaves)):
+            # The bands are all held while the Booleans run: given up when they alone would
+            # pass a third of the share (or are bound to, at this rate, after a sample of 64
+            # leaves), and the Booleans get what the share leaves.
+            share = LARGE_SURFACE_SHARE * memory_budget()
+            held = 0
+            for k, i in enumerate(range(len(leaves)), 1):
                 if i not in built:
                     built[i] = self._bands(leaves[i], lights, material, codes[i], eye, hidden)
+                held += _mesh_bytes(built[i][0])
+                if held > share / 3 or (k >= 64 and held * len(leaves) > share / 3 * k):
+                    raise ResourceLimitError(f"{held} bytes of bands for {k} of {len(leaves)} leaves, over the bound")
             if any(vd for _, vd in built.values()):
                 raise InvalidGeometryError("view-dependent bands")
             bands = [built[i][0] for i in range(len(leaves))]
             del built
-            surface = surface_from_bands(program, bands, trim=True,
-                                         max_bytes=int(LARGE_SURFACE_SHARE * memory_budget()))
+            surface = surface_from_bands(program, bands, trim=True, max_bytes=int(share - held))
             del bands  # no cache holds them: gone before the parts below are made
         except (InvalidGeometryError, ResourceLimitError):
             with self._surface_lock:  # too large, or bands that do not close: per pixel from now on

@@ -347,18 +347,19 @@ def combine_rects(op: NDArray[np.int8], arg: NDArray[np.int64], rects: NDArray[n
 
 def hidden_box(lo: NDArray[np.float64], hi: NDArray[np.float64]) -> tuple[tuple[float, ...], tuple[float, ...]]:
     """The box beyond which nothing of an object with box ``[lo, hi]`` can be seen, as
-    ``build_bands(hidden=...)`` takes it: the object's box grown by :data:`CLIP_MARGIN` of its
-    diagonal. The object's own boundary may lie on its box (a face of the leaf that spans it):
-    with the bare box, rounding could put that face's corners an ulp beyond it, and the face
-    would be left uncut, with the ambient value, though it shows.
+    ``build_bands(hidden=...)`` takes it: the object's box grown by half :data:`CLIP_MARGIN` of
+    its diagonal. The object's own boundary may lie on its box (a face of the leaf that spans
+    it): with the bare box, rounding could put that face's corners an ulp beyond it, and the
+    face would be left uncut, with the ambient value, though it shows. The ends that
+    :func:`clip_leaves` makes, a whole :data:`CLIP_MARGIN` out, stay beyond it (uncut).
 
     Examples
     --------
     >>> hidden_box(np.array([0.0, 0.0, 0.0]), np.array([3.0, 4.0, 0.0]))
-    ((-0.005, -0.005, -0.005), (3.005, 4.005, 0.005))
+    ((-0.0025, -0.0025, -0.0025), (3.0025, 4.0025, 0.0025))
     """
     lo, hi = np.asarray(lo, dtype=np.float64), np.asarray(hi, dtype=np.float64)
-    margin = CLIP_MARGIN * float(np.linalg.norm(hi - lo))
+    margin = 0.5 * CLIP_MARGIN * float(np.linalg.norm(hi - lo))
     return tuple((lo - margin).tolist()), tuple((hi + margin).tolist())
 
 
