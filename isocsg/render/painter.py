@@ -1140,7 +1140,12 @@ class Renderer:
         quads, values, _ = self._prepare(bands, view_dependent, keep=False).quads()
         front = _Front(np.ascontiguousarray(bands.vertices, dtype=np.float64), quads, values)
         if not view_dependent:
-            self._prepared.put(key, (bands, front), front.nbytes)
+            # The default builder's meshes are found by request: the band mesh itself is not
+            # kept (it holds twice the front's bytes); another builder's is, to know it again.
+            if self._by_request:
+                self._prepared.put(key, (None, front), front.nbytes)
+            else:
+                self._prepared.put(key, (bands, front), front.nbytes + _mesh_bytes(bands))
         return front
 
     def _prepare(
