@@ -58,17 +58,25 @@ def _layers(k: int):  # type: ignore[no-untyped-def]
     return v, t.astype(np.int64), np.arange(len(t)), drop
 
 
+def _surface_module(module: str | None):
+    """``isocsg.csg.surface``, or another version of it read from the file ``module`` (to time
+    two versions side by side)."""
+    if not module:
+        import isocsg.csg.surface as mod
+
+        return mod
+    spec = importlib.util.spec_from_file_location("other_surface", module)
+    mod = importlib.util.module_from_spec(spec)  # type: ignore[arg-type]
+    sys.modules["other_surface"] = mod
+    spec.loader.exec_module(mod)  # type: ignore[union-attr]
+    return mod
+
+
 def run_layers(k: int, module: str | None) -> dict:
     """Median seconds of the cancelling step alone on :func:`_layers` (k x k squares)."""
     import statistics
 
-    if module:
-        spec = importlib.util.spec_from_file_location("other_surface", module)
-        mod = importlib.util.module_from_spec(spec)  # type: ignore[arg-type]
-        sys.modules["other_surface"] = mod
-        spec.loader.exec_module(mod)  # type: ignore[union-attr]
-    else:
-        import isocsg.csg.surface as mod
+    mod = _surface_module(module)
     mod._cancel_partial_overlaps(*_layers(2), mod.COINCIDENT_DISTANCE)  # compiled kernels warm
     args = _layers(k)
     times = []
@@ -110,13 +118,7 @@ def run(kind: str, count: int, contours: int, module: str | None) -> dict:
     from isocsg.laminae import build_laminae
     from isocsg.lighting.lights import Material
 
-    if module:
-        spec = importlib.util.spec_from_file_location("other_surface", module)
-        mod = importlib.util.module_from_spec(spec)  # type: ignore[arg-type]
-        sys.modules["other_surface"] = mod
-        spec.loader.exec_module(mod)  # type: ignore[union-attr]
-    else:
-        import isocsg.csg.surface as mod
+    mod = _surface_module(module)
     tree = _tree(kind, count)
     prog = tree.program()
     lights = (PointLight((0.3 * count, -0.4 * count, 5.0)) if kind == "grid" else PointLight((3.0, -4.0, 5.0)),)

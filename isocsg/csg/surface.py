@@ -1173,6 +1173,30 @@ def _shared_planes(
 
 
 @njit(cache=True)
+def _grid_entries(
+    lo: NDArray[np.float64], hi: NDArray[np.float64], use: NDArray[np.int64], g0: NDArray[np.float64], h: float,
+    dims: int, count: int,
+) -> tuple[NDArray[np.int64], NDArray[np.int64]]:
+    """The entries of a uniform grid of cell side ``h`` from ``g0`` over the boxes ``[lo[k], hi[k]]``,
+    ``k`` in ``use`` (``count`` entries in all): each cell's key, sorted, and the box it holds
+    (in ``use``'s order within a cell)."""
+    keys = np.empty(count, np.int64)
+    tri = np.empty(count, np.int64)
+    e = 0
+    for k in use:
+        i0, j0, l0 = int((lo[k, 0] - g0[0]) / h), int((lo[k, 1] - g0[1]) / h), int((lo[k, 2] - g0[2]) / h)
+        i1, j1, l1 = int((hi[k, 0] - g0[0]) / h), int((hi[k, 1] - g0[1]) / h), int((hi[k, 2] - g0[2]) / h)
+        for i in range(i0, i1 + 1):
+            for j in range(j0, j1 + 1):
+                for l in range(l0, l1 + 1):
+                    keys[e] = (i * dims + j) * dims + l
+                    tri[e] = k
+                    e += 1
+    order = np.argsort(keys, kind="mergesort")
+    return keys[order], tri[order]
+
+
+@njit(cache=True)
 def _on_opposite_face(
     v: NDArray[np.float64], t: NDArray[np.int64], cand: NDArray[np.int64], tol: float
 ) -> NDArray[np.bool_]:
@@ -1223,21 +1247,7 @@ def _on_opposite_face(
             break
         h *= 2.0
     dims = int(span / h) + 2
-    keys = np.empty(count, np.int64)
-    tri = np.empty(count, np.int64)
-    e = 0
-    for k in range(m):
-        i0, j0, l0 = int((blo[k, 0] - g0[0]) / h), int((blo[k, 1] - g0[1]) / h), int((blo[k, 2] - g0[2]) / h)
-        i1, j1, l1 = int((bhi[k, 0] - g0[0]) / h), int((bhi[k, 1] - g0[1]) / h), int((bhi[k, 2] - g0[2]) / h)
-        for i in range(i0, i1 + 1):
-            for j in range(j0, j1 + 1):
-                for l in range(l0, l1 + 1):
-                    keys[e] = (i * dims + j) * dims + l
-                    tri[e] = k
-                    e += 1
-    order = np.argsort(keys)
-    keys = keys[order]
-    tri = tri[order]
+    keys, tri = _grid_entries(blo, bhi, np.arange(m), g0, h, dims, count)
     for k in range(m):
         if not ok[k]:
             continue
@@ -1328,21 +1338,7 @@ def _opposite_box_pairs(
             break
         h *= 2.0
     dims = int(span / h) + 2
-    keys = np.empty(count, np.int64)
-    tri = np.empty(count, np.int64)
-    e = 0
-    for k in use:
-        i0, j0, l0 = int((lo[k, 0] - g0[0]) / h), int((lo[k, 1] - g0[1]) / h), int((lo[k, 2] - g0[2]) / h)
-        i1, j1, l1 = int((hi[k, 0] - g0[0]) / h), int((hi[k, 1] - g0[1]) / h), int((hi[k, 2] - g0[2]) / h)
-        for i in range(i0, i1 + 1):
-            for j in range(j0, j1 + 1):
-                for l in range(l0, l1 + 1):
-                    keys[e] = (i * dims + j) * dims + l
-                    tri[e] = k
-                    e += 1
-    order = np.argsort(keys, kind="mergesort")
-    keys = keys[order]
-    tri = tri[order]
+    keys, tri = _grid_entries(lo, hi, use, g0, h, dims, count)
     out_a = np.empty(max(16, m), np.int64)
     out_b = np.empty(max(16, m), np.int64)
     in_a = np.empty(count, np.int64)  # one cell's entries of each kind
