@@ -518,10 +518,16 @@ class LeafTable:
         out = [lo, hi]
         k = self.kind
         tr = k == 1
-        if tr.any():  # the end circles' centres: where a truncus' cap starts or stops widening
+        if tr.any():
+            # The end circles' centres (where a cap's section starts or stops widening) and
+            # their lowest and highest points (where a tilted cap starts or stops cutting the
+            # sections: the section's area has a kink there).
             c = self.center[tr] @ n
-            an = (self.axis[tr] @ n) * self.height[tr] / 2
-            out += [c + an, c - an]
+            un = self.axis[tr] @ n
+            an = un * self.height[tr] / 2
+            ext = np.sqrt(np.clip(1.0 - un * un, 0.0, 1.0))
+            out += [c + an, c - an, c + an - self.r1[tr] * ext, c + an + self.r1[tr] * ext,
+                    c - an - self.r2[tr] * ext, c - an + self.r2[tr] * ext]
         bx = k == 2
         if bx.any():
             signs = np.array([[x, y, z] for x in (-1, 1) for y in (-1, 1) for z in (-1, 1)], dtype=np.float64)
