@@ -27,7 +27,7 @@
    recursion), or is integrated on its own, with its own breakpoints; the
    adaptive rule's ``tol`` then holds for each part.
 3. **Integration over sections.** The axis is split at every leaf's
-   breakpoints (its extent, the heights of its vertices and end centres), so
+   breakpoints (its extent, the heights of its vertices, end centres and end circles' lowest and highest points), so
    that no leaf starts, ends or turns a corner inside a piece. Each piece
    keeps only the leaves present in it (:meth:`Program.prune`):
 
