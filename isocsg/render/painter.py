@@ -1441,12 +1441,13 @@ class Renderer:
         """Fill a union of leaves by the depth test, nearest leaves first, skipping hidden ones.
 
         The leaves are taken in the order of their nearest possible depth
-        (:func:`~isocsg.render.tiles.leaf_near_keys`); a leaf whose screen
-        rectangle is already covered everywhere by nearer surfaces is skipped
-        without its bands being built or filled (occlusion culling: in a
-        lattice of 1000 spheres, 729 are hidden from any corner view). The
-        others' front faces are filled into the image buffers. Returns the
-        seconds spent obtaining bands.
+        (:func:`~isocsg.render.tiles.leaf_near_keys`); a leaf whose bounding
+        ball is hidden everywhere by what is already drawn
+        (:func:`~isocsg.render.raster.ball_covered`) is skipped without its
+        bands being built or filled (occlusion culling: in a lattice of 1000
+        spheres, 729 are hidden from any corner view). The others' front
+        faces are filled into the image buffers, each leaf's rows split
+        between the fill threads. Returns the seconds spent obtaining bands.
         """
         keys = leaf_near_keys(geom, cam, nears)
         # Each leaf's bounding ball: the sphere itself, or its box's circumscribed ball.
