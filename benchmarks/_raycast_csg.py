@@ -14,8 +14,8 @@ from __future__ import annotations
 import numpy as np
 
 from isocsg import Camera, Material, shade
-from isocsg.csg.section import solid_program
 from isocsg.csg.program import combine_masks
+from isocsg.csg.section import solid_program
 
 __all__ = ["raycast"]
 

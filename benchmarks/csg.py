@@ -38,6 +38,7 @@ os.environ.setdefault("VTK_DEFAULT_OPENGL_WINDOW", "vtkEGLRenderWindow")
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
 import numpy as np  # noqa: E402
+from _raycast_csg import raycast  # noqa: E402
 
 from isocsg import (  # noqa: E402
     Box,
@@ -51,8 +52,6 @@ from isocsg import (  # noqa: E402
     Sphere,
 )
 from isocsg.csg.mesh import to_manifold  # noqa: E402
-
-from _raycast_csg import raycast  # noqa: E402
 
 try:  # the benchmarks' shared timing helper
     from _common import median_time  # type: ignore[import-not-found]  # noqa: E402

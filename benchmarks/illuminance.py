@@ -72,13 +72,14 @@ def mc_kernel(P, corner, ex, ey, L, k, bmin, bmax, seed, out):
     w = area / (k * k)
     nb = bmin.shape[0]
     for i in numba.prange(n):
-        np.random.seed(seed * 7919 + i)
+        # The legacy per-thread stream of numba kernels (Generators are not numba-typed here).
+        np.random.seed(seed * 7919 + i)  # noqa: NPY002
         px, py, pz = P[i, 0], P[i, 1], P[i, 2]
         acc = 0.0
         for a in range(k):
             for b in range(k):
-                s = (a + np.random.random()) / k
-                t = (b + np.random.random()) / k
+                s = (a + np.random.random()) / k  # noqa: NPY002
+                t = (b + np.random.random()) / k  # noqa: NPY002
                 qx = corner[0] + s * ex[0] + t * ey[0]
                 qy = corner[1] + s * ex[1] + t * ey[1]
                 qz = corner[2] + s * ex[2] + t * ey[2]

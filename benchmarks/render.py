@@ -37,8 +37,8 @@ os.environ.setdefault("VTK_DEFAULT_OPENGL_WINDOW", "vtkEGLRenderWindow")
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
 import numpy as np  # noqa: E402
-
 from _common import fmt_rate, fmt_seconds, median_time, print_table  # noqa: E402
+
 from isocsg import Camera, Cone, Material, PointLight, Scene, Sphere  # noqa: E402
 
 AREAS = (550, 4500, 9000, 55000, 250000, 1024 * 1024)

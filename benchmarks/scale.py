@@ -107,8 +107,9 @@ def _timed(fn):
 
 
 def child_isocsg(model: str, n: int, size: int, repeats: int, contours: int) -> None:
-    import isocsg.laminae as lam
     import numpy as np
+
+    import isocsg.laminae as lam
     from isocsg import Camera, Cylinder, PointLight, RenderSettings, Scene, Sphere
     from isocsg.csg.section import section
     from isocsg.csg.volume import volume

@@ -17,7 +17,18 @@ from typing import Any
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from ._validation import MAX_ABS_COORD, MAX_PIXELS, MIN_FOV, Vec3, integer, length_floor, nonzero_vector3, scalar, show, vector3
+from ._validation import (
+    MAX_ABS_COORD,
+    MAX_PIXELS,
+    MIN_FOV,
+    Vec3,
+    integer,
+    length_floor,
+    nonzero_vector3,
+    scalar,
+    show,
+    vector3,
+)
 from .errors import InvalidParameterError
 
 __all__ = ["Camera", "MAX_IMAGE_SIDE", "MAX_PIXELS", "MIN_FOV"]
@@ -128,7 +139,7 @@ class Camera:
         """``width / height``."""
         return self.width / self.height
 
-    def with_view(self, eye: ArrayLike, target: ArrayLike | None = None) -> "Camera":
+    def with_view(self, eye: ArrayLike, target: ArrayLike | None = None) -> Camera:
         """The same camera moved to a new eye (and optionally target)."""
         return Camera(
             tuple(np.asarray(eye, dtype=float)),  # type: ignore[arg-type]
@@ -136,7 +147,7 @@ class Camera:
             self.up, self.fov, self.width, self.height, self.orthographic, self.height_m,
         )
 
-    def with_size(self, width: int, height: int) -> "Camera":
+    def with_size(self, width: int, height: int) -> Camera:
         """The same view at another image size."""
         return Camera(self.eye, self.target, self.up, self.fov, width, height, self.orthographic, self.height_m)
 

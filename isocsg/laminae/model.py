@@ -104,7 +104,7 @@ class BandMesh:
         return f"<BandMesh(vertices.shape={np.shape(self.vertices)}, triangles.shape={np.shape(self.triangles)})>"
 
     @staticmethod
-    def concatenate(meshes: "list[BandMesh]") -> "BandMesh":
+    def concatenate(meshes: list[BandMesh]) -> BandMesh:
         """Join several band meshes into one."""
         if not meshes:
             return BandMesh(np.zeros((0, 3)), np.zeros((0, 3), np.int32), np.zeros(0), np.zeros(0), np.zeros(0, np.int32))

@@ -236,7 +236,7 @@ def curvature_spacing(
              for f, smooth, w, side, r in _terms(lines.reshape(-1, 3), normals.reshape(-1, 3), lights, origin, eye, shininess, weights)
              if r > 1e-12 and w > 0]
     dominant = _dominant(terms)
-    for f, smooth, w, side, r in terms:
+    for f, smooth, w, side, _r in terms:
         inside = smooth[:, :-2] & smooth[:, 1:-1] & smooth[:, 2:]
         if not inside.any():
             continue

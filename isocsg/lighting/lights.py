@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Any, Union
+from typing import Any
 
 import numpy as np
 from numpy.typing import NDArray
@@ -92,7 +92,7 @@ class DirectionalLight:
         return {"kind": "directional", "direction": list(self.direction), "intensity": self.intensity}
 
 
-Light = Union[PointLight, DirectionalLight]
+Light = PointLight | DirectionalLight
 
 
 @dataclass(frozen=True, slots=True)

@@ -74,7 +74,7 @@ class CSGCall:
     name: str
     args: list[Any] = field(default_factory=list)
     kwargs: dict[str, Any] = field(default_factory=dict)
-    children: list["CSGCall"] = field(default_factory=list)
+    children: list[CSGCall] = field(default_factory=list)
     line: int = 0
     modifiers: str = ""
 

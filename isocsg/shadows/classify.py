@@ -75,7 +75,7 @@ class Plane(tuple):
 
     __slots__ = ()
 
-    def __new__(cls, normal: ArrayLike, offset: float) -> "Plane":
+    def __new__(cls, normal: ArrayLike, offset: float) -> Plane:
         return super().__new__(cls, (tuple(float(x) for x in np.asarray(normal, dtype=np.float64)), float(offset)))
 
     @property

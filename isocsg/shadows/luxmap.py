@@ -97,7 +97,7 @@ class LuxGrid:
         )
 
     @classmethod
-    def from_bounds(cls, xmin: float, ymin: float, xmax: float, ymax: float, z: float, nx: int = 64, ny: int = 64) -> "LuxGrid":
+    def from_bounds(cls, xmin: float, ymin: float, xmax: float, ymax: float, z: float, nx: int = 64, ny: int = 64) -> LuxGrid:
         """A horizontal grid facing up (+z) over ``[xmin, xmax] x [ymin, ymax]`` at height ``z``.
 
         Examples

@@ -138,7 +138,7 @@ class ConvexVolume:
         """Points inside or on the volume (within ``tol``)."""
         return self.signed_distance(points) <= tol
 
-    def clipped(self, bounds: ArrayLike) -> "ConvexVolume":
+    def clipped(self, bounds: ArrayLike) -> ConvexVolume:
         """The volume intersected with an axis-aligned box ``[[lo], [hi]]``."""
         n, d = _bounds_halfspaces(bounds)
         return ConvexVolume(np.vstack([self.normals, n]), np.concatenate([self.offsets, d]), self.tol)
@@ -148,7 +148,7 @@ class ConvexVolume:
         c = self.clipped(bounds)
         return _polytope_vertices(c.normals, c.offsets, max(self.tol, 1e-12))
 
-    def reduced(self, bounds: ArrayLike) -> "ConvexVolume":
+    def reduced(self, bounds: ArrayLike) -> ConvexVolume:
         """The same volume inside ``bounds`` with planes that bound nothing there dropped.
 
         Points inside ``bounds`` are classified exactly as before; the result
@@ -179,7 +179,7 @@ class ConvexVolume:
             return None
         try:
             return trimesh.convex.convex_hull(v)
-        except Exception:  # pragma: no cover - qhull failure on a flat set
+        except Exception:  # noqa: BLE001  # pragma: no cover - qhull failure on a flat set
             return None
 
 
@@ -289,7 +289,7 @@ class SourceGeometry:
     plane: Plane | None = None
 
     @classmethod
-    def from_light(cls, light: Any) -> "SourceGeometry":
+    def from_light(cls, light: Any) -> SourceGeometry:
         """The geometry of an ``AreaLight`` or ``PolyhedronLight``.
 
         Raises
@@ -308,7 +308,7 @@ class SourceGeometry:
         piece = _piece_from_polyhedron(light.polyhedron)
         return cls("polyhedron", piece.vertices, piece.edges, None)
 
-    def clipped(self, plane: Plane, *, tol: float | None = None) -> "SourceGeometry | None":
+    def clipped(self, plane: Plane, *, tol: float | None = None) -> SourceGeometry | None:
         """The part of the source on the positive side of ``plane`` (type-B receivers).
 
         Returns None when no part of positive area (area source) or volume
@@ -498,7 +498,7 @@ class ShadowVolumes:
         umb = self.umbra.contains(points, tol=tol)
         return np.where(umb, 2, np.where(pen, 1, 0)).astype(np.int8)
 
-    def reduced(self, bounds: ArrayLike) -> "ShadowVolumes":
+    def reduced(self, bounds: ArrayLike) -> ShadowVolumes:
         """Both volumes with the planes that bound nothing inside ``bounds`` dropped."""
         return ShadowVolumes(self.penumbra.reduced(bounds), self.umbra.reduced(bounds), self.vertex_volumes, self.occluder)
 
