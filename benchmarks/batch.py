@@ -4,15 +4,17 @@ The serial runs are :func:`isocsg.batch.render_views` with ``workers=1`` and
 :func:`isocsg.shadows.luxmap.illuminance_map`; the cluster runs are the same
 calls with a ``dask.distributed`` client of two worker processes (one thread
 each; each worker loads its kernels once before its tasks and gets one task, a
-contiguous run of the views, while the lux grid's row blocks are one task each). Both must give equal arrays (checked). Each process first renders two views with 4 contours
-and a small grid (its numba kernels are loaded from the disk cache, not
+contiguous run of the views, while the lux grid's row blocks are one task
+each). Both must give equal arrays (checked). Each process first renders two
+views with 4 contours and a small grid (its numba kernels are loaded from the disk cache, not
 timed); the timed turntable (12 contours) then starts from no band mesh or CSG
 surface in either, as a new scene's would: the first view of each process
 resolves the CSG part per pixel, the second builds its clipped surface, later
 views are plain fills (milliseconds). The serial lux grid runs in one process
-whose illuminance kernel uses numba's threads; so does each worker's. Printed: wall-clock medians, CPU seconds (this process, or
-this process plus both workers), the speed-up, and the machine's load average
-before and after, since a shared machine's other work takes from both.
+whose illuminance kernel uses numba's threads; so does each worker's.
+Printed: wall-clock medians, CPU seconds (this process, or this process plus
+both workers), the speed-up, and the machine's load average before and after,
+since a shared machine's other work takes from both.
 
     .venv/bin/python benchmarks/batch.py                 # 16 views, 2001 x 2001 nodes, 1 repeat
     .venv/bin/python benchmarks/batch.py --quick         # 8 views, 401 x 401 nodes

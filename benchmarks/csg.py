@@ -70,7 +70,8 @@ except ImportError:  # pragma: no cover - standalone copy of this script
 SCENES = {
     "sphere minus cylinder": Sphere((0, 0, 0), 1.0) - Cylinder((0, 0, 0), (0.0, 0.0, 3.0), 0.45),
     "nested tree": (
-        Box((0, 0, 0), (1.6, 1.6, 1.6)) - (Cylinder((0, 0, 0), (2.4, 0, 0), 0.4) | Cylinder((0, 0, 0), (0, 2.4, 0), 0.4))
+        Box((0, 0, 0), (1.6, 1.6, 1.6))
+        - (Cylinder((0, 0, 0), (2.4, 0, 0), 0.4) | Cylinder((0, 0, 0), (0, 2.4, 0), 0.4))
     )
     & Sphere((0, 0, 0), 1.05),
 }
@@ -246,9 +247,10 @@ def main(argv: list[str] | None = None) -> int:
                 f2, m2 = errors(_image(r2), ref2)
                 rows[f"iso_first{contours}"], rows[f"iso_re{contours}"] = t_first, t_re
                 rows[f"iso_mae_first{contours}"], rows[f"iso_mae_re{contours}"] = m1, m2
-                print(f"  isocsg N={contours:<3d} first render        {t_first:8.3f} s   within {f1:6.2%}  mae {m1:.4f}")
-                print(f"  isocsg N={contours:<3d} 2nd view            {t_second:8.3f} s   (surface built in the background: "
-                      f"{t_wait:.3f} s more)")
+                print(f"  isocsg N={contours:<3d} first render        {t_first:8.3f} s   "
+                      f"within {f1:6.2%}  mae {m1:.4f}")
+                print(f"  isocsg N={contours:<3d} 2nd view            {t_second:8.3f} s   "
+                      f"(surface built in the background: {t_wait:.3f} s more)")
                 print(f"  isocsg N={contours:<3d} re-render           {t_re:8.3f} s   within {f2:6.2%}  mae {m2:.4f}")
 
             for seg in (64, 256):

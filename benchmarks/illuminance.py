@@ -48,7 +48,8 @@ RADIANCE = 1000.0
 def room():
     lamp = AreaLight([(-0.6, -0.3, 2.8), (-0.6, 0.3, 2.8), (0.6, 0.3, 2.8), (0.6, -0.3, 2.8)], RADIANCE)
     top = isocsg.Box((0.3, 0.2, 0.73), (1.2, 0.8, 0.04))
-    legs = [isocsg.Box((0.3 + sx * 0.55, 0.2 + sy * 0.35, 0.355), (0.05, 0.05, 0.71)) for sx in (-1, 1) for sy in (-1, 1)]
+    legs = [isocsg.Box((0.3 + sx * 0.55, 0.2 + sy * 0.35, 0.355), (0.05, 0.05, 0.71))
+            for sx in (-1, 1) for sy in (-1, 1)]
     return lamp, [top, *legs]
 
 
@@ -158,7 +159,8 @@ def run(quick: bool) -> None:
                 rows.append((f"{m}x{m}", f"MC {target:.1%}", "not reached", "-", "-", "-"))
                 continue
             t_mc, _ = median_time(lambda: mc(P, lamp, boxes, k, 99), repeats)
-            rows.append((f"{m}x{m}", f"MC {target:.1%}", f"{k * k}", f"{err:.2%}", fmt_seconds(t_mc), fmt_rate(n, t_mc)))
+            rows.append((f"{m}x{m}", f"MC {target:.1%}", f"{k * k}", f"{err:.2%}",
+                         fmt_seconds(t_mc), fmt_rate(n, t_mc)))
             ratio_rows.append((f"{m}x{m}", f"{target:.1%}", f"{t_mc / t_ex:.3g}x"))
         counts = np.bincount(S, minlength=3)
         rows.append((f"{m}x{m}", f"states lit/pen/umb {counts[0]}/{counts[1]}/{counts[2]}", "", "", "", ""))
@@ -167,7 +169,8 @@ def run(quick: bool) -> None:
         ["grid", "method", "samples", "RMS error", "time", "points/s"],
         rows,
     )
-    print_table("Speed-up of the exact method over Monte Carlo", ["grid", "MC accuracy", "MC time / exact time"], ratio_rows)
+    print_table("Speed-up of the exact method over Monte Carlo", ["grid", "MC accuracy", "MC time / exact time"],
+                ratio_rows)
 
     # fully visible source
     nfull = 200_000 if quick else 1_000_000

@@ -88,7 +88,8 @@ def openscad_time(name: str, segments: int, repeats: int, timeout: float, tmp: P
         out = tmp / f"{name}.stl"
         t0 = time.perf_counter()
         try:
-            subprocess.run(["openscad", "--render", "-o", str(out), "-D", f"$fn={segments}", str(CORPUS_DIR / f"{name}.scad")],
+            subprocess.run(["openscad", "--render", "-o", str(out), "-D", f"$fn={segments}",
+                            str(CORPUS_DIR / f"{name}.scad")],
                            capture_output=True, timeout=timeout, check=True, stdin=subprocess.DEVNULL)
         except subprocess.TimeoutExpired:
             return None
@@ -182,7 +183,8 @@ def main(argv: list[str] | None = None) -> int:
                 f"{fmt_seconds(t_bool)} + {fmt_seconds(t_pv)}", _ratio(peer, total),
             ])
     print_table(
-        f"OpenSCAD corpus, {args.size} x {args.size}, 64 contours, peers at {args.segments} segments, medians of {repeats}",
+        f"OpenSCAD corpus, {args.size} x {args.size}, 64 contours, peers at {args.segments} segments, "
+        f"medians of {repeats}",
         ["model", "openscad -o .csg", "isocsg load", "isocsg render", "openscad --render .stl", "ratio",
          "manifold3d + pyvista first", "ratio"],
         rows,

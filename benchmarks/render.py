@@ -228,7 +228,8 @@ def main(argv: list[str] | None = None) -> int:
                 t_g_256 = pyvista_rerender_time(pyvista_mesh(name, 256), side, repeats)
             rows.append([
                 f"{side}x{side}", px, iso["triangles"], fmt_seconds(iso["build"]), fmt_seconds(iso["fill"]),
-                fmt_seconds(iso["first"]), fmt_seconds(iso["again"]), fmt_rate(px, iso["first"]), fmt_rate(px, iso["again"]),
+                fmt_seconds(iso["first"]), fmt_seconds(iso["again"]),
+                fmt_rate(px, iso["first"]), fmt_rate(px, iso["again"]),
                 fmt_seconds(t_ray), fmt_seconds(t_g_seed), fmt_seconds(t_g_256), fmt_seconds(t_frame),
             ])
             ratio_rows.append([
@@ -239,7 +240,8 @@ def main(argv: list[str] | None = None) -> int:
             ])
             summary[f"{name}-{side}"] = dict(iso, ray=t_ray, frame=t_frame, g256=t_g_256 or math.nan)
         print_table(
-            f"{name}: {CONTOURS} contours, medians of {repeats} (display = band fill from a new viewpoint, laminae cached)",
+            f"{name}: {CONTOURS} contours, medians of {repeats} "
+            "(display = band fill from a new viewpoint, laminae cached)",
             ["image", "pixels", "band tris", "build laminae", "display (fill)", "first render", "re-render",
              "px/s first", "px/s re-render", "numpy ray cast", "Gouraud seed mesh", "Gouraud 256", "frame write"],
             rows,

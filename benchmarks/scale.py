@@ -257,7 +257,7 @@ def _set_camera(pl, cam) -> None:
     pl.reset_camera_clipping_range()
 
 
-# ----------------------------------------------------------------------------- volume() and section() alone (--geometry)
+# ------------------------------------------------------------------- volume() and section() alone (--geometry)
 
 
 def _exact_volume(model: str, n: int) -> float:
@@ -357,7 +357,8 @@ def main_geometry(args, repeats: int, timeout: float, env: dict) -> int:
             grows = [f"{a}->{b}" for (a, ta), (b, tb) in zip(ok, ok[1:]) if tb > 1.25 * ta]
             lines.append([model, f"{name} time per leaf does not grow with n",
                           ", ".join(f"{n}: {fmt_seconds(t)}" for n, t in ok) or "-",
-                          _yes(bool(ok) and len(ok) == len(pts) and not grows) + (f" ({', '.join(grows)})" if grows else "")])
+                          _yes(bool(ok) and len(ok) == len(pts) and not grows)
+                          + (f" ({', '.join(grows)})" if grows else "")])
     print_table("targets", ["model", "target", "measured", "met"], lines)
     return 0
 
@@ -479,9 +480,11 @@ def main(argv: list[str] | None = None) -> int:
                           _yes(peak <= 1536 and status == "ok")])
         if (model, 10_000) in results:
             iso, status, peak = results[(model, 10_000)]["isocsg"]
-            done = status == "ok" and all(s in iso for s in ("iso_first", "iso_second", "iso_re", "iso_volume", "iso_section"))
+            done = status == "ok" and all(s in iso for s in ("iso_first", "iso_second", "iso_re", "iso_volume",
+                                                             "iso_section"))
             lines.append([model, 10_000, "completes", status, _yes(done)])
-            lines.append([model, 10_000, "peak memory <= 3 GB", f"{_peak(peak, status)} MB", _yes(peak <= 3072 and done)])
+            lines.append([model, 10_000, "peak memory <= 3 GB", f"{_peak(peak, status)} MB",
+                          _yes(peak <= 3072 and done)])
         for n in args.n:
             if (model, n) not in results:
                 continue
@@ -492,7 +495,8 @@ def main(argv: list[str] | None = None) -> int:
             lines.append([model, n, "no view slower than the first (second, new view, re-render)",
                           f"{fmt_seconds(second)}, {fmt_seconds(new)}, {fmt_seconds(re)} vs {fmt_seconds(first)}",
                           _yes(met)])
-        per_leaf = [(n, _median(results[(model, n)]["isocsg"][0], "iso_first")) for n in args.n if (model, n) in results]
+        per_leaf = [(n, _median(results[(model, n)]["isocsg"][0], "iso_first"))
+                    for n in args.n if (model, n) in results]
         per_leaf = [(n, t / n) for n, t in per_leaf if t]
         grows = [f"{a}->{b}" for (a, ta), (b, tb) in zip(per_leaf, per_leaf[1:]) if tb > 1.25 * ta]
         lines.append([model, "all", "first render time per leaf does not grow with n",

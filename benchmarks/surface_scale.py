@@ -87,7 +87,8 @@ def run_layers(k: int, module: str | None) -> dict:
     kept = out[1][~out[3]]
     area = 0.5 * np.cross(out[0][kept[:, 1]] - out[0][kept[:, 0]], out[0][kept[:, 2]] - out[0][kept[:, 0]])[:, 2].sum()
     return {"case": "layers", "count": k, "triangles": len(args[1]), "seconds": round(statistics.median(times), 4),
-            "us_per_square": round(1e6 * statistics.median(times) / k**2, 1), "kept_area_error": float(area - 0.98 * k * k)}
+            "us_per_square": round(1e6 * statistics.median(times) / k**2, 1),
+            "kept_area_error": float(area - 0.98 * k * k)}
 
 
 def _peak_rss(fn):  # type: ignore[no-untyped-def]

@@ -26,7 +26,8 @@ from isocsg.csg import Union  # noqa: E402
 
 
 def build(n: int) -> Union:
-    return Union([Sphere((float(i), 0.0, 0.0), 0.4) if i % 3 else Box((float(i), 0.0, 0.0), (0.5, 0.5, 0.5)) for i in range(n)])
+    return Union([Sphere((float(i), 0.0, 0.0), 0.4) if i % 3 else Box((float(i), 0.0, 0.0), (0.5, 0.5, 0.5))
+                  for i in range(n)])
 
 
 def main() -> None:
@@ -42,11 +43,13 @@ def main() -> None:
         peer = peer_mesh = None
         if n <= 10_000:
             m = tree.to_manifold(8)
-            peer, _ = median_time(lambda: m.transform([[0.9, 0.1, 0.0, 1.0], [0.0, 1.0, 0.2, 0.0], [0.0, 0.0, 1.1, 0.0]]), args.repeat)
-            peer_mesh, _ = median_time(lambda: m.transform([[0.9, 0.1, 0.0, 1.0], [0.0, 1.0, 0.2, 0.0], [0.0, 0.0, 1.1, 0.0]]).to_mesh(), args.repeat)
+            uneven = [[0.9, 0.1, 0.0, 1.0], [0.0, 1.0, 0.2, 0.0], [0.0, 0.0, 1.1, 0.0]]
+            peer, _ = median_time(lambda: m.transform(uneven), args.repeat)
+            peer_mesh, _ = median_time(lambda: m.transform(uneven).to_mesh(), args.repeat)
         rows.append([f"{n}", fmt_seconds(t_build), fmt_seconds(t_rot), fmt_seconds(t_scale),
                      f"{t_rot / t_build:.2f}", fmt_seconds(peer), fmt_seconds(peer_mesh)])
-    print_table("Transforms of a union of spheres and boxes (medians)", ["leaves", "build", "rotate", "scale (uneven)", "rotate / build",
+    print_table("Transforms of a union of spheres and boxes (medians)", ["leaves", "build", "rotate", "scale (uneven)",
+                                                                         "rotate / build",
                  "manifold3d transform", "manifold3d transform + to_mesh"], rows)
 
 

@@ -6,9 +6,10 @@ large lux map in row blocks. Both run the blocks on a ``dask.distributed``
 client when one is passed (scenes, lights and solids are plain picklable
 values, sent to each worker once; each worker loads the kernels it needs
 before the tasks; each worker thread gets one task, a contiguous run of the
-views, while row blocks are one task each, dealt as threads free up), otherwise on a local thread pool. Results are in input order and
-equal to the serial ones: every view and every node is computed by the same
-code as :func:`isocsg.render.render` and
+views, while row blocks are one task each, dealt as threads free up),
+otherwise on a local thread pool. Results are in input order and equal to
+the serial ones: every view and every node is computed by the same code as
+:func:`isocsg.render.render` and
 :func:`isocsg.shadows.luxmap.illuminance_map`.
 
 Threads are safe under every numba threading layer: no compiled kernel on
@@ -170,7 +171,8 @@ def render_views(
     Examples
     --------
     >>> from isocsg import PointLight, Sphere
-    >>> scene = Scene(Camera((4, 0, 1), (0, 0, 0), width=24, height=16), [PointLight((3, 3, 5))], [Sphere((0, 0, 0), 1)])
+    >>> camera = Camera((4, 0, 1), (0, 0, 0), width=24, height=16)
+    >>> scene = Scene(camera, [PointLight((3, 3, 5))], [Sphere((0, 0, 0), 1)])
     >>> views = render_views(scene, turntable(scene.camera, 3))
     >>> [v.image.shape for v in views]
     [(16, 24), (16, 24), (16, 24)]
@@ -189,7 +191,8 @@ def render_views(
 def _rows(lights: Any, occluders: Any, points: np.ndarray, normal: np.ndarray, resolution: int) -> np.ndarray:
     from .shadows.illuminance import illuminance
 
-    return illuminance(points.reshape(-1, 3), normal, lights, occluders, resolution=resolution).reshape(points.shape[:-1])
+    return illuminance(points.reshape(-1, 3), normal, lights, occluders,
+                       resolution=resolution).reshape(points.shape[:-1])
 
 
 def illuminance_grid(

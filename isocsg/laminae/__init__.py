@@ -11,4 +11,5 @@
 from .builder import MAX_CONTOURS, build_bands, build_laminae, cache_info, clear_cache
 from .model import BandMesh, ContourFamily, Lamina, LaminaSet
 
-__all__ = ["build_laminae", "build_bands", "clear_cache", "cache_info", "MAX_CONTOURS", "Lamina", "ContourFamily", "BandMesh", "LaminaSet"]
+__all__ = ["build_laminae", "build_bands", "clear_cache", "cache_info", "MAX_CONTOURS", "Lamina", "ContourFamily",
+           "BandMesh", "LaminaSet"]

@@ -75,7 +75,8 @@ class FieldFamily:
         return band_tables(self.kind, levels, self.exponent, self.weight_out, self.weight_in)
 
 
-def light_direction_at(light: Light, points: NDArray[np.float64], origin: NDArray[np.float64] | None = None) -> NDArray[np.float64]:
+def light_direction_at(light: Light, points: NDArray[np.float64],
+                       origin: NDArray[np.float64] | None = None) -> NDArray[np.float64]:
     """Unit directions from ``points`` (n, 3) towards ``light`` (a zero vector at the light itself).
 
     ``points`` are relative to ``origin`` (the world origin when None).

@@ -107,7 +107,8 @@ class BandMesh:
     def concatenate(meshes: list[BandMesh]) -> BandMesh:
         """Join several band meshes into one."""
         if not meshes:
-            return BandMesh(np.zeros((0, 3)), np.zeros((0, 3), np.int32), np.zeros(0), np.zeros(0), np.zeros(0, np.int32))
+            return BandMesh(np.zeros((0, 3)), np.zeros((0, 3), np.int32), np.zeros(0), np.zeros(0),
+                            np.zeros(0, np.int32))
         offs = np.cumsum([0] + [len(m.vertices) for m in meshes[:-1]])
         return BandMesh(
             np.vstack([m.vertices for m in meshes]),

@@ -236,7 +236,8 @@ def split_by_levels(
     out_tri = np.empty((cap, 3), np.int64)
     out_parent = np.empty(cap, np.int64)
     out_band = np.empty(cap, np.int64)
-    m = _split_kernel(t, f, tri_edge, edges[:, 0].copy(), k0, off, len(v), lv, kmin, kmax, out_tri, out_parent, out_band)
+    m = _split_kernel(t, f, tri_edge, edges[:, 0].copy(), k0, off, len(v), lv, kmin, kmax, out_tri, out_parent,
+                      out_band)
     return SplitMesh(
         np.vstack([v, new_v]), np.vstack([vals, new_vals]), out_tri[:m], out_parent[:m], out_band[:m]
     )

@@ -21,7 +21,8 @@ from numpy.typing import NDArray
 from ..lighting.lights import PointLight
 from .families import GRAZING, light_direction_at
 
-__all__ = ["Surface", "orient_outward", "light_reference_distance", "refinement", "specular_refinement", "eye_reference_distance", "curvature_spacing", "mixed_spacing", "pieces"]
+__all__ = ["Surface", "orient_outward", "light_reference_distance", "refinement", "specular_refinement",
+           "eye_reference_distance", "curvature_spacing", "mixed_spacing", "pieces"]
 
 
 @dataclass(frozen=True, slots=True, eq=False)
@@ -48,7 +49,8 @@ class Surface:
     parts: NDArray[np.int64]
 
 
-def orient_outward(vertices: NDArray[np.float64], normals: NDArray[np.float64], triangles: NDArray[np.int64]) -> NDArray[np.int64]:
+def orient_outward(vertices: NDArray[np.float64], normals: NDArray[np.float64],
+                   triangles: NDArray[np.int64]) -> NDArray[np.int64]:
     """Reorder triangle corners so that each is counter-clockwise about its vertex normals.
 
     Degenerate (zero-area) triangles are left as they are.
@@ -225,22 +227,24 @@ def curvature_spacing(
     """
     n_lines, m, _ = lines.shape
     if step is None:
-        step = np.linalg.norm(lines[:, -1] - lines[:, 0], axis=1) / max(m - 1, 1)
+        steps = np.linalg.norm(lines[:, -1] - lines[:, 0], axis=1) / max(m - 1, 1)
     else:
-        step = np.full(n_lines, float(step))
-    if m < 3 or not np.all(step > 0):
+        steps = np.full(n_lines, float(step))
+    if m < 3 or not np.all(steps > 0):
         return np.inf
     n = min(contours, SPECULAR_CONTOURS)
     best = np.inf
     terms = [(f.reshape(n_lines, m), smooth.reshape(n_lines, m), w, side, r)
-             for f, smooth, w, side, r in _terms(lines.reshape(-1, 3), normals.reshape(-1, 3), lights, origin, eye, shininess, weights)
+             for f, smooth, w, side, r in _terms(lines.reshape(-1, 3), normals.reshape(-1, 3), lights, origin, eye,
+                                                 shininess, weights)
              if r > 1e-12 and w > 0]
     dominant = _dominant(terms)
     for f, smooth, w, side, _r in terms:
         inside = smooth[:, :-2] & smooth[:, 1:-1] & smooth[:, 2:]
         if not inside.any():
             continue
-        d2 = float(np.max(np.where(inside, np.abs(f[:, :-2] - 2.0 * f[:, 1:-1] + f[:, 2:]), 0.0) / (step[:, None] ** 2)))
+        second = np.abs(f[:, :-2] - 2.0 * f[:, 1:-1] + f[:, 2:])
+        d2 = float(np.max(np.where(inside, second, 0.0) / (steps[:, None] ** 2)))
         if d2 > 0:
             best = min(best, float(np.sqrt(2.0 * dominant[side] / (n * w * d2))))
     return best
@@ -287,7 +291,8 @@ def mixed_spacing(
     n = min(contours, SPECULAR_CONTOURS)
     best = np.inf
     terms = [(f.reshape(m0, m1), smooth.reshape(m0, m1), w, side, r)
-             for f, smooth, w, side, r in _terms(grid.reshape(-1, 3), normals.reshape(-1, 3), lights, origin, eye, shininess, weights)
+             for f, smooth, w, side, r in _terms(grid.reshape(-1, 3), normals.reshape(-1, 3), lights, origin, eye,
+                                                 shininess, weights)
              if r > 1e-12 and w > 0]
     # As in curvature_spacing: a faint family is followed within the largest band step of the
     # image it shows in, and only cells where the field is smooth (all four corners) measure its

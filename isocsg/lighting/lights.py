@@ -39,7 +39,8 @@ class PointLight:
         object.__setattr__(
             self,
             "intensity",
-            scalar("PointLight.intensity", self.intensity, low=0.0, low_inclusive=True, high=MAX_INTENSITY, error=InvalidLightError),
+            scalar("PointLight.intensity", self.intensity, low=0.0, low_inclusive=True, high=MAX_INTENSITY,
+                   error=InvalidLightError),
         )
 
     def directions_from(self, points: NDArray[np.float64]) -> NDArray[np.float64]:
@@ -74,7 +75,8 @@ class DirectionalLight:
         object.__setattr__(
             self,
             "intensity",
-            scalar("DirectionalLight.intensity", self.intensity, low=0.0, low_inclusive=True, high=MAX_INTENSITY, error=InvalidLightError),
+            scalar("DirectionalLight.intensity", self.intensity, low=0.0, low_inclusive=True, high=MAX_INTENSITY,
+                   error=InvalidLightError),
         )
 
     @property
@@ -114,10 +116,12 @@ class Material:
 
     def __post_init__(self) -> None:
         for name in ("ambient", "kd", "ks"):
-            v = scalar(f"Material.{name}", getattr(self, name), low=0.0, low_inclusive=True, high=MAX_INTENSITY, error=InvalidLightError)
+            v = scalar(f"Material.{name}", getattr(self, name), low=0.0, low_inclusive=True, high=MAX_INTENSITY,
+                       error=InvalidLightError)
             object.__setattr__(self, name, v)
         object.__setattr__(
-            self, "shininess", scalar("Material.shininess", self.shininess, low=0.0, high=MAX_INTENSITY, error=InvalidLightError)
+            self, "shininess", scalar("Material.shininess", self.shininess, low=0.0, high=MAX_INTENSITY,
+                                      error=InvalidLightError)
         )
 
     def to_dict(self) -> dict[str, Any]:

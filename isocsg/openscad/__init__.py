@@ -60,7 +60,9 @@ def _read_text(p: Path) -> str:
     try:
         return data.decode("utf-8")
     except UnicodeDecodeError as exc:
-        raise OpenSCADError(f"{p}: not a UTF-8 text file (byte 0x{data[exc.start]:02x} at offset {exc.start})") from None
+        raise OpenSCADError(
+            f"{p}: not a UTF-8 text file (byte 0x{data[exc.start]:02x} at offset {exc.start})"
+        ) from None
 
 
 def read_openscad(path: str | os.PathLike[str], *, skip_unsupported: bool = False) -> LoweredModel:
@@ -121,7 +123,8 @@ def load_openscad(path: str | os.PathLike[str], *, skip_unsupported: bool = Fals
     >>> import pathlib, tempfile
     >>> from isocsg import volume
     >>> path = pathlib.Path(tempfile.mkdtemp()) / "part.csg"
-    >>> _ = path.write_text("difference() { cube(size = [2, 2, 1], center = true); cylinder(h = 3, r1 = 0.5, r2 = 0.5, center = true); }")
+    >>> _ = path.write_text("difference() { cube(size = [2, 2, 1], center = true); "
+    ...                     "cylinder(h = 3, r1 = 0.5, r2 = 0.5, center = true); }")
     >>> round(volume(load_openscad(path)), 9) == round(2 * 2 * 1 - 3.141592653589793 * 0.5**2 * 1, 9)
     True
     """
@@ -142,4 +145,5 @@ def _warn(model: LoweredModel) -> None:
         total = sum(model.skipped.values())
         counts = ", ".join(f"{n} {name}" for name, n in sorted(model.skipped.items()))
         noun = "node" if total == 1 else "nodes"
-        warnings.warn(OpenSCADSkipWarning(f"skipped {total} unsupported OpenSCAD {noun}: {counts}", model.skipped), stacklevel=3)
+        warnings.warn(OpenSCADSkipWarning(f"skipped {total} unsupported OpenSCAD {noun}: {counts}", model.skipped),
+                      stacklevel=3)

@@ -26,7 +26,8 @@ VIEW_DIRECTION = (0.55, -0.75, 0.5)
 LIGHT_DIRECTION = (0.3, -1.0, 0.9)
 
 
-def frame_camera(bounds: np.ndarray, *, width: int = 512, height: int = 512, fov: float = 40.0, margin: float = 1.1) -> Camera:
+def frame_camera(bounds: np.ndarray, *, width: int = 512, height: int = 512, fov: float = 40.0,
+                 margin: float = 1.1) -> Camera:
     """A camera that frames an axis-aligned box ``bounds`` (shape (2, 3)).
 
     The bounding sphere of the box fits inside the narrower of the vertical and
@@ -62,4 +63,5 @@ def framed_scene(solids: Solid | Sequence[Solid], *, width: int = 512, height: i
     bounds = np.stack([s.bounds for s in items])
     box = np.stack([bounds[:, 0].min(axis=0), bounds[:, 1].max(axis=0)])
     camera = frame_camera(box, width=width, height=height)
-    return Scene(camera, [DirectionalLight(LIGHT_DIRECTION)], [SceneObject(s) for s in items], RenderSettings(contours=contours))
+    return Scene(camera, [DirectionalLight(LIGHT_DIRECTION)], [SceneObject(s) for s in items],
+                 RenderSettings(contours=contours))

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -12,7 +13,10 @@ from ..geometry.primitives import Solid
 from ..lighting.lights import DirectionalLight, Material, PointLight
 from ..shadows.lights import AreaLight, PolyhedronLight
 
-__all__ = ["SceneObject", "RenderSettings", "Scene", "MAX_CONTOURS", "RENDER_MODES"]
+__all__ = ["SceneObject", "RenderSettings", "Scene", "SceneLight", "MAX_CONTOURS", "RENDER_MODES"]
+
+#: The lights a scene holds.
+SceneLight = PointLight | DirectionalLight | AreaLight | PolyhedronLight
 
 #: Largest accepted number of isoluminance contours per light family.
 MAX_CONTOURS = 4096
@@ -61,17 +65,25 @@ class RenderSettings:
 
     def __post_init__(self) -> None:
         object.__setattr__(
-            self, "contours", integer("render.contours", self.contours, low=1, high=MAX_CONTOURS, error=InvalidParameterError)
+            self, "contours", integer("render.contours", self.contours, low=1, high=MAX_CONTOURS,
+                                      error=InvalidParameterError)
         )
         if not isinstance(self.mode, str) or self.mode not in RENDER_MODES:
             raise InvalidParameterError(f"render.mode must be one of {RENDER_MODES}, got {show(self.mode)}")
         object.__setattr__(
-            self, "exposure", scalar("render.exposure", self.exposure, low=0.0, high=MAX_INTENSITY, error=InvalidParameterError)
+            self, "exposure", scalar("render.exposure", self.exposure, low=0.0, high=MAX_INTENSITY,
+                                     error=InvalidParameterError)
         )
-        object.__setattr__(self, "interval", integer("render.interval", self.interval, low=1, high=256, error=InvalidParameterError))
+        object.__setattr__(self, "interval", integer("render.interval", self.interval, low=1, high=256,
+                                                     error=InvalidParameterError))
 
 
-@dataclass(frozen=True, slots=True)
+_DEFAULT_RENDER = RenderSettings()
+
+
+# The constructor is written out (init=False) so that it accepts what users pass, any sequence of
+# lights and of objects (solids or SceneObjects), while the fields hold tuples of SceneObjects.
+@dataclass(frozen=True, slots=True, init=False)
 class Scene:
     """Camera, lights, objects and render settings.
 
@@ -98,9 +110,22 @@ class Scene:
     """
 
     camera: Camera
-    lights: tuple[Any, ...]
+    lights: tuple[SceneLight, ...]
     objects: tuple[SceneObject, ...]
     render: RenderSettings = field(default_factory=RenderSettings)
+
+    def __init__(
+        self,
+        camera: Camera,
+        lights: Sequence[SceneLight],
+        objects: Sequence[SceneObject | Solid],
+        render: RenderSettings = _DEFAULT_RENDER,
+    ) -> None:
+        object.__setattr__(self, "camera", camera)
+        object.__setattr__(self, "lights", lights)
+        object.__setattr__(self, "objects", objects)
+        object.__setattr__(self, "render", render)
+        self.__post_init__()
 
     def _repr_mimebundle_(self, include: Any = None, exclude: Any = None) -> dict[str, Any]:
         """Rich display in Jupyter: a small PNG image (see :mod:`isocsg.interop.notebook`)."""

@@ -375,7 +375,9 @@ def solid_faces(solid: Any) -> list[NDArray[np.float64]]:
         return [np.asarray(f, dtype=np.float64) for f in solid.face_polygons()]
     if isinstance(solid, Sequence) or isinstance(solid, np.ndarray):
         return [_polygon(f"faces[{i}]", f) for i, f in enumerate(solid)]
-    raise InvalidGeometryError(f"solid must be a Box, a ConvexPolyhedron or a list of polygons, got {type(solid).__name__}")
+    raise InvalidGeometryError(
+        f"solid must be a Box, a ConvexPolyhedron or a list of polygons, got {type(solid).__name__}"
+    )
 
 
 def classify_faces(solid: Any, light: Any, *, tol: float | None = None) -> list[FaceType]:

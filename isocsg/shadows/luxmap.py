@@ -24,7 +24,8 @@ from ..errors import InvalidParameterError
 from ..geometry.primitives import DEFAULT_RESOLUTION
 
 __all__ = [
-    "LuxGrid", "LuxMap", "IsoluxLine", "illuminance_map", "isolux_lines", "nice_levels", "occluded_nodes", "save_luxmap_png",
+    "LuxGrid", "LuxMap", "IsoluxLine", "illuminance_map", "isolux_lines", "nice_levels", "occluded_nodes",
+    "save_luxmap_png",
 ]
 
 ProgressCallback = Callable[[int, int], None]
@@ -97,7 +98,8 @@ class LuxGrid:
         )
 
     @classmethod
-    def from_bounds(cls, xmin: float, ymin: float, xmax: float, ymax: float, z: float, nx: int = 64, ny: int = 64) -> LuxGrid:
+    def from_bounds(cls, xmin: float, ymin: float, xmax: float, ymax: float, z: float, nx: int = 64,
+                    ny: int = 64) -> LuxGrid:
         """A horizontal grid facing up (+z) over ``[xmin, xmax] x [ymin, ymax]`` at height ``z``.
 
         Examples
@@ -288,7 +290,7 @@ def nice_levels(E: ArrayLike, count: int = 8) -> NDArray[np.float64]:
     mag = 10 ** math.floor(math.log10(raw))
     step = min((m * mag for m in (1, 2, 2.5, 5, 10) if m * mag >= raw), default=10 * mag)
     first = math.floor(lo / step) * step + step
-    lv = np.arange(first, hi, step)
+    lv: NDArray[np.float64] = np.arange(first, hi, step, dtype=np.float64)
     return np.round(lv[(lv > lo) & (lv < hi)], 12)
 
 
@@ -358,7 +360,7 @@ def isolux_lines(E: ArrayLike, levels: ArrayLike) -> list[list[tuple[NDArray[np.
     boxes = _level_boxes(z, lv)
     shared = _shared_levels(boxes, z.size)
     full = None
-    out = []
+    out: list[list[tuple[NDArray[np.float64], bool]]] = []
     for k, (level, box) in enumerate(zip(lv, boxes)):
         if box is None:
             out.append([])
@@ -439,7 +441,9 @@ def _generator(z: NDArray[np.float64], mask: NDArray[np.bool_] | None, box: tupl
     # end also validates through masked arrays and builds the coordinate grids,
     # which cost as much as tracing a few levels on a 512 x 512 grid.
     return contourpy.SerialContourGenerator(
-        x, y, np.ascontiguousarray(z[j0:j1, i0:i1]), None if mask is None else np.ascontiguousarray(mask[j0:j1, i0:i1]),
+        x, y, np.ascontiguousarray(z[j0:j1, i0:i1]),
+        # None: no mask (contourpy's own front end passes None; its stub says an array).
+        None if mask is None else np.ascontiguousarray(mask[j0:j1, i0:i1]),  # type: ignore[arg-type]
         corner_mask=False, quad_as_tri=False, z_interp=contourpy.ZInterp.Linear,
         line_type=contourpy.LineType.SeparateCode, fill_type=contourpy.FillType.OuterCode,
         x_chunk_size=0, y_chunk_size=0,
@@ -499,7 +503,8 @@ def save_luxmap_png(
         top = 1.0
     grey = np.clip(np.nan_to_num(E / top), 0, 1)
     ny, nx = E.shape
-    img = Image.fromarray(np.rint(grey[::-1] * 255).astype(np.uint8), mode="L").resize((nx * k, ny * k), Image.NEAREST)
+    grey_img = Image.fromarray(np.rint(grey[::-1] * 255).astype(np.uint8), mode="L")
+    img = grey_img.resize((nx * k, ny * k), Image.Resampling.NEAREST)
     img = img.convert("RGB")
     draw = ImageDraw.Draw(img)
     colours = [(220, 40, 40), (40, 90, 230)]

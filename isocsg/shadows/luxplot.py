@@ -31,7 +31,9 @@ def _pyplot() -> Any:
             matplotlib.use("Agg")  # no display: draw into files
         import matplotlib.pyplot as plt
     except ImportError as exc:
-        raise MissingDependencyError("lux map figures need matplotlib; install the extra: pip install 'isocsg[plot]'") from exc
+        raise MissingDependencyError(
+            "lux map figures need matplotlib; install the extra: pip install 'isocsg[plot]'"
+        ) from exc
     return plt
 
 

@@ -200,12 +200,14 @@ def _occluder_list(occluders: Any, resolution: int) -> tuple[list[Any], list[Any
         if isinstance(o, Solid):
             for pc in convex_pieces([o], resolution=resolution):
                 pieces.append(pc)
-                solids.append(ConvexPolyhedron(pc.vertices))
+                solids.append(ConvexPolyhedron(pc.vertices))  # type: ignore[arg-type]  # array_like accepted; the field's annotation says tuples
         else:
             try:
                 pc = as_piece(o)
             except InvalidGeometryError:
-                raise InvalidGeometryError(f"occluders[{i}] must be a solid or a convex piece, got {type(o).__name__}") from None
+                raise InvalidGeometryError(
+                    f"occluders[{i}] must be a solid or a convex piece, got {type(o).__name__}"
+                ) from None
             pieces.append(pc)
             solids.append(ConvexPolyhedron(pc.vertices))
     return pieces, solids
@@ -286,7 +288,8 @@ def face_shadow_regions(
     umbra = shapely.union_all(umbrae) if umbrae else empty
     pen_all = shapely.union_all(penumbrae) if penumbrae else empty
     penumbra = pen_all.difference(umbra) if not umbra.is_empty else pen_all
-    overlaps = [penumbrae[a].intersection(penumbrae[b]) for a in range(len(penumbrae)) for b in range(a + 1, len(penumbrae))]
+    overlaps = [penumbrae[a].intersection(penumbrae[b])
+                for a in range(len(penumbrae)) for b in range(a + 1, len(penumbrae))]
     overlap = shapely.union_all(overlaps).difference(umbra) if overlaps else empty
     if overlap.area <= 0:
         overlap = empty

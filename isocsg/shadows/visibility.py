@@ -223,7 +223,8 @@ def _hull(pts: np.ndarray, n: int, hull: np.ndarray) -> int:
     k = 0
     for ii in range(n):
         i = o[ii]
-        while k >= 2 and _cross(hull[k - 2, 0], hull[k - 2, 1], hull[k - 1, 0], hull[k - 1, 1], pts[i, 0], pts[i, 1]) <= 0.0:
+        while k >= 2 and _cross(hull[k - 2, 0], hull[k - 2, 1], hull[k - 1, 0], hull[k - 1, 1],
+                                pts[i, 0], pts[i, 1]) <= 0.0:
             k -= 1
         hull[k, 0] = pts[i, 0]
         hull[k, 1] = pts[i, 1]
@@ -231,7 +232,8 @@ def _hull(pts: np.ndarray, n: int, hull: np.ndarray) -> int:
     lower = k + 1
     for ii in range(n - 2, -1, -1):
         i = o[ii]
-        while k >= lower and _cross(hull[k - 2, 0], hull[k - 2, 1], hull[k - 1, 0], hull[k - 1, 1], pts[i, 0], pts[i, 1]) <= 0.0:
+        while k >= lower and _cross(hull[k - 2, 0], hull[k - 2, 1], hull[k - 1, 0], hull[k - 1, 1],
+                                    pts[i, 0], pts[i, 1]) <= 0.0:
             k -= 1
         hull[k, 0] = pts[i, 0]
         hull[k, 1] = pts[i, 1]
@@ -240,7 +242,8 @@ def _hull(pts: np.ndarray, n: int, hull: np.ndarray) -> int:
 
 
 @numba.njit(cache=True)
-def _lambert2(P: np.ndarray, n: int, p: np.ndarray, nr: np.ndarray, q0: np.ndarray, u: np.ndarray, w: np.ndarray) -> float:
+def _lambert2(P: np.ndarray, n: int, p: np.ndarray, nr: np.ndarray, q0: np.ndarray, u: np.ndarray,
+              w: np.ndarray) -> float:
     """Edge sum of a 2D polygon of the source frame (counter-clockwise seen from the lit side)."""
     s = 0.0
     for k in range(n):
@@ -297,7 +300,10 @@ def _source_polygon(p, nr, s, s_verts, s_off, s_normal, s_u, s_w, s_q0, scale, P
 @numba.njit(cache=True)
 def _blockers(p, nr, s, h, P2, n2, A0, s_normal, s_u, s_w, s_q0,
               v_verts, v_voff, v_edges, v_eoff, v_center, v_radius, sel, pts, hull, tmp, blk, blk_n):
-    """Blocked convex pieces (of the pieces listed in ``sel``) C_V = S_p n B_V; returns their count (-1 when more than MAXB)."""
+    """Blocked convex pieces (of the pieces listed in ``sel``) C_V = S_p n B_V.
+
+    Returns their count (-1 when more than MAXB).
+    """
     N = s_normal[s]
     q0 = s_q0[s]
     u = s_u[s]
@@ -564,7 +570,8 @@ _POOL_LOCK = threading.Lock()
 
 def _threads() -> int:
     """Threads that evaluate points: numba's ``NUMBA_NUM_THREADS`` (default: the cores)."""
-    return max(1, int(numba.config.NUMBA_NUM_THREADS))
+    # numba.config's settings are set from the environment at import: not in its type stubs.
+    return max(1, int(numba.config.NUMBA_NUM_THREADS))  # type: ignore[attr-defined]
 
 
 def _pool(workers: int) -> ThreadPoolExecutor:
@@ -590,7 +597,8 @@ def _run_chunks(args: tuple, n: int, E: np.ndarray, state: np.ndarray, overflow:
     threads = _threads()
     nchunk = max(1, min(CHUNKS_PER_THREAD * threads, n // MIN_CHUNK))
     if threads == 1 or nchunk == 1:
-        _kernel(*args, nchunk, 0, nchunk, E, state, overflow)
+        # args: the kernel's leading arguments, a tuple whose length mypy cannot count.
+        _kernel(*args, nchunk, 0, nchunk, E, state, overflow)  # type: ignore[call-arg]
         return
     # next() on a shared count is atomic under the GIL: each chunk is taken once.
     counter = itertools.count()
@@ -600,7 +608,7 @@ def _run_chunks(args: tuple, n: int, E: np.ndarray, state: np.ndarray, overflow:
         for c in counter:
             if c >= nchunk or stop[0]:
                 return
-            _kernel(*args, nchunk, c, c + 1, E, state, overflow)
+            _kernel(*args, nchunk, c, c + 1, E, state, overflow)  # type: ignore[call-arg]
 
     pool = _pool(threads - 1)
     helpers = [pool.submit(work) for _ in range(min(threads, nchunk) - 1)]

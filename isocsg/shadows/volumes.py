@@ -59,7 +59,9 @@ __all__ = [
 def _bounds_halfspaces(bounds: ArrayLike) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
     b = np.asarray(bounds, dtype=np.float64)
     if b.shape != (2, 3) or not np.all(np.isfinite(b)) or np.any(b[1] <= b[0]):
-        raise InvalidParameterError(f"bounds must be [[xmin, ymin, zmin], [xmax, ymax, zmax]] with min < max, got {b.tolist()}")
+        raise InvalidParameterError(
+            f"bounds must be [[xmin, ymin, zmin], [xmax, ymax, zmax]] with min < max, got {b.tolist()}"
+        )
     eye = np.eye(3)
     return np.vstack([eye, -eye]), np.concatenate([b[1], -b[0]])
 
@@ -80,7 +82,8 @@ def _chebyshev(normals: NDArray[np.float64], offsets: NDArray[np.float64]) -> tu
     return res.x[:3], float(res.x[3])
 
 
-def _polytope_vertices(normals: NDArray[np.float64], offsets: NDArray[np.float64], tol: float) -> NDArray[np.float64] | None:
+def _polytope_vertices(normals: NDArray[np.float64], offsets: NDArray[np.float64],
+                       tol: float) -> NDArray[np.float64] | None:
     """Vertices of a bounded polytope, or None when it is empty or flat."""
     from scipy.spatial import HalfspaceIntersection, QhullError
 
@@ -239,7 +242,7 @@ def as_piece(occluder: Any) -> Any:
     if isinstance(occluder, ConvexPolyhedron):
         return _piece_from_polyhedron(occluder)
     if isinstance(occluder, (list, tuple, np.ndarray)):
-        return _piece_from_polyhedron(ConvexPolyhedron(points_array("occluder", occluder, min_rows=4)))
+        return _piece_from_polyhedron(ConvexPolyhedron(points_array("occluder", occluder, min_rows=4)))  # type: ignore[arg-type]  # array_like accepted; the field's annotation says tuples
     raise InvalidGeometryError(
         f"occluder must be a ConvexPiece, Box, ConvexPolyhedron or (n, 3) points, got {type(occluder).__name__}"
     )
@@ -255,7 +258,7 @@ def _clip_piece(piece: Any, normal: NDArray[np.float64], offset: float, tol: flo
     if v is None:
         return None
     try:
-        return _piece_from_polyhedron(ConvexPolyhedron(v))
+        return _piece_from_polyhedron(ConvexPolyhedron(v))  # type: ignore[arg-type]  # array_like accepted; the field's annotation says tuples
     except InvalidGeometryError:
         return None
 
@@ -335,7 +338,7 @@ class SourceGeometry:
             return SourceGeometry("area", poly, edges, self.plane if self.plane is not None else pl)
         from ..geometry.primitives import ConvexPolyhedron
 
-        piece = _clip_piece(_piece_from_polyhedron(ConvexPolyhedron(self.vertices)), -n, -d, tol)
+        piece = _clip_piece(_piece_from_polyhedron(ConvexPolyhedron(self.vertices)), -n, -d, tol)  # type: ignore[arg-type]  # array_like accepted; the field's annotation says tuples
         if piece is None:
             return None
         return SourceGeometry("polyhedron", piece.vertices, piece.edges, None)
@@ -376,7 +379,8 @@ def _planes_through(
 
 
 def _supporting(
-    normals: NDArray[np.float64], offsets: NDArray[np.float64], ok: NDArray[np.bool_], vertices: NDArray[np.float64], tol: float
+    normals: NDArray[np.float64], offsets: NDArray[np.float64], ok: NDArray[np.bool_], vertices: NDArray[np.float64],
+    tol: float,
 ) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
     """Keep the planes that support ``vertices``, oriented with the vertices on the negative side."""
     n = normals.reshape(-1, 3)[ok.ravel()]
@@ -411,7 +415,10 @@ def _edge_faces(piece: Any, tol: float) -> NDArray[np.int64]:
 def _silhouette_planes(
     q: NDArray[np.float64], piece: Any, edge_faces: NDArray[np.int64], scale: float, tol: float
 ) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
-    """Planes through ``q`` and the contour-line edges of ``piece`` seen from ``q``, ``piece`` on their negative side."""
+    """Planes through ``q`` and the contour-line edges of ``piece`` seen from ``q``.
+
+    ``piece`` lies on their negative side.
+    """
     front = piece.normals @ q - piece.offsets > tol
     ok_adj = np.all(edge_faces >= 0, axis=1)
     sil = ok_adj & (front[np.maximum(edge_faces[:, 0], 0)] != front[np.maximum(edge_faces[:, 1], 0)])
@@ -460,7 +467,9 @@ def vertex_shadow_volume(vertex: ArrayLike, occluder: Any, *, tol: float | None 
     scale, tol = _scale_tol(piece.vertices, q, tol=tol)
     fq = piece.normals @ q - piece.offsets
     if np.all(fq <= tol):
-        raise InvalidGeometryError(f"vertex {tuple(q.tolist())} lies inside the occluder: its shadow volume is undefined")
+        raise InvalidGeometryError(
+            f"vertex {tuple(q.tolist())} lies inside the occluder: its shadow volume is undefined"
+        )
     sn, sd = _silhouette_planes(q, piece, _edge_faces(piece, tol), scale, tol)
     front = fq > tol
     return ConvexVolume(np.vstack([sn, piece.normals[front]]), np.concatenate([sd, piece.offsets[front]]), tol)
@@ -500,10 +509,12 @@ class ShadowVolumes:
 
     def reduced(self, bounds: ArrayLike) -> ShadowVolumes:
         """Both volumes with the planes that bound nothing inside ``bounds`` dropped."""
-        return ShadowVolumes(self.penumbra.reduced(bounds), self.umbra.reduced(bounds), self.vertex_volumes, self.occluder)
+        return ShadowVolumes(self.penumbra.reduced(bounds), self.umbra.reduced(bounds), self.vertex_volumes,
+                             self.occluder)
 
 
-def shadow_volumes(light: Any, occluder: Any, *, tol: float | None = None, umbra_rule: str = "intersection") -> ShadowVolumes | None:
+def shadow_volumes(light: Any, occluder: Any, *, tol: float | None = None,
+                   umbra_rule: str = "intersection") -> ShadowVolumes | None:
     """Penumbra and umbra volumes of a convex occluder under an area or polyhedron source.
 
     Follows Table 1 of the seed: the penumbra volume is bounded by the planes
@@ -591,7 +602,8 @@ def shadow_volumes(light: Any, occluder: Any, *, tol: float | None = None, umbra
     # faces of V against the source
     h_face = H_planes(piece.normals, piece.offsets, Q, tol=tol)
 
-    pen_n = [s_hat_n[h_hat == 1], s_til_n[h_til == 1], piece.normals[h_face == 1]] + [np.reshape(x, (1, 3)) for x in extra_n]
+    pen_n = [s_hat_n[h_hat == 1], s_til_n[h_til == 1], piece.normals[h_face == 1]]
+    pen_n += [np.reshape(x, (1, 3)) for x in extra_n]
     pen_d = [s_hat_d[h_hat == 1], s_til_d[h_til == 1], piece.offsets[h_face == 1], np.asarray(extra_d)]
     penumbra = ConvexVolume(np.vstack(pen_n), np.concatenate(pen_d), tol)
 
@@ -642,7 +654,8 @@ def umbra_volume(light: Any, occluder: Any, *, tol: float | None = None) -> Conv
     return None if sv is None else sv.umbra
 
 
-def may_cast_shadow(face: ArrayLike, occluder: Any, light: Any, *, volumes: ShadowVolumes | None = None, tol: float | None = None) -> bool:
+def may_cast_shadow(face: ArrayLike, occluder: Any, light: Any, *, volumes: ShadowVolumes | None = None,
+                    tol: float | None = None) -> bool:
     """Whether a convex occluder may shadow a receiving face (the seed's eqs. 5 and 6).
 
     Eq. (5): the occluder is not wholly in the negative space of the face.
