@@ -48,8 +48,8 @@ def main() -> None:
             peer_mesh, _ = median_time(lambda: m.transform(uneven).to_mesh(), args.repeat)
         rows.append([f"{n}", fmt_seconds(t_build), fmt_seconds(t_rot), fmt_seconds(t_scale),
                      f"{t_rot / t_build:.2f}", fmt_seconds(peer), fmt_seconds(peer_mesh)])
-    print_table("Transforms of a union of spheres and boxes (medians)", ["leaves", "build", "rotate", "scale (uneven)",
-                                                                         "rotate / build",
+    print_table("Transforms of a union of spheres and boxes (medians)",
+                ["leaves", "build", "rotate", "scale (uneven)", "rotate / build",
                  "manifold3d transform", "manifold3d transform + to_mesh"], rows)
 
 
