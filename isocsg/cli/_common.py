@@ -8,22 +8,24 @@ import sys
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager
 from pathlib import Path
-from typing import IO, Any, NoReturn
+from typing import IO, TYPE_CHECKING, Any, NoReturn
 
 from ..errors import InvalidParameterError
-from ..scene.model import Scene
+
+if TYPE_CHECKING:
+    from ..scene.model import Scene
 
 __all__ = [
     "ArgumentParser",
+    "add_common_render_options",
+    "apply_overrides",
+    "check_outputs",
+    "compile_notice",
+    "load_scene_argument",
     "parse_size",
     "progress_bar",
-    "load_scene_argument",
-    "apply_overrides",
     "render_scene",
-    "compile_notice",
-    "check_outputs",
     "write_outputs",
-    "add_common_render_options",
 ]
 
 ProgressCallback = Callable[[int, int], None]

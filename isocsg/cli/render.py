@@ -9,6 +9,7 @@ from typing import Any
 
 from ..errors import InvalidParameterError
 from ..geometry.primitives import Primitive
+from . import COMMANDS
 from ._common import (
     add_common_render_options,
     apply_overrides,
@@ -39,7 +40,7 @@ OPENSCAD_SUFFIXES = (".scad", ".csg")
 
 def register(subparsers: Any) -> argparse.ArgumentParser:
     """Add the ``render`` sub-command."""
-    p = subparsers.add_parser("render", help="render a scene file to PNG", description=DESCRIPTION)
+    p = subparsers.add_parser("render", help=COMMANDS["render"], description=DESCRIPTION)
     p.add_argument(
         "scene", metavar="SCENE",
         help="scene file (.toml or .json), OpenSCAD model (.scad or .csg), or - to read a scene from standard input",

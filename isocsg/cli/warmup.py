@@ -8,6 +8,7 @@ from dataclasses import replace
 from typing import Any
 
 from ..scene.io import builtin_scene_path, load_scene
+from . import COMMANDS
 
 __all__ = ["register", "run"]
 
@@ -24,7 +25,7 @@ take a few seconds.
 
 def register(subparsers: Any) -> argparse.ArgumentParser:
     """Add the ``warmup`` sub-command."""
-    p = subparsers.add_parser("warmup", help="compile the kernels once after installing", description=DESCRIPTION)
+    p = subparsers.add_parser("warmup", help=COMMANDS["warmup"], description=DESCRIPTION)
     p.set_defaults(func=run)
     return p
 

@@ -336,7 +336,7 @@ def shadow_codes(plan: _LightPlan, points: NDArray[np.float64], normals: NDArray
 def _exact_E(plans: list[_LightPlan], solids: list[Any], points: NDArray[np.float64], normals: NDArray[np.float64],
              codes: list[tuple[NDArray[np.int8], NDArray[np.bool_], NDArray[np.int8]]]) -> NDArray[np.float64]:
     """Exact illuminance, each light using only the pieces whose penumbra volume holds the point."""
-    from .illuminance import illuminance
+    from .direct import illuminance
 
     E = np.zeros(len(points))
     for plan, (state, member, ftype) in zip(plans, codes):
