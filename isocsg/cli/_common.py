@@ -64,8 +64,6 @@ def progress_bar(desc: str, *, enabled: bool = True, file: IO[str] | None = None
     carriage returns, it would litter a log or a pipe. ``file`` is written to
     whatever it is (for tests).
     """
-    from tqdm import tqdm
-
     bar: Any = None
     if file is None:
         stream = sys.stderr
@@ -78,6 +76,8 @@ def progress_bar(desc: str, *, enabled: bool = True, file: IO[str] | None = None
         if not enabled:
             return
         if bar is None:
+            from tqdm import tqdm  # only when a bar shows: a quick render does not import it
+
             bar = tqdm(total=total, desc=desc, file=stream, delay=delay, leave=False, unit="step")
         if bar.total != total:
             bar.total = total
