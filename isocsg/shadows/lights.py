@@ -21,7 +21,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -97,6 +97,9 @@ class AreaLight:
     normal: Vec3 = field(init=False, compare=False, hash=False)
     area: float = field(init=False, compare=False, hash=False)
     kind = "area"
+
+    if TYPE_CHECKING:  # what callers pass; the generated __init__ stores the checked tuples
+        def __init__(self, vertices: ArrayLike, radiance: float = 1.0) -> None: ...
 
     def __post_init__(self) -> None:
         name = "AreaLight.vertices"
@@ -243,6 +246,9 @@ class PolyhedronLight:
     radiance: float = 1.0
     polyhedron: ConvexPolyhedron = field(init=False, repr=False, compare=False, hash=False)
     kind = "polyhedron"
+
+    if TYPE_CHECKING:  # what callers pass; the generated __init__ stores the checked tuples
+        def __init__(self, vertices: ArrayLike, radiance: float = 1.0) -> None: ...
 
     def __post_init__(self) -> None:
         name = "PolyhedronLight.vertices"
