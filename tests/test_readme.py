@@ -14,7 +14,7 @@ from pathlib import Path
 import pytest
 
 README = Path(__file__).resolve().parents[1] / "README.md"
-_BLOCK = re.compile(r"(?:<!-- readme-test: requires (?P<needs>[\w.-]+) -->\n)?```python\n(?P<code>.*?)```", re.S)
+_BLOCK = re.compile(r"(?:<!-- readme-test: requires (?P<needs>[\w.-]+) -->\n)?```python\n(?P<code>.*?)```", re.DOTALL)
 
 
 def readme_blocks(text: str) -> list[tuple[int, str | None, str]]:
@@ -49,7 +49,7 @@ def test_readme_code_runs(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> No
             continue
         try:
             exec(compile(code, f"README.md:{line}", "exec"), namespace)  # noqa: S102
-        except Exception as exc:
+        except Exception as exc:  # noqa: BLE001 - any error of a block fails the test, naming its line
             pytest.fail(f"the README block at line {line} raised {type(exc).__name__}: {exc}")
     assert Path("part.png").is_file() and Path("scene.json").is_file()
     if skipped:
