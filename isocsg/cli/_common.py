@@ -76,9 +76,8 @@ def progress_bar(desc: str, *, enabled: bool = True, file: IO[str] | None = None
         if not enabled:
             return
         if bar is None:
-            from tqdm import (
-                tqdm,  # only when a bar shows: a quick render does not import it
-            )
+            # imported only when a bar shows: a quick render does without it
+            from tqdm import tqdm
 
             bar = tqdm(total=total, desc=desc, file=stream, delay=delay, leave=False, unit="step")
         if bar.total != total:
