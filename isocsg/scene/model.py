@@ -2,8 +2,9 @@
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from dataclasses import dataclass, field
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from .._validation import MAX_INTENSITY, integer, light_budget, scalar, show
 from ..camera import Camera
@@ -101,6 +102,12 @@ class Scene:
     lights: tuple[Any, ...]
     objects: tuple[SceneObject, ...]
     render: RenderSettings = field(default_factory=RenderSettings)
+
+    if TYPE_CHECKING:  # what callers pass (README: Scene(camera, [light], [solid])); stored as tuples
+        def __init__(
+            self, camera: Camera, lights: Sequence[Any], objects: Sequence[SceneObject | Solid],
+            render: RenderSettings = ...,
+        ) -> None: ...
 
     def _repr_mimebundle_(self, include: Any = None, exclude: Any = None) -> dict[str, Any]:
         """Rich display in Jupyter: a small PNG image (see :mod:`isocsg.interop.notebook`)."""
