@@ -5,7 +5,6 @@ from __future__ import annotations
 import argparse
 from typing import Any
 
-from ..scene.io import builtin_scene_path, load_scene
 from . import COMMANDS
 from ._common import (
     add_common_render_options,
@@ -38,6 +37,11 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
 
 def run(args: argparse.Namespace) -> int:
     """Render the chosen built-in scene; prints the path of the image."""
+    from ..scene.io import (  # here: ``isocsg demo --help`` needs none of it
+        builtin_scene_path,
+        load_scene,
+    )
+
     name = "halftone" if args.halftone else "demo"
     source = builtin_scene_path(name)
     if args.print_scene:

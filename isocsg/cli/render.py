@@ -8,7 +8,6 @@ from pathlib import Path
 from typing import Any
 
 from ..errors import InvalidParameterError
-from ..geometry.primitives import Primitive
 from . import COMMANDS
 from ._common import (
     add_common_render_options,
@@ -79,6 +78,10 @@ def run(args: argparse.Namespace) -> int:
     if gltf and scene.render.mode != "isoluminance":
         raise InvalidParameterError(f"{args.output}: glTF output needs render.mode = \"isoluminance\" (point or directional lights)")
     if args.svg is not None:
+        from ..geometry.primitives import (
+            Primitive,  # here: ``isocsg render --help`` loads no geometry
+        )
+
         if scene.render.mode != "isoluminance":
             raise InvalidParameterError("--svg needs render.mode = \"isoluminance\"")
         for k, obj in enumerate(scene.objects):
