@@ -40,7 +40,7 @@ from _common import fmt_rate, fmt_seconds, median_time, print_table  # noqa: E40
 import isocsg  # noqa: E402
 from isocsg.shadows import AreaLight, illuminance, illuminance_and_state  # noqa: E402
 from isocsg.shadows import occluders as occluder_module  # noqa: E402
-from isocsg.shadows.illuminance import FEW_PIECES, receiver_tiles  # noqa: E402
+from isocsg.shadows.direct import FEW_PIECES, receiver_tiles  # noqa: E402
 
 RADIANCE = 1000.0
 

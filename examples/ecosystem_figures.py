@@ -13,18 +13,25 @@ figures (the .glb is written too; the README shows the PNGs only).
 
 from __future__ import annotations
 
-import io
 import os
 import sys
 from pathlib import Path
 
 os.environ.setdefault("VTK_DEFAULT_OPENGL_WINDOW", "vtkEGLRenderWindow")
 
-from isocsg import Box, Camera, PointLight, Scene, save_gltf, show  # noqa: E402
-from isocsg.scene import builtin_scene  # noqa: E402
-from isocsg.shadows import AreaLight  # noqa: E402
-from isocsg.shadows.luxmap import LuxGrid, illuminance_map  # noqa: E402
-from isocsg.shadows.luxplot import save_luxmap_figure  # noqa: E402
+from isocsg import (
+    AreaLight,
+    Box,
+    Camera,
+    LuxGrid,
+    PointLight,
+    Scene,
+    builtin_scene,
+    illuminance_map,
+    save_gltf,
+    save_luxmap_figure,
+    show,
+)
 
 DEFAULT_OUTPUT = Path("out") / "examples"
 

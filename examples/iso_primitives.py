@@ -14,9 +14,19 @@ from pathlib import Path
 
 import numpy as np
 
-from isocsg import Box, Camera, Cone, ConvexPolyhedron, Cylinder, PointLight, Scene, Sphere, Truncus
-from isocsg.render import render
-from isocsg.render.image import save_png
+from isocsg import (
+    Box,
+    Camera,
+    Cone,
+    ConvexPolyhedron,
+    Cylinder,
+    PointLight,
+    Scene,
+    Sphere,
+    Truncus,
+    render,
+    save_png,
+)
 
 SIZE = (160, 120)
 

@@ -13,10 +13,17 @@ from __future__ import annotations
 import sys
 from pathlib import Path
 
-from isocsg import Box, Camera, Cone, PointLight, Scene, Sphere
-from isocsg.render import render
-from isocsg.render.image import save_png
-from isocsg.render.svg import save_scene_svg
+from isocsg import (
+    Box,
+    Camera,
+    Cone,
+    PointLight,
+    Scene,
+    Sphere,
+    render,
+    save_png,
+    save_scene_svg,
+)
 
 #: Where ``run()`` writes when given no folder (``out/`` is git-ignored).
 DEFAULT_OUTPUT = Path("out") / "examples"

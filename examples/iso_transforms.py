@@ -14,9 +14,19 @@ from __future__ import annotations
 import sys
 from pathlib import Path
 
-from isocsg import Box, Camera, Cone, Cylinder, Material, PointLight, Scene, SceneObject, Sphere
-from isocsg.render import render
-from isocsg.render.image import save_png
+from isocsg import (
+    Box,
+    Camera,
+    Cone,
+    Cylinder,
+    Material,
+    PointLight,
+    Scene,
+    SceneObject,
+    Sphere,
+    render,
+    save_png,
+)
 
 #: Where ``run()`` writes when given no folder (``out/`` is git-ignored).
 DEFAULT_OUTPUT = Path("out") / "examples"

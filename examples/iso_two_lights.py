@@ -14,9 +14,17 @@ from pathlib import Path
 
 import numpy as np
 
-from isocsg import Box, Camera, Material, PointLight, Scene, SceneObject, Sphere
-from isocsg.render import render
-from isocsg.render.image import save_png
+from isocsg import (
+    Box,
+    Camera,
+    Material,
+    PointLight,
+    Scene,
+    SceneObject,
+    Sphere,
+    render,
+    save_png,
+)
 
 #: Where ``run()`` writes when given no folder (``out/`` is git-ignored).
 DEFAULT_OUTPUT = Path("out") / "examples"

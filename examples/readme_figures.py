@@ -16,10 +16,20 @@ from pathlib import Path
 
 import numpy as np
 
-from isocsg import Box, Camera, Cone, ConvexPolyhedron, Cylinder, PointLight, Scene, Sphere, Truncus
-from isocsg.render import render
-from isocsg.render.image import save_png
-from isocsg.scene import builtin_scene
+from isocsg import (
+    Box,
+    Camera,
+    Cone,
+    ConvexPolyhedron,
+    Cylinder,
+    PointLight,
+    Scene,
+    Sphere,
+    Truncus,
+    builtin_scene,
+    render,
+    save_png,
+)
 
 #: The README's image folder.
 DEFAULT_OUTPUT = Path(__file__).resolve().parent.parent / "docs" / "images"

@@ -22,12 +22,21 @@ from pathlib import Path
 
 import numpy as np
 
-from isocsg import Box, Camera, ConvexPolyhedron, Scene, Sphere
-from isocsg.render.image import save_png
-from isocsg.scene.model import RenderSettings
-from isocsg.shadows.halftone import render_halftone
-from isocsg.shadows.lights import AreaLight, PolyhedronLight
-from isocsg.shadows.luxmap import LuxGrid, illuminance_map, save_luxmap_png
+from isocsg import (
+    AreaLight,
+    Box,
+    Camera,
+    ConvexPolyhedron,
+    LuxGrid,
+    PolyhedronLight,
+    RenderSettings,
+    Scene,
+    Sphere,
+    illuminance_map,
+    render_halftone,
+    save_luxmap_png,
+    save_png,
+)
 
 #: Where ``run()`` writes when given no folder (``out/`` is git-ignored).
 DEFAULT_OUTPUT = Path("out") / "examples"

@@ -1,58 +1,249 @@
 """isocsg: isoluminance-contour rendering of CSG solids and exact soft shadows.
 
-The public API is re-exported here; heavy optional modules (pyvista) load lazily.
+The public API is re-exported here and imported on first use (PEP 562): ``import isocsg``
+costs a few milliseconds, and a program, or a command of the ``isocsg`` command line,
+loads only the modules (numba kernels, shapely, scipy, pyvista) of what it calls.
 """
 
 from __future__ import annotations
 
-from .camera import Camera
-from .errors import (
-    InvalidGeometryError,
-    InvalidLightError,
-    InvalidParameterError,
-    IsocsgError,
-    MissingDependencyError,
-    OpenSCADError,
-    SceneFileError,
-    UnsupportedOpenSCADError,
-)
-from .geometry import Box, Cone, ConvexPolyhedron, Cylinder, Ellipsoid, EllipticTruncus, Primitive, RayHits, Solid, Sphere, Truncus
-from .lighting import DirectionalLight, Material, PointLight, shade
-from .scene import RenderSettings, Scene, SceneObject
-from .csg import CSGNode, Difference, Intersection, Union, difference, intersection, union, union_all
-from .csg.section import section
-from .csg.volume import volume
-from .csg.mesh import to_manifold, to_trimesh
-from .csg.clip import clip_laminae
-from .laminae import BandMesh, Lamina, LaminaSet, build_laminae
-from .render import Renderer, RenderResult, render
-from .render.image import save_npy, save_png
-from .scene import load_scene, save_scene
-from .shadows import AreaLight, PolyhedronLight, illuminance, illuminance_and_state, shadow_state
-from .view import show
-from .batch import illuminance_grid, render_views, turntable
-from .interop import ShadedSurface, export_glb, object_surface, save_gltf, scene_surfaces, to_pyvista
-from .geometry.extrude import extrude
-from .openscad import OpenSCADSkipWarning, dumps_openscad, load_openscad, loads_openscad, read_openscad, save_openscad
+import sys
+import types
+from typing import TYPE_CHECKING, Any
+
+from ._lazy import lazy_exports
 
 __version__ = "0.1.0"
 
+# Each public name and the module that defines it.
+_EXPORTS: dict[str, str] = {
+    **dict.fromkeys(["Camera"], ".camera"),
+    **dict.fromkeys([
+        "IsocsgError", "InvalidGeometryError", "InvalidLightError", "InvalidParameterError",
+        "SceneFileError", "MissingDependencyError", "OpenSCADError", "UnsupportedOpenSCADError",
+        "ResourceLimitError",
+    ], ".errors"),
+    **dict.fromkeys(["Solid", "Primitive", "RayHits", "Sphere", "Truncus", "Cylinder", "Cone", "Box", "ConvexPolyhedron",
+                     "Ellipsoid", "EllipticTruncus"], ".geometry"),
+    "extrude": ".geometry.extrude",
+    **dict.fromkeys(["PointLight", "DirectionalLight", "Material", "shade"], ".lighting"),
+    **dict.fromkeys(["Scene", "SceneObject", "RenderSettings", "load_scene", "loads_scene", "save_scene", "dumps_scene",
+                     "builtin_scene", "builtin_scene_path"], ".scene"),
+    **dict.fromkeys(["CSGNode", "Union", "Intersection", "Difference", "union", "intersection", "difference", "union_all"],
+                    ".csg"),
+    "section": ".csg.section",
+    "volume": ".csg.volume",
+    **dict.fromkeys(["to_manifold", "to_trimesh"], ".csg.mesh"),
+    "clip_laminae": ".csg.clip",
+    **dict.fromkeys(["build_laminae", "Lamina", "LaminaSet", "BandMesh"], ".laminae"),
+    **dict.fromkeys(["render", "Renderer", "RenderResult", "save_scene_svg"], ".render"),
+    **dict.fromkeys(["save_png", "save_npy"], ".render.image"),
+    "show": ".view",
+    **dict.fromkeys(["render_views", "turntable", "illuminance_grid"], ".batch"),
+    **dict.fromkeys(["ShadedSurface", "object_surface", "scene_surfaces"], ".interop.bands"),
+    **dict.fromkeys(["export_glb", "save_gltf"], ".interop.gltf"),
+    "to_pyvista": ".interop.pyvista",
+    **dict.fromkeys(["AreaLight", "PolyhedronLight"], ".shadows.lights"),
+    **dict.fromkeys(["illuminance", "shadow_state", "illuminance_and_state"], ".shadows.direct"),
+    **dict.fromkeys(["render_halftone", "HalftoneResult"], ".shadows.halftone"),
+    "shadow_volumes": ".shadows.volumes",
+    **dict.fromkeys(["LuxGrid", "LuxMap", "illuminance_map", "save_luxmap_png"], ".shadows.luxmap"),
+    **dict.fromkeys(["LuxStats", "lux_statistics", "save_luxmap_csv"], ".shadows.luxstats"),
+    "save_luxmap_figure": ".shadows.luxplot",
+    **dict.fromkeys(["load_openscad", "loads_openscad", "read_openscad", "save_openscad", "dumps_openscad",
+                     "OpenSCADSkipWarning"], ".openscad"),
+    **dict.fromkeys(["memory_budget", "set_memory_budget"], ".limits"),
+    "compile_kernels": ".kernels",
+}
+
+# Written out for linters and type checkers: the keys of _EXPORTS (tests/test_public_api.py).
 __all__ = [
-    "__version__",
+    "AreaLight",
+    "BandMesh",
+    "Box",
+    "CSGNode",
     "Camera",
-    "IsocsgError", "InvalidGeometryError", "InvalidLightError", "InvalidParameterError",
-    "SceneFileError", "MissingDependencyError", "OpenSCADError", "UnsupportedOpenSCADError",
-    "Solid", "Primitive", "RayHits", "Sphere", "Truncus", "Cylinder", "Cone", "Box", "ConvexPolyhedron", "Ellipsoid", "EllipticTruncus",
-    "PointLight", "DirectionalLight", "Material", "shade",
-    "Scene", "SceneObject", "RenderSettings",
-    "CSGNode", "Union", "Intersection", "Difference", "union", "intersection", "difference", "union_all",
-    "section", "volume", "to_manifold", "to_trimesh", "clip_laminae",
-    "build_laminae", "Lamina", "LaminaSet", "BandMesh",
-    "render", "Renderer", "RenderResult", "save_png", "save_npy", "show",
-    "render_views", "turntable", "illuminance_grid",
-    "ShadedSurface", "object_surface", "scene_surfaces", "export_glb", "save_gltf", "to_pyvista",
-    "load_scene", "save_scene",
-    "AreaLight", "PolyhedronLight", "illuminance", "shadow_state", "illuminance_and_state",
+    "Cone",
+    "ConvexPolyhedron",
+    "Cylinder",
+    "Difference",
+    "DirectionalLight",
+    "Ellipsoid",
+    "EllipticTruncus",
+    "HalftoneResult",
+    "Intersection",
+    "InvalidGeometryError",
+    "InvalidLightError",
+    "InvalidParameterError",
+    "IsocsgError",
+    "Lamina",
+    "LaminaSet",
+    "LuxGrid",
+    "LuxMap",
+    "LuxStats",
+    "Material",
+    "MissingDependencyError",
+    "OpenSCADError",
+    "OpenSCADSkipWarning",
+    "PointLight",
+    "PolyhedronLight",
+    "Primitive",
+    "RayHits",
+    "RenderResult",
+    "RenderSettings",
+    "Renderer",
+    "ResourceLimitError",
+    "Scene",
+    "SceneFileError",
+    "SceneObject",
+    "ShadedSurface",
+    "Solid",
+    "Sphere",
+    "Truncus",
+    "Union",
+    "UnsupportedOpenSCADError",
+    "__version__",
+    "build_laminae",
+    "builtin_scene",
+    "builtin_scene_path",
+    "clip_laminae",
+    "compile_kernels",
+    "difference",
+    "dumps_openscad",
+    "dumps_scene",
+    "export_glb",
     "extrude",
-    "load_openscad", "loads_openscad", "read_openscad", "save_openscad", "dumps_openscad", "OpenSCADSkipWarning",
+    "illuminance",
+    "illuminance_and_state",
+    "illuminance_grid",
+    "illuminance_map",
+    "intersection",
+    "load_openscad",
+    "load_scene",
+    "loads_openscad",
+    "loads_scene",
+    "lux_statistics",
+    "memory_budget",
+    "object_surface",
+    "read_openscad",
+    "render",
+    "render_halftone",
+    "render_views",
+    "save_gltf",
+    "save_luxmap_csv",
+    "save_luxmap_figure",
+    "save_luxmap_png",
+    "save_npy",
+    "save_openscad",
+    "save_png",
+    "save_scene",
+    "save_scene_svg",
+    "scene_surfaces",
+    "section",
+    "set_memory_budget",
+    "shade",
+    "shadow_state",
+    "shadow_volumes",
+    "show",
+    "to_manifold",
+    "to_pyvista",
+    "to_trimesh",
+    "turntable",
+    "union",
+    "union_all",
+    "volume"
 ]
+
+__getattr__, __dir__ = lazy_exports(globals(), _EXPORTS)
+
+
+class _Package(types.ModuleType):
+    """This package's module type: the function ``render`` keeps its name when the package
+    ``isocsg.render`` is first imported (the import system then binds the package's name
+    on its parent). Remove when that package is renamed."""
+
+    def __setattr__(self, name: str, value: Any) -> None:
+        if name == "render" and isinstance(value, types.ModuleType):
+            value = value.render
+        super().__setattr__(name, value)
+
+
+sys.modules[__name__].__class__ = _Package
+
+if TYPE_CHECKING:  # what the names are, for type checkers and editors
+    from .batch import illuminance_grid, render_views, turntable
+    from .camera import Camera
+    from .csg import (
+        CSGNode,
+        Difference,
+        Intersection,
+        Union,
+        difference,
+        intersection,
+        union,
+        union_all,
+    )
+    from .csg.clip import clip_laminae
+    from .csg.mesh import to_manifold, to_trimesh
+    from .csg.section import section
+    from .csg.volume import volume
+    from .errors import (
+        InvalidGeometryError,
+        InvalidLightError,
+        InvalidParameterError,
+        IsocsgError,
+        MissingDependencyError,
+        OpenSCADError,
+        ResourceLimitError,
+        SceneFileError,
+        UnsupportedOpenSCADError,
+    )
+    from .geometry import (
+        Box,
+        Cone,
+        ConvexPolyhedron,
+        Cylinder,
+        Ellipsoid,
+        EllipticTruncus,
+        Primitive,
+        RayHits,
+        Solid,
+        Sphere,
+        Truncus,
+    )
+    from .geometry.extrude import extrude
+    from .interop.bands import ShadedSurface, object_surface, scene_surfaces
+    from .interop.gltf import export_glb, save_gltf
+    from .interop.pyvista import to_pyvista
+    from .kernels import compile_kernels
+    from .laminae import BandMesh, Lamina, LaminaSet, build_laminae
+    from .lighting import DirectionalLight, Material, PointLight, shade
+    from .limits import memory_budget, set_memory_budget
+    from .openscad import (
+        OpenSCADSkipWarning,
+        dumps_openscad,
+        load_openscad,
+        loads_openscad,
+        read_openscad,
+        save_openscad,
+    )
+    from .render import Renderer, RenderResult, render, save_scene_svg
+    from .render.image import save_npy, save_png
+    from .scene import (
+        RenderSettings,
+        Scene,
+        SceneObject,
+        builtin_scene,
+        builtin_scene_path,
+        dumps_scene,
+        load_scene,
+        loads_scene,
+        save_scene,
+    )
+    from .shadows.direct import illuminance, illuminance_and_state, shadow_state
+    from .shadows.halftone import HalftoneResult, render_halftone
+    from .shadows.lights import AreaLight, PolyhedronLight
+    from .shadows.luxmap import LuxGrid, LuxMap, illuminance_map, save_luxmap_png
+    from .shadows.luxplot import save_luxmap_figure
+    from .shadows.luxstats import LuxStats, lux_statistics, save_luxmap_csv
+    from .shadows.volumes import shadow_volumes

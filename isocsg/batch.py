@@ -189,7 +189,7 @@ def render_views(
 
 
 def _rows(lights: Any, occluders: Any, points: np.ndarray, normal: np.ndarray, resolution: int) -> np.ndarray:
-    from .shadows.illuminance import illuminance
+    from .shadows.direct import illuminance
 
     return illuminance(points.reshape(-1, 3), normal, lights, occluders,
                        resolution=resolution).reshape(points.shape[:-1])

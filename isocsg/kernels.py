@@ -152,13 +152,20 @@ def _is_cached(k: Kernel) -> bool:
     return key in disp._cache._cache_file._load_index()
 
 
-def _parse_type(text: str) -> Any:
+@cache
+def _type_names() -> dict[str, Any]:
+    """numba's type names, for :func:`_parse_type` (built once: a warm render checks every listed kernel)."""
     from numba.core import types
 
     names = {n: v for n, v in vars(types).items() if not n.startswith("_")}
     names["bool"] = types.boolean
+    return names
+
+
+@cache
+def _parse_type(text: str) -> Any:
     # The text comes from the package's own listing; no builtins are reachable.
-    return eval(text, {"__builtins__": {}}, names)  # noqa: S307
+    return eval(text, {"__builtins__": {}}, _type_names())  # noqa: S307
 
 
 def _groups(kernels: Sequence[Kernel]) -> list[list[Kernel]]:

@@ -276,6 +276,33 @@ def test_area_light_rejects_a_pentagram():
         AreaLight(star)
 
 
+def _circle(m: int, radius: float = 1.0, center: tuple[float, float, float] = (0.0, 0.0, 3.0)) -> np.ndarray:
+    t = np.linspace(0.0, 2.0 * np.pi, m, endpoint=False)
+    return np.c_[center[0] + radius * np.cos(t), center[1] + radius * np.sin(t), np.full(m, center[2])]
+
+
+@pytest.mark.parametrize("m", [40_000, 65_536])
+@pytest.mark.parametrize("radius,center", [(1.0, (0.0, 0.0, 3.0)), (1e-3, (5.0, -2.0, 3.0)), (300.0, (0.0, 0.0, 3.0))],
+                         ids=["unit", "small-off-origin", "large"])
+def test_a_fine_circle_up_to_the_vertex_limit_is_a_convex_light(m, radius, center):
+    """The convexity tolerance scales with the polygon and its vertex spacing (40 000 vertices were refused)."""
+    light = AreaLight(_circle(m, radius, center)[::-1])  # clockwise from above: lights downwards
+    assert light.normal == (0.0, 0.0, -1.0)
+    assert light.area == pytest.approx(0.5 * m * radius**2 * math.sin(2 * math.pi / m), rel=1e-9)
+
+
+@pytest.mark.parametrize("m", [1000, 65_536])
+def test_a_fine_circle_with_one_reflex_or_collinear_vertex_is_refused(m):
+    pts = _circle(m)
+    dent = pts.copy()
+    dent[m // 3, :2] *= 2 * math.cos(2 * math.pi / m) - 1  # pushed inwards past the chord of its neighbours
+    flat = pts.copy()
+    flat[m // 3] = 0.5 * (pts[m // 3 - 1] + pts[m // 3 + 1])  # on the chord of its neighbours
+    for bad in (dent, flat):
+        with pytest.raises(isocsg.InvalidLightError, match=f"vertex {m // 3} is reflex or collinear"):
+            AreaLight(bad)
+
+
 @pytest.mark.parametrize("radiance", [-1.0, float("nan"), float("inf"), "x"], ids=["neg", "nan", "inf", "str"])
 def test_radiance_validation(radiance):
     with pytest.raises(isocsg.InvalidLightError, match="AreaLight.radiance"):

@@ -21,7 +21,7 @@ import pytest
 
 import isocsg
 from isocsg.shadows import AreaLight, illuminance_and_state
-from isocsg.shadows.illuminance import _fallback_point, _sources
+from isocsg.shadows.direct import _fallback_point, _sources
 from isocsg.shadows.occluders import convex_pieces, shadow_pieces
 from isocsg.shadows.visibility import PieceArrays, visible_illuminance
 

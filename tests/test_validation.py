@@ -247,3 +247,38 @@ def test_light_inside_a_box_leaves_only_ambient() -> None:
     moved = np.abs(lit_from_outside - outside_only)[seen] > 1e-6
     assert moved.mean() <= 0.02, f"{moved.sum()} of {seen.sum()} pixels differ"
     assert np.all(err_with[moved] <= err_without[moved] + 1e-6)
+
+
+# ----------------------------------------------------------------------------- the contour limit, as documented
+
+
+def test_the_documented_contour_limit_is_the_enforced_one() -> None:
+    """README's "Limits" row on contours states the constants of the code, and the code enforces it."""
+    from isocsg import AreaLight
+    from isocsg._validation import MAX_LIGHT_CONTOURS
+    from isocsg.laminae import MAX_CONTOURS as LAMINAE_MAX_CONTOURS
+    from isocsg.scene import MAX_CONTOURS
+
+    readme = (Path(__file__).resolve().parents[1] / "README.md").read_text(encoding="utf-8")
+    rows = [line for line in readme.splitlines() if line.startswith("| contours |")]
+    assert len(rows) == 1, "one statement of the contour limit"
+    row = rows[0]
+    assert f"N x (point + directional lights) <= {MAX_LIGHT_CONTOURS} (`MAX_LIGHT_CONTOURS`)" in row
+    assert f"at most {MAX_LIGHT_CONTOURS} with one such light, {MAX_LIGHT_CONTOURS // 2} with two" in row
+    assert f"N <= {MAX_CONTOURS} (" in row and "`MAX_CONTOURS`" in row
+    assert LAMINAE_MAX_CONTOURS == MAX_CONTOURS
+    toml_comment = f"at most {MAX_LIGHT_CONTOURS} / (point + directional lights)"
+    assert toml_comment in readme
+
+    cam = Camera((0, -5, 0), (0, 0, 0), width=8, height=8)
+    ball = [Sphere((0, 0, 0), 1)]
+    for n_lights in (1, 2, 3):
+        lights = [PointLight((k, -4, 5)) for k in range(n_lights)]
+        most = MAX_LIGHT_CONTOURS // n_lights
+        Scene(cam, lights, ball, RenderSettings(contours=most))
+        with pytest.raises(InvalidParameterError, match=re.escape(f"render.contours must be at most {most}")):
+            Scene(cam, lights, ball, RenderSettings(contours=most + 1))
+    area = AreaLight([(0, 0, 3), (0, 1, 3), (1, 1, 3), (1, 0, 3)])
+    Scene(cam, [area], ball, RenderSettings(mode="halftone", contours=MAX_CONTOURS))
+    with pytest.raises(InvalidParameterError, match="render.contours"):
+        RenderSettings(contours=MAX_CONTOURS + 1)

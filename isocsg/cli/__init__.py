@@ -1,8 +1,10 @@
 """The ``isocsg`` command line.
 
 Each sub-command lives in its own module with a ``register(subparsers)``
-function; :func:`main` wires them together. Errors of isocsg (and bad
-arguments) end the program with exit code 2 and a one-line message.
+function; :func:`main` wires them together, importing only the module of the
+command it runs (``isocsg --help`` imports none), so a command loads only what
+it uses. Errors of isocsg (and bad arguments) end the program with exit code 2
+and a one-line message.
 """
 
 from __future__ import annotations
@@ -10,34 +12,53 @@ from __future__ import annotations
 import importlib
 import importlib.util
 import sys
-from collections.abc import Sequence
+from collections.abc import Collection, Sequence
 
 from .. import __version__
 from ..errors import IsocsgError
-from . import demo, render, warmup
 from ._common import ArgumentParser
 
-__all__ = ["main", "build_parser"]
+__all__ = ["COMMANDS", "build_parser", "main"]
 
-# Sub-commands provided by optional modules of this package, registered when present.
-_OPTIONAL_COMMANDS = ("illuminance",)
+#: Each sub-command (a module of this package of the same name) and its line in ``isocsg --help``.
+COMMANDS = {
+    "render": "render a scene file to PNG",
+    "demo": "render a built-in demo scene",
+    "warmup": "compile the kernels once after installing",
+    "illuminance": "illuminance map with isolux lines",
+}
 
 
-def build_parser() -> ArgumentParser:
-    """The top-level parser with every available sub-command."""
+def build_parser(commands: Collection[str] | None = None) -> ArgumentParser:
+    """The top-level parser.
+
+    Parameters
+    ----------
+    commands : collection of str, optional
+        The sub-commands whose modules are imported and whose arguments are
+        parsed (default: all of :data:`COMMANDS`); the others are listed by
+        ``--help`` only. Modules missing from an installation are left out.
+    """
     parser = ArgumentParser(
         prog="isocsg",
         description="Isoluminance-contour rendering of CSG solids and soft shadows from area light sources.",
     )
     parser.add_argument("--version", action="version", version=f"isocsg {__version__}")
     sub = parser.add_subparsers(dest="command", metavar="COMMAND", title="commands")
-    render.register(sub)
-    demo.register(sub)
-    warmup.register(sub)
-    for name in _OPTIONAL_COMMANDS:
-        if importlib.util.find_spec(f"{__name__}.{name}") is not None:
+    for name, help_line in COMMANDS.items():
+        if importlib.util.find_spec(f"{__name__}.{name}") is None:
+            continue
+        if commands is None or name in commands:
             importlib.import_module(f"{__name__}.{name}").register(sub)
+        else:
+            sub.add_parser(name, help=help_line)
     return parser
+
+
+def _command_named(argv: Sequence[str]) -> str | None:
+    """The sub-command of a command line: its first word that is not an option (the top-level
+    options take no values)."""
+    return next((a for a in argv if not a.startswith("-")), None)
 
 
 def main(argv: Sequence[str] | None = None) -> int:
@@ -49,7 +70,9 @@ def main(argv: Sequence[str] | None = None) -> int:
     usage: isocsg render ...
     0
     """
-    parser = build_parser()
+    if argv is None:
+        argv = sys.argv[1:]
+    parser = build_parser([_command_named(argv) or ""])
     try:
         args = parser.parse_args(argv)
     except SystemExit as exc:  # --help, --version and usage errors

@@ -8,22 +8,24 @@ import sys
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager
 from pathlib import Path
-from typing import IO, Any, NoReturn
+from typing import IO, TYPE_CHECKING, Any, NoReturn
 
 from ..errors import InvalidParameterError
-from ..scene.model import Scene
+
+if TYPE_CHECKING:
+    from ..scene.model import Scene
 
 __all__ = [
     "ArgumentParser",
+    "add_common_render_options",
+    "apply_overrides",
+    "check_outputs",
+    "compile_notice",
+    "load_scene_argument",
     "parse_size",
     "progress_bar",
-    "load_scene_argument",
-    "apply_overrides",
     "render_scene",
-    "compile_notice",
-    "check_outputs",
     "write_outputs",
-    "add_common_render_options",
 ]
 
 ProgressCallback = Callable[[int, int], None]
@@ -62,8 +64,6 @@ def progress_bar(desc: str, *, enabled: bool = True, file: IO[str] | None = None
     carriage returns, it would litter a log or a pipe. ``file`` is written to
     whatever it is (for tests).
     """
-    from tqdm import tqdm
-
     bar: Any = None
     if file is None:
         stream = sys.stderr
@@ -76,6 +76,9 @@ def progress_bar(desc: str, *, enabled: bool = True, file: IO[str] | None = None
         if not enabled:
             return
         if bar is None:
+            # imported only when a bar shows: a quick render does without it
+            from tqdm import tqdm
+
             bar = tqdm(total=total, desc=desc, file=stream, delay=delay, leave=False, unit="step")
         if bar.total != total:
             bar.total = total

@@ -5,7 +5,7 @@ from __future__ import annotations
 import argparse
 from typing import Any
 
-from ..scene.io import builtin_scene_path, load_scene
+from . import COMMANDS
 from ._common import (
     add_common_render_options,
     apply_overrides,
@@ -26,7 +26,7 @@ contours; with --halftone, blocks under a square area light with soft shadows.
 
 def register(subparsers: Any) -> argparse.ArgumentParser:
     """Add the ``demo`` sub-command."""
-    p = subparsers.add_parser("demo", help="render a built-in demo scene", description=DESCRIPTION)
+    p = subparsers.add_parser("demo", help=COMMANDS["demo"], description=DESCRIPTION)
     p.add_argument("-o", "--output", metavar="OUT.png", help="PNG file to write (default: isocsg-demo.png or isocsg-halftone.png)")
     p.add_argument("--halftone", action="store_true", help="the soft-shadow scene instead of the CSG part")
     p.add_argument("--print-scene", action="store_true", help="print the scene file's path and exit")
@@ -37,6 +37,11 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
 
 def run(args: argparse.Namespace) -> int:
     """Render the chosen built-in scene; prints the path of the image."""
+    from ..scene.io import (  # here: ``isocsg demo --help`` needs none of it
+        builtin_scene_path,
+        load_scene,
+    )
+
     name = "halftone" if args.halftone else "demo"
     source = builtin_scene_path(name)
     if args.print_scene:

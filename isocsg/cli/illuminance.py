@@ -30,13 +30,19 @@ import numpy as np
 from .._validation import MAX_RESOLUTION, integer, resolution, show
 from ..errors import InvalidLightError, InvalidParameterError, SceneFileError
 from ..geometry.primitives import Box
-from ..scene.io import decode_scene_text, read_scene_file, read_scene_stream, scene_from_dict
+from ..scene.io import (
+    decode_scene_text,
+    read_scene_file,
+    read_scene_stream,
+    scene_from_dict,
+)
 from ..scene.model import Scene
 from ..shadows.lights import AreaLight, PolyhedronLight
 from ..shadows.luxmap import LuxGrid, illuminance_map, save_luxmap_png
 from ..shadows.luxstats import lux_statistics, save_luxmap_csv
+from . import COMMANDS
 
-__all__ = ["register", "run", "load_scene_and_grid", "floor_grid"]
+__all__ = ["floor_grid", "load_scene_and_grid", "register", "run"]
 
 DESCRIPTION = """\
 Compute the illuminance E in lux on a grid over a plane (exact soft shadows
@@ -60,7 +66,7 @@ DEFAULT_NODES = 64
 
 def register(subparsers: Any) -> argparse.ArgumentParser:
     """Add the ``illuminance`` sub-command."""
-    p = subparsers.add_parser("illuminance", help="illuminance map with isolux lines", description=DESCRIPTION)
+    p = subparsers.add_parser("illuminance", help=COMMANDS["illuminance"], description=DESCRIPTION)
     p.add_argument("scene", metavar="SCENE", help="scene file, .toml or .json, or - to read it from standard input")
     p.add_argument("-o", "--output", required=True, metavar="MAP.png", help="PNG map to write, or GRID.csv for the grid as CSV")
     p.add_argument("--npy", metavar="E.npy", help="also write E (ny, nx) as .npy")

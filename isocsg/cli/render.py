@@ -8,7 +8,7 @@ from pathlib import Path
 from typing import Any
 
 from ..errors import InvalidParameterError
-from ..geometry.primitives import Primitive
+from . import COMMANDS
 from ._common import (
     add_common_render_options,
     apply_overrides,
@@ -39,7 +39,7 @@ OPENSCAD_SUFFIXES = (".scad", ".csg")
 
 def register(subparsers: Any) -> argparse.ArgumentParser:
     """Add the ``render`` sub-command."""
-    p = subparsers.add_parser("render", help="render a scene file to PNG", description=DESCRIPTION)
+    p = subparsers.add_parser("render", help=COMMANDS["render"], description=DESCRIPTION)
     p.add_argument(
         "scene", metavar="SCENE",
         help="scene file (.toml or .json), OpenSCAD model (.scad or .csg), or - to read a scene from standard input",
@@ -78,6 +78,10 @@ def run(args: argparse.Namespace) -> int:
     if gltf and scene.render.mode != "isoluminance":
         raise InvalidParameterError(f"{args.output}: glTF output needs render.mode = \"isoluminance\" (point or directional lights)")
     if args.svg is not None:
+        from ..geometry.primitives import (
+            Primitive,  # here: ``isocsg render --help`` loads no geometry
+        )
+
         if scene.render.mode != "isoluminance":
             raise InvalidParameterError("--svg needs render.mode = \"isoluminance\"")
         for k, obj in enumerate(scene.objects):

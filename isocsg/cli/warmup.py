@@ -7,7 +7,7 @@ import time
 from dataclasses import replace
 from typing import Any
 
-from ..scene.io import builtin_scene_path, load_scene
+from . import COMMANDS
 
 __all__ = ["register", "run"]
 
@@ -24,7 +24,7 @@ take a few seconds.
 
 def register(subparsers: Any) -> argparse.ArgumentParser:
     """Add the ``warmup`` sub-command."""
-    p = subparsers.add_parser("warmup", help="compile the kernels once after installing", description=DESCRIPTION)
+    p = subparsers.add_parser("warmup", help=COMMANDS["warmup"], description=DESCRIPTION)
     p.set_defaults(func=run)
     return p
 
@@ -33,6 +33,7 @@ def run(args: argparse.Namespace) -> int:
     """Compile the listed kernels, render the built-in scenes at a tiny size; prints what it did and how long it took."""
     from ..kernels import PATHS, compile_kernels
     from ..render import Renderer
+    from ..scene.io import builtin_scene_path, load_scene
     from ..shadows.halftone import render_halftone
 
     start = time.perf_counter()

@@ -23,7 +23,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from ..errors import InvalidParameterError, MissingDependencyError
 
-__all__ = ["to_pyvista", "import_pyvista"]
+__all__ = ["import_pyvista", "to_pyvista"]
 
 
 def import_pyvista() -> Any:
@@ -98,6 +98,37 @@ def _bounds(bounds: ArrayLike | None, what: str) -> NDArray[np.float64]:
     if b.shape != (2, 3) or not np.all(np.isfinite(b)) or np.any(b[1] <= b[0]):
         raise InvalidParameterError(f"bounds must be a finite [[lo], [hi]] box of shape (2, 3) with lo < hi, got {b.tolist()}")
     return b
+
+
+def _intensity_mesh(pv: Any, vertices: ArrayLike, triangles: ArrayLike, intensity: ArrayLike, **cells: NDArray[Any]) -> Any:
+    """Triangles with cell data ``intensity`` (active) and further cell arrays."""
+    mesh = _triangles(pv, vertices, triangles)
+    mesh.cell_data["intensity"] = np.asarray(intensity, dtype=np.float64)
+    for name, values in cells.items():
+        mesh.cell_data[name] = values
+    mesh.set_active_scalars("intensity", preference="cell")
+    return mesh
+
+
+def _multiblock(pv: Any, blocks: dict[str, Any]) -> Any:
+    block = pv.MultiBlock()
+    for name, mesh in blocks.items():
+        block[name] = mesh
+    return block
+
+
+def _lux_grid(pv: Any, grid: Any, E: ArrayLike | None) -> Any:
+    """A lux grid's nodes as a ``StructuredGrid``, with point data ``illuminance_lx`` when ``E`` is given."""
+    p = grid.points()  # (ny, nx, 3)
+    # StructuredGrid wants x-fastest point order with dimensions (nx, ny, 1).
+    sg = pv.StructuredGrid(
+        np.ascontiguousarray(p[..., 0].T)[..., None], np.ascontiguousarray(p[..., 1].T)[..., None],
+        np.ascontiguousarray(p[..., 2].T)[..., None],
+    )
+    if E is not None:
+        sg.point_data["illuminance_lx"] = np.asarray(E, dtype=np.float64).reshape(-1)
+        sg.set_active_scalars("illuminance_lx")
+    return sg
 
 
 def to_pyvista(
@@ -177,59 +208,33 @@ def to_pyvista(
     if isinstance(obj, LaminaSet):
         obj = obj.bands
     if isinstance(obj, BandMesh):
-        mesh = _triangles(pv, obj.vertices, obj.triangles)
-        mesh.cell_data["intensity"] = np.asarray(obj.value_out, dtype=np.float64)
-        mesh.cell_data["value_in"] = np.asarray(obj.value_in, dtype=np.float64)
-        mesh.cell_data["band"] = np.asarray(obj.band, dtype=np.int32)
-        mesh.set_active_scalars("intensity", preference="cell")
-        return mesh
+        return _intensity_mesh(
+            pv, obj.vertices, obj.triangles, obj.value_out,
+            value_in=np.asarray(obj.value_in, dtype=np.float64), band=np.asarray(obj.band, dtype=np.int32),
+        )
     if isinstance(obj, CSGSurface):
-        mesh = _triangles(pv, obj.vertices, obj.triangles)
-        mesh.cell_data["intensity"] = np.asarray(obj.value, dtype=np.float64)
-        mesh.cell_data["leaf"] = np.asarray(obj.leaf, dtype=np.int32)
-        mesh.cell_data["reversed"] = np.asarray(obj.reversed, dtype=np.uint8)
-        mesh.set_active_scalars("intensity", preference="cell")
-        return mesh
+        return _intensity_mesh(
+            pv, obj.vertices, obj.triangles, obj.value,
+            leaf=np.asarray(obj.leaf, dtype=np.int32), reversed=np.asarray(obj.reversed, dtype=np.uint8),
+        )
     if isinstance(obj, ShadedSurface):
-        mesh = _triangles(pv, obj.vertices, obj.triangles)
-        mesh.cell_data["intensity"] = np.asarray(obj.value, dtype=np.float64)
-        mesh.set_active_scalars("intensity", preference="cell")
-        return mesh
+        return _intensity_mesh(pv, obj.vertices, obj.triangles, obj.value)
     if isinstance(obj, Scene):
-        block = pv.MultiBlock()
-        for s in scene_surfaces(obj, contours=contours):
-            block[s.name] = to_pyvista(s)
-        return block
+        return _multiblock(pv, {s.name: to_pyvista(s) for s in scene_surfaces(obj, contours=contours)})
     if isinstance(obj, Solid):
         if lights is None:
             return pv.wrap(obj.to_trimesh(resolution))
         return to_pyvista(object_surface(obj, lights, material, 64 if contours is None else contours, eye=eye))
     if isinstance(obj, ShadowVolumes):
         b = _bounds(bounds, "shadow volume")
-        block = pv.MultiBlock()
-        block["penumbra"] = to_pyvista(obj.penumbra, bounds=b)
-        block["umbra"] = to_pyvista(obj.umbra, bounds=b)
-        return block
+        return _multiblock(pv, {"penumbra": to_pyvista(obj.penumbra, bounds=b), "umbra": to_pyvista(obj.umbra, bounds=b)})
     if isinstance(obj, ConvexVolume):
         tm = obj.to_trimesh(_bounds(bounds, "shadow volume"))
         return pv.PolyData() if tm is None else pv.wrap(tm)
     if isinstance(obj, FaceShadows):
         return _face_shadows(pv, obj)
     if isinstance(obj, (list, tuple)) and obj and all(isinstance(f, FaceShadows) for f in obj):
-        block = pv.MultiBlock()
-        for k, f in enumerate(obj):
-            block[f"face{k}"] = _face_shadows(pv, f)
-        return block
+        return _multiblock(pv, {f"face{k}": _face_shadows(pv, f) for k, f in enumerate(obj)})
     if isinstance(obj, (LuxMap, LuxGrid)):
-        grid = obj.grid if isinstance(obj, LuxMap) else obj
-        p = grid.points()  # (ny, nx, 3)
-        # StructuredGrid wants x-fastest point order with dimensions (nx, ny, 1).
-        sg = pv.StructuredGrid(
-            np.ascontiguousarray(p[..., 0].T)[..., None], np.ascontiguousarray(p[..., 1].T)[..., None],
-            np.ascontiguousarray(p[..., 2].T)[..., None],
-        )
-        if isinstance(obj, LuxMap):
-            sg.point_data["illuminance_lx"] = np.asarray(obj.E, dtype=np.float64).reshape(-1)
-            sg.set_active_scalars("illuminance_lx")
-        return sg
+        return _lux_grid(pv, obj.grid if isinstance(obj, LuxMap) else obj, obj.E if isinstance(obj, LuxMap) else None)
     raise InvalidParameterError(f"to_pyvista: unsupported object of type {type(obj).__name__}")

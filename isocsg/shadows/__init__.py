@@ -3,27 +3,80 @@
 Light sources live in :mod:`isocsg.shadows.lights`; Lambert's contour
 integral in :mod:`isocsg.shadows.lambert`; occluder decomposition in
 :mod:`isocsg.shadows.occluders`; the exact illuminance and shadow states in
-:mod:`isocsg.shadows.illuminance`.
+:mod:`isocsg.shadows.direct`; half-tone images in :mod:`isocsg.shadows.halftone`;
+illuminance grids, their statistics and figures in :mod:`isocsg.shadows.luxmap`,
+:mod:`isocsg.shadows.luxstats` and :mod:`isocsg.shadows.luxplot`.
+
+The names below are imported on first use: ``from isocsg.shadows import AreaLight``
+loads the light sources only.
 """
 
-from .illuminance import LIT, PENUMBRA, UMBRA, illuminance, illuminance_and_state, shadow_state
-from .lambert import edge_terms, polygon_illuminance, rings_illuminance
-from .lights import AreaLight, PolyhedronLight
-from .occluders import ConvexPiece, convex_pieces, shadow_pieces
+from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
+from .._lazy import lazy_exports
+
+_EXPORTS: dict[str, str] = {
+    **dict.fromkeys(["AreaLight", "PolyhedronLight"], ".lights"),
+    **dict.fromkeys(["illuminance", "shadow_state", "illuminance_and_state", "LIT", "PENUMBRA", "UMBRA"], ".direct"),
+    **dict.fromkeys(["edge_terms", "polygon_illuminance", "rings_illuminance"], ".lambert"),
+    **dict.fromkeys(["ConvexPiece", "convex_pieces", "shadow_pieces"], ".occluders"),
+    **dict.fromkeys(["HalftoneResult", "render_halftone"], ".halftone"),
+    **dict.fromkeys(["ShadowVolumes", "shadow_volumes"], ".volumes"),
+    **dict.fromkeys(["LuxGrid", "LuxMap", "IsoluxLine", "illuminance_map", "save_luxmap_png"], ".luxmap"),
+    **dict.fromkeys(["LuxStats", "lux_statistics", "save_luxmap_csv"], ".luxstats"),
+    **dict.fromkeys(["plot_luxmap", "save_luxmap_figure"], ".luxplot"),
+}
+
+# Written out for linters and type checkers: the keys of _EXPORTS (tests/test_public_api.py).
 __all__ = [
-    "AreaLight",
-    "PolyhedronLight",
-    "illuminance",
-    "shadow_state",
-    "illuminance_and_state",
     "LIT",
     "PENUMBRA",
     "UMBRA",
-    "edge_terms",
-    "polygon_illuminance",
-    "rings_illuminance",
+    "AreaLight",
     "ConvexPiece",
+    "HalftoneResult",
+    "IsoluxLine",
+    "LuxGrid",
+    "LuxMap",
+    "LuxStats",
+    "PolyhedronLight",
+    "ShadowVolumes",
     "convex_pieces",
+    "edge_terms",
+    "illuminance",
+    "illuminance_and_state",
+    "illuminance_map",
+    "lux_statistics",
+    "plot_luxmap",
+    "polygon_illuminance",
+    "render_halftone",
+    "rings_illuminance",
+    "save_luxmap_csv",
+    "save_luxmap_figure",
+    "save_luxmap_png",
     "shadow_pieces",
+    "shadow_state",
+    "shadow_volumes"
 ]
+
+__getattr__, __dir__ = lazy_exports(globals(), _EXPORTS)
+
+if TYPE_CHECKING:
+    from .direct import (
+        LIT,
+        PENUMBRA,
+        UMBRA,
+        illuminance,
+        illuminance_and_state,
+        shadow_state,
+    )
+    from .halftone import HalftoneResult, render_halftone
+    from .lambert import edge_terms, polygon_illuminance, rings_illuminance
+    from .lights import AreaLight, PolyhedronLight
+    from .luxmap import IsoluxLine, LuxGrid, LuxMap, illuminance_map, save_luxmap_png
+    from .luxplot import plot_luxmap, save_luxmap_figure
+    from .luxstats import LuxStats, lux_statistics, save_luxmap_csv
+    from .occluders import ConvexPiece, convex_pieces, shadow_pieces
+    from .volumes import ShadowVolumes, shadow_volumes

@@ -46,10 +46,16 @@ from ..camera import Camera
 from ..csg.program import combine_masks, compile_program
 from ..csg.tree import CSGNode
 from ..errors import InvalidGeometryError, InvalidLightError, InvalidParameterError
-from ..geometry.primitives import DEFAULT_RESOLUTION, Box, ConvexPolyhedron, Primitive, Truncus
+from ..geometry.primitives import (
+    DEFAULT_RESOLUTION,
+    Box,
+    ConvexPolyhedron,
+    Primitive,
+    Truncus,
+)
 from .lights import AreaLight, PolyhedronLight
 
-__all__ = ["HalftoneResult", "render_halftone", "first_hits", "FirstHits", "shadow_codes"]
+__all__ = ["FirstHits", "HalftoneResult", "first_hits", "render_halftone", "shadow_codes"]
 
 ProgressCallback = Callable[[int, int], None]
 
@@ -336,7 +342,7 @@ def shadow_codes(plan: _LightPlan, points: NDArray[np.float64], normals: NDArray
 def _exact_E(plans: list[_LightPlan], solids: list[Any], points: NDArray[np.float64], normals: NDArray[np.float64],
              codes: list[tuple[NDArray[np.int8], NDArray[np.bool_], NDArray[np.int8]]]) -> NDArray[np.float64]:
     """Exact illuminance, each light using only the pieces whose penumbra volume holds the point."""
-    from .illuminance import illuminance
+    from .direct import illuminance
 
     E = np.zeros(len(points))
     for plan, (state, member, ftype) in zip(plans, codes):
@@ -354,6 +360,151 @@ def _exact_E(plans: list[_LightPlan], solids: list[Any], points: NDArray[np.floa
                 occ = [solids[plan.pieces[j]] for j in np.nonzero(row)[0]]
                 E[sel] += illuminance(points[sel], normals[sel], plan.light, occ)
     return E
+
+
+@dataclass(frozen=True, slots=True, eq=False)
+class _Receivers:
+    """What every row batch of a half-tone image shares: the first hits of the camera's rays,
+    the visible points nudged off their surfaces, each light's plan and the occluders' pieces."""
+
+    hits: FirstHits
+    visible: NDArray[np.bool_]
+    points: NDArray[np.float64]
+    plans: list[_LightPlan]
+    solids: list[ConvexPolyhedron]
+
+
+def _receivers(scene: Any, cam: Camera, lights: list[Any], resolution: int) -> _Receivers:
+    from .occluders import convex_pieces
+
+    pieces = convex_pieces([o.shape for o in scene.objects], resolution=resolution)
+    solids = [ConvexPolyhedron(pc.vertices) for pc in pieces]
+    origins = cam.ray_origins().reshape(-1, 3)
+    dirs = cam.ray_directions().reshape(-1, 3)
+    hits = first_hits(scene.objects, origins, dirs)
+    vis = np.isfinite(hits.t)
+    pts = origins + np.where(vis, hits.t, 0.0)[:, None] * dirs
+    allp = [pts[vis]] + [pc.vertices for pc in pieces] + [np.asarray(li.vertices, dtype=float).reshape(-1, 3) for li in lights]
+    allp = np.vstack([a for a in allp if len(a)])
+    lo, hi = allp.min(axis=0), allp.max(axis=0)
+    scale = max(float(np.max(hi - lo)), float(np.max(np.abs(allp))), 1e-300)
+    bounds = np.stack([lo - 0.01 * scale - 1e-9, hi + 0.01 * scale + 1e-9])
+    plans = _plan(lights, pieces, bounds)
+    recv = pts + NUDGE * scale * hits.normal  # off the surface: not self-occluded
+    return _Receivers(hits, vis, recv, plans, solids)
+
+
+ShadowCodes = tuple[NDArray[np.int8], NDArray[np.bool_], NDArray[np.int8]]
+
+
+def _take(codes: list[ShadowCodes], rows: NDArray[np.int64]) -> list[ShadowCodes]:
+    return [(c[0][rows], c[1][rows], c[2][rows]) for c in codes]
+
+
+def _pixel_keys(
+    codes: list[ShadowCodes], surface_id: NDArray[np.int64], local: NDArray[np.int64], shape: tuple[int, int]
+) -> tuple[NDArray[np.int64], NDArray[np.bool_], NDArray[np.bool_]]:
+    """Per pixel of a row batch (``local``: the visible ones): a key that two pixels share when
+    one formula gives both (surface part + per light: face type, state, penumbra set; -1 on
+    the background), pixels always computed exactly, pixels in the penumbra of several pieces."""
+    key_cols = [surface_id[:, None]]
+    always = np.zeros(len(local), dtype=bool)
+    multi = np.zeros(len(local), dtype=bool)
+    for state, member, ftype in codes:
+        if member.shape[1]:
+            _, grp = np.unique(member, axis=0, return_inverse=True)
+            grp = grp.ravel()
+        else:
+            grp = np.zeros(len(local), np.int64)
+        key_cols += [ftype[:, None].astype(np.int64), state[:, None].astype(np.int64), grp[:, None]]
+        # a type-B point in a penumbra: its clipped source has shadow edges the volumes do not show
+        always |= (ftype == 1) & (state == 1)
+        multi |= (state == 1) & (member.sum(axis=1) >= 2)
+    key_full = np.full(shape[0] * shape[1], -1, dtype=np.int64)
+    if len(local):
+        _, kid = np.unique(np.hstack(key_cols), axis=0, return_inverse=True)
+        key_full[local] = kid.ravel()
+    always_img = np.zeros(shape[0] * shape[1], dtype=bool)
+    always_img[local] = always
+    multi_img = np.zeros(shape[0] * shape[1], dtype=bool)
+    multi_img[local] = multi
+    return key_full.reshape(shape), always_img.reshape(shape), multi_img.reshape(shape)
+
+
+def _exact_samples(
+    key_img: NDArray[np.int64], always_img: NDArray[np.bool_], step: int
+) -> tuple[NDArray[np.int64], NDArray[np.bool_], NDArray[np.bool_]]:
+    """The sample columns (every ``step`` pixels and the last), the pixels computed exactly and,
+    per row and run between two samples, whether the run may be interpolated."""
+    rows, W = key_img.shape
+    want = np.zeros((rows, W), dtype=bool)
+    cols = np.unique(np.r_[np.arange(0, W, step), W - 1])
+    want[:, cols] = True
+    want |= always_img
+    # runs between samples whose pixels do not all share one key: computed exactly
+    seg_ok = np.ones((rows, len(cols) - 1), dtype=bool)
+    for s in range(len(cols) - 1):
+        a, b = cols[s], cols[s + 1]
+        block = key_img[:, a:b + 1]
+        seg_ok[:, s] = np.all(block == block[:, :1], axis=1) & (block[:, 0] >= 0) & ~np.any(always_img[:, a:b + 1], axis=1)
+        want[~seg_ok[:, s], a:b + 1] = True
+    want &= key_img >= 0
+    return cols, want, seg_ok
+
+
+def _zero_end_runs(
+    Eimg: NDArray[np.float64], cols: NDArray[np.int64], seg_ok: NDArray[np.bool_], multi_img: NDArray[np.bool_]
+) -> NDArray[np.bool_]:
+    """Inner pixels of the interpolable runs in the penumbra of several pieces with a zero end:
+    they may hide a true-umbra edge, so they are computed exactly."""
+    extra = np.zeros(Eimg.shape, dtype=bool)
+    for s in range(len(cols) - 1):
+        a, b = cols[s], cols[s + 1]
+        zero_end = (Eimg[:, a] == 0) | (Eimg[:, b] == 0)
+        risky = seg_ok[:, s] & zero_end & multi_img[:, a]
+        extra[risky, a + 1:b] = True
+    return extra
+
+
+def _interpolate_runs(Eimg: NDArray[np.float64], cols: NDArray[np.int64], seg_ok: NDArray[np.bool_], extra: NDArray[np.bool_]) -> None:
+    """Linear interpolation, in place, inside the runs left to it."""
+    for s in range(len(cols) - 1):
+        a, b = cols[s], cols[s + 1]
+        if b - a < 2:
+            continue
+        rows = np.nonzero(seg_ok[:, s] & ~extra[:, a + 1])[0]
+        if len(rows) == 0:
+            continue
+        w = (np.arange(a + 1, b) - a) / (b - a)
+        Eimg[rows, a + 1:b] = Eimg[rows, a][:, None] * (1 - w)[None, :] + Eimg[rows, b][:, None] * w[None, :]
+
+
+def _render_rows(
+    rx: _Receivers, r0: int, r1: int, W: int, step: int
+) -> tuple[NDArray[np.float64], NDArray[np.int8], NDArray[np.bool_]]:
+    """Rows ``r0 .. r1`` of the image, flat: illuminance, worst shadow state, pixels computed exactly."""
+    shape = (r1 - r0, W)
+    idx = np.nonzero(rx.visible[r0 * W:r1 * W])[0] + r0 * W
+    local = idx - r0 * W
+    p, nrm = rx.points[idx], rx.hits.normal[idx]
+    codes = [shadow_codes(plan, p, nrm) for plan in rx.plans]
+    shadow = np.full(shape[0] * shape[1], -1, dtype=np.int8)
+    shadow[local] = np.max(np.stack([c[0] for c in codes]), axis=0) if codes else np.zeros(len(idx), np.int8)
+    key_img, always_img, multi_img = _pixel_keys(codes, rx.hits.surface_id[idx], local, shape)
+    cols, want, seg_ok = _exact_samples(key_img, always_img, step)
+    Erow = np.full(shape[0] * shape[1], np.nan)
+    sel = np.nonzero(want.ravel()[local])[0]
+    if len(sel):
+        Erow[local[sel]] = _exact_E(rx.plans, rx.solids, p[sel], nrm[sel], _take(codes, sel))
+    Eimg = Erow.reshape(shape)
+    extra = _zero_end_runs(Eimg, cols, seg_ok, multi_img) & ~want & (key_img >= 0)
+    if np.any(extra):
+        flat = np.nonzero(extra.ravel())[0]
+        pos = np.searchsorted(local, flat)
+        Erow[flat] = _exact_E(rx.plans, rx.solids, p[pos], nrm[pos], _take(codes, pos))
+        want |= extra
+    _interpolate_runs(Eimg, cols, seg_ok, extra)
+    return Erow, shadow, want.ravel()
 
 
 def render_halftone(
@@ -403,8 +554,6 @@ def render_halftone(
     >>> r.image.shape, bool(np.all(r.image > 0)), int(r.shadow.max())
     ((8, 8), True, 0)
     """
-    from .occluders import convex_pieces
-
     start = time.perf_counter()
     cam = scene.camera if camera is None else camera
     if not isinstance(cam, Camera):
@@ -414,107 +563,16 @@ def render_halftone(
     lights = [li for li in scene.lights if isinstance(li, (AreaLight, PolyhedronLight))]
     if not lights:
         raise InvalidLightError("scene.lights has no area or polyhedron light: a half-tone image needs one")
-    shapes = [o.shape for o in scene.objects]
-    pieces = convex_pieces(shapes, resolution=resolution)
-    solids = [ConvexPolyhedron(pc.vertices) for pc in pieces]
+    receivers = _receivers(scene, cam, lights, resolution)
+    hits = receivers.hits
     H, W = cam.height, cam.width
-    origins = cam.ray_origins().reshape(-1, 3)
-    dirs = cam.ray_directions().reshape(-1, 3)
-    hits = first_hits(scene.objects, origins, dirs)
-    vis = np.isfinite(hits.t)
-    pts = origins + np.where(vis, hits.t, 0.0)[:, None] * dirs
-    allp = [pts[vis]] + [pc.vertices for pc in pieces] + [np.asarray(li.vertices, dtype=float).reshape(-1, 3) for li in lights]
-    allp = np.vstack([a for a in allp if len(a)])
-    lo, hi = allp.min(axis=0), allp.max(axis=0)
-    scale = max(float(np.max(hi - lo)), float(np.max(np.abs(allp))), 1e-300)
-    bounds = np.stack([lo - 0.01 * scale - 1e-9, hi + 0.01 * scale + 1e-9])
-    plans = _plan(lights, pieces, bounds)
-    recv = pts + NUDGE * scale * hits.normal  # off the surface: not self-occluded
-
     E = np.full(H * W, np.nan)
     shadow = np.full(H * W, -1, dtype=np.int8)
     exact = np.zeros(H * W, dtype=bool)
     for r0 in range(0, H, ROW_BATCH):
         r1 = min(H, r0 + ROW_BATCH)
         sl = slice(r0 * W, r1 * W)
-        v = vis[sl]
-        idx = np.nonzero(v)[0] + r0 * W
-        p, nrm = recv[idx], hits.normal[idx]
-        codes = [shadow_codes(plan, p, nrm) for plan in plans]
-        worst = np.max(np.stack([c[0] for c in codes]), axis=0) if codes else np.zeros(len(idx), np.int8)
-        shadow[idx] = worst
-        # key of each visible pixel: surface part + per-light (face type, state, penumbra set)
-        key_cols = [hits.surface_id[idx][:, None]]
-        always = np.zeros(len(idx), dtype=bool)
-        multi = np.zeros(len(idx), dtype=bool)
-        for state, member, ftype in codes:
-            if member.shape[1]:
-                _, grp = np.unique(member, axis=0, return_inverse=True)
-                grp = grp.ravel()
-            else:
-                grp = np.zeros(len(idx), np.int64)
-            key_cols += [ftype[:, None].astype(np.int64), state[:, None].astype(np.int64), grp[:, None]]
-            # a type-B point in a penumbra: its clipped source has shadow edges the volumes do not show
-            always |= (ftype == 1) & (state == 1)
-            multi |= (state == 1) & (member.sum(axis=1) >= 2)
-        key_full = np.full((r1 - r0) * W, -1, dtype=np.int64)
-        if len(idx):
-            _, kid = np.unique(np.hstack(key_cols), axis=0, return_inverse=True)
-            key_full[idx - r0 * W] = kid.ravel()
-        key_img = key_full.reshape(r1 - r0, W)
-        want = np.zeros((r1 - r0, W), dtype=bool)
-        always_img = np.zeros((r1 - r0) * W, dtype=bool)
-        always_img[idx - r0 * W] = always
-        always_img = always_img.reshape(r1 - r0, W)
-        multi_img = np.zeros((r1 - r0) * W, dtype=bool)
-        multi_img[idx - r0 * W] = multi
-        multi_img = multi_img.reshape(r1 - r0, W)
-        cols = np.unique(np.r_[np.arange(0, W, step), W - 1])
-        want[:, cols] = True
-        want |= always_img
-        # runs between samples whose pixels do not all share one key: computed exactly
-        seg_ok = np.ones((r1 - r0, len(cols) - 1), dtype=bool)
-        for s in range(len(cols) - 1):
-            a, b = cols[s], cols[s + 1]
-            block = key_img[:, a:b + 1]
-            seg_ok[:, s] = np.all(block == block[:, :1], axis=1) & (block[:, 0] >= 0) & ~np.any(always_img[:, a:b + 1], axis=1)
-            want[~seg_ok[:, s], a:b + 1] = True
-        want &= key_img >= 0
-        local = want.ravel()
-        sel = np.nonzero(local[idx - r0 * W])[0]
-        Erow = np.full((r1 - r0) * W, np.nan)
-        if len(sel):
-            sub_codes = [(c[0][sel], c[1][sel], c[2][sel]) for c in codes]
-            Erow[idx[sel] - r0 * W] = _exact_E(plans, solids, p[sel], nrm[sel], sub_codes)
-        Eimg = Erow.reshape(r1 - r0, W)
-        # runs in the penumbra of several pieces with a zero end may hide a true-umbra edge: exact
-        extra = np.zeros_like(want)
-        for s in range(len(cols) - 1):
-            a, b = cols[s], cols[s + 1]
-            rows_ok = seg_ok[:, s]
-            zero_end = (Eimg[:, a] == 0) | (Eimg[:, b] == 0)
-            risky = rows_ok & zero_end & multi_img[:, a]
-            extra[risky, a + 1:b] = True
-        extra &= ~want & (key_img >= 0)
-        if np.any(extra):
-            flat = np.nonzero(extra.ravel())[0]
-            pos = np.searchsorted(idx - r0 * W, flat)
-            sub_codes = [(c[0][pos], c[1][pos], c[2][pos]) for c in codes]
-            Erow[flat] = _exact_E(plans, solids, p[pos], nrm[pos], sub_codes)
-            want |= extra
-            Eimg = Erow.reshape(r1 - r0, W)
-        # linear interpolation inside the good runs
-        for s in range(len(cols) - 1):
-            a, b = cols[s], cols[s + 1]
-            if b - a < 2:
-                continue
-            rows = np.nonzero(seg_ok[:, s] & ~extra[:, a + 1])[0]
-            if len(rows) == 0:
-                continue
-            w = (np.arange(a + 1, b) - a) / (b - a)
-            Eimg[rows, a + 1:b] = Eimg[rows, a][:, None] * (1 - w)[None, :] + Eimg[rows, b][:, None] * w[None, :]
-        E[sl] = Eimg.ravel()
-        exact[sl] = want.ravel()
+        E[sl], shadow[sl], exact[sl] = _render_rows(receivers, r0, r1, W, step)
         if progress is not None:
             progress(r1, H)
     E_img = E.reshape(H, W).astype(np.float32)

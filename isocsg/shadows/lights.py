@@ -21,7 +21,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -32,9 +32,13 @@ from ..geometry.primitives import ConvexPolyhedron
 
 __all__ = ["AreaLight", "PolyhedronLight", "ShadowLight", "as_light_list"]
 
-# Relative tolerances of the source checks (relative to the polygon's size).
+#: Planarity tolerance of a source polygon, relative to its size.
 PLANARITY_TOL = 1e-9
-CONVEXITY_TOL = 1e-12
+#: A vertex is convex when its turn (e_i x e_i+1) . n exceeds this many rounding units of the
+#: turn: ulps of its edges' product and of the coordinates times the edges (the edges' own
+#: rounding). It scales with the polygon's size, position and vertex spacing, so a circle of
+#: MAX_VERTICES vertices (turns about (2 pi / m)^3 R^2) passes.
+CONVEXITY_ULPS = 64.0
 
 
 def _radiance(name: str, value: Any) -> float:
@@ -94,6 +98,9 @@ class AreaLight:
     area: float = field(init=False, compare=False, hash=False)
     kind = "area"
 
+    if TYPE_CHECKING:  # what callers pass; the generated __init__ stores the checked tuples
+        def __init__(self, vertices: ArrayLike, radiance: float = 1.0) -> None: ...
+
     def __post_init__(self) -> None:
         name = "AreaLight.vertices"
         pts = points_array(name, self.vertices, min_rows=3, max_rows=MAX_VERTICES, error=InvalidLightError)
@@ -130,13 +137,16 @@ class AreaLight:
         # Strict convexity: every turn has the sign of the winding, and the
         # total turning is one full turn (rejects stars such as a pentagram).
         turns = np.cross(edges, np.roll(edges, -1, axis=0)) @ n
-        if np.any(turns <= CONVEXITY_TOL * scale * scale):
+        reach = float(np.max(np.abs(pts)))
+        elen_next = np.roll(elen, -1)
+        rounding = np.finfo(np.float64).eps * (elen * elen_next + reach * (elen + elen_next))
+        if np.any(turns <= CONVEXITY_ULPS * rounding):
             i = int(np.argmin(turns))
             raise InvalidLightError(
                 f"{name} must form a strictly convex polygon, vertex {(i + 1) % m} is reflex or collinear"
             )
-        cosang = np.einsum("ij,ij->i", edges, np.roll(edges, -1, axis=0)) / (elen * np.roll(elen, -1))
-        total = float(np.sum(np.arctan2(turns / (elen * np.roll(elen, -1)), cosang)))
+        cosang = np.einsum("ij,ij->i", edges, np.roll(edges, -1, axis=0)) / (elen * elen_next)
+        total = float(np.sum(np.arctan2(turns / (elen * elen_next), cosang)))
         if abs(total - 2 * math.pi) > 1e-6:
             raise InvalidLightError(f"{name} must form a simple convex polygon, it winds {total / (2 * math.pi):.3g} times")
         object.__setattr__(self, "vertices", tuple(tuple(map(float, p)) for p in pts))
@@ -236,6 +246,9 @@ class PolyhedronLight:
     radiance: float = 1.0
     polyhedron: ConvexPolyhedron = field(init=False, repr=False, compare=False, hash=False)
     kind = "polyhedron"
+
+    if TYPE_CHECKING:  # what callers pass; the generated __init__ stores the checked tuples
+        def __init__(self, vertices: ArrayLike, radiance: float = 1.0) -> None: ...
 
     def __post_init__(self) -> None:
         name = "PolyhedronLight.vertices"

@@ -218,7 +218,7 @@ def illuminance_map(
     >>> m.E.shape, bool(m.E[2, 2] == m.E.max())
     ((5, 5), True)
     """
-    from .illuminance import illuminance
+    from .direct import illuminance
 
     if not isinstance(grid, LuxGrid):
         raise InvalidParameterError(f"grid must be a LuxGrid, got {type(grid).__name__}")

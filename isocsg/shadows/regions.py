@@ -180,7 +180,7 @@ class FaceShadows:
         out[shapely.covers(self.penumbra, pts)] = 1
         out[shapely.covers(self.umbra, pts)] = 2
         if exact and not self.overlap.is_empty:
-            from .illuminance import shadow_state
+            from .direct import shadow_state
 
             idx = np.nonzero(shapely.covers(self.overlap, pts) & (out != 2))[0]
             if len(idx):

@@ -25,14 +25,14 @@ the plane.
 from __future__ import annotations
 
 from collections.abc import Sequence
+
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from ..geometry.primitives import DEFAULT_RESOLUTION, Solid
 from .lambert import _prepare, edge_terms
 from .lights import AreaLight, PolyhedronLight, as_light_list
-from .occluders import ConvexPiece, occluder_list
-from .occluders import shadow_pieces
+from .occluders import ConvexPiece, occluder_list, shadow_pieces
 from .visibility import UMBRA_TOL, PieceArrays, SourceArrays, blockers_single, visible_illuminance
 
 __all__ = ["illuminance", "shadow_state", "illuminance_and_state", "receiver_tiles", "LIT", "PENUMBRA", "UMBRA"]
