@@ -28,7 +28,7 @@ A scene file holds four parts (TOML shown; JSON uses the same structure)::
         { sphere = { center = [1, 1, 1], radius = 0.8 } },
     ] }
 
-Shape nodes are the primitive kinds of :mod:`isocsg.geometry.registry` (``sphere``,
+Shape nodes are the primitive kinds of :mod:`isocsg.kinds.registry` (``sphere``,
 ``truncus``, ``cylinder``, ``cone``, ``box`` with an optional ``orientation``,
 ``polyhedron``, ``ellipsoid``, ``elliptic_truncus``), the Boolean nodes, and
 OpenSCAD's transforms around one ``shape``: ``translate {v}``, ``rotate {a, v?}``,
@@ -71,8 +71,8 @@ from ..errors import (
 )
 from ..geometry import transforms as _tf
 from ..geometry.extrude import extrude_rings
-from ..geometry.primitives import Solid
-from ..geometry.registry import registered_kinds
+from ..kinds.base import Solid
+from ..kinds.registry import kind_named, registered_kinds
 from ..lighting.lights import DirectionalLight, Material, PointLight
 from .model import RenderSettings, Scene, SceneObject
 
@@ -86,7 +86,7 @@ __all__ = [
     "builtin_scene",
     "builtin_scene_path",
     "BUILTIN_SCENES",
-    "SHAPE_KINDS",
+    "shape_kinds",
     "LIGHT_KINDS",
     "MAX_SCENE_FILE_BYTES",
     "read_scene_file",
@@ -97,18 +97,23 @@ __all__ = [
 #: Names of the scenes shipped in ``isocsg/data`` (``<name>.toml``).
 BUILTIN_SCENES = ("demo", "halftone")
 
-#: Primitive node kinds and their (required, optional) fields, classes and class names (the
-#: prefixes of the value types' own messages): read from the table of kinds
-#: (:mod:`isocsg.geometry.registry`), so that a new kind needs no change here.
-_PRIMITIVE_FIELDS: dict[str, tuple[tuple[str, ...], tuple[str, ...]]] = {
-    k.name: (k.required, k.optional) for k in registered_kinds()
-}
-_PRIMITIVE_TYPES: dict[str, Callable[..., Solid]] = {k.name: k.cls for k in registered_kinds()}
-_CLASS_NAMES = {k.name: k.cls.__name__ for k in registered_kinds()}
-# The straight extrusion of a polygon: a union of convex prisms (isocsg.geometry.extrude).
-_PRIMITIVE_FIELDS["extrude"] = (("polygon", "height"), ("holes", "center"))
-_PRIMITIVE_TYPES["extrude"] = extrude_rings
-_CLASS_NAMES["extrude"] = "extrude"
+# The straight extrusion of a polygon: a union of convex prisms (isocsg.geometry.extrude); a node
+# of scene files, not a primitive kind.
+_EXTRUDE_FIELDS = (("polygon", "height"), ("holes", "center"))
+
+
+def _primitive_node(kind: str) -> tuple[tuple[tuple[str, ...], tuple[str, ...]], str, Callable[..., Solid]] | None:
+    """The fields, class name (the prefix of the value type's own messages) and constructor of a
+    primitive node, read from the table of kinds when a file is read (:mod:`isocsg.kinds.registry`):
+    a kind registered at any time is read like a built-in one."""
+    if kind == "extrude":
+        return _EXTRUDE_FIELDS, "extrude", extrude_rings
+    k = kind_named(kind)
+    if k is None:
+        return None
+    return (k.required, k.optional), k.cls.__name__, lambda **fields: k.build(fields)
+
+
 _CSG_TYPES: dict[str, type[CSGNode]] = {"union": Union, "intersection": Intersection, "difference": Difference}
 
 #: Every node kind accepted in an object's ``shape`` tree.
@@ -125,7 +130,16 @@ _TRANSFORM_FIELDS: dict[str, tuple[tuple[str, ...], tuple[str, ...]]] = {
     "transform": (("matrix", "shape"), ()),
 }
 
-SHAPE_KINDS = tuple(_PRIMITIVE_FIELDS) + tuple(_CSG_TYPES) + tuple(_TRANSFORM_FIELDS)
+
+def shape_kinds() -> tuple[str, ...]:
+    """Every node kind accepted in an object's ``shape`` tree, as registered now."""
+    return tuple(k.name for k in registered_kinds()) + ("extrude",) + tuple(_CSG_TYPES) + tuple(_TRANSFORM_FIELDS)
+
+
+def __getattr__(name: str) -> Any:
+    if name == "SHAPE_KINDS":  # read live: kinds may be registered after import
+        return shape_kinds()
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 #: Light kinds and their (required, optional) fields.
 _LIGHT_FIELDS: dict[str, tuple[tuple[str, ...], tuple[str, ...]]] = {
@@ -270,14 +284,14 @@ def _material(r: _Reader, path: str, value: Any) -> Material:
 def _node(r: _Reader, path: str, value: Any) -> tuple[str, str, Any]:
     """Check one shape node ``{kind: body}``; returns ``(kind, path.kind, body)``."""
     if not isinstance(value, Mapping):
-        raise r.fail(path, f"a shape node must be a table with one key ({', '.join(SHAPE_KINDS)}), got {_type_name(value)}")
+        raise r.fail(path, f"a shape node must be a table with one key ({', '.join(shape_kinds())}), got {_type_name(value)}")
     if len(value) != 1:
         keys = ", ".join(show(k, 40) for k in value)
         got = f"{len(value)} ({keys})" if value else "none"
-        raise r.fail(path, f"a shape node must have exactly one key ({', '.join(SHAPE_KINDS)}), got {got}")
+        raise r.fail(path, f"a shape node must have exactly one key ({', '.join(shape_kinds())}), got {got}")
     ((kind, body),) = value.items()
-    if not isinstance(kind, str) or kind not in SHAPE_KINDS:
-        raise r.fail(path, f"unknown shape {show(kind, 40)} (expected one of {', '.join(SHAPE_KINDS)})")
+    if not isinstance(kind, str) or kind not in shape_kinds():
+        raise r.fail(path, f"unknown shape {show(kind, 40)} (expected one of {', '.join(shape_kinds())})")
     return kind, _join(path, kind), body
 
 
@@ -341,8 +355,11 @@ def _shape(r: _Reader, path: str, value: Any) -> Solid:
             stack.append((kind, here, [t["shape"]], [], _transform_matrix(r, here, kind, t)))
             todo = (_join(here, "shape"), t["shape"])
             continue
-        t = r.table(here, body, _PRIMITIVE_FIELDS[kind])
-        solid: Solid = r.construct(here, _CLASS_NAMES[kind], _PRIMITIVE_TYPES[kind], **dict(t))
+        node = _primitive_node(kind)
+        assert node is not None  # _node accepted the kind
+        fields, class_name, build = node
+        t = r.table(here, body, fields)
+        solid: Solid = r.construct(here, class_name, build, **dict(t))
         # Hand the finished solid to its parent; close every parent that is complete.
         while True:
             if not stack:

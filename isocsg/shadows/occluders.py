@@ -1,7 +1,7 @@
 """Occluders as unions of convex polyhedra (the seed treats objects as sets of convex polyhedra).
 
 Boxes and convex polyhedra are exact; spheres and frusta (truncus, cylinder,
-cone) are replaced by their inscribed tessellation ``to_polyhedron(resolution)``.
+cone) are replaced by their inscribed tessellation; every kind gives its pieces through ``convex_pieces(resolution)``.
 
 A CSG tree is first brought, through its flat program
 (:meth:`isocsg.csg.program.Program.evaluate`), into a union of *terms*
@@ -59,7 +59,8 @@ from numpy.typing import NDArray
 from .. import _validation
 from ..csg.program import OP_INTERSECTION, OP_UNION, compile_program
 from ..errors import InvalidGeometryError, InvalidParameterError
-from ..geometry.primitives import DEFAULT_RESOLUTION, ConvexPolyhedron, Primitive, Solid
+from ..kinds.base import DEFAULT_RESOLUTION, Primitive, Solid
+from ..kinds.polyhedron import ConvexPolyhedron
 
 __all__ = ["ConvexPiece", "convex_pieces", "halfspace_pieces", "shadow_pieces", "clear_cache", "DEFAULT_RESOLUTION"]
 
@@ -159,13 +160,13 @@ class _Convex:
     tessellation.
     """
 
-    __slots__ = ("_A", "_b", "_verts", "lo", "hi", "_poly", "_piece", "_prim", "_res")
+    __slots__ = ("_A", "_b", "_verts", "lo", "hi", "_poly", "_piece", "_prim", "_res", "_index")
 
-    def __init__(self, A=None, b=None, verts=None, *, prim=None, res=0) -> None:
+    def __init__(self, A=None, b=None, verts=None, *, prim=None, res=0, index=0) -> None:
         self._A, self._b, self._verts = A, b, verts
         self._poly = None
         self._piece = None
-        self._prim, self._res = prim, res
+        self._prim, self._res, self._index = prim, res, index
         if verts is not None:
             self.lo, self.hi = verts.min(axis=0), verts.max(axis=0)
         else:
@@ -175,7 +176,7 @@ class _Convex:
     def _materialise(self) -> None:
         if self._A is not None:
             return
-        poly = _leaf_polyhedron(self._prim, self._res)
+        poly = _leaf_pieces(self._prim, self._res)[self._index]
         self._poly = poly
         self._A = np.array(poly.face_normals, dtype=np.float64)
         self._b = np.array(poly.face_offsets, dtype=np.float64)
@@ -214,8 +215,9 @@ class _Convex:
 
 
 @functools.lru_cache(maxsize=1024)
-def _leaf_polyhedron(prim: Primitive, resolution: int) -> ConvexPolyhedron:
-    return prim.to_polyhedron(resolution)  # exact for polyhedral kinds, inscribed for curved ones
+def _leaf_pieces(prim: Primitive, resolution: int) -> tuple[ConvexPolyhedron, ...]:
+    # exact for polyhedral kinds, inscribed for curved ones; several for a non-convex kind
+    return tuple(prim.convex_pieces(resolution))
 
 
 def _overlap(a: _Convex, b: _Convex, tol: float) -> bool:
@@ -496,7 +498,10 @@ def _terms(solid: Solid, resolution: int, tol: float) -> list[tuple[_Convex, tup
     """The solid as disjoint terms ``(C, (D_1, ..., D_m))`` meaning ``C - (D_1 u ... u D_m)``."""
 
     def leaf(_: int, prim: Primitive) -> list:
-        return [(_Convex(prim=prim, res=resolution), ())]  # lazy: tessellated only when cut or kept
+        if prim.convex:  # one piece, lazy: tessellated only when cut or kept
+            return [(_Convex(prim=prim, res=resolution), ())]
+        pieces = _leaf_pieces(prim, resolution)
+        return [(_Convex(prim=prim, res=resolution, index=i), ()) for i in range(len(pieces))]
 
     def combine(op: int, parts: list[list]) -> list:
         if op == OP_UNION:
@@ -597,7 +602,7 @@ def clear_cache() -> None:
     """Forget the decompositions kept for solids already seen (they are reused across calls)."""
     _roots.cache_clear()
     _pieces_cached.cache_clear()
-    _leaf_polyhedron.cache_clear()
+    _leaf_pieces.cache_clear()
     _CONES.clear()
 
 
@@ -638,7 +643,7 @@ def convex_pieces(occluders: Sequence[Solid] | Solid, *, resolution: int = DEFAU
         Primitives (``Box``, ``ConvexPolyhedron`` exact; ``Sphere``, ``Truncus``,
         ``Cylinder``, ``Cone`` tessellated) and CSG trees over them.
     resolution : int, default 64
-        Tessellation resolution of curved primitives (``to_polyhedron``).
+        Tessellation resolution of curved primitives (``convex_pieces``).
 
     Returns
     -------
