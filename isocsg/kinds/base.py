@@ -238,8 +238,9 @@ class LeafRow:
     form: LeafForm
     center: NDArray[np.float64] | None = None
     radius: float = 0.0
-    axis: NDArray[np.float64] | None = None
+    axis: NDArray[np.float64] | None = None  # unit
     height: float = 0.0
+    axis_vector: NDArray[np.float64] | None = None  # FRUSTUM: the axis as given (E2's centre to E1's), bit for bit
     r1: float = 0.0
     r2: float = 0.0
     half: NDArray[np.float64] | None = None
@@ -383,6 +384,11 @@ class Primitive(Solid):
         """Outward normals and offsets ``n . x = d`` of the planar faces, or None (no planar faces
         that sections must see exactly)."""
         return None
+
+    def part_index(self, points: NDArray[np.float64], normals: NDArray[np.float64]) -> NDArray[np.int64]:
+        """Which smooth part of the surface (a face, a cap or the side) each surface point with its
+        normal lies on, as small integers (default: one part, 0)."""
+        return np.zeros(len(points), dtype=np.int64)
 
     def hull_points(self) -> NDArray[np.float64] | None:
         """Points whose convex hull is exactly the solid (a polyhedral kind's vertices), or None

@@ -219,6 +219,10 @@ class Box(Primitive):
         """Its six face planes."""
         return self.face_normals, self.face_offsets
 
+    def part_index(self, points: NDArray[np.float64], normals: NDArray[np.float64]) -> NDArray[np.int64]:
+        """The face whose outward normal is nearest each point's normal."""
+        return np.argmax(normals @ np.asarray(self.face_normals).T, axis=1).astype(np.int64)  # type: ignore[no-any-return]
+
     def hull_points(self) -> NDArray[np.float64]:
         """Its 8 corners."""
         return np.asarray(self.corners, dtype=np.float64)

@@ -192,6 +192,10 @@ class ConvexPolyhedron(Primitive):
         """Its face planes."""
         return self.face_normals, self.face_offsets
 
+    def part_index(self, points: NDArray[np.float64], normals: NDArray[np.float64]) -> NDArray[np.int64]:
+        """The face whose outward normal is nearest each point's normal."""
+        return np.argmax(normals @ np.asarray(self.face_normals).T, axis=1).astype(np.int64)  # type: ignore[no-any-return]
+
     def hull_points(self) -> NDArray[np.float64]:
         """Its hull vertices."""
         return np.asarray(self.hull_vertices, dtype=np.float64)

@@ -40,7 +40,7 @@ class PrimitiveKind:
     """
 
     name: str
-    cls: type
+    cls: type[Any]
     required: tuple[str, ...]
     optional: tuple[str, ...] = ()
 

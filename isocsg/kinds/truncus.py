@@ -400,7 +400,15 @@ class Truncus(Primitive):
 
     def leaf_row(self) -> LeafRow:
         """A :attr:`LeafForm.FRUSTUM` row."""
-        return LeafRow(LeafForm.FRUSTUM, center=self.center_array, axis=self.unit_axis, height=self.height, r1=self.r1, r2=self.r2)
+        return LeafRow(LeafForm.FRUSTUM, center=self.center_array, axis=self.unit_axis, height=self.height, r1=self.r1, r2=self.r2,
+                       axis_vector=np.asarray(self.axis, dtype=np.float64))
+
+    def part_index(self, points: NDArray[np.float64], normals: NDArray[np.float64]) -> NDArray[np.int64]:
+        """0 on the side, 1 on the end E1 (at +axis/2), 2 on the end E2."""
+        s = (points - self.center_array) @ self.unit_axis
+        h2 = self.height / 2
+        tol = 1e-9 * max(self.height, self.r1, self.r2)
+        return np.where(s >= h2 - tol, 1, np.where(s <= -h2 + tol, 2, 0)).astype(np.int64)
 
     def manifold(self, resolution: int, shapes: dict[tuple[Any, ...], Any] | None = None) -> Any:
         """manifold3d's cylinder, turned onto the axis and moved."""
