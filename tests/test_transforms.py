@@ -232,7 +232,7 @@ def test_box_orientation_is_validated():
 @pytest.mark.parametrize("fmt", ["toml", "json"])
 def test_turned_box_scene_file_round_trip(fmt):
     from isocsg import Camera, PointLight, Scene
-    from isocsg.scene.io import dumps_scene, loads_scene
+    from isocsg.scene import dumps_scene, loads_scene
 
     for angles in [(10, 20, 30), (1, 2, 3), (45, 45, 45), (0, 0, 90)]:
         b = Box((0.5, 0, 0), (1, 2, 3)).rotate(angles)
@@ -281,7 +281,7 @@ SCENE_NODES = [
 
 @pytest.mark.parametrize("text,expected", SCENE_NODES, ids=[t.split("=")[1].split("{")[1].strip() + str(i) for i, (t, _) in enumerate(SCENE_NODES)])
 def test_scene_file_transform_nodes(text, expected):
-    from isocsg.scene.io import dumps_scene, loads_scene
+    from isocsg.scene import dumps_scene, loads_scene
 
     scene = loads_scene(SCENE_HEAD + text)
     assert scene.objects[0].shape == expected
@@ -319,7 +319,7 @@ def test_scene_file_transform_errors_name_the_field(text, msg):
 
 def test_elliptic_truncus_scene_round_trip():
     from isocsg import EllipticTruncus
-    from isocsg.scene.io import dumps_scene, loads_scene
+    from isocsg.scene import dumps_scene, loads_scene
 
     text = SCENE_HEAD + "shape = { scale = { v = [2, 1, 1], shape = { cylinder = { center = [0, 0, 0], axis = [0, 1, 1], radius = 0.5 } } } }"
     scene = loads_scene(text)

@@ -244,7 +244,7 @@ def primitive_section(prim: Primitive, frame: NDArray[np.float64], resolution: i
     >>> primitive_section(Box((0, 0, 0), (2, 3, 4)), plane_frame((0, 0, 1), (0, 0, 1))).area
     6.0
     >>> F = plane_frame((0, 0, 0), (0, 0, 1))
-    >>> round(primitive_section(Sphere((0, 0, 0), 1), F, 64, area_exact=True).area / math.pi, 12)
+    >>> round(primitive_section(Sphere((0, 0, 0), 1), F, 64, area_exact=True).area / np.pi, 12)
     1.0
     """
     if not isinstance(prim, Primitive):

@@ -151,6 +151,7 @@ class Solid:
 
         Examples
         --------
+        >>> from isocsg import Sphere
         >>> Sphere((0, 0, 0), 1).transform([[2, 0, 0, 1], [0, 2, 0, 0], [0, 0, 2, 0]])
         Sphere(center=(1.0, 0.0, 0.0), radius=2.0)
         """
@@ -163,6 +164,7 @@ class Solid:
 
         Examples
         --------
+        >>> from isocsg import Sphere
         >>> Sphere((0, 0, 0), 1).translate((1, 2, 3)).center
         (1.0, 2.0, 3.0)
         """
@@ -183,6 +185,7 @@ class Solid:
 
         Examples
         --------
+        >>> from isocsg import Box
         >>> Box((1, 0, 0), (2, 1, 1)).rotate((0, 0, 90))
         Box(center=(0.0, 1.0, 0.0), size=(1.0, 2.0, 1.0))
         """
@@ -389,6 +392,17 @@ class Primitive(Solid):
         """Which smooth part of the surface (a face, a cap or the side) each surface point with its
         normal lies on, as small integers (default: one part, 0)."""
         return np.zeros(len(points), dtype=np.int64)
+
+    def clipped_to_box(self, lo: NDArray[np.float64], hi: NDArray[np.float64]) -> Primitive:
+        """A primitive equal to this one inside the box ``[lo, hi]`` and no larger than it needs to
+        be there (what a large tree's leaves are cut to before rendering); default: itself.
+
+        Raises
+        ------
+        InvalidGeometryError
+            When the cut would be below the documented smallest lengths (keep the leaf whole).
+        """
+        return self
 
     def hull_points(self) -> NDArray[np.float64] | None:
         """Points whose convex hull is exactly the solid (a polyhedral kind's vertices), or None

@@ -223,6 +223,16 @@ class Box(Primitive):
         """The face whose outward normal is nearest each point's normal."""
         return np.argmax(normals @ np.asarray(self.face_normals).T, axis=1).astype(np.int64)  # type: ignore[no-any-return]
 
+    def clipped_to_box(self, lo: NDArray[np.float64], hi: NDArray[np.float64]) -> Primitive:
+        """An axis-aligned box cut to the box ``[lo, hi]`` (a turned box stays whole)."""
+        if not self.axis_aligned:
+            return self
+        b = self.bounds
+        blo, bhi = np.maximum(b[0], lo), np.minimum(b[1], hi)
+        if np.all(blo < bhi):
+            return Box(tuple((0.5 * (blo + bhi)).tolist()), tuple((bhi - blo).tolist()))
+        return self
+
     def hull_points(self) -> NDArray[np.float64]:
         """Its 8 corners."""
         return np.asarray(self.corners, dtype=np.float64)

@@ -403,6 +403,28 @@ class Truncus(Primitive):
         return LeafRow(LeafForm.FRUSTUM, center=self.center_array, axis=self.unit_axis, height=self.height, r1=self.r1, r2=self.r2,
                        axis_vector=np.asarray(self.axis, dtype=np.float64))
 
+    def clipped_to_box(self, lo: NDArray[np.float64], hi: NDArray[np.float64]) -> Primitive:
+        """The part of the axis within the box's extent along it (and within the box grown by the
+        larger radius: any point of the truncus lies within that radius of its axis), with the
+        radii there; itself when that part is the whole axis or empty."""
+        corners = np.array([[x, y, z] for x in (lo[0], hi[0]) for y in (lo[1], hi[1]) for z in (lo[2], hi[2])])
+        u = self.unit_axis
+        c = self.center_array
+        s = (corners - c) @ u  # the box's extent along the axis
+        half = 0.5 * self.height
+        t0, t1 = _line_in_box(c, u, lo - max(self.r1, self.r2), hi + max(self.r1, self.r2))
+        s1, s0 = min(half, float(s.max()), t1), max(-half, float(s.min()), t0)
+        if s0 >= s1 or (s1 == half and s0 == -half):
+            return self  # off the box altogether (pruned elsewhere), or within the slab
+        centre = c + 0.5 * (s0 + s1) * u
+        axis = (s1 - s0) * u
+        if type(self) is Cylinder:
+            return Cylinder(tuple(centre.tolist()), tuple(axis.tolist()), self.r1)
+        r1, r0 = (max(float(r), 0.0) for r in self.radius_at(np.array([s1, s0])))
+        r1 = self.r1 if s1 == half else r1
+        r0 = self.r2 if s0 == -half else r0
+        return Truncus(tuple(centre.tolist()), tuple(axis.tolist()), r1, r0)
+
     def part_index(self, points: NDArray[np.float64], normals: NDArray[np.float64]) -> NDArray[np.int64]:
         """0 on the side, 1 on the end E1 (at +axis/2), 2 on the end E2."""
         s = (points - self.center_array) @ self.unit_axis
@@ -632,3 +654,18 @@ def truncus_section(t: Truncus, F: NDArray[np.float64], resolution: int, area_ex
     if not pts:
         return EMPTY
     return hull_polygon(to2d(np.vstack(pts), F))
+
+
+def _line_in_box(
+    c: NDArray[np.float64], u: NDArray[np.float64], lo: NDArray[np.float64], hi: NDArray[np.float64],
+) -> tuple[float, float]:
+    """The parameters ``[t0, t1]`` where the line ``c + t u`` lies in the box ``[lo, hi]`` (slabs;
+    an empty range, ``t0 > t1``, when it misses the box)."""
+    t0, t1 = -np.inf, np.inf
+    for k in range(3):
+        if u[k] != 0.0:
+            a, b = (lo[k] - c[k]) / u[k], (hi[k] - c[k]) / u[k]
+            t0, t1 = max(t0, min(a, b)), min(t1, max(a, b))
+        elif not lo[k] <= c[k] <= hi[k]:
+            return np.inf, -np.inf
+    return float(t0), float(t1)
