@@ -23,14 +23,22 @@ from numpy.typing import ArrayLike, NDArray
 
 sys.path.insert(0, str(Path(__file__).parent))
 
-import isocsg  # noqa: E402
-from isocsg import Camera, Cylinder, PointLight, Scene, Sphere  # noqa: E402
-from isocsg._validation import scalar, vector3  # noqa: E402
-from isocsg.kinds import ConvexPolyhedron, Primitive, RayHits, kind_named, register_kind, unregister_kind  # noqa: E402
-from isocsg.laminae.sphere import ring_triangles  # noqa: E402
-from isocsg.laminae.surface import Surface, orient_outward  # noqa: E402
-from reference.metrics import compare_images  # noqa: E402
-from reference.raycaster import camera_rays  # noqa: E402
+from reference.metrics import compare_images
+from reference.raycaster import camera_rays
+
+import isocsg
+from isocsg import Camera, Cylinder, PointLight, Scene, Sphere
+from isocsg._validation import scalar, vector3
+from isocsg.kinds import (
+    ConvexPolyhedron,
+    Primitive,
+    RayHits,
+    kind_named,
+    register_kind,
+    unregister_kind,
+)
+from isocsg.laminae.sphere import ring_triangles
+from isocsg.laminae.surface import Surface, orient_outward
 
 
 @dataclass(frozen=True, slots=True)

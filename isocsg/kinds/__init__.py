@@ -12,9 +12,10 @@
 See ``docs/architecture.md`` ("Primitive kinds") for adding a kind.
 """
 
+# isort: skip_file
+# (the kinds register as they are imported: in the order of the scene files' table of kinds)
 from .base import DEFAULT_RESOLUTION, LeafForm, LeafRow, Primitive, RayHits, Solid, provides
 from .registry import PrimitiveKind, kind_named, kind_of, register_kind, registered_kinds, unregister_kind
-# in the order of the scene files' table of kinds
 from .sphere import Sphere
 from .truncus import Cone, Cylinder, Truncus
 from .box import Box
@@ -23,7 +24,25 @@ from .ellipsoid import Ellipsoid
 from .elliptic import EllipticTruncus
 
 __all__ = [
-    "Solid", "Primitive", "RayHits", "LeafForm", "LeafRow", "DEFAULT_RESOLUTION", "provides",
-    "PrimitiveKind", "register_kind", "kind_of", "kind_named", "registered_kinds", "unregister_kind",
-    "Sphere", "Truncus", "Cylinder", "Cone", "Box", "ConvexPolyhedron", "Ellipsoid", "EllipticTruncus",
+    "DEFAULT_RESOLUTION",
+    "Box",
+    "Cone",
+    "ConvexPolyhedron",
+    "Cylinder",
+    "Ellipsoid",
+    "EllipticTruncus",
+    "LeafForm",
+    "LeafRow",
+    "Primitive",
+    "PrimitiveKind",
+    "RayHits",
+    "Solid",
+    "Sphere",
+    "Truncus",
+    "kind_named",
+    "kind_of",
+    "provides",
+    "register_kind",
+    "registered_kinds",
+    "unregister_kind",
 ]

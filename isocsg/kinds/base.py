@@ -53,12 +53,12 @@ if TYPE_CHECKING:  # pragma: no cover
     from .polyhedron import ConvexPolyhedron
 
 __all__ = [
-    "Solid",
-    "Primitive",
-    "RayHits",
+    "DEFAULT_RESOLUTION",
     "LeafForm",
     "LeafRow",
-    "DEFAULT_RESOLUTION",
+    "Primitive",
+    "RayHits",
+    "Solid",
     "check_tolerance",
     "provides",
 ]

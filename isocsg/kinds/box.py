@@ -23,8 +23,8 @@ from .base import (
     _snap_rotation,
     rotation3,
 )
-from .meshing import manifold3d_module
 from .halfspaces import polyhedral_tangent, ray_halfspaces
+from .meshing import manifold3d_module
 from .registry import register_kind
 from .scad import encoded, mat, translated, vec
 
@@ -159,12 +159,14 @@ class Box(Primitive):
 
     def to_polyhedron(self, resolution: int = DEFAULT_RESOLUTION) -> ConvexPolyhedron:
         """The box as a :class:`ConvexPolyhedron` (exact)."""
-        from .polyhedron import ConvexPolyhedron  # here: polyhedra register after this kind (the scene-file order)
+        # imported here: polyhedra register after this kind (the scene-file order)
+        from .polyhedron import ConvexPolyhedron
 
         return ConvexPolyhedron(self.corners)
 
     def _affine(self, A: NDArray[np.float64], t: NDArray[np.float64]) -> Primitive:
-        from .polyhedron import ConvexPolyhedron  # here: polyhedra register after this kind (the scene-file order)
+        # imported here: polyhedra register after this kind (the scene-file order)
+        from .polyhedron import ConvexPolyhedron
 
         c = A @ self.center_array + t
         B = A if self.axis_aligned else A @ self.rotation

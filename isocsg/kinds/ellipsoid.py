@@ -24,7 +24,16 @@ from numpy.typing import ArrayLike, NDArray
 
 from .._validation import MAX_ABS_COORD, MIN_ASPECT, Vec3, length_floor, vector3
 from ..errors import InvalidGeometryError
-from .base import DEFAULT_RESOLUTION, LeafForm, LeafRow, IDENTITY3, Primitive, RayHits, _as_rays, rotation3
+from .base import (
+    DEFAULT_RESOLUTION,
+    IDENTITY3,
+    LeafForm,
+    LeafRow,
+    Primitive,
+    RayHits,
+    _as_rays,
+    rotation3,
+)
 from .meshing import manifold3d_module
 from .polyhedron import ConvexPolyhedron
 from .registry import register_kind

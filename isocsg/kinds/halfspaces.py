@@ -8,7 +8,7 @@ from numpy.typing import NDArray
 
 from .base import RayHits, TangentCone
 
-__all__ = ["ray_halfspaces", "polyhedral_tangent"]
+__all__ = ["polyhedral_tangent", "ray_halfspaces"]
 
 
 def ray_halfspaces(

@@ -17,7 +17,16 @@ from numpy.typing import ArrayLike, NDArray
 
 from .._validation import MAX_VERTICES, Vec3, length_floor, points_array
 from ..errors import InvalidGeometryError
-from .base import DEFAULT_RESOLUTION, LeafForm, LeafRow, Primitive, RayHits, TangentCone, _as_rays, _perpendicular_frame
+from .base import (
+    DEFAULT_RESOLUTION,
+    LeafForm,
+    LeafRow,
+    Primitive,
+    RayHits,
+    TangentCone,
+    _as_rays,
+    _perpendicular_frame,
+)
 from .halfspaces import polyhedral_tangent, ray_halfspaces
 from .meshing import manifold3d_module
 from .registry import register_kind
@@ -149,7 +158,7 @@ class ConvexPolyhedron(Primitive):
         o, d = _as_rays(origins, directions)
         return ray_halfspaces(o, d, self.face_normals, self.face_offsets)
 
-    def to_polyhedron(self, resolution: int = DEFAULT_RESOLUTION) -> "ConvexPolyhedron":
+    def to_polyhedron(self, resolution: int = DEFAULT_RESOLUTION) -> ConvexPolyhedron:
         """The polyhedron itself (it is already exact)."""
         return self
 

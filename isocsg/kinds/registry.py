@@ -20,7 +20,7 @@ from typing import Any, TypeVar
 
 from ..errors import InvalidParameterError
 
-__all__ = ["PrimitiveKind", "register_kind", "kind_of", "kind_named", "registered_kinds"]
+__all__ = ["PrimitiveKind", "kind_named", "kind_of", "register_kind", "registered_kinds"]
 
 T = TypeVar("T", bound=type)
 

@@ -13,7 +13,7 @@ import math
 import numpy as np
 from numpy.typing import NDArray
 
-__all__ = ["num", "num_sig", "vec", "mat", "short_mat", "frame", "translated", "encoded", "round_sig", "truncus_body"]
+__all__ = ["encoded", "frame", "mat", "num", "num_sig", "round_sig", "short_mat", "translated", "truncus_body", "vec"]
 
 
 def num(x: float) -> str:

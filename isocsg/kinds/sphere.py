@@ -15,7 +15,16 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from .._validation import MAX_ABS_COORD, Vec3, scalar, vector3
-from .base import DEFAULT_RESOLUTION, LeafForm, LeafRow, Primitive, RayHits, TangentCone, _as_rays, _check_length
+from .base import (
+    DEFAULT_RESOLUTION,
+    LeafForm,
+    LeafRow,
+    Primitive,
+    RayHits,
+    TangentCone,
+    _as_rays,
+    _check_length,
+)
 from .meshing import manifold3d_module
 from .registry import register_kind
 from .scad import encoded, num, translated
@@ -104,9 +113,10 @@ class Sphere(Primitive):
         n1 = np.where(ok[:, None], (oc + np.where(ok, t1, 0.0)[:, None] * d) / self.radius, 0.0)
         return RayHits(t0, t1, n0, n1)
 
-    def to_polyhedron(self, resolution: int = DEFAULT_RESOLUTION) -> "ConvexPolyhedron":
+    def to_polyhedron(self, resolution: int = DEFAULT_RESOLUTION) -> ConvexPolyhedron:
         """Inscribed UV-sphere polyhedron with ``resolution`` segments around."""
-        from .polyhedron import ConvexPolyhedron  # here: polyhedra register after this kind (the scene-file order)
+        # imported here: polyhedra register after this kind (the scene-file order)
+        from .polyhedron import ConvexPolyhedron
 
         m = max(int(resolution), 4)
         rings = max(m // 2, 2)

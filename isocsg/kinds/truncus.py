@@ -15,7 +15,16 @@ from typing import TYPE_CHECKING, Any, ClassVar
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from .._validation import MAX_ABS_COORD, MIN_ASPECT, Vec3, length_floor, nonzero_vector3, points_array, scalar, vector3
+from .._validation import (
+    MAX_ABS_COORD,
+    MIN_ASPECT,
+    Vec3,
+    length_floor,
+    nonzero_vector3,
+    points_array,
+    scalar,
+    vector3,
+)
 from ..errors import InvalidGeometryError
 from .base import (
     DEFAULT_RESOLUTION,
@@ -39,7 +48,7 @@ if TYPE_CHECKING:  # pragma: no cover
     from ..laminae.surface import Surface
     from .polyhedron import ConvexPolyhedron
 
-__all__ = ["Truncus", "Cylinder", "Cone", "truncus_section"]
+__all__ = ["Cone", "Cylinder", "Truncus", "truncus_section"]
 
 
 
@@ -284,9 +293,10 @@ class Truncus(Primitive):
         n = er - self.slope * self.unit_axis
         return n / np.maximum(np.linalg.norm(n, axis=1, keepdims=True), 1e-300)
 
-    def to_polyhedron(self, resolution: int = DEFAULT_RESOLUTION) -> "ConvexPolyhedron":
+    def to_polyhedron(self, resolution: int = DEFAULT_RESOLUTION) -> ConvexPolyhedron:
         """Inscribed polyhedron with ``resolution`` points on each end circle."""
-        from .polyhedron import ConvexPolyhedron  # here: polyhedra register after this kind (the scene-file order)
+        # imported here: polyhedra register after this kind (the scene-file order)
+        from .polyhedron import ConvexPolyhedron
 
         m = max(int(resolution), 3)
         u, v = _perpendicular_frame(self.unit_axis)

@@ -17,7 +17,7 @@ from ..errors import SceneFileError
 from .io import scene_format
 from .model import Scene
 
-__all__ = ["scene_to_dict", "dumps_scene", "save_scene", "MAX_FILE_DEPTH"]
+__all__ = ["MAX_FILE_DEPTH", "dumps_scene", "save_scene", "scene_to_dict"]
 
 
 def _light_to_dict(light: Any) -> dict[str, Any]:

@@ -110,7 +110,7 @@ class _Convex:
     tessellation.
     """
 
-    __slots__ = ("_A", "_b", "_verts", "lo", "hi", "_poly", "_piece", "_prim", "_res", "_index")
+    __slots__ = ("_A", "_b", "_index", "_piece", "_poly", "_prim", "_res", "_verts", "hi", "lo")
 
     def __init__(self, A=None, b=None, verts=None, *, prim=None, res=0, index=0) -> None:
         self._A, self._b, self._verts = A, b, verts
