@@ -304,3 +304,54 @@ shape = {{ difference = [{{ capsule = {{ a = {list(CAPSULE['a'])}, b = {list(CAP
     assert again.objects[0].shape == scene.objects[0].shape
     with pytest.raises(isocsg.SceneFileError, match=re.escape("objects[0].shape.difference[0].capsule.radius: missing required field")):
         isocsg.scene.loads_scene(text.replace(f", radius = {CAPSULE['radius']}", ""))
+
+
+@dataclass(frozen=True, slots=True)
+class BallPair(Primitive):
+    """Two disjoint balls as one solid: the smallest non-convex kind (two intervals per ray)."""
+
+    a: tuple[float, float, float]
+    b: tuple[float, float, float]
+    radius: float
+    kind: ClassVar[str] = "ball_pair"
+    convex: ClassVar[bool] = False
+    max_intervals: ClassVar[int] = 2
+
+    def _balls(self) -> tuple[Sphere, Sphere]:
+        return Sphere(self.a, self.radius), Sphere(self.b, self.radius)
+
+    @property
+    def bounds(self) -> NDArray[np.float64]:
+        lo = np.minimum(*(s.bounds[0] for s in self._balls()))
+        return np.stack([lo, np.maximum(*(s.bounds[1] for s in self._balls()))])
+
+    def signed_distance(self, points: ArrayLike) -> NDArray[np.float64]:
+        return np.minimum(*(s.signed_distance(points) for s in self._balls()))
+
+    def ray_intervals(self, origins: ArrayLike, directions: ArrayLike) -> NDArray[np.float64]:
+        out = np.concatenate([s.ray_intervals(origins, directions) for s in self._balls()], axis=1)
+        order = np.argsort(np.where(np.isnan(out[:, :, 0]), np.inf, out[:, :, 0]), axis=1)
+        return np.take_along_axis(out, order[:, :, None], axis=1)
+
+    def convex_pieces(self, resolution: int = 64) -> list[ConvexPolyhedron]:
+        return [s.to_polyhedron(resolution) for s in self._balls()]
+
+
+def test_non_convex_kind_rays_and_shadows():
+    pair = BallPair((-1.0, 0.0, 1.0), (1.0, 0.0, 1.0), 0.4)
+    iv = pair.ray_intervals([[-3.0, 0.0, 1.0], [0.0, 0.0, 5.0]], [[1.0, 0.0, 0.0], [0.0, 0.0, -1.0]])
+    assert iv.shape == (2, 2, 2)
+    assert np.allclose(iv[0], [[1.6, 2.4], [3.6, 4.4]]) and np.isnan(iv[1]).all()
+    # as an occluder: its convex pieces, exactly the shadows of the two balls
+    light = isocsg.AreaLight([(-2.0, -1.0, 3.0), (-2.0, 1.0, 3.0), (2.0, 1.0, 3.0), (2.0, -1.0, 3.0)])
+    points = np.array([[-1.0, 0.0, 0.0], [0.0, 0.0, 0.0], [1.3, 0.2, 0.0]])
+    got = isocsg.illuminance(points, (0.0, 0.0, 1.0), light, [pair])
+    want = isocsg.illuminance(points, (0.0, 0.0, 1.0), light, list(pair._balls()))
+    assert np.allclose(got, want, rtol=1e-12, atol=1e-15)
+    assert np.all(got < isocsg.illuminance(points, (0.0, 0.0, 1.0), light))
+    # and as a leaf of a tree: each piece cut like a leaf of its own
+    cut = isocsg.Box((0.0, 0.0, 0.7), (4.0, 2.0, 0.6))
+    a, b = pair._balls()
+    got = isocsg.illuminance(points, (0.0, 0.0, 1.0), light, [pair - cut])
+    want = isocsg.illuminance(points, (0.0, 0.0, 1.0), light, [(a | b) - cut])
+    assert np.allclose(got, want, rtol=1e-12, atol=1e-15)
