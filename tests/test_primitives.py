@@ -142,3 +142,48 @@ def test_cone_and_cylinder_follow_the_end_convention():
     assert k.contains([[0.9, 0, 0.95], [0, 0, -0.99]]).tolist() == [True, True]
     assert k.contains([[0.5, 0, -0.9]]).tolist() == [False]
     assert k.volume == pytest.approx(math.pi * 2 / 3)
+
+
+def test_kind_interface_members():
+    """The members the shared machinery calls instead of testing for a concrete kind."""
+    from isocsg import Box, ConvexPolyhedron, Cylinder, Ellipsoid, Sphere, Truncus
+    from isocsg.kinds import LeafForm
+
+    t = Truncus((0, 0, 0), (0, 0, 2), 1.0, 0.5)
+    pts = np.array([[0.0, 0.0, 1.0], [0.0, 0.0, -1.0], [0.75, 0.0, 0.0]])
+    assert t.part_index(pts, np.zeros((3, 3))).tolist() == [1, 2, 0]
+    b = Box((0, 0, 0), (2, 2, 2))
+    assert b.part_index(np.zeros((2, 3)), np.array([[0.0, 0, 1], [-1.0, 0, 0]])).tolist() == [4, 1]
+    assert Sphere((0, 0, 0), 1).part_index(np.zeros((2, 3)), np.zeros((2, 3))).tolist() == [0, 0]
+    assert b.hull_points().shape == (8, 3) and Sphere((0, 0, 0), 1).hull_points() is None
+    forms = [p.leaf_row().form for p in (Sphere((0, 0, 0), 1), Cylinder((0, 0, 0), (0, 0, 1), 1), b, b.rotate((0, 0, 30)),
+                                         ConvexPolyhedron([(0, 0, 0), (1, 0, 0), (0, 1, 0), (0, 0, 1)]), Ellipsoid((0, 0, 0), (1, 2, 3)))]
+    assert forms == [LeafForm.BALL, LeafForm.FRUSTUM, LeafForm.AXIS_BOX, LeafForm.HULL, LeafForm.HULL, LeafForm.GENERIC]
+    assert t.leaf_row().axis_vector.tolist() == [0.0, 0.0, 2.0]
+    # ray intervals: (n, 1, 2) for a convex kind, NaN where a ray misses
+    iv = Sphere((0, 0, 0), 1).ray_intervals([[0, 0, -5], [3, 0, -5]], [[0, 0, 1], [0, 0, 1]])
+    assert iv.shape == (2, 1, 2) and iv[0, 0].tolist() == [4.0, 6.0] and np.isnan(iv[1]).all()
+    # the extents of every kind bound its tessellation and are reached by it
+    for p in (t, b.rotate((10, 20, 30)), Ellipsoid((0, 0, 0), (1, 2, 3)), Sphere((1, 2, 3), 2)):
+        n = np.array([0.36, -0.48, 0.8])
+        lo, hi = p.extent(n)
+        proj = p.to_polyhedron(256).hull_vertices @ n
+        assert lo <= proj.min() + 1e-12 and proj.max() <= hi + 1e-12 and hi - proj.max() < 1e-3 * (hi - lo)
+
+
+def test_clipped_to_box_matches_the_tiles_cut():
+    """``clipped_to_box`` is the cut the renderer's clip_leaves makes of trunci and boxes."""
+    from isocsg import Box, Cone, ConvexPolyhedron, Cylinder
+    from isocsg.csg.program import compile_program
+    from isocsg.render.tiles import clip_leaves, combine_boxes, leaf_geometry
+
+    tree = Box((0, 0, 0), (2, 2, 0.4)) - Cylinder((0.1, 0, 0), (0.2, 0.1, 3), 0.2) - Cone((0.5, 0.3, 0), (0, 0.3, -4), 0.3) \
+        - Box((0.9, 0.9, 0), (0.1, 0.1, 5)) - ConvexPolyhedron([(0, 0, -3), (0.1, 0, 3), (0, 0.1, 3), (0.1, 0.1, 0)])
+    prog = compile_program(tree)
+    g = leaf_geometry(prog.leaves)
+    lo, hi = combine_boxes(prog.op, prog.arg, g.lo, g.hi)
+    want = clip_leaves(prog.leaves, g, lo, hi)
+    margin = 1e-3 * float(np.linalg.norm(hi - lo))
+    got = [p.clipped_to_box(lo - margin, hi + margin) for p in prog.leaves]
+    assert got == want
+    assert got[1] != prog.leaves[1] and got[-1] is prog.leaves[-1]

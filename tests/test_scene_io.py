@@ -482,3 +482,36 @@ def test_trees_that_alternate_too_deeply_are_refused_naming_the_object(tmp_path)
     scene = Scene(Camera((0, -5, 3), (0, 0, 0)), [PointLight((1, 2, 3))], [Sphere((0, 0, 0), 1), part])
     with pytest.raises(SceneFileError, match=re.escape("objects[1].shape: the tree nests 301 levels deep")):
         save_scene(scene, tmp_path / "deep.json")
+
+
+def test_kind_registered_after_import_is_read() -> None:
+    # Regression: the reader copied the table of kinds once at import, so a kind registered
+    # later by user code was an "unknown shape"; the table is now read when a file is read.
+    from dataclasses import dataclass
+
+    from isocsg.kinds import register_kind, unregister_kind
+    from isocsg.scene import io as scene_io
+
+    @dataclass(frozen=True, slots=True)
+    class Ball(Sphere):
+        pass
+
+    text = """
+[camera]
+eye = [0.0, -4.0, 1.0]
+target = [0.0, 0.0, 0.0]
+
+[[objects]]
+shape = { ball = { center = [0.0, 0.0, 0.0], radius = 1.0 } }
+"""
+    with pytest.raises(SceneFileError, match=re.escape("objects[0].shape: unknown shape 'ball'")):
+        loads_scene(text)
+    register_kind("ball", required=("center", "radius"))(Ball)
+    try:
+        assert "ball" in scene_io.shape_kinds() and "ball" in scene_io.SHAPE_KINDS
+        shape = loads_scene(text).objects[0].shape
+        assert type(shape) is Ball and shape.radius == 1.0
+    finally:
+        unregister_kind("ball")
+    with pytest.raises(SceneFileError, match=re.escape("objects[0].shape: unknown shape 'ball'")):
+        loads_scene(text)

@@ -232,7 +232,7 @@ def test_box_orientation_is_validated():
 @pytest.mark.parametrize("fmt", ["toml", "json"])
 def test_turned_box_scene_file_round_trip(fmt):
     from isocsg import Camera, PointLight, Scene
-    from isocsg.scene.io import dumps_scene, loads_scene
+    from isocsg.scene import dumps_scene, loads_scene
 
     for angles in [(10, 20, 30), (1, 2, 3), (45, 45, 45), (0, 0, 90)]:
         b = Box((0.5, 0, 0), (1, 2, 3)).rotate(angles)
@@ -281,7 +281,7 @@ SCENE_NODES = [
 
 @pytest.mark.parametrize("text,expected", SCENE_NODES, ids=[t.split("=")[1].split("{")[1].strip() + str(i) for i, (t, _) in enumerate(SCENE_NODES)])
 def test_scene_file_transform_nodes(text, expected):
-    from isocsg.scene.io import dumps_scene, loads_scene
+    from isocsg.scene import dumps_scene, loads_scene
 
     scene = loads_scene(SCENE_HEAD + text)
     assert scene.objects[0].shape == expected
@@ -319,7 +319,7 @@ def test_scene_file_transform_errors_name_the_field(text, msg):
 
 def test_elliptic_truncus_scene_round_trip():
     from isocsg import EllipticTruncus
-    from isocsg.scene.io import dumps_scene, loads_scene
+    from isocsg.scene import dumps_scene, loads_scene
 
     text = SCENE_HEAD + "shape = { scale = { v = [2, 1, 1], shape = { cylinder = { center = [0, 0, 0], axis = [0, 1, 1], radius = 0.5 } } } }"
     scene = loads_scene(text)
@@ -351,25 +351,25 @@ def test_turned_box_sections_against_closed_forms():
 
 def test_registry_table():
     from isocsg import Ellipsoid, EllipticTruncus
-    from isocsg.geometry.registry import PrimitiveKind, kind_named, kind_of, register_kind, registered_kinds
+    from isocsg.kinds import Primitive, PrimitiveKind, kind_named, kind_of, provides, register_kind, registered_kinds
 
     names = [k.name for k in registered_kinds()]
     assert names == ["sphere", "truncus", "cylinder", "cone", "box", "polyhedron", "ellipsoid", "elliptic_truncus"]
     assert kind_of(Cylinder((0, 0, 0), (0, 0, 1), 1)).name == "cylinder"  # by the class's inheritance
-    assert kind_of(Ellipsoid((0, 0, 0), (1, 2, 3))).hook("section") is not None
     assert kind_named("elliptic_truncus").cls is EllipticTruncus
-    # every kind reaches a section, band surface, mesh and OpenSCAD form through the table,
-    # the built-in ones too; cylinders and cones through the truncus's registration
-    from isocsg.geometry.registry import hook_for
-
+    # every kind provides its section, band surface, mesh and OpenSCAD form itself, the built-in
+    # ones too; cylinders and cones through the truncus's members
     samples = [Sphere((0, 0, 0), 1), Truncus((0, 0, 0), (0, 0, 1), 1, 0.5), Cylinder((0, 0, 0), (0, 0, 1), 1),
                Cone((0, 0, 0), (0, 0, 1), 1), Box((0, 0, 0), (1, 2, 3)), ConvexPolyhedron([(0, 0, 0), (1, 0, 0), (0, 1, 0), (0, 0, 1)]),
                Ellipsoid((0, 0, 0), (1, 2, 3)), Cylinder((0, 0, 0), (0, 0, 1), 1).scale((2, 1, 1))]
     for prim in samples:
-        for which in ("section", "surface", "manifold", "openscad"):
-            assert callable(hook_for(prim, which)), (type(prim).__name__, which)
-    assert hook_for(Cone((0, 0, 0), (0, 0, 1), 1), "distance") is kind_named("truncus").hook("distance")
-    assert hook_for(Ellipsoid((0, 0, 0), (1, 2, 3)), "laminae") is None  # no planar contours
+        assert prim.kind == kind_of(prim).name
+        for which in ("section", "band_surface", "manifold", "to_openscad", "signed_distance", "extent"):
+            assert provides(prim, which), (type(prim).__name__, which)
+    assert type(Cone((0, 0, 0), (0, 0, 1), 1)).signed_distance is Truncus.signed_distance
+    assert not provides(Ellipsoid((0, 0, 0), (1, 2, 3)), "contour_laminae")  # no planar contours
+    assert Ellipsoid((0, 0, 0), (1, 2, 3)).contour_laminae(None, 4) == []
+    assert Primitive.ray_intervals is not None
     with pytest.raises(InvalidParameterError, match=re.escape("kind.name 'sphere' is already registered")):
         register_kind(PrimitiveKind("sphere", type("Other", (), {}), ("center",)))
     with pytest.raises(InvalidParameterError, match=re.escape("kind.cls Ellipsoid is already registered")):

@@ -48,8 +48,9 @@ from numpy.typing import NDArray
 
 from ..errors import InvalidParameterError
 
+from ..kinds.base import RELATIVE_TOLERANCE, LeafForm, Primitive, check_tolerance
+
 if TYPE_CHECKING:  # pragma: no cover
-    from ..geometry.primitives import Box, ConvexPolyhedron, Primitive, Sphere, Truncus
     from .program import Program
 
 __all__ = ["signed_distance", "default_tolerance", "check_tolerance", "contains_program"]
@@ -60,33 +61,14 @@ DIRECTION_MARGIN = 1e-9
 #: Points near a boundary are resolved this many at a time (memory: about 1.2 kB each per leaf
 #: whose tangent cone or inside set reaches them).
 NEAR_CHUNK = 16384
-#: The relative size of the default tolerance.
-RELATIVE_TOLERANCE = 1e-12
 
 
 # ----------------------------------------------------------------------------- distances
 
 
-def _truncus_meridian(prim, p):
-    """Axial coordinate s, radial distance rho, unit radial direction of points (truncus frame)."""
-    a = prim.unit_axis
-    rel = p - prim.center_array
-    s = rel @ a
-    radial = rel - s[:, None] * a
-    rho = np.sqrt(np.einsum("ij,ij->i", radial, radial))
-    er = np.divide(radial, rho[:, None], out=np.zeros_like(radial), where=rho[:, None] > 0)
-    return s, rho, er
-
-
-def _segment_distance(px, py, ax, ay, bx, by):
-    dx, dy = bx - ax, by - ay
-    ll = dx * dx + dy * dy
-    t = np.clip(((px - ax) * dx + (py - ay) * dy) / ll, 0.0, 1.0) if ll > 0 else np.zeros_like(px)
-    return np.hypot(px - (ax + t * dx), py - (ay + t * dy))
-
-
 def signed_distance(prim: Primitive, points: NDArray[np.float64]) -> NDArray[np.float64]:
-    """Signed distance of points to a primitive's boundary (negative inside).
+    """Signed distance of points to a primitive's boundary (negative inside): its kind's
+    :meth:`~isocsg.kinds.base.Primitive.signed_distance`.
 
     Exact for spheres, boxes and trunci (the distance in the meridian
     half-plane to the truncus' trapezoid); for a convex polyhedron the
@@ -114,74 +96,9 @@ def signed_distance(prim: Primitive, points: NDArray[np.float64]) -> NDArray[np.
     >>> signed_distance(Cylinder((0, 0, 0), (0, 0, 2), 1), [[0.0, 0, 3], [0.5, 0, 0]]).tolist()
     [2.0, -0.5]
     """
-    from ..geometry.registry import hook_for
-
-    p = np.asarray(points, dtype=np.float64).reshape(-1, 3)
-    hook = hook_for(prim, "distance")
-    if hook is not None:
-        return hook(prim, p)  # type: ignore[no-any-return]
-    if hasattr(prim, "signed_distance"):  # any other registered kind provides its own
-        return prim.signed_distance(p)  # type: ignore[no-any-return]
-    raise InvalidParameterError(f"signed_distance needs a primitive, got {type(prim).__name__}")  # pragma: no cover
-
-
-# ----------------------------------------------------------------------------- the built-in kinds' distances
-
-
-def sphere_distance(prim: Sphere, p: NDArray[np.float64]) -> NDArray[np.float64]:
-    """The sphere's registered distance hook: exact."""
-    d = p - prim.center_array
-    return np.sqrt(np.einsum("ij,ij->i", d, d)) - prim.radius  # type: ignore[no-any-return]
-
-
-def box_distance(prim: Box, p: NDArray[np.float64]) -> NDArray[np.float64]:
-    """The box's registered distance hook: exact, in its own frame."""
-    q = np.abs(prim.to_local(p)) - prim.half_size
-    outside = np.sqrt(np.einsum("ij,ij->i", np.maximum(q, 0), np.maximum(q, 0)))
-    return outside + np.minimum(q.max(axis=1), 0.0)  # type: ignore[no-any-return]
-
-
-def truncus_distance(prim: Truncus, p: NDArray[np.float64]) -> NDArray[np.float64]:
-    """The truncus's registered distance hook: exact, in the meridian half-plane."""
-    s, rho, _ = _truncus_meridian(prim, p)
-    h2, r1, r2 = prim.height / 2, prim.r1, prim.r2
-    length = math.hypot(2 * h2, r1 - r2)
-    side = (rho - prim.radius_at(s)) * (2 * h2) / length  # signed distance to the side line
-    inside_d = np.maximum(np.maximum(s - h2, -s - h2), side)
-    inside = inside_d <= 0.0
-    out = inside_d.copy()
-    if not inside.all():
-        o = ~inside
-        so, ro = s[o], rho[o]
-        d1 = _segment_distance(so, ro, h2, -r1, h2, r1)
-        d2 = _segment_distance(so, ro, -h2, -r2, -h2, r2)
-        d3 = _segment_distance(so, ro, -h2, r2, h2, r1)
-        out[o] = np.minimum(np.minimum(d1, d2), d3)
-    return out  # type: ignore[no-any-return]
-
-
-def polyhedron_distance(prim: ConvexPolyhedron, p: NDArray[np.float64]) -> NDArray[np.float64]:
-    """The convex polyhedron's registered distance hook: the largest face-plane distance."""
-    return (p @ prim.face_normals.T - prim.face_offsets).max(axis=1)  # type: ignore[no-any-return]
-
-
-def check_tolerance(name: str, tol: float | None, default: float) -> float:
-    """``tol`` as a float >= 0, or ``default`` when it is None (errors name the field)."""
-    if tol is None:
-        return default
-    try:
-        t = float(tol)
-    except (TypeError, ValueError):
-        raise InvalidParameterError(f"{name} must be a number >= 0, got {type(tol).__name__}") from None
-    if not math.isfinite(t) or t < 0.0:
-        raise InvalidParameterError(f"{name} must be a finite number >= 0, got {tol!r}")
-    return t
-
-
-def primitive_tolerance(prim: Primitive) -> float:
-    """The default tolerance of one primitive: 1e-12 of its size or coordinate magnitude."""
-    b = np.asarray(prim.bounds)
-    return RELATIVE_TOLERANCE * float(max(np.max(b[1] - b[0]), np.max(np.abs(b))))
+    if not isinstance(prim, Primitive):
+        raise InvalidParameterError(f"signed_distance needs a primitive, got {type(prim).__name__}")
+    return prim.signed_distance(np.asarray(points, dtype=np.float64).reshape(-1, 3))
 
 
 def default_tolerance(boxes: NDArray[np.float64]) -> float:
@@ -190,81 +107,6 @@ def default_tolerance(boxes: NDArray[np.float64]) -> float:
         return 0.0
     lo, hi = boxes[:, 0].min(axis=0), boxes[:, 1].max(axis=0)
     return RELATIVE_TOLERANCE * float(max(np.max(hi - lo), np.max(np.abs(boxes))))
-
-
-# ----------------------------------------------------------------------------- tangent cones
-
-
-_Cone = tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.bool_]]
-
-
-def _tangent_constraints(
-    prim: Primitive, p: NDArray[np.float64], tol: float
-) -> tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.bool_]]:
-    """The tangent cone of ``prim`` at points within ``tol`` of its boundary.
-
-    Returns ``V (m, c, 3)``, ``C (m, c)`` and ``valid (m, c)``: direction u is
-    inside the cone when ``V[i, j] . u < C[i, j]`` for every valid j.
-    """
-    from ..geometry.registry import hook_for
-
-    hook = hook_for(prim, "tangent")
-    if hook is not None:
-        return hook(prim, p, tol)  # type: ignore[no-any-return]
-    if hasattr(prim, "normals_at"):  # a smooth convex surface (ellipsoid): its tangent half-space
-        m = len(p)
-        n = prim.normals_at(p)
-        return n[:, None, :], np.zeros((m, 1)), np.ones((m, 1), dtype=bool)
-    raise InvalidParameterError(f"contains needs primitives, got {type(prim).__name__}")  # pragma: no cover
-
-
-def sphere_tangent(prim: Sphere, p: NDArray[np.float64], tol: float) -> _Cone:
-    """The sphere's registered tangent-cone hook: the tangent half-space."""
-    m = len(p)
-    d = p - prim.center_array
-    n = d / np.maximum(np.linalg.norm(d, axis=1, keepdims=True), 1e-300)
-    return n[:, None, :], np.zeros((m, 1)), np.ones((m, 1), dtype=bool)
-
-
-def polyhedral_tangent(prim: Box | ConvexPolyhedron, p: NDArray[np.float64], tol: float) -> _Cone:
-    """The registered tangent-cone hook of boxes and convex polyhedra: the faces within ``tol``."""
-    m = len(p)
-    normals, offsets = prim.face_normals, prim.face_offsets
-    dist = p @ normals.T - offsets
-    valid = np.abs(dist) <= tol
-    V = np.broadcast_to(normals, (m, len(normals), 3))
-    return V, np.zeros((m, len(normals))), valid
-
-
-def truncus_tangent(prim: Truncus, p: NDArray[np.float64], tol: float) -> _Cone:
-    """The truncus's registered tangent-cone hook: ends, side and the apex's circular cone."""
-    m = len(p)
-    a = prim.unit_axis
-    s, rho, er = _truncus_meridian(prim, p)
-    h2, k = prim.height / 2, prim.slope
-    V = np.zeros((m, 3, 3))
-    C = np.zeros((m, 3))
-    valid = np.zeros((m, 3), dtype=bool)
-    length = math.hypot(1.0, k)
-    side = (rho - prim.radius_at(s)) / length
-    V[:, 0] = a
-    valid[:, 0] = np.abs(s - h2) <= tol
-    V[:, 1] = -a
-    valid[:, 1] = np.abs(s + h2) <= tol
-    near_side = np.abs(side) <= tol
-    V[:, 2] = (er - k * a) / length
-    valid[:, 2] = near_side
-    # the apex of a cone: a circular cone around the axis, half-angle beta
-    apex_rows = near_side & (rho <= tol)
-    for r_end, s_end, toward in ((prim.r1, h2, -a), (prim.r2, -h2, a)):
-        if r_end == 0.0:
-            at = apex_rows & (np.abs(s - s_end) <= tol + abs(k) * tol)
-            if at.any():
-                beta = math.atan2(max(prim.r1, prim.r2), 2 * h2)
-                V[at, 2] = -toward
-                C[at, 2] = -math.cos(beta)
-                valid[at, 0 if s_end > 0 else 1] = False  # the apex has no cap
-    return V, C, valid
 
 
 def _fixed_directions() -> NDArray[np.float64]:
@@ -420,18 +262,18 @@ def _batched_distance(tab, prog: Program, leaf_of: NDArray[np.int64], q: NDArray
     """Signed distances of points ``q`` to the leaves ``leaf_of`` (one leaf per point), vectorised by kind."""
     out = np.empty(len(q))
     kind = tab.kind[leaf_of]
-    sel = np.nonzero(kind == 0)[0]
+    sel = np.nonzero(kind == LeafForm.BALL)[0]
     if len(sel):
         L = leaf_of[sel]
         d = q[sel] - tab.center[L]
         out[sel] = np.sqrt(np.einsum("ij,ij->i", d, d)) - tab.radius[L]
-    sel = np.nonzero(kind == 2)[0]
+    sel = np.nonzero(kind == LeafForm.AXIS_BOX)[0]
     if len(sel):
         L = leaf_of[sel]
         e = np.abs(q[sel] - tab.center[L]) - tab.half[L]
         pos = np.maximum(e, 0.0)
         out[sel] = np.sqrt(np.einsum("ij,ij->i", pos, pos)) + np.minimum(e.max(axis=1), 0.0)
-    sel = np.nonzero(kind == 1)[0]
+    sel = np.nonzero(kind == LeafForm.FRUSTUM)[0]
     if len(sel):
         L = leaf_of[sel]
         a = tab.axis[L]
@@ -452,14 +294,14 @@ def _batched_distance(tab, prog: Program, leaf_of: NDArray[np.int64], q: NDArray
             d3 = _segment_distance_v(so, ro, -h, a2, h, a1)
             d[o] = np.minimum(np.minimum(d1, d2), d3)
         out[sel] = d
-    sel = np.nonzero(kind >= 3)[0]  # polyhedra and other kinds, leaf by leaf
+    sel = np.nonzero((kind == LeafForm.HULL) | (kind == LeafForm.GENERIC))[0]  # every other leaf by its own distance
     if len(sel):
         L = leaf_of[sel]
         order = np.argsort(L, kind="stable")
         Ls = L[order]
         cuts = np.nonzero(np.diff(Ls))[0] + 1
         for grp in np.split(order, cuts):
-            out[sel[grp]] = signed_distance(prog.leaves[int(L[grp[0]])], q[sel[grp]])
+            out[sel[grp]] = prog.leaves[int(L[grp[0]])].signed_distance(q[sel[grp]])
     return out
 
 
@@ -568,7 +410,7 @@ def _resolve_near(
         if not len(near[i]):
             continue
         rows = np.searchsorted(near_all, near[i])
-        V, C, valid = _tangent_constraints(leaf, P[near[i]], tol)
+        V, C, valid = leaf.tangent_cone(P[near[i]], tol)
         cons[i] = (rows, V, C, valid)
         for j in range(V.shape[1]):
             sel = np.nonzero(valid[:, j])[0]

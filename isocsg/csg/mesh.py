@@ -12,12 +12,12 @@ from __future__ import annotations
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
-from numpy.typing import NDArray
 
 from .._validation import integer
-from ..errors import InvalidGeometryError, InvalidParameterError, MissingDependencyError
-from ..geometry.primitives import Box, ConvexPolyhedron, Primitive, Solid, Sphere, Truncus
-from ..geometry.registry import hook_for
+from ..errors import InvalidGeometryError, InvalidParameterError
+from ..kinds.base import Primitive, Solid
+from ..kinds.meshing import manifold3d_module as _manifold3d
+from ..kinds.meshing import rotation_to_axis
 from .program import OP_INTERSECTION, OP_UNION, compile_program
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -27,89 +27,11 @@ if TYPE_CHECKING:  # pragma: no cover
 __all__ = ["to_manifold", "to_trimesh", "rotation_to_axis"]
 
 
-def _manifold3d():  # type: ignore[no-untyped-def]
-    try:
-        import manifold3d
-    except ImportError as exc:  # pragma: no cover - manifold3d is a core dependency
-        raise MissingDependencyError("to_manifold needs manifold3d: pip install manifold3d") from exc
-    return manifold3d
-
-
-def rotation_to_axis(axis: NDArray[np.float64]) -> NDArray[np.float64]:
-    """A rotation matrix that maps +z onto the unit vector ``axis``.
-
-    Parameters
-    ----------
-    axis : ndarray, shape (3,)
-        Unit target direction.
-
-    Returns
-    -------
-    ndarray, shape (3, 3)
-        Orthonormal, determinant +1, with ``R @ (0, 0, 1) == axis``.
-
-    Examples
-    --------
-    >>> R = rotation_to_axis(np.array([1.0, 0.0, 0.0]))
-    >>> np.round(R @ [0, 0, 1], 12).tolist()
-    [1.0, 0.0, 0.0]
-    """
-    a = np.asarray(axis, dtype=np.float64)
-    a = a / np.linalg.norm(a)
-    helper = np.array([1.0, 0.0, 0.0]) if abs(a[0]) < 0.9 else np.array([0.0, 1.0, 0.0])
-    x = np.cross(helper, a)
-    x /= np.linalg.norm(x)
-    y = np.cross(a, x)
-    return np.column_stack([x, y, a])
-
-
-def _leaf(prim: Primitive, resolution: int, shapes: dict[tuple[Any, ...], Any] | None = None) -> "manifold3d.Manifold":
-    """A leaf as a manifold3d solid, through its kind's ``manifold`` hook (the hull of its
-    inscribed polyhedron when it has none); ``shapes`` keeps the solids at the origin by their
-    dimensions, so that many equal spheres or cylinders are built once and moved."""
-    shapes = {} if shapes is None else shapes
-    hook = hook_for(prim, "manifold")
-    if hook is not None:
-        return hook(prim, resolution, shapes)
-    poly = prim.to_polyhedron(resolution)
-    return _manifold3d().Manifold.hull_points(np.asarray(poly.hull_vertices, dtype=np.float64).tolist())
-
-
-# ----------------------------------------------------------------------------- the built-in kinds' hooks
-
-
-def sphere_manifold(prim: Sphere, resolution: int, shapes: dict[tuple[Any, ...], Any]) -> "manifold3d.Manifold":
-    """manifold3d's sphere (it rounds the segment count up to a multiple of 4), moved."""
-    key = ("sphere", prim.radius, resolution)
-    if key not in shapes:
-        shapes[key] = _manifold3d().Manifold.sphere(prim.radius, resolution)
-    return shapes[key].translate(tuple(prim.center))
-
-
-def truncus_manifold(prim: Truncus, resolution: int, shapes: dict[tuple[Any, ...], Any]) -> "manifold3d.Manifold":
-    """manifold3d's cylinder, turned onto the axis and moved."""
-    # manifold3d's cylinder runs from radius_low at z=-h/2 to radius_high at z=+h/2;
-    # the truncus's E2 (r2) is at -axis/2 and E1 (r1) at +axis/2.
-    key = ("truncus", prim.height, prim.r1, prim.r2, resolution)
-    if key not in shapes:
-        shapes[key] = _manifold3d().Manifold.cylinder(prim.height, prim.r2, prim.r1, resolution, True)
-    cyl = shapes[key]
-    R = rotation_to_axis(prim.unit_axis)
-    mat = np.column_stack([R, prim.center_array])
-    return cyl.transform(mat.tolist())
-
-
-def box_manifold(prim: Box, resolution: int, shapes: dict[tuple[Any, ...], Any]) -> "manifold3d.Manifold":
-    """manifold3d's cube, turned and moved."""
-    cube = _manifold3d().Manifold.cube(tuple(prim.size), True)
-    if prim.axis_aligned:
-        return cube.translate(tuple(prim.center))
-    return cube.transform(np.column_stack([prim.rotation, prim.center_array]).tolist())
-
-
-def polyhedron_manifold(prim: ConvexPolyhedron, resolution: int, shapes: dict[tuple[Any, ...], Any]) -> "manifold3d.Manifold":
-    """The hull of the polyhedron's vertices."""
-    return _manifold3d().Manifold.hull_points(np.asarray(prim.hull_vertices, dtype=np.float64).tolist())
+def _leaf(prim: Primitive, resolution: int, shapes: dict[tuple[Any, ...], Any]) -> "manifold3d.Manifold":
+    """A leaf as a manifold3d solid, through its kind's :meth:`~isocsg.kinds.base.Primitive.manifold`;
+    ``shapes`` keeps the solids at the origin by their dimensions, so that many equal spheres or
+    cylinders are built once and moved."""
+    return prim.manifold(resolution, shapes)
 
 
 def _build(solid: Solid, resolution: int, path: str) -> "manifold3d.Manifold":

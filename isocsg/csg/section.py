@@ -26,7 +26,6 @@ The plane's 2D frame: ``u, v`` orthonormal in the plane with ``u x v = n``;
 from __future__ import annotations
 
 import functools
-import math
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from typing import Any
@@ -39,8 +38,9 @@ from shapely.geometry.base import BaseGeometry
 
 from .._validation import integer, nonzero_vector3, points_array, vector3
 from ..errors import InvalidGeometryError, InvalidParameterError
-from ..geometry.primitives import Box, ConvexPolyhedron, Primitive, Solid, Sphere, Truncus
-from ..geometry.registry import hook_for
+from ..kinds.base import LeafForm, Primitive, Solid
+from ..kinds.planar import EMPTY as _EMPTY
+from ..kinds.planar import circle_ring, to2d
 from .program import OP_DIFFERENCE, OP_INTERSECTION, OP_UNION, Program, compile_program
 from .tree import CSGNode
 
@@ -58,7 +58,7 @@ __all__ = [
     "LeafTable",
 ]
 
-_EMPTY = Polygon()
+_circle_ring = circle_ring  # the name csg/volume.py imports
 
 
 @dataclass(frozen=True, slots=True, eq=False)
@@ -211,206 +211,6 @@ def polygonal(geom: BaseGeometry, min_width: float = 0.0) -> Polygon | MultiPoly
 # ----------------------------------------------------------------------------- leaves
 
 
-def _to2d(points: NDArray[np.float64], F: NDArray[np.float64]) -> NDArray[np.float64]:
-    return (points - F[:3, 3]) @ F[:3, :2]
-
-
-def _hull_polygon(pts2: NDArray[np.float64]) -> Polygon:
-    if len(pts2) < 3:
-        return _EMPTY
-    hull = shapely.convex_hull(shapely.multipoints(pts2))
-    return hull if isinstance(hull, Polygon) and hull.area > 0 else _EMPTY
-
-
-def _circle_ring(centers: NDArray[np.float64], radii: NDArray[np.float64], resolution: int, area_exact: bool) -> NDArray[np.float64]:
-    """Rings ``(k, resolution, 2)`` of regular polygons for circles: inscribed, or of the circles' exact areas."""
-    ang = np.linspace(0.0, 2.0 * math.pi, resolution, endpoint=False)
-    a = 2.0 * math.pi / resolution
-    scale = math.sqrt(a / math.sin(a)) if area_exact else 1.0
-    r = (radii * scale)[:, None]
-    return np.stack([centers[:, 0:1] + r * np.cos(ang), centers[:, 1:2] + r * np.sin(ang)], axis=-1)
-
-
-def _sphere_section(s: Sphere, F: NDArray[np.float64], resolution: int, area_exact: bool = False) -> Polygon:
-    c = s.center_array
-    d = float((c - F[:3, 3]) @ F[:3, 2])
-    rr = s.radius**2 - d * d
-    if rr <= 0.0:
-        return _EMPTY
-    c2 = _to2d(c[None, :], F)
-    return Polygon(_circle_ring(c2, np.array([math.sqrt(rr)]), resolution, area_exact)[0])
-
-
-def _box_section(prim: Box, F: NDArray[np.float64], resolution: int, area_exact: bool = False) -> Polygon:
-    """The box's registered section hook: exact, from its faces and corners."""
-    return _halfspace_section(prim.face_normals, prim.face_offsets, prim.corners, F)
-
-
-def _polyhedron_section(prim: ConvexPolyhedron, F: NDArray[np.float64], resolution: int, area_exact: bool = False) -> Polygon:
-    """The convex polyhedron's registered section hook: exact, from its faces and hull vertices."""
-    return _halfspace_section(prim.face_normals, prim.face_offsets, prim.hull_vertices, F)
-
-
-def _halfspace_section(
-    normals: NDArray[np.float64], offsets: NDArray[np.float64], verts: NDArray[np.float64], F: NDArray[np.float64]
-) -> Polygon:
-    """Exact convex polygon {x in plane : normals @ x <= offsets} by Sutherland-Hodgman clipping."""
-    o, u, v = F[:3, 3], F[:3, 0], F[:3, 1]
-    A = np.column_stack([normals @ u, normals @ v])
-    b = offsets - normals @ o
-    scale = float(np.max(np.ptp(verts, axis=0)))
-    eps = 1e-12 * max(scale, 1e-300)
-    v2 = _to2d(verts, F)
-    lo, hi = v2.min(axis=0) - 0.01 * scale - 1.0, v2.max(axis=0) + 0.01 * scale + 1.0
-    poly = np.array([[lo[0], lo[1]], [hi[0], lo[1]], [hi[0], hi[1]], [lo[0], hi[1]]])
-    for a_k, b_k in zip(A, b):
-        if np.hypot(*a_k) <= 1e-12:
-            # face parallel to the plane: all or nothing (the face plane itself counts as inside)
-            if b_k < -eps:
-                return _EMPTY
-            continue
-        val = poly @ a_k - b_k  # <= 0 inside
-        inside = val <= 0.0
-        if inside.all():
-            continue
-        if not inside.any():
-            return _EMPTY
-        nxt_val = np.roll(val, -1)
-        nxt = np.roll(poly, -1, axis=0)
-        out = []
-        for p, q, vp, vq, ip in zip(poly, nxt, val, nxt_val, inside):
-            if ip:
-                out.append(p)
-            if (vp <= 0.0) != (vq <= 0.0):
-                t = vp / (vp - vq)
-                out.append(p + t * (q - p))
-        poly = np.asarray(out)
-        if len(poly) < 3:
-            return _EMPTY
-    g = Polygon(poly)
-    return g if g.area > 0 else _EMPTY
-
-
-def _truncus_section(t: Truncus, F: NDArray[np.float64], resolution: int, area_exact: bool = False) -> Polygon:
-    o, n = F[:3, 3], F[:3, 2]
-    a = t.unit_axis
-    helper = np.array([1.0, 0.0, 0.0]) if abs(a[0]) < 0.9 else np.array([0.0, 1.0, 0.0])
-    e1 = np.cross(a, helper)
-    e1 /= np.linalg.norm(e1)
-    e2 = np.cross(a, e1)
-    c = t.center_array
-    h2 = t.height / 2
-    k = t.slope
-    r0 = float(t.radius_at(0.0))
-    D = float(n @ (c - o))
-    na, p1, p2 = float(n @ a), float(n @ e1), float(n @ e2)
-    rho = math.hypot(p1, p2)
-    phi0 = math.atan2(p2, p1)
-    size = max(t.height, t.r1, t.r2)
-    eps = 1e-12 * size
-
-    def surface(sig: NDArray[np.float64], phi: NDArray[np.float64]) -> NDArray[np.float64]:
-        r = r0 + k * sig
-        g = np.cos(phi)[:, None] * e1 + np.sin(phi)[:, None] * e2
-        return c + sig[:, None] * a + r[:, None] * g
-
-    def sigma(phi: NDArray[np.float64]) -> tuple[NDArray[np.float64], NDArray[np.bool_]]:
-        ng = rho * np.cos(phi - phi0)
-        den = na + k * ng
-        ok = np.abs(den) > 1e-14
-        with np.errstate(divide="ignore", invalid="ignore"):
-            s = np.where(ok, -(D + r0 * ng) / np.where(ok, den, 1.0), np.inf)
-        return s, ok & (np.abs(s) <= h2 + eps)
-
-    pts: list[NDArray[np.float64]] = []
-    breaks: list[float] = []
-    # corners: generators crossing the plane exactly on an end circle
-    for s_end in (h2, -h2):
-        r_end = r0 + k * s_end
-        lin = D + s_end * na
-        if r_end <= 1e-15 * size:
-            if abs(lin) <= eps:  # the plane passes through the apex
-                pts.append(c + s_end * a)
-            continue
-        if rho <= 1e-14:
-            continue  # plane parallel to the ends: the curve samples give the circle
-        q = -lin / (r_end * rho)
-        if abs(q) <= 1.0:
-            dphi = math.acos(q)
-            ph = np.array([phi0 + dphi, phi0 - dphi])
-            pts.append(surface(np.full(2, s_end), ph))
-            breaks.extend(ph.tolist())
-    # asymptotes: generators parallel to the plane (sigma -> infinity)
-    if abs(k) > 0 and rho > 1e-14 and abs(na / (k * rho)) <= 1.0:
-        dphi = math.acos(-na / (k * rho))
-        breaks.extend([phi0 + dphi, phi0 - dphi])
-    # sample each valid phi interval between the breakpoints
-    two_pi = 2.0 * math.pi
-    if breaks:
-        b = np.sort(np.mod(np.asarray(breaks) - phi0, two_pi)) + phi0
-        b = np.append(b, b[0] + two_pi)
-        intervals = [(lo, hi) for lo, hi in zip(b[:-1], b[1:]) if hi - lo > 1e-15]
-    else:
-        intervals = [(phi0, phi0 + two_pi)]
-    for lo, hi in intervals:
-        _, ok_mid = sigma(np.array([0.5 * (lo + hi)]))
-        if not ok_mid[0]:
-            continue
-        if not breaks:
-            _, ok_all = sigma(np.linspace(lo, hi, 16))
-            if not ok_all.all():
-                continue
-        m = max(int(math.ceil(resolution * (hi - lo) / two_pi / 2)), 2)
-        ph = _refined_parameters(lambda x: surface(np.clip(sigma(x)[0], -h2, h2), x), lo, hi, m, 4 * math.pi / resolution)
-        P = surface(np.clip(sigma(ph)[0], -h2, h2), ph)
-        pts.append(_simpson_points(P, closed=False) if area_exact else P)
-    if not pts:
-        return _EMPTY
-    return _hull_polygon(_to2d(np.vstack(pts), F))
-
-
-def _refined_parameters(curve, lo: float, hi: float, m: int, angle: float) -> NDArray[np.float64]:
-    """Parameters ``2 k + 1`` of ``k >= m`` curve segments (ends and midpoints) on ``[lo, hi]``.
-
-    A segment is halved while its two halves turn by more than ``angle`` / 2
-    or its midpoint falls off the middle of its chord (the parametrisation
-    is far from uniform there: plane cuts of a cone near its asymptotes).
-    """
-    ph = np.linspace(lo, hi, 2 * m + 1)
-    for _ in range(40):
-        P = curve(ph)
-        p0, pm, p1 = P[0:-1:2], P[1::2], P[2::2]
-        d0, d1, ch = pm - p0, p1 - pm, p1 - p0
-        l0, l1 = np.linalg.norm(d0, axis=1), np.linalg.norm(d1, axis=1)
-        cos = np.einsum("ij,ij->i", d0, d1) / np.maximum(l0 * l1, 1e-300)
-        ll = np.einsum("ij,ij->i", ch, ch)
-        t = np.einsum("ij,ij->i", pm - p0, ch) / np.maximum(ll, 1e-300)
-        size = max(float(np.max(ll)), 1e-300) ** 0.5
-        bad = ((cos < math.cos(0.75 * angle)) | (np.abs(t - 0.5) > 0.1)) & (np.sqrt(ll) > 1e-9 * size)
-        if not bad.any():
-            break
-        a, c = ph[0:-1:2][bad], ph[2::2][bad]
-        q = (c - a) / 4
-        ph = np.sort(np.concatenate([ph, a + q, a + 3 * q]))
-    return ph
-
-
-def _simpson_points(P: NDArray[np.float64], closed: bool) -> NDArray[np.float64]:
-    """Curve samples with every odd sample pushed away from its chord by a third of its sagitta.
-
-    The polygon through them has the area of the curve up to O(h^5) per
-    segment of length h (the parabolic segment is 4/3 of its triangle).
-    """
-    P = P.copy()
-    if closed:
-        prev, nxt = np.roll(P, 1, axis=0)[1::2], np.roll(P, -1, axis=0)[1::2]
-    else:
-        prev, nxt = P[0:-1:2], P[2::2]
-    mid = 0.5 * (prev + nxt)
-    P[1::2] = mid + (4.0 / 3.0) * (P[1::2] - mid)
-    return P
-
-
 def primitive_section(prim: Primitive, frame: NDArray[np.float64], resolution: int = 256, *, area_exact: bool = False) -> Polygon:
     """The section of one primitive in the plane of ``frame`` (see :func:`plane_frame`).
 
@@ -444,17 +244,12 @@ def primitive_section(prim: Primitive, frame: NDArray[np.float64], resolution: i
     >>> primitive_section(Box((0, 0, 0), (2, 3, 4)), plane_frame((0, 0, 1), (0, 0, 1))).area
     6.0
     >>> F = plane_frame((0, 0, 0), (0, 0, 1))
-    >>> round(primitive_section(Sphere((0, 0, 0), 1), F, 64, area_exact=True).area / math.pi, 12)
+    >>> round(primitive_section(Sphere((0, 0, 0), 1), F, 64, area_exact=True).area / np.pi, 12)
     1.0
     """
-    F = np.asarray(frame, dtype=np.float64)
-    hook = hook_for(prim, "section")
-    if hook is not None:
-        return hook(prim, F, resolution, area_exact)
-    if isinstance(prim, Primitive):  # a kind without a section of its own: its polyhedron's
-        poly = prim.to_polyhedron(resolution)
-        return _halfspace_section(poly.face_normals, poly.face_offsets, poly.hull_vertices, F)
-    raise InvalidGeometryError(f"primitive_section needs a primitive, got {type(prim).__name__}")
+    if not isinstance(prim, Primitive):
+        raise InvalidGeometryError(f"primitive_section needs a primitive, got {type(prim).__name__}")
+    return prim.section(np.asarray(frame, dtype=np.float64), resolution, area_exact)
 
 
 # ----------------------------------------------------------------------------- leaf tables
@@ -464,13 +259,15 @@ def primitive_section(prim: Primitive, frame: NDArray[np.float64], resolution: i
 class LeafTable:
     """The leaves of a program as arrays, for vectorised extents and batched sections.
 
-    ``kind``: 0 sphere, 1 truncus, 2 axis-aligned box, 3 polyhedron or turned box (through its
-    polyhedron), 4 any other registered kind (an ellipsoid: its ``extent`` and its own section
-    and distance). Unused entries are 0.
+    Each leaf's row comes from its kind (:meth:`~isocsg.kinds.base.Primitive.leaf_row`):
+    ``kind`` holds its :class:`~isocsg.kinds.base.LeafForm` code (``BALL``, ``FRUSTUM``,
+    ``AXIS_BOX``, ``HULL`` or ``GENERIC``) and the other columns that form's values; unused
+    entries are 0. ``GENERIC`` leaves are reached through their own members (``extent``,
+    ``breakpoints``, ``section``, ``signed_distance``).
     """
 
-    kind: NDArray[np.int8]
-    center: NDArray[np.float64]  # sphere, truncus, box centre
+    kind: NDArray[np.int8]  # LeafForm codes
+    center: NDArray[np.float64]  # BALL, FRUSTUM, AXIS_BOX centre (others: their box's centre)
     radius: NDArray[np.float64]  # sphere radius
     axis: NDArray[np.float64]  # truncus unit axis
     height: NDArray[np.float64]  # truncus height
@@ -480,7 +277,7 @@ class LeafTable:
     poly_vertices: NDArray[np.float64]  # hull vertices of all polyhedra, concatenated
     poly_start: NDArray[np.int64]  # per leaf: start of its vertices (polyhedra only), -1 otherwise
     poly_count: NDArray[np.int64]
-    others: dict[int, Any]  # leaf index -> primitive, for kind 4
+    others: dict[int, Any]  # leaf index -> primitive, for GENERIC leaves
 
     def extents(self, n: NDArray[np.float64]) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
         """Exact extents ``(lo, hi)`` of every leaf along the unit vector ``n``."""
@@ -488,9 +285,9 @@ class LeafTable:
         lo = np.empty(len(self.kind))
         hi = np.empty(len(self.kind))
         k = self.kind
-        sph = k == 0
+        sph = k == LeafForm.BALL
         lo[sph], hi[sph] = c[sph] - self.radius[sph], c[sph] + self.radius[sph]
-        tr = k == 1
+        tr = k == LeafForm.FRUSTUM
         if tr.any():
             an = self.axis[tr] @ n
             ext = np.sqrt(np.clip(1.0 - an * an, 0.0, 1.0))
@@ -498,26 +295,27 @@ class LeafTable:
             e2 = c[tr] - an * self.height[tr] / 2
             lo[tr] = np.minimum(e1 - self.r1[tr] * ext, e2 - self.r2[tr] * ext)
             hi[tr] = np.maximum(e1 + self.r1[tr] * ext, e2 + self.r2[tr] * ext)
-        bx = k == 2
+        bx = k == LeafForm.AXIS_BOX
         if bx.any():
             h = self.half[bx] @ np.abs(n)
             lo[bx], hi[bx] = c[bx] - h, c[bx] + h
-        ph = np.nonzero(k == 3)[0]
+        ph = np.nonzero(k == LeafForm.HULL)[0]
         if len(ph):
             proj = self.poly_vertices @ n
             starts = self.poly_start[ph]
             lo[ph] = np.minimum.reduceat(proj, starts)
             hi[ph] = np.maximum.reduceat(proj, starts)
-        for i in np.nonzero(k == 4)[0].tolist():  # other kinds: their own exact support
+        for i in np.nonzero(k == LeafForm.GENERIC)[0].tolist():  # other kinds: their own exact support
             lo[i], hi[i] = self.others[i].extent(n)
         return lo, hi
 
     def breakpoints(self, n: NDArray[np.float64]) -> NDArray[np.float64]:
-        """Every leaf's extents along ``n`` and the heights of its vertices (boxes, polyhedra), unsorted."""
+        """Every leaf's extents along ``n`` and the heights where its sections' area can have a
+        kink (vertices, rims; ``GENERIC`` leaves: their own ``breakpoints``), unsorted."""
         lo, hi = self.extents(n)
         out = [lo, hi]
         k = self.kind
-        tr = k == 1
+        tr = k == LeafForm.FRUSTUM
         if tr.any():
             # The end circles' centres (where a cap's section starts or stops widening) and
             # their lowest and highest points (where a tilted cap starts or stops cutting the
@@ -528,12 +326,14 @@ class LeafTable:
             ext = np.sqrt(np.clip(1.0 - un * un, 0.0, 1.0))
             out += [c + an, c - an, c + an - self.r1[tr] * ext, c + an + self.r1[tr] * ext,
                     c - an - self.r2[tr] * ext, c - an + self.r2[tr] * ext]
-        bx = k == 2
+        bx = k == LeafForm.AXIS_BOX
         if bx.any():
             signs = np.array([[x, y, z] for x in (-1, 1) for y in (-1, 1) for z in (-1, 1)], dtype=np.float64)
             out.append(((self.center[bx] @ n)[:, None] + (self.half[bx][:, None, :] * signs) @ n).ravel())
-        if (k == 3).any():
+        if (k == LeafForm.HULL).any():
             out.append(self.poly_vertices @ n)
+        for i in np.nonzero(k == LeafForm.GENERIC)[0].tolist():
+            out.append(np.asarray(self.others[i].breakpoints(n), dtype=np.float64).ravel())
         return np.concatenate(out)
 
 
@@ -555,23 +355,22 @@ def leaf_table(prog: Program) -> LeafTable:
     pcount = np.zeros(n, np.int64)
     total = 0
     for i, p in enumerate(prog.leaves):
-        if isinstance(p, Sphere):
-            center[i], radius[i] = p.center, p.radius
-        elif isinstance(p, Truncus):
-            kind[i] = 1
-            center[i], axis[i], height[i], r1[i], r2[i] = p.center, p.unit_axis, p.height, p.r1, p.r2
-        elif isinstance(p, Box) and p.axis_aligned:
-            kind[i] = 2
-            center[i], half[i] = p.center, p.half_size
-        elif isinstance(p, (ConvexPolyhedron, Box)):
-            kind[i] = 3
-            hv = p.hull_vertices if isinstance(p, ConvexPolyhedron) else p.to_polyhedron().hull_vertices
+        row = p.leaf_row()
+        kind[i] = row.form
+        if row.center is not None:
+            center[i] = row.center
+        if row.form == LeafForm.BALL:
+            radius[i] = row.radius
+        elif row.form == LeafForm.FRUSTUM:
+            axis[i], height[i], r1[i], r2[i] = row.axis, row.height, row.r1, row.r2
+        elif row.form == LeafForm.AXIS_BOX:
+            half[i] = row.half
+        elif row.form == LeafForm.HULL:
+            hv = np.asarray(row.vertices, dtype=np.float64)
             pv.append(hv)
             pstart[i], pcount[i] = total, len(hv)
             total += len(hv)
         else:
-            kind[i] = 4
-            center[i] = p.center_array
             others[i] = p
     poly = np.vstack(pv) if pv else np.zeros((0, 3))
     return LeafTable(kind, center, radius, axis, height, r1, r2, half, poly, pstart, pcount, others)
@@ -592,9 +391,9 @@ def leaf_sections(
     k = tab.kind[idx]
     d = (tab.center[idx] - o) @ n
     rad = np.full(len(idx), -1.0)
-    sph = k == 0
+    sph = k == LeafForm.BALL
     rad[sph] = np.where(tab.radius[idx][sph] ** 2 - d[sph] ** 2 > 0, np.sqrt(np.maximum(tab.radius[idx][sph] ** 2 - d[sph] ** 2, 0)), 0.0)
-    tr = k == 1
+    tr = k == LeafForm.FRUSTUM
     an = np.abs(tab.axis[idx] @ n)
     circ = tr & (an >= 1.0 - 1e-13)
     if circ.any():
@@ -606,14 +405,14 @@ def leaf_sections(
     batch = np.nonzero(sph | circ)[0]
     good = batch[rad[batch] > 0]
     if len(good):
-        c2 = _to2d(tab.center[idx[good]], F)
+        c2 = to2d(tab.center[idx[good]], F)
         rings = _circle_ring(c2, rad[good], resolution, area_exact)
         for j, g in zip(good.tolist(), shapely.polygons(rings)):
             out[j] = g
     # boxes cut across a coordinate axis: rectangles (faces in the plane count, see coplanar_sides)
     rect = np.zeros(len(idx), dtype=bool)
     if float(np.max(np.abs(n))) >= 1.0 - 1e-13:
-        rect = k == 2
+        rect = k == LeafForm.AXIS_BOX
         r_idx = np.nonzero(rect)[0]
         if len(r_idx):
             half = tab.half[idx[r_idx]]
@@ -641,7 +440,7 @@ def coplanar_sides(prog: Program, F: NDArray[np.float64], ids: NDArray[np.int64]
     kind = tab.kind[ids]
     d = (tab.center[ids] - o) @ n
     # trunci: end discs (E1 at +axis/2 faces +axis, E2 at -axis/2 faces -axis)
-    tr = np.nonzero(kind == 1)[0]
+    tr = np.nonzero(kind == LeafForm.FRUSTUM)[0]
     if len(tr):
         an = tab.axis[ids[tr]] @ n
         par = np.abs(an) >= 1.0 - 1e-13
@@ -651,7 +450,7 @@ def coplanar_sides(prog: Program, F: NDArray[np.float64], ids: NDArray[np.int64]
             hit = par & (r > 0) & (np.abs(d[tr] + sgn * an * h2) <= 1e-12 * size)
             out[tr[hit]] = np.where(sgn * an[hit] > 0, -1, 1)
     # boxes: faces normal to a coordinate axis
-    bx = np.nonzero(kind == 2)[0]
+    bx = np.nonzero(kind == LeafForm.AXIS_BOX)[0]
     ax = int(np.argmax(np.abs(n)))
     if len(bx) and abs(n[ax]) >= 1.0 - 1e-13:
         half = tab.half[ids[bx], ax]
@@ -659,17 +458,17 @@ def coplanar_sides(prog: Program, F: NDArray[np.float64], ids: NDArray[np.int64]
         for sgn in (1.0, -1.0):  # the face at centre + sgn * half along the axis faces sgn * axis
             hit = np.abs(d[bx] + sgn * half * np.sign(n[ax])) <= 1e-12 * size
             out[bx[hit]] = -1 if sgn > 0 else 1
-    for j in np.nonzero(kind == 3)[0].tolist():
+    for j in np.nonzero((kind == LeafForm.HULL) | (kind == LeafForm.GENERIC))[0].tolist():
         p = prog.leaves[int(ids[j])]
-        if isinstance(p, Box):
-            p = p.to_polyhedron()
-        if not isinstance(p, ConvexPolyhedron):
+        faces = p.planar_faces()
+        if faces is None:
             continue
-        size = float(np.max(np.ptp(p.hull_vertices, axis=0)))
-        dots = p.face_normals @ n
+        normals, offsets = faces
+        size = float(np.max(p.bounds[1] - p.bounds[0]))
+        dots = normals @ n
         par = np.abs(dots) >= 1.0 - 1e-13
         if par.any():
-            hit = np.abs(p.face_offsets[par] - p.face_normals[par] @ o) <= 1e-12 * size
+            hit = np.abs(offsets[par] - normals[par] @ o) <= 1e-12 * size
             if hit.any():
                 out[j] = -1 if dots[par][hit][0] > 0 else 1
     return out

@@ -1,9 +1,23 @@
-"""Analytic solids: the convex primitives (and, in :mod:`isocsg.csg`, their Boolean trees)."""
+"""Solids: the primitive kinds (:mod:`isocsg.kinds`), transforms and extrusions."""
 
-from .primitives import Box, Cone, ConvexPolyhedron, Cylinder, Primitive, RayHits, Solid, Sphere, Truncus
-from .ellipsoid import Ellipsoid
-from .elliptic import EllipticTruncus
-from .registry import PrimitiveKind, kind_named, kind_of, register_kind, registered_kinds
+from ..kinds import (
+    Box,
+    Cone,
+    ConvexPolyhedron,
+    Cylinder,
+    Ellipsoid,
+    EllipticTruncus,
+    Primitive,
+    PrimitiveKind,
+    RayHits,
+    Solid,
+    Sphere,
+    Truncus,
+    kind_named,
+    kind_of,
+    register_kind,
+    registered_kinds,
+)
 
 __all__ = [
     "Solid", "Primitive", "RayHits", "Sphere", "Truncus", "Cylinder", "Cone", "Box", "ConvexPolyhedron",

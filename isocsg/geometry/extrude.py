@@ -22,7 +22,8 @@ from numpy.typing import NDArray
 
 from .._validation import MAX_ABS_COORD, MAX_VERTICES, scalar
 from ..errors import InvalidGeometryError
-from .primitives import ConvexPolyhedron, Solid
+from ..kinds.base import Solid
+from ..kinds.polyhedron import ConvexPolyhedron
 
 __all__ = ["extrude", "extrude_rings", "convex_partition", "prisms"]
 

@@ -31,7 +31,7 @@ from .._validation import MAX_ABS_COORD, _float_array, show, vector3
 from ..errors import InvalidGeometryError, InvalidParameterError
 
 if TYPE_CHECKING:  # pragma: no cover
-    from .primitives import Solid
+    from ..kinds.base import Solid
 
 __all__ = [
     "MAX_CONDITION",
@@ -210,7 +210,7 @@ def _similarity(key: bytes) -> float | None:
 def transform_solid(solid: "Solid", matrix: ArrayLike) -> "Solid":
     """The image of ``solid`` under an affine matrix (validated by :func:`affine_matrix`).
 
-    Primitives map to primitives (see :meth:`~isocsg.geometry.primitives.Primitive.transform`);
+    Primitives map to primitives (see :meth:`~isocsg.kinds.base.Solid.transform`);
     a CSG tree maps leaf by leaf into a tree of the same shape, without recursion.
 
     Raises
@@ -221,7 +221,7 @@ def transform_solid(solid: "Solid", matrix: ArrayLike) -> "Solid":
         If an image is not a valid primitive (e.g. it leaves the coordinate range).
     """
     from ..csg.tree import CSGNode, _KINDS, _postorder
-    from .primitives import Primitive
+    from ..kinds.base import Primitive
 
     m = affine_matrix(matrix)
     A, t = m[:3, :3], m[:3, 3]

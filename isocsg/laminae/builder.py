@@ -25,8 +25,6 @@ are built for each one.
 
 from __future__ import annotations
 
-import functools
-import inspect
 import math
 import threading
 from collections import OrderedDict
@@ -39,8 +37,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from .._validation import integer, vector3
 from ..errors import InvalidLightError, InvalidParameterError
-from ..geometry.primitives import Primitive
-from ..geometry.registry import hook_for
+from ..kinds.base import Primitive, provides
 from ..lighting.lights import DirectionalLight, PointLight
 from ..lighting.shading import TERMINATOR_COSINE, Material
 from ..limits import memory_budget
@@ -283,7 +280,7 @@ def _cached(
     primitive: Primitive, lights: Sequence[Light], material: Material | None, contours: int, eye: ArrayLike | None,
     segments: int | None, *, bands_only: bool, hidden: tuple[Any, Any] | None = None, keep: bool = True,
 ) -> LaminaSet:
-    if hook_for(primitive, "surface") is None:
+    if not isinstance(primitive, Primitive) or not provides(primitive, "band_surface"):
         raise InvalidParameterError(
             f"primitive must be a Sphere, Truncus, Box, ConvexPolyhedron or another registered kind with a band surface, "
             f"got {type(primitive).__name__}"
@@ -376,37 +373,19 @@ def _surface(
     primitive: Primitive, lights: tuple[Light, ...], n: int, eye: NDArray[np.float64] | None, shininess: float,
     weights: tuple[float, float] = (1.0, 1.0), segments: int | None = None, hidden: tuple[Any, Any] | None = None,
 ) -> Surface:
-    hook = hook_for(primitive, "surface")
-    if hook is None:  # pragma: no cover - _cached refuses such a primitive first
-        raise InvalidParameterError(f"primitive {type(primitive).__name__} has no registered band surface")
-    if hidden is not None and _takes_hidden(hook):
-        # A hook that knows which of its parts lie outside the box need not refine them.
-        return hook(primitive, list(lights), n, eye, shininess, weights, segments, hidden=hidden)  # type: ignore[no-any-return]
-    return hook(primitive, list(lights), n, eye, shininess, weights, segments)  # type: ignore[no-any-return]
-
-
-@functools.lru_cache(maxsize=64)
-def _takes_hidden(hook: Any) -> bool:
-    """Whether a surface hook takes the optional ``hidden`` box (a keyword of the built-in trunci's)."""
-    try:
-        return "hidden" in inspect.signature(hook).parameters
-    except (TypeError, ValueError):
-        return False
+    # A kind that knows which of its parts lie outside the box ``hidden`` need not refine them.
+    return primitive.band_surface(list(lights), n, eye, shininess, weights, segments, hidden=hidden)
 
 
 def _paper_laminae(primitive: Primitive, light: Light, n: int) -> list[tuple[NDArray[np.float64], NDArray[np.float64], float, str]]:
-    hook = hook_for(primitive, "laminae")
-    # curved kinds without planar contours (an ellipsoid): the bands carry the image
-    return [] if hook is None else hook(primitive, light, n)  # type: ignore[no-any-return]
+    # curved kinds without planar contours (an ellipsoid): none, the bands carry the image
+    return primitive.contour_laminae(light, n)
 
 
 def _family_description(primitive: Primitive, light: Light, index: int, n: int, mat: Material) -> ContourFamily:
     """The inspectable contour family of one light (plane normal and offsets of the laminae)."""
-    hook = hook_for(primitive, "family")
-    if hook is not None:
-        w, offsets, levels = hook(primitive, light, n)
-    else:
-        w, offsets, levels = np.zeros(3), np.zeros(0), np.zeros(0)
+    family = primitive.contour_family(light, n)
+    w, offsets, levels = (np.zeros(3), np.zeros(0), np.zeros(0)) if family is None else family
     lv = np.asarray(levels, dtype=np.float64)
     values = mat.ambient + mat.kd * light.intensity * np.maximum(0.5 * (lv[:-1] + lv[1:]), 0.0) if len(lv) > 1 else np.zeros(0)
     return ContourFamily(w, np.asarray(offsets, dtype=np.float64), lv, values, index)

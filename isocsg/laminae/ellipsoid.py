@@ -19,7 +19,7 @@ from __future__ import annotations
 import numpy as np
 from numpy.typing import NDArray
 
-from ..geometry.ellipsoid import Ellipsoid
+from ..kinds.ellipsoid import Ellipsoid
 from ..lighting.lights import DirectionalLight
 from .sphere import ring_triangles
 from .surface import Surface, curvature_spacing, mixed_spacing, orient_outward, pieces

@@ -15,7 +15,7 @@ from __future__ import annotations
 import numpy as np
 from numpy.typing import NDArray
 
-from ..geometry.elliptic import EllipticTruncus
+from ..kinds.elliptic import EllipticTruncus
 from .surface import Surface, curvature_spacing, mixed_spacing, orient_outward, pieces
 
 __all__ = ["elliptic_surface"]

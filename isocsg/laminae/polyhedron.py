@@ -8,50 +8,44 @@ lights) so that the face is cut along its exact level lines.
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 import numpy as np
 from numpy.typing import NDArray
 
-from ..geometry.primitives import Box, ConvexPolyhedron
 from ..lighting.lights import DirectionalLight, PointLight
 from .surface import (
     Surface, curvature_spacing, eye_reference_distance, light_reference_distance, orient_outward, pieces, refinement,
     specular_refinement,
 )
 
+if TYPE_CHECKING:  # pragma: no cover
+    from ..kinds.box import Box
+    from ..kinds.polyhedron import ConvexPolyhedron
+
 __all__ = ["face_laminae", "polyhedron_surface"]
 
 Light = PointLight | DirectionalLight
 
 
-def _origin(poly: Box | ConvexPolyhedron) -> NDArray[np.float64]:
-    """The local origin: the centre of the bounds."""
-    if isinstance(poly, Box):
-        return poly.center_array.copy()
-    lo, hi = poly.bounds
-    return 0.5 * (lo + hi)
-
-
-def _faces(poly: Box | ConvexPolyhedron, origin: NDArray[np.float64]) -> list[tuple[NDArray[np.float64], NDArray[np.float64]]]:
-    """Faces relative to ``origin`` (counter-clockwise from outside) and their unit outward normals."""
-    if isinstance(poly, Box):
-        # The same box about the origin: no hull of far-off absolute coordinates.
-        polys = [np.asarray(f, dtype=np.float64) for f in Box((0.0, 0.0, 0.0), poly.size, poly.orientation).face_polygons()]
-    else:
-        polys = [np.asarray(f, dtype=np.float64) - origin for f in poly.face_polygons()]
+def _faces(poly: Box | ConvexPolyhedron) -> tuple[NDArray[np.float64], list[tuple[NDArray[np.float64], NDArray[np.float64]]]]:
+    """The kind's local origin and its faces relative to it (counter-clockwise from outside) with
+    their unit outward normals (``local_faces`` of a polyhedral kind)."""
+    origin, polys = poly.local_faces()
     out = []
     for f in polys:
         # Newell's normal of the counter-clockwise (outward) face, about the face's own centroid.
         g = f - f.mean(axis=0)
         n = np.sum(np.cross(g, np.roll(g, -1, axis=0)), axis=0)
         out.append((f, n / np.linalg.norm(n)))
-    return out
+    return origin, out
 
 
 def face_laminae(poly: Box | ConvexPolyhedron, light: Light) -> list[tuple[NDArray[np.float64], NDArray[np.float64], float]]:
     """One lamina per face: (vertices, outward normal, incidence cosine at the face centroid)."""
     out = []
-    origin = _origin(poly)
-    for f, n in _faces(poly, origin):
+    origin, faces = _faces(poly)
+    for f, n in faces:
         centroid = f.mean(axis=0)
         if isinstance(light, DirectionalLight):
             ln = light.unit_direction
@@ -97,14 +91,14 @@ def polyhedron_surface(
     (:func:`~isocsg.laminae.surface.refinement`,
     :func:`~isocsg.laminae.surface.specular_refinement`). Each face is a part.
     """
-    origin = _origin(poly)
+    origin, faces = _faces(poly)
     lo, hi = poly.bounds
     size = 0.5 * float(np.linalg.norm(hi - lo))
     dist = light_reference_distance(lights, 0.5 * (lo + hi), size)
     d_eye = eye_reference_distance(eye, np.zeros(3), size)
     verts, norms, tris, parts = [], [], [], []
     count = 0
-    for face, (f, n) in enumerate(_faces(poly, origin)):
+    for face, (f, n) in enumerate(faces):
         diam = float(np.max(np.linalg.norm(f - f.mean(axis=0), axis=1))) * 2.0
         s = max(refinement(diam, dist, cap=16), specular_refinement(diam, d_eye, shininess, contours))
         if lights:

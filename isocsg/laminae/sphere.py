@@ -20,7 +20,7 @@ from __future__ import annotations
 import numpy as np
 from numpy.typing import NDArray
 
-from ..geometry.primitives import Sphere
+from ..kinds.sphere import Sphere
 from ..lighting.lights import DirectionalLight, PointLight
 from .surface import Surface, orient_outward
 

@@ -28,7 +28,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from ..errors import InvalidGeometryError
-from ..geometry.primitives import Truncus
+from ..kinds.truncus import Truncus
 from ..lighting.lights import DirectionalLight, PointLight
 from .families import diffuse_levels
 from .surface import (

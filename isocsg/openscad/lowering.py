@@ -43,7 +43,7 @@ from numpy.typing import NDArray
 
 from ..csg import Difference, Intersection, Union
 from ..errors import InvalidGeometryError, InvalidParameterError, OpenSCADError, UnsupportedOpenSCADError
-from ..geometry.primitives import Box, ConvexPolyhedron, Cylinder, Primitive, Solid, Sphere, Truncus
+from ..kinds import Box, ConvexPolyhedron, Cylinder, Primitive, Solid, Sphere, Truncus
 from .parser import CSGCall
 
 __all__ = ["lower", "LoweredModel", "UNSUPPORTED_NODES"]
@@ -622,10 +622,8 @@ def _hull(lw: _Lowerer, call: CSGCall, parts: list[Solid | None]) -> Solid | Non
         s = todo.pop()
         if isinstance(s, Union):
             todo.extend(s.children)
-        elif isinstance(s, ConvexPolyhedron):
-            corners.append(np.asarray(s.hull_vertices, dtype=np.float64))
-        elif isinstance(s, Box):
-            corners.append(np.asarray(s.corners, dtype=np.float64))
+        elif isinstance(s, Primitive) and (pts := s.hull_points()) is not None:
+            corners.append(pts)
         else:
             what = type(s).__name__.lower()
             lw.unsupported(call, HULL_OF_CURVED if isinstance(s, Primitive) else f"a hull of {'an' if what[0] in 'aeiou' else 'a'} {what} is not supported")

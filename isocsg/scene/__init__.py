@@ -1,16 +1,7 @@
-"""Scenes: immutable values and the TOML/JSON scene-file reader."""
+"""Scenes: immutable values and the TOML/JSON scene files (:mod:`.io` reads, :mod:`.writer` writes)."""
 
-from .io import (
-    BUILTIN_SCENES,
-    builtin_scene,
-    builtin_scene_path,
-    dumps_scene,
-    load_scene,
-    loads_scene,
-    save_scene,
-    scene_from_dict,
-    scene_to_dict,
-)
+from .io import BUILTIN_SCENES, builtin_scene, builtin_scene_path, load_scene, loads_scene, scene_from_dict
+from .writer import dumps_scene, save_scene, scene_to_dict
 from .model import MAX_CONTOURS, RENDER_MODES, RenderSettings, Scene, SceneObject
 
 __all__ = [

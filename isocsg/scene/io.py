@@ -28,7 +28,7 @@ A scene file holds four parts (TOML shown; JSON uses the same structure)::
         { sphere = { center = [1, 1, 1], radius = 0.8 } },
     ] }
 
-Shape nodes are the primitive kinds of :mod:`isocsg.geometry.registry` (``sphere``,
+Shape nodes are the primitive kinds of :mod:`isocsg.kinds.registry` (``sphere``,
 ``truncus``, ``cylinder``, ``cone``, ``box`` with an optional ``orientation``,
 ``polyhedron``, ``ellipsoid``, ``elliptic_truncus``), the Boolean nodes, and
 OpenSCAD's transforms around one ``shape``: ``translate {v}``, ``rotate {a, v?}``,
@@ -50,7 +50,6 @@ few hundred levels of nesting, which is reported as an error of the file.
 from __future__ import annotations
 
 import json
-import math
 import os
 import re
 import stat
@@ -71,22 +70,19 @@ from ..errors import (
 )
 from ..geometry import transforms as _tf
 from ..geometry.extrude import extrude_rings
-from ..geometry.primitives import Solid
-from ..geometry.registry import registered_kinds
+from ..kinds.base import Solid
+from ..kinds.registry import kind_named, registered_kinds
 from ..lighting.lights import DirectionalLight, Material, PointLight
 from .model import RenderSettings, Scene, SceneObject
 
 __all__ = [
     "load_scene",
     "loads_scene",
-    "save_scene",
-    "dumps_scene",
     "scene_from_dict",
-    "scene_to_dict",
     "builtin_scene",
     "builtin_scene_path",
     "BUILTIN_SCENES",
-    "SHAPE_KINDS",
+    "shape_kinds",
     "LIGHT_KINDS",
     "MAX_SCENE_FILE_BYTES",
     "read_scene_file",
@@ -97,18 +93,23 @@ __all__ = [
 #: Names of the scenes shipped in ``isocsg/data`` (``<name>.toml``).
 BUILTIN_SCENES = ("demo", "halftone")
 
-#: Primitive node kinds and their (required, optional) fields, classes and class names (the
-#: prefixes of the value types' own messages): read from the table of kinds
-#: (:mod:`isocsg.geometry.registry`), so that a new kind needs no change here.
-_PRIMITIVE_FIELDS: dict[str, tuple[tuple[str, ...], tuple[str, ...]]] = {
-    k.name: (k.required, k.optional) for k in registered_kinds()
-}
-_PRIMITIVE_TYPES: dict[str, Callable[..., Solid]] = {k.name: k.cls for k in registered_kinds()}
-_CLASS_NAMES = {k.name: k.cls.__name__ for k in registered_kinds()}
-# The straight extrusion of a polygon: a union of convex prisms (isocsg.geometry.extrude).
-_PRIMITIVE_FIELDS["extrude"] = (("polygon", "height"), ("holes", "center"))
-_PRIMITIVE_TYPES["extrude"] = extrude_rings
-_CLASS_NAMES["extrude"] = "extrude"
+# The straight extrusion of a polygon: a union of convex prisms (isocsg.geometry.extrude); a node
+# of scene files, not a primitive kind.
+_EXTRUDE_FIELDS = (("polygon", "height"), ("holes", "center"))
+
+
+def _primitive_node(kind: str) -> tuple[tuple[tuple[str, ...], tuple[str, ...]], str, Callable[..., Solid]] | None:
+    """The fields, class name (the prefix of the value type's own messages) and constructor of a
+    primitive node, read from the table of kinds when a file is read (:mod:`isocsg.kinds.registry`):
+    a kind registered at any time is read like a built-in one."""
+    if kind == "extrude":
+        return _EXTRUDE_FIELDS, "extrude", extrude_rings
+    k = kind_named(kind)
+    if k is None:
+        return None
+    return (k.required, k.optional), k.cls.__name__, lambda **fields: k.build(fields)
+
+
 _CSG_TYPES: dict[str, type[CSGNode]] = {"union": Union, "intersection": Intersection, "difference": Difference}
 
 #: Every node kind accepted in an object's ``shape`` tree.
@@ -125,7 +126,16 @@ _TRANSFORM_FIELDS: dict[str, tuple[tuple[str, ...], tuple[str, ...]]] = {
     "transform": (("matrix", "shape"), ()),
 }
 
-SHAPE_KINDS = tuple(_PRIMITIVE_FIELDS) + tuple(_CSG_TYPES) + tuple(_TRANSFORM_FIELDS)
+
+def shape_kinds() -> tuple[str, ...]:
+    """Every node kind accepted in an object's ``shape`` tree, as registered now."""
+    return tuple(k.name for k in registered_kinds()) + ("extrude",) + tuple(_CSG_TYPES) + tuple(_TRANSFORM_FIELDS)
+
+
+def __getattr__(name: str) -> Any:
+    if name == "SHAPE_KINDS":  # read live: kinds may be registered after import
+        return shape_kinds()
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 #: Light kinds and their (required, optional) fields.
 _LIGHT_FIELDS: dict[str, tuple[tuple[str, ...], tuple[str, ...]]] = {
@@ -270,14 +280,14 @@ def _material(r: _Reader, path: str, value: Any) -> Material:
 def _node(r: _Reader, path: str, value: Any) -> tuple[str, str, Any]:
     """Check one shape node ``{kind: body}``; returns ``(kind, path.kind, body)``."""
     if not isinstance(value, Mapping):
-        raise r.fail(path, f"a shape node must be a table with one key ({', '.join(SHAPE_KINDS)}), got {_type_name(value)}")
+        raise r.fail(path, f"a shape node must be a table with one key ({', '.join(shape_kinds())}), got {_type_name(value)}")
     if len(value) != 1:
         keys = ", ".join(show(k, 40) for k in value)
         got = f"{len(value)} ({keys})" if value else "none"
-        raise r.fail(path, f"a shape node must have exactly one key ({', '.join(SHAPE_KINDS)}), got {got}")
+        raise r.fail(path, f"a shape node must have exactly one key ({', '.join(shape_kinds())}), got {got}")
     ((kind, body),) = value.items()
-    if not isinstance(kind, str) or kind not in SHAPE_KINDS:
-        raise r.fail(path, f"unknown shape {show(kind, 40)} (expected one of {', '.join(SHAPE_KINDS)})")
+    if not isinstance(kind, str) or kind not in shape_kinds():
+        raise r.fail(path, f"unknown shape {show(kind, 40)} (expected one of {', '.join(shape_kinds())})")
     return kind, _join(path, kind), body
 
 
@@ -341,8 +351,11 @@ def _shape(r: _Reader, path: str, value: Any) -> Solid:
             stack.append((kind, here, [t["shape"]], [], _transform_matrix(r, here, kind, t)))
             todo = (_join(here, "shape"), t["shape"])
             continue
-        t = r.table(here, body, _PRIMITIVE_FIELDS[kind])
-        solid: Solid = r.construct(here, _CLASS_NAMES[kind], _PRIMITIVE_TYPES[kind], **dict(t))
+        node = _primitive_node(kind)
+        assert node is not None  # _node accepted the kind
+        fields, class_name, build = node
+        t = r.table(here, body, fields)
+        solid: Solid = r.construct(here, class_name, build, **dict(t))
         # Hand the finished solid to its parent; close every parent that is complete.
         while True:
             if not stack:
@@ -632,159 +645,6 @@ def load_scene(path: str | os.PathLike[str]) -> Scene:
     p = Path(path)
     text, fmt = read_scene_file(p)
     return loads_scene(text, format=fmt, source=p)
-
-
-# ----------------------------------------------------------------------------- writers
-
-
-def _light_to_dict(light: Any) -> dict[str, Any]:
-    if hasattr(light, "to_dict"):
-        d = dict(light.to_dict())
-    else:  # a source without its own mapping: the documented fields
-        d = {"vertices": [list(map(float, v)) for v in light.vertices], "radiance": float(light.radiance)}
-    d.setdefault("kind", getattr(light, "kind", None))
-    # `kind` first reads best in files.
-    return {"kind": d.pop("kind"), **d}
-
-
-#: Deepest shape nesting written to a scene file: the standard TOML and JSON decoders
-#: recurse per level. Deeper trees are written flattened (nested nodes of one
-#: operation merged, see :func:`isocsg.csg.program.compile_program`).
-MAX_FILE_DEPTH = 100
-
-
-def _nesting(shape: Any) -> int:
-    """Depth of a shape tree (a primitive is 1), without recursion."""
-    deepest, todo = 0, [(shape, 1)]
-    while todo:
-        s, d = todo.pop()
-        deepest = max(deepest, d)
-        todo.extend((c, d + 1) for c in getattr(s, "children", ()))
-    return deepest
-
-
-def _file_shape(shape: Any, where: str) -> dict[str, Any]:
-    """``shape.to_dict()``, flattened when it nests deeper than :data:`MAX_FILE_DEPTH`."""
-    if _nesting(shape) > MAX_FILE_DEPTH:
-        shape = shape.program().to_solid()
-        depth = _nesting(shape)
-        if depth > MAX_FILE_DEPTH:
-            raise SceneFileError(
-                f"{where}: the tree nests {depth} levels deep even with nested nodes of one operation merged; "
-                f"scene files hold at most {MAX_FILE_DEPTH} (the TOML and JSON decoders recurse per level)"
-            )
-    return shape.to_dict()
-
-
-def scene_to_dict(scene: Scene) -> dict[str, Any]:
-    """The scene-file document of a scene (the inverse of :func:`scene_from_dict`).
-
-    Parameters
-    ----------
-    scene : Scene
-
-    Returns
-    -------
-    dict
-        Plain lists, numbers and strings, ready for ``json.dump`` or
-        :func:`dumps_scene`. A tree nested deeper than :data:`MAX_FILE_DEPTH`
-        levels is written flattened (the same solid, with nested nodes of one
-        operation merged).
-
-    Raises
-    ------
-    SceneFileError
-        If a tree still nests deeper than :data:`MAX_FILE_DEPTH` once flattened
-        (operations that alternate level after level).
-
-    Examples
-    --------
-    >>> from isocsg import Camera, Sphere, Box, PointLight
-    >>> s = Scene(Camera((0, -5, 0), (0, 0, 0)), [PointLight((0, -5, 5))],
-    ...           [Box((0, 0, 0), (2, 2, 2)) - Sphere((1, 1, 1), 1)])
-    >>> scene_from_dict(scene_to_dict(s)) == s
-    True
-    """
-    cam = scene.camera
-    camera = cam.to_dict()
-    if cam.orthographic:
-        camera.update(orthographic=True, height_m=cam.height_m)
-    rs = scene.render
-    return {
-        "camera": camera,
-        "render": {"contours": rs.contours, "mode": rs.mode, "exposure": rs.exposure, "interval": rs.interval},
-        "lights": [_light_to_dict(light) for light in scene.lights],
-        "objects": [
-            {"material": o.material.to_dict(), "shape": _file_shape(o.shape, f"objects[{k}].shape")}
-            for k, o in enumerate(scene.objects)
-        ],
-    }
-
-
-def _toml_value(v: Any) -> str:
-    if isinstance(v, bool):
-        return "true" if v else "false"
-    if isinstance(v, int):
-        return str(v)
-    if isinstance(v, float):
-        if math.isnan(v):
-            return "nan"
-        if math.isinf(v):
-            return "inf" if v > 0 else "-inf"
-        return repr(v)
-    if isinstance(v, str):
-        return json.dumps(v)  # a JSON string is a valid TOML basic string
-    if isinstance(v, Mapping):
-        return "{ " + ", ".join(f"{k} = {_toml_value(x)}" for k, x in v.items()) + " }"
-    if isinstance(v, (list, tuple)):
-        return "[" + ", ".join(_toml_value(x) for x in v) + "]"
-    raise SceneFileError(f"cannot write {type(v).__name__} to TOML")
-
-
-def dumps_scene(scene: Scene, *, format: str = "toml") -> str:
-    """Scene-file text of a scene, in ``"toml"`` or ``"json"``.
-
-    Examples
-    --------
-    >>> from isocsg import Camera, Sphere
-    >>> s = Scene(Camera((0, -5, 0), (0, 0, 0)), [], [Sphere((0, 0, 0), 1)])
-    >>> loads_scene(dumps_scene(s)) == s
-    True
-    """
-    doc = scene_to_dict(scene)
-    if format == "json":
-        return json.dumps(doc, indent=2) + "\n"
-    if format != "toml":
-        raise SceneFileError(f"unknown scene format {format!r} (expected 'toml' or 'json')")
-    lines: list[str] = []
-    for table in ("camera", "render"):
-        lines.append(f"[{table}]")
-        lines += [f"{k} = {_toml_value(v)}" for k, v in doc[table].items()]
-        lines.append("")
-    for table in ("lights", "objects"):
-        for item in doc[table]:
-            lines.append(f"[[{table}]]")
-            lines += [f"{k} = {_toml_value(v)}" for k, v in item.items()]
-            lines.append("")
-    return "\n".join(lines)
-
-
-def save_scene(scene: Scene, path: str | os.PathLike[str]) -> Path:
-    """Write a scene file; the format follows the extension (``.toml`` or ``.json``).
-
-    Returns
-    -------
-    pathlib.Path
-        The path written.
-
-    Raises
-    ------
-    SceneFileError
-        On an unknown extension.
-    """
-    p = Path(path)
-    p.write_text(dumps_scene(scene, format=_format_of(p)), encoding="utf-8")
-    return p
 
 
 # ----------------------------------------------------------------------------- built-in scenes

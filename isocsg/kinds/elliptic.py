@@ -12,22 +12,32 @@ so that ``matrix[:, 2]`` is the axis (E2's centre to E1's), and ``matrix[:, 0]``
 ``matrix[:, 1]`` span the ends (their semi-axes per unit radius). Every
 computation maps to the canonical frame and back: ray parameters are
 unchanged, and a canonical normal ``m`` is ``matrix^-T m`` in the world.
-(A similarity of a truncus stays a :class:`~isocsg.geometry.primitives.Truncus`;
-see :meth:`~isocsg.geometry.primitives.Primitive.transform`.)
+(A similarity of a truncus stays a :class:`~isocsg.kinds.truncus.Truncus`;
+see :meth:`~isocsg.kinds.base.Solid.transform`.)
 """
 
 from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import Any
+from typing import TYPE_CHECKING, Any, ClassVar
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from .._validation import MAX_ABS_COORD, scalar, vector3
 from ..errors import InvalidGeometryError
-from .primitives import DEFAULT_RESOLUTION, ConvexPolyhedron, Primitive, RayHits, Truncus, _as_rays
+from .base import DEFAULT_RESOLUTION, LeafForm, LeafRow, Primitive, RayHits, _as_rays
+from .meshing import manifold3d_module
+from .polyhedron import ConvexPolyhedron
+from .registry import register_kind
+from .scad import encoded, mat, num, truncus_body
+from .truncus import Truncus
+
+if TYPE_CHECKING:  # pragma: no cover
+    from shapely.geometry import Polygon
+
+    from ..laminae.surface import Surface
 
 __all__ = ["EllipticTruncus"]
 
@@ -39,6 +49,7 @@ def _canonical(r1: float, r2: float) -> Truncus:
     return Truncus((0.0, 0.0, 0.0), (0.0, 0.0, 1.0), r1, r2)
 
 
+@register_kind("elliptic_truncus", required=("center", "matrix", "r1", "r2"))
 @dataclass(frozen=True, slots=True)
 class EllipticTruncus(Primitive):
     """The affine image of a truncus: elliptic ends in parallel planes, possibly oblique.
@@ -70,7 +81,7 @@ class EllipticTruncus(Primitive):
     matrix: tuple[tuple[float, float, float], tuple[float, float, float], tuple[float, float, float]]
     r1: float
     r2: float
-    kind = "elliptic_truncus"
+    kind: ClassVar[str] = "elliptic_truncus"
 
     def __post_init__(self) -> None:
         center = vector3("EllipticTruncus.center", self.center)
@@ -133,18 +144,8 @@ class EllipticTruncus(Primitive):
 
         Its sign is exact; its size is within the matrix's condition number of the true distance.
         """
-        from ..csg.membership import signed_distance
-
-        d = signed_distance(self.canonical, self.to_canonical(points))
+        d = self.canonical.signed_distance(self.to_canonical(points))
         return d * float(np.linalg.svd(self.linear, compute_uv=False)[-1])
-
-    def contains(self, points: ArrayLike, *, tol: float | None = None) -> NDArray[np.bool_]:
-        """Boolean mask of the points inside or on the solid, within ``tol`` metres (>= 0)."""
-        from ..csg.membership import check_tolerance, primitive_tolerance
-
-        p = self._points(points)
-        limit = check_tolerance(f"{type(self).__name__}.contains(tol)", tol, primitive_tolerance(self))
-        return self.signed_distance(p) <= limit
 
     def normals_at(self, points: ArrayLike) -> NDArray[np.float64]:
         """Outward unit normals at surface points (caps where the canonical point is on an end)."""
@@ -204,6 +205,66 @@ class EllipticTruncus(Primitive):
             return Truncus(tuple(c), tuple(M[:, 2]), k * canonical.r1, k * canonical.r2)
         return EllipticTruncus(tuple(c), M, canonical.r1, canonical.r2)
 
+    # ------------------------------------------------------------ the kind interface
+    def leaf_row(self) -> LeafRow:
+        """A :attr:`LeafForm.GENERIC` row about its centre."""
+        return LeafRow(LeafForm.GENERIC, center=self.center_array)
+
+    def section(self, frame: NDArray[np.float64], resolution: int, area_exact: bool = False) -> Polygon:
+        """The plane section: the canonical truncus's section of the preimage plane, mapped back.
+
+        The preimage of the plane ``o + a u + b v`` is ``ol + a ul + b vl`` (``ul = M^-1 u`` ...);
+        its canonical section, in an orthonormal frame of that plane, maps to ``(a, b)`` by a 2x2
+        linear map (so exact areas stay exact: an affine map keeps area ratios).
+        """
+        import shapely
+
+        from .planar import EMPTY
+
+        e, F = self, frame
+        M = e.linear
+        o, u, v = F[:3, 3], F[:3, 0], F[:3, 1]
+        ol = np.linalg.solve(M, o - e.center_array)
+        ul, vl = np.linalg.solve(M, u), np.linalg.solve(M, v)
+        e1 = ul / np.linalg.norm(ul)
+        e2 = vl - (vl @ e1) * e1
+        e2 /= np.linalg.norm(e2)
+        n = np.cross(e1, e2)
+        Fl = np.eye(4)
+        Fl[:3, 0], Fl[:3, 1], Fl[:3, 2], Fl[:3, 3] = e1, e2, n, ol
+        poly = e.canonical.section(Fl, resolution, area_exact)
+        if poly.is_empty:
+            return EMPTY
+        B = np.array([[ul @ e1, vl @ e1], [ul @ e2, vl @ e2]])  # (a, b) -> (x, y) in the local frame
+        Binv = np.linalg.inv(B)
+        return shapely.transform(poly, lambda xy: xy @ Binv.T)
+
+    def manifold(self, resolution: int, shapes: dict[tuple[Any, ...], Any] | None = None) -> Any:
+        """manifold3d's truncus (vertices on the surface) mapped by ``[matrix | center]``."""
+        solid = manifold3d_module().Manifold.cylinder(1.0, self.r2, self.r1, max(int(resolution), 3), True)
+        return solid.transform(np.column_stack([self.linear, self.center_array]).tolist())
+
+    def band_surface(
+        self, lights: list[Any], contours: int, eye: NDArray[np.float64] | None, shininess: float,
+        weights: tuple[float, float] = (1.0, 1.0), segments: int | None = None, *, hidden: tuple[Any, Any] | None = None,
+    ) -> Surface:
+        """Side and end meshes fine enough for every field (:mod:`isocsg.laminae.elliptic`)."""
+        from ..laminae.elliptic import elliptic_surface
+
+        return elliptic_surface(self, lights, contours, eye, shininess, weights, segments)
+
+    def to_openscad(self, digits: int | None = None, *, exact: bool = True) -> str:
+        """The canonical truncus (unit height along z, E1 of radius r1 at z = +1/2) mapped by ``matrix``."""
+        if digits is not None:
+            body, k = truncus_body(self.r2, self.r1, digits)
+            L = np.asarray(self.matrix, dtype=np.float64) * np.array([k, k, 1.0])
+            return encoded(body, L, self.center_array, digits)
+        m = np.eye(4)
+        m[:3, :3] = np.asarray(self.matrix, dtype=np.float64)
+        m[:3, 3] = self.center
+        body = f"cylinder(h = 1, r1 = {num(self.r2)}, r2 = {num(self.r1)}, center = true);"
+        return f"multmatrix({mat(m)}) {{ {body} }}"
+
     def to_dict(self) -> dict[str, Any]:
         """``{"elliptic_truncus": {"center", "matrix", "r1", "r2"}}``."""
         return {"elliptic_truncus": {"center": list(self.center), "matrix": [list(r) for r in self.matrix], "r1": self.r1, "r2": self.r2}}
@@ -220,43 +281,3 @@ def _keeps_circles(M: NDArray[np.float64]) -> bool:
         and abs(u @ a) <= tol * nu * na
         and abs(v @ a) <= tol * nv * na
     )
-
-
-# ----------------------------------------------------------------------------- registered hooks
-
-
-def elliptic_section(e: EllipticTruncus, F: NDArray[np.float64], resolution: int, area_exact: bool = False) -> Any:
-    """The plane section: the canonical truncus's section of the preimage plane, mapped back.
-
-    The preimage of the plane ``o + a u + b v`` is ``ol + a ul + b vl`` (``ul = M^-1 u`` ...);
-    its canonical section, in an orthonormal frame of that plane, maps to ``(a, b)`` by a 2x2
-    linear map (so exact areas stay exact: an affine map keeps area ratios).
-    """
-    import shapely
-
-    from ..csg.section import _EMPTY, primitive_section
-
-    M = e.linear
-    o, u, v = F[:3, 3], F[:3, 0], F[:3, 1]
-    ol = np.linalg.solve(M, o - e.center_array)
-    ul, vl = np.linalg.solve(M, u), np.linalg.solve(M, v)
-    e1 = ul / np.linalg.norm(ul)
-    e2 = vl - (vl @ e1) * e1
-    e2 /= np.linalg.norm(e2)
-    n = np.cross(e1, e2)
-    Fl = np.eye(4)
-    Fl[:3, 0], Fl[:3, 1], Fl[:3, 2], Fl[:3, 3] = e1, e2, n, ol
-    poly = primitive_section(e.canonical, Fl, resolution, area_exact=area_exact)
-    if poly.is_empty:
-        return _EMPTY
-    B = np.array([[ul @ e1, vl @ e1], [ul @ e2, vl @ e2]])  # (a, b) -> (x, y) in the local frame
-    Binv = np.linalg.inv(B)
-    return shapely.transform(poly, lambda xy: xy @ Binv.T)
-
-
-def elliptic_manifold(e: EllipticTruncus, resolution: int, shapes: dict[Any, Any] | None = None) -> Any:
-    """manifold3d's truncus (vertices on the surface) mapped by ``[matrix | center]``."""
-    import manifold3d
-
-    solid = manifold3d.Manifold.cylinder(1.0, e.r2, e.r1, max(int(resolution), 3), True)
-    return solid.transform(np.column_stack([e.linear, e.center_array]).tolist())

@@ -8,7 +8,7 @@ unit ball ("the primitive's own frame") and back. Ray parameters are unchanged
 by the map, and the outward normal at ``center + R S u`` is ``R S^-1 u``
 normalised.
 
-A :class:`~isocsg.geometry.primitives.Sphere` under a map that is not a
+A :class:`~isocsg.kinds.sphere.Sphere` under a map that is not a
 similarity becomes an ellipsoid (:meth:`Ellipsoid.from_affine`), and an
 ellipsoid under any affine map stays one.
 """
@@ -17,27 +17,38 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import Any
+from typing import TYPE_CHECKING, Any, ClassVar
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from .._validation import MAX_ABS_COORD, MIN_ASPECT, Vec3, length_floor, vector3
 from ..errors import InvalidGeometryError
-from .primitives import (
+from .base import (
     DEFAULT_RESOLUTION,
     IDENTITY3,
-    ConvexPolyhedron,
+    LeafForm,
+    LeafRow,
     Primitive,
     RayHits,
-    Sphere,
     _as_rays,
     rotation3,
 )
+from .meshing import manifold3d_module
+from .polyhedron import ConvexPolyhedron
+from .registry import register_kind
+from .scad import encoded, mat
+from .sphere import Sphere
+
+if TYPE_CHECKING:  # pragma: no cover
+    from shapely.geometry import Polygon
+
+    from ..laminae.surface import Surface
 
 __all__ = ["Ellipsoid"]
 
 
+@register_kind("ellipsoid", required=("center", "radii"), optional=("orientation",))
 @dataclass(frozen=True, slots=True)
 class Ellipsoid(Primitive):
     """A solid ellipsoid.
@@ -68,7 +79,7 @@ class Ellipsoid(Primitive):
     center: Vec3
     radii: Vec3
     orientation: tuple[Vec3, Vec3, Vec3] = IDENTITY3
-    kind = "ellipsoid"
+    kind: ClassVar[str] = "ellipsoid"
 
     def __post_init__(self) -> None:
         center = vector3("Ellipsoid.center", self.center)
@@ -172,18 +183,6 @@ class Ellipsoid(Primitive):
         return d
 
     # ------------------------------------------------------------ the primitive interface
-    def contains(self, points: ArrayLike, *, tol: float | None = None) -> NDArray[np.bool_]:
-        """Boolean mask of the points inside or on the ellipsoid, within ``tol`` metres (>= 0).
-
-        The default ``tol`` is 1e-12 of the ellipsoid's size or coordinate
-        magnitude, whichever is larger (see :meth:`signed_distance`).
-        """
-        from ..csg.membership import check_tolerance, primitive_tolerance
-
-        p = self._points(points)
-        limit = check_tolerance(f"{type(self).__name__}.contains(tol)", tol, primitive_tolerance(self))
-        return self.signed_distance(p) <= limit
-
     @property
     def bounds(self) -> NDArray[np.float64]:
         """Axis-aligned bounds, shape (2, 3) (exact: ``|R S|`` row norms)."""
@@ -239,49 +238,67 @@ class Ellipsoid(Primitive):
             return Sphere(out.center, float(r.mean()))
         return out
 
+    # ------------------------------------------------------------ the kind interface
+    def leaf_row(self) -> LeafRow:
+        """A :attr:`LeafForm.GENERIC` row about its centre."""
+        return LeafRow(LeafForm.GENERIC, center=self.center_array)
+
+    def section(self, frame: NDArray[np.float64], resolution: int, area_exact: bool = False) -> Polygon:
+        """The exact section of an ellipsoid by the plane of the frame ``F`` (an ellipse) as a polygon.
+
+        In the unit-ball frame the plane is ``q0 + a U + b V``; ``|q|^2 <= 1`` is a
+        quadratic in the plane coordinates ``(a, b)`` whose minimum sits at
+        ``-G^-1 h`` (``G`` the Gram matrix of ``U, V``, ``h = (q0.U, q0.V)``). The
+        ellipse is the image of a circle's ring (inscribed, or of the exact area
+        with ``area_exact``: an affine map keeps area ratios).
+        """
+        import shapely
+
+        from .planar import EMPTY, circle_ring
+
+        e, F = self, frame
+        R, r = e.rotation, e.radii_array
+        o, u, v = F[:3, 3], F[:3, 0], F[:3, 1]
+        q0 = ((o - e.center_array) @ R) / r
+        U, V = (u @ R) / r, (v @ R) / r
+        G = np.array([[U @ U, U @ V], [U @ V, V @ V]])
+        h = np.array([q0 @ U, q0 @ V])
+        ab = -np.linalg.solve(G, h)
+        m = float(q0 @ q0 + h @ ab)
+        if m >= 1.0:
+            return EMPTY
+        lam, W = np.linalg.eigh(G)
+        axes = W * np.sqrt((1.0 - m) / lam)  # columns: the ellipse's semi-axes in (a, b)
+        ring = circle_ring(np.zeros((1, 2)), np.ones(1), resolution, area_exact)[0]
+        return shapely.Polygon(ring @ axes.T + ab)
+
+    def manifold(self, resolution: int, shapes: dict[tuple[Any, ...], Any] | None = None) -> Any:
+        """manifold3d's sphere mapped by ``R S`` (vertices on the surface)."""
+        ball = manifold3d_module().Manifold.sphere(1.0, max(int(resolution), 4))
+        return ball.transform(np.column_stack([self.matrix, self.center_array]).tolist())
+
+    def band_surface(
+        self, lights: list[Any], contours: int, eye: NDArray[np.float64] | None, shininess: float,
+        weights: tuple[float, float] = (1.0, 1.0), segments: int | None = None, *, hidden: tuple[Any, Any] | None = None,
+    ) -> Surface:
+        """Latitude-longitude mesh fine enough for every field (:mod:`isocsg.laminae.ellipsoid`)."""
+        from ..laminae.ellipsoid import ellipsoid_surface
+
+        return ellipsoid_surface(self, lights, contours, eye, shininess, weights, segments)
+
+    def to_openscad(self, digits: int | None = None, *, exact: bool = True) -> str:
+        """The unit sphere mapped by orientation x diag(radii), then moved to the centre."""
+        L = np.asarray(self.orientation, dtype=np.float64) * np.asarray(self.radii, dtype=np.float64)
+        if digits is not None:
+            return encoded("sphere(r = 1);", L, self.center_array, digits)
+        m = np.eye(4)
+        m[:3, :3] = L
+        m[:3, 3] = self.center
+        return f"multmatrix({mat(m)}) {{ sphere(r = 1); }}"
+
     def to_dict(self) -> dict[str, Any]:
         """``{"ellipsoid": {"center", "radii"}}``, plus ``"orientation"`` (3 rows) when not the identity."""
         out: dict[str, Any] = {"center": list(self.center), "radii": list(self.radii)}
         if self.orientation != IDENTITY3:
             out["orientation"] = [list(r) for r in self.orientation]
         return {"ellipsoid": out}
-
-
-# ----------------------------------------------------------------------------- registered hooks
-
-
-def ellipsoid_section(e: Ellipsoid, F: NDArray[np.float64], resolution: int, area_exact: bool = False) -> Any:
-    """The exact section of an ellipsoid by the plane of the frame ``F`` (an ellipse) as a polygon.
-
-    In the unit-ball frame the plane is ``q0 + a U + b V``; ``|q|^2 <= 1`` is a
-    quadratic in the plane coordinates ``(a, b)`` whose minimum sits at
-    ``-G^-1 h`` (``G`` the Gram matrix of ``U, V``, ``h = (q0.U, q0.V)``). The
-    ellipse is the image of a circle's ring (inscribed, or of the exact area
-    with ``area_exact``: an affine map keeps area ratios).
-    """
-    import shapely
-
-    from ..csg.section import _EMPTY, _circle_ring
-
-    R, r = e.rotation, e.radii_array
-    o, u, v = F[:3, 3], F[:3, 0], F[:3, 1]
-    q0 = ((o - e.center_array) @ R) / r
-    U, V = (u @ R) / r, (v @ R) / r
-    G = np.array([[U @ U, U @ V], [U @ V, V @ V]])
-    h = np.array([q0 @ U, q0 @ V])
-    ab = -np.linalg.solve(G, h)
-    m = float(q0 @ q0 + h @ ab)
-    if m >= 1.0:
-        return _EMPTY
-    lam, W = np.linalg.eigh(G)
-    axes = W * np.sqrt((1.0 - m) / lam)  # columns: the ellipse's semi-axes in (a, b)
-    ring = _circle_ring(np.zeros((1, 2)), np.ones(1), resolution, area_exact)[0]
-    return shapely.Polygon(ring @ axes.T + ab)
-
-
-def ellipsoid_manifold(e: Ellipsoid, resolution: int, shapes: dict[Any, Any] | None = None) -> Any:
-    """The ellipsoid as a manifold3d mesh: manifold3d's sphere mapped by ``R S`` (vertices on the surface)."""
-    import manifold3d
-
-    ball = manifold3d.Manifold.sphere(1.0, max(int(resolution), 4))
-    return ball.transform(np.column_stack([e.matrix, e.center_array]).tolist())
