@@ -24,10 +24,17 @@ from .shape import (
     union_all2d,
 )
 from .transforms import mirror2d, rotate2d, scale2d, transform2d, translate2d
+from .measure import area, area_bounds, bounds, to_shapely
+from .region import convex_pieces, fill, shape_from_region
+from .offset import offset
+from .extrude import linear_extrude
+from .text import FontFallbackWarning, font_path, text
 
 __all__ = [
     "Shape2D", "ConvexPolygon", "Circle", "Ellipse", "Union2D", "Intersection2D", "Difference2D", "EMPTY",
     "convex_polygon", "polygon", "square", "circle", "regular_polygon",
     "union2d", "intersection2d", "difference2d", "union_all2d",
     "transform2d", "translate2d", "rotate2d", "scale2d", "mirror2d",
+    "area", "area_bounds", "bounds", "to_shapely", "fill", "convex_pieces", "shape_from_region",
+    "offset", "linear_extrude", "text", "font_path", "FontFallbackWarning",
 ]

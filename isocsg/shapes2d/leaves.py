@@ -100,7 +100,7 @@ def convex_polygon(points: Any, *, name: str = "convex_polygon.points") -> Conve
     Examples
     --------
     >>> convex_polygon([(0, 0), (0, 1), (1, 0)]).vertices
-    ((0.0, 0.0), (1.0, 0.0), (0.0, 1.0))
+    ((1.0, 0.0), (0.0, 1.0), (0.0, 0.0))
     """
     pts = points2(name, points, minimum=3)
     keep = np.ones(len(pts), dtype=bool)

@@ -73,7 +73,7 @@ def fill(rings: Sequence[Any], rule: str = "evenodd", *, name: str = "polygon") 
             arrs.append(r)
     if not arrs:
         return shapely.Polygon()
-    lines = shapely.linestrings([np.vstack([r, r[:1]]) for r in arrs])
+    lines = [shapely.LineString(np.vstack([r, r[:1]])) for r in arrs]
     noded = shapely.union_all(lines)
     faces = shapely.get_parts(shapely.polygonize(shapely.get_parts(noded)))
     faces = faces[shapely.area(faces) > 0]
