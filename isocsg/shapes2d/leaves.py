@@ -121,7 +121,7 @@ def is_similarity(A: NDArray[np.float64]) -> float | None:
     g = A.T @ A
     s2 = 0.5 * (g[0, 0] + g[1, 1])
     if s2 > 0 and abs(g[0, 0] - g[1, 1]) <= 1e-12 * s2 and abs(g[0, 1]) <= 1e-12 * s2:
-        return math.sqrt(abs(float(np.linalg.det(A))))
+        return float(np.hypot(A[0, 0], A[1, 0]))
     return None
 
 

@@ -156,7 +156,7 @@ def _exact(shape: Shape2D) -> tuple[Box | None, float | None]:
         present = [k for k in kids if k[0] is not None]
         if op == "union":
             if all(k[1] is not None for k in present) and _disjoint([k[0] for k in present]):  # type: ignore[misc]
-                return box, float(sum(k[1] for k in present))  # type: ignore[misc]
+                return box, math.fsum(k[1] for k in present)  # type: ignore[misc]
         elif op == "difference":
             first = kids[0]
             if first[0] is None:

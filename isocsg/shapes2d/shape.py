@@ -156,10 +156,22 @@ class _Node(Shape2D):
         return True
 
     def __repr__(self) -> str:
-        def show(op: str, node: Shape2D, kids: list[str]) -> str:
-            return f"{type(node).__name__}(({', '.join(kids)}{',' if len(kids) == 1 else ''}))"
-
-        return fold(self, repr, show)
+        out: list[str] = []
+        stack: list[Any] = [self]
+        while stack:  # tokens and shapes, written left to right in linear time
+            item = stack.pop()
+            if isinstance(item, str):
+                out.append(item)
+            elif isinstance(item, _Node):
+                out.append(f"{type(item).__name__}((")
+                stack.append(",))" if len(item.children) == 1 else "))")
+                for j in range(len(item.children) - 1, -1, -1):
+                    stack.append(item.children[j])
+                    if j > 0:
+                        stack.append(", ")
+            else:
+                out.append(repr(item))
+        return "".join(out)
 
     def __reduce__(self) -> Any:
         return (type(self), (self.children,))
