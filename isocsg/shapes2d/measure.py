@@ -2,7 +2,9 @@
 
 Areas are exact where the tree allows it (a leaf: shoelace, ``pi r^2``,
 ``pi |det M|``; a union of parts whose bounding boxes do not overlap: the sum;
-a difference whose subtracted parts miss the first's box: the first's area),
+a difference whose subtracted parts miss the first's box: the first's area; a
+node whose children are polygons and circles that do not overlap one another:
+closed forms of polygon-disc intersections, :mod:`isocsg.shapes2d.discarea`),
 exact to rounding for trees of polygons only (shapely's overlay on the exact
 pieces), and otherwise computed on two polygonisations of every curved leaf,
 inscribed and circumscribed (see :func:`area`): with ``resolution`` segments
@@ -148,26 +150,53 @@ def _overlap(a: Box, b: Box) -> bool:
 def _exact(shape: Shape2D) -> tuple[Box | None, float | None]:
     """(box, exact area or None) of a tree, by the rules of the module docstring."""
 
-    def leaf(s: Shape2D) -> tuple[Box | None, float | None]:
-        return s.bounds, s.area
+    def leaf(s: Shape2D) -> tuple[Box | None, float | None, bool]:
+        return s.bounds, s.area, isinstance(s, ConvexPolygon)
 
-    def node(op: str, s: Shape2D, kids: list[tuple[Box | None, float | None]]) -> tuple[Box | None, float | None]:
+    def node(op: str, s: Shape2D, kids: list[tuple[Box | None, float | None, bool]]) -> tuple[Box | None, float | None, bool]:
         box = _box(op, [k[0] for k in kids])
+        poly = all(k[2] for k in kids)
         present = [k for k in kids if k[0] is not None]
         if op == "union":
             if all(k[1] is not None for k in present) and _disjoint([k[0] for k in present]):  # type: ignore[misc]
-                return box, math.fsum(k[1] for k in present)  # type: ignore[misc]
+                return box, math.fsum(k[1] for k in present), poly  # type: ignore[misc]
         elif op == "difference":
             first = kids[0]
             if first[0] is None:
-                return None, 0.0
+                return None, 0.0, poly
             if first[1] is not None and not any(k[0] is not None and _overlap(first[0], k[0]) for k in kids[1:]):
-                return box, first[1]
+                return box, first[1], poly
         elif len(kids) == 1:
             return kids[0]
-        return box, (0.0 if box is None else None)
+        if box is None:
+            return None, 0.0, poly
+        return box, (None if poly else _with_discs(op, s, [k[2] for k in kids])), poly  # type: ignore[attr-defined]
 
-    return fold(shape, leaf, node)
+    box, exact, _ = fold(shape, leaf, node)
+    return box, exact
+
+
+def _with_discs(op: str, node: Any, polygonal: list[bool]) -> float | None:
+    """Exact area of a node of polygonal children and circles that do not overlap one another, else None."""
+    from .discarea import discs_disjoint, region_disc_area
+
+    kids = node.children
+    circles = [c for c, p in zip(kids, polygonal) if not p]
+    if not all(isinstance(c, Circle) for c in circles) or not discs_disjoint([(c.center, c.radius) for c in circles]):
+        return None
+    polys = [c for c, p in zip(kids, polygonal) if p]
+    if op == "difference":
+        if not polygonal[0]:
+            return None
+        region = _combine("difference", [to_shapely(c) for c in polys])
+        return float(region.area) - math.fsum(region_disc_area(region, c.center, c.radius) for c in circles)
+    if op == "union":
+        region = _combine("union", [to_shapely(c) for c in polys])
+        return float(region.area) + math.fsum(c.area - region_disc_area(region, c.center, c.radius) for c in circles)
+    if len(circles) == 1 and polys:
+        region = _combine("intersection", [to_shapely(c) for c in polys])
+        return region_disc_area(region, circles[0].center, circles[0].radius)
+    return None
 
 
 def _box(op: str, boxes: list[Box | None]) -> Box | None:
