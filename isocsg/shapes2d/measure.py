@@ -120,9 +120,30 @@ def to_shapely(shape: Shape2D, *, resolution: int = 128, circumscribed: bool = F
     """
     n = _resolution("to_shapely.resolution", resolution)
     region = _signed_region(shape, lambda leaf, sign: _leaf_polygon(leaf, n, circumscribed))
-    import shapely
+    return _clean(region)
 
-    return shapely.normalize(region)
+
+#: Holes and parts of a converted region smaller than this fraction of its box's squared size are
+#: overlay slivers (GEOS leaves zero-width holes along edges shared by pieces) and are dropped.
+SLIVER_RTOL = 1e-12
+
+
+def _clean(region: Any) -> Any:
+    import shapely
+    from shapely.geometry import MultiPolygon, Polygon
+
+    if region.is_empty:
+        return shapely.normalize(region)
+    x0, y0, x1, y1 = region.bounds
+    eps = SLIVER_RTOL * max(x1 - x0, y1 - y0) ** 2
+    parts = []
+    for poly in shapely.get_parts(region):
+        if not isinstance(poly, Polygon) or poly.area <= eps:
+            continue
+        holes = [h for h in poly.interiors if Polygon(h).area > eps]
+        parts.append(Polygon(poly.exterior, holes) if len(holes) != len(poly.interiors) else poly)
+    out = parts[0] if len(parts) == 1 else MultiPolygon(parts) if parts else Polygon()
+    return shapely.normalize(out)
 
 
 def is_polygonal(shape: Shape2D) -> bool:
