@@ -29,6 +29,7 @@ from .region import convex_pieces, fill, shape_from_region
 from .offset import offset
 from .extrude import linear_extrude
 from .text import FontFallbackWarning, font_path, text
+from .openscad import from_openscad, fragments, text_segments
 
 __all__ = [
     "Shape2D", "ConvexPolygon", "Circle", "Ellipse", "Union2D", "Intersection2D", "Difference2D", "EMPTY",
@@ -37,4 +38,5 @@ __all__ = [
     "transform2d", "translate2d", "rotate2d", "scale2d", "mirror2d",
     "area", "area_bounds", "bounds", "to_shapely", "fill", "convex_pieces", "shape_from_region",
     "offset", "linear_extrude", "text", "font_path", "FontFallbackWarning",
+    "from_openscad", "fragments", "text_segments",
 ]

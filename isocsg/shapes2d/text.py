@@ -4,7 +4,7 @@ Font. The default is DejaVu Sans, the open font that matplotlib ships (its
 ``mpl-data/fonts/ttf`` folder; Bitstream Vera licence), read with fontTools.
 OpenSCAD's own default is Liberation Sans, which isocsg does not ship: the two
 are both sans-serif fonts with a cap height of 0.729 em, but their glyphs and
-advances differ (text set in DejaVu Sans runs about 8 % wider). ``font`` takes
+advances differ (DejaVu Sans's lower-case advances are about 10 % wider). ``font`` takes
 a path to a ``.ttf`` or ``.otf`` file, or a DejaVu family name with an OpenSCAD
 style (``"DejaVu Sans:style=Bold"``, ``"DejaVu Serif"``, ``"DejaVu Sans Mono"``);
 other names fall back to DejaVu Sans with a :class:`FontFallbackWarning`.
