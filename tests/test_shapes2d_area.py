@@ -119,3 +119,20 @@ def test_random_polygons_with_discs_match_fine_polygonisations(data, r, x, y):
     for shape in (base - disc, base & disc, base | disc):
         fine = to_shapely(shape, resolution=1 << 14).area
         assert area(shape) == pytest.approx(fine, rel=1e-7, abs=1e-9)
+
+
+@st.composite
+def small_shapes(draw):
+    x, y = draw(st.floats(-1.5, 1.5)), draw(st.floats(-1.5, 1.5))
+    if draw(st.booleans()):
+        return circle(draw(st.floats(0.2, 1.5))).translate([x, y])
+    return square([draw(st.floats(0.2, 2.0)), draw(st.floats(0.2, 2.0))]).rotate(draw(st.floats(0, 90))).translate([x, y])
+
+
+@settings(max_examples=40, deadline=None)
+@given(small_shapes(), small_shapes())
+def test_inclusion_exclusion_of_areas(a, b):
+    """area(A | B) + area(A & B) = area(A) + area(B), and area(A - B) = area(A) - area(A & B)."""
+    scale = area(a) + area(b)
+    assert area(a | b) + area(a & b) == pytest.approx(area(a) + area(b), abs=1e-9 * scale)
+    assert area(a - b) == pytest.approx(area(a) - area(a & b), abs=1e-9 * scale)

@@ -150,3 +150,10 @@ BAD = [
 def test_offset_errors_name_the_field(make, message):
     with pytest.raises(InvalidGeometryError, match=re.escape(message)):
         make()
+
+
+def test_ellipses_offset_through_a_polygonisation():
+    ellipse = circle(1).scale([2, 1])
+    grown = offset(ellipse, 0.25, tolerance=1e-4)
+    ref = to_shapely(ellipse, resolution=1 << 14).buffer(0.25, quad_segs=1024)
+    assert area(grown, resolution=256) == pytest.approx(ref.area, rel=1e-4)
