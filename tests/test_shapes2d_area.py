@@ -52,18 +52,27 @@ CLOSED = [
 
 @pytest.mark.parametrize("shape, expected", [c[1:] for c in CLOSED], ids=[c[0] for c in CLOSED])
 def test_area_against_closed_forms(shape, expected):
-    assert area(shape) == pytest.approx(expected, rel=1e-9, abs=1e-12)
+    assert area(shape) == pytest.approx(expected, rel=1e-9 if isinstance(shape, Ellipse) or "ellipse" in repr(shape).lower() else 1e-13, abs=1e-14)
     lo, hi = area_bounds(shape, resolution=512)
     assert lo <= expected * (1 + 1e-12) and expected <= hi * (1 + 1e-12)
 
 
-def test_richardson_estimate_converges_on_crossing_arcs():
+def test_crossing_arcs_are_exact():
     shape = (circle(1) & circle(1).translate([1, 0])) - circle(0.3).translate([0.5, 0.4])
+    assert area(shape) == pytest.approx(_lens(1, 1, 1) - 0.09 * math.pi, rel=1e-14)
+    three = circle(1) | circle(1).translate([1, 0]) | circle(1).translate([0.5, 0.8])
+    fine = to_shapely(three, resolution=1 << 16).area
+    lo, hi = area_bounds(three, resolution=4096)
+    assert lo <= area(three) <= hi and area(three) == pytest.approx(fine, rel=1e-8)
+
+
+def test_ellipse_estimate_converges_on_crossing_arcs():
+    shape = Ellipse((0, 0), ((2, 0.3), (0, 1))) & circle(1).translate([1.5, 0.2])
     best = area(shape, resolution=16384)
     errors = [abs(area(shape, resolution=n) - best) for n in (128, 512, 2048)]
-    assert errors[0] > errors[1] > errors[2] and errors[2] < 1e-8
+    assert errors[0] > errors[2] and max(errors[1:]) < 1e-8  # falls as resolution**-3, not monotonically
     lo, hi = area_bounds(shape, resolution=2048)
-    assert lo < best < hi and hi - lo < 1e-5
+    assert lo < best < hi and hi - lo < 1e-4
 
 
 def test_area_against_shapely_on_fine_polygonisations():
@@ -80,7 +89,7 @@ def _star(draw_radii, n, cx=0.0, cy=0.0):
 
 @st.composite
 def holed_polygons(draw):
-    n = draw(st.integers(3, 24))
+    n = draw(st.integers(8, 24))  # inradius >= 2 cos(pi / 8) > 1.4: the holes stay inside
     outer = _star(draw(st.lists(st.floats(2.0, 3.0), min_size=n, max_size=n)), n)
     holes = []
     for k in range(draw(st.integers(0, 2))):
@@ -117,8 +126,9 @@ def test_random_polygons_with_discs_match_fine_polygonisations(data, r, x, y):
         base = base - polygon(h)
     disc = circle(r).translate([x, y])
     for shape in (base - disc, base & disc, base | disc):
-        fine = to_shapely(shape, resolution=1 << 14).area
-        assert area(shape) == pytest.approx(fine, rel=1e-7, abs=1e-9)
+        lo, hi = area_bounds(shape, resolution=4096)
+        assert lo - 1e-12 <= area(shape) <= hi + 1e-12
+        assert area(shape) == pytest.approx(to_shapely(shape, resolution=1 << 14).area, abs=4 * r * r * math.pi**3 / 3 / (1 << 28))
 
 
 @st.composite
@@ -136,3 +146,25 @@ def test_inclusion_exclusion_of_areas(a, b):
     scale = area(a) + area(b)
     assert area(a | b) + area(a & b) == pytest.approx(area(a) + area(b), abs=1e-9 * scale)
     assert area(a - b) == pytest.approx(area(a) - area(a & b), abs=1e-9 * scale)
+
+
+@settings(max_examples=30, deadline=None)
+@given(st.lists(small_shapes(), min_size=3, max_size=7), st.lists(st.sampled_from(["|", "&", "-"]), min_size=6, max_size=6))
+def test_exact_boundary_areas_of_random_trees_fall_in_the_bracket(shapes, ops):
+    from isocsg.shapes2d.boundary import boundary_area
+
+    tree = shapes[0]
+    for s, op in zip(shapes[1:], ops):
+        tree = tree | s if op == "|" else tree & s if op == "&" else tree - s
+    box = tree.bounds
+    if math.isnan(box[0]):
+        return
+    exact = boundary_area(tree, box)
+    lo, hi = area_bounds(tree, resolution=2048)
+    if exact is None:  # a piece misjudged next to a nearly coincident curve: area() measures otherwise
+        assert lo - 1e-12 <= area(tree) <= hi + 1e-12
+        return
+    # Features thinner than the probe distance (1e-9 of the size) may be lost: a sliver's area at most.
+    slack = 1e-9 * max(box[2] - box[0], box[3] - box[1]) ** 2
+    assert lo - slack <= exact <= hi + slack
+    assert area(tree) == pytest.approx(exact, abs=slack)
