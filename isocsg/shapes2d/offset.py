@@ -18,10 +18,12 @@ Trees are offset through identities that keep them exact: a dilation
 distributes over a union, an erosion over an intersection, and
 ``(A - B) eroded by r = (A eroded by r) - (B dilated by r)``; circles stay
 circles (radius + r, or nothing). Subtrees of polygons only are offset as one
-polygonal region. What no identity reaches exactly (a dilated difference or an
-eroded union involving circles, ellipses, mitred unions of overlapping parts)
-is refused, naming the case, unless a ``tolerance`` is given: such subtrees
-are then polygonised (every curved leaf inscribed with a chord error at most
+polygonal region. Any other subtree of polygons and circles is offset with
+``r`` through its exact boundary of segments and arcs
+(:mod:`isocsg.shapes2d.arcoffset`): exact too. What remains (ellipses, and
+``delta`` offsets of subtrees with circles that no identity reaches) is
+refused, naming the case, unless a ``tolerance`` is given: such subtrees are
+then polygonised (every curved leaf inscribed with a chord error at most
 ``tolerance``) and offset exactly as polygons.
 """
 
@@ -134,6 +136,12 @@ def _direct(s: Shape2D, d: float, mode: str, tol: float | None, polygonal: dict[
             return None
         if mode == "round" and ((s.op == "intersection" and d < 0) or (s.op == "difference" and d < 0)):
             return None
+    if mode == "round" and not any(isinstance(leaf, Ellipse) for leaf in iter_leaves(s)):
+        from .arcoffset import boundary_offset
+
+        exact = boundary_offset(s, d)
+        if exact is not None:
+            return exact
     if tol is None:
         what = type(s).__name__ if not isinstance(s, _Node) else f"{'dilated' if d > 0 else 'eroded'} {s.op}"
         raise InvalidGeometryError(
