@@ -166,3 +166,12 @@ def test_errors_name_the_field(make, message):
 def test_errors_are_value_errors():
     with pytest.raises(ValueError):
         square(-1)
+
+
+def test_method_facades():
+    from isocsg import volume
+
+    shape = square(2) - circle(0.5).translate([1, 1])
+    assert shape.offset(0.25) == __import__("isocsg.shapes2d", fromlist=["offset"]).offset(shape, 0.25)
+    assert volume(shape.linear_extrude(2)) == pytest.approx(2 * shape.area, rel=1e-6)
+    assert shape.to_shapely().area == pytest.approx(shape.area, rel=1e-3)

@@ -86,6 +86,18 @@ class Shape2D:
 
         return mirror2d(self, v)
 
+    def offset(self, r: Any = None, *, delta: Any = None, chamfer: bool = False, tolerance: Any = None) -> Shape2D:
+        """OpenSCAD's ``offset`` (see :func:`~isocsg.shapes2d.offset`)."""
+        from .offset import offset
+
+        return offset(self, r, delta=delta, chamfer=chamfer, tolerance=tolerance)
+
+    def linear_extrude(self, height: Any, *, center: bool = False, scale: Any = 1.0) -> Any:
+        """The exact 3D solid swept along +z (see :func:`~isocsg.shapes2d.linear_extrude`)."""
+        from .extrude import linear_extrude
+
+        return linear_extrude(self, height, center=center, scale=scale)
+
     # -------------------------------------------------------- conversions
     @property
     def bounds(self) -> tuple[float, float, float, float]:
