@@ -74,7 +74,7 @@ def _matrix(name: str, args: dict[str, Any]) -> Any:
     return [[m[0, 0], m[0, 1], m[0, 3]], [m[1, 0], m[1, 1], m[1, 3]]]
 
 
-def _leaf(name: str, args: dict[str, Any]) -> Shape2D:
+def _leaf(name: str, args: dict[str, Any], legacy: bool) -> Shape2D:
     fn = _num(args, "$fn", 0.0)
     if name == "square":
         return square(args.get("size", 1.0), bool(args.get("center", False)))
@@ -94,10 +94,13 @@ def _leaf(name: str, args: dict[str, Any]) -> Shape2D:
         args.get("valign") or "baseline",
         _num(args, "spacing", 1.0),
         segments=segments,
+        legacy_metrics=legacy,
     )
 
 
-def from_openscad(name: str, args: dict[str, Any], children: Sequence[Shape2D] = ()) -> Shape2D:
+def from_openscad(
+    name: str, args: dict[str, Any], children: Sequence[Shape2D] = (), *, legacy_text_metrics: bool = False
+) -> Shape2D:
     """The 2D shape of one OpenSCAD node (see the module notes).
 
     Parameters
@@ -108,6 +111,8 @@ def from_openscad(name: str, args: dict[str, Any], children: Sequence[Shape2D] =
         Named arguments, e.g. ``{"size": [2, 1], "center": False}``; ``undef`` as ``None``.
     children : sequence of Shape2D
         The node's children, converted.
+    legacy_text_metrics : bool, default False
+        Lay ``text`` out as OpenSCAD 2021.01 does (see :func:`~isocsg.shapes2d.text`).
 
     Raises
     ------
@@ -127,7 +132,7 @@ def from_openscad(name: str, args: dict[str, Any], children: Sequence[Shape2D] =
     """
     kids = [c for c in children if c is not EMPTY]
     if name in ("square", "circle", "polygon", "text"):
-        return _leaf(name, args)
+        return _leaf(name, args, legacy_text_metrics)
     if name in ("union", "group", "color", "render"):
         return union2d(*kids) if kids else EMPTY
     if name == "difference":
