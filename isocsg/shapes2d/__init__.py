@@ -31,6 +31,13 @@ from .extrude import linear_extrude
 from .text import FontFallbackWarning, font_path, text
 from .openscad import from_openscad, fragments, text_segments
 
+from . import shape as _shape
+
+_shape.OPERATIONS.update(
+    transform2d=transform2d, translate2d=translate2d, rotate2d=rotate2d, scale2d=scale2d, mirror2d=mirror2d,
+    offset=offset, linear_extrude=linear_extrude, bounds=bounds, area=area, to_shapely=to_shapely,
+)
+
 __all__ = [
     "Shape2D", "ConvexPolygon", "Circle", "Ellipse", "Union2D", "Intersection2D", "Difference2D", "EMPTY",
     "convex_polygon", "polygon", "square", "circle", "regular_polygon",

@@ -58,66 +58,51 @@ class Shape2D:
     # --------------------------------------------------------- transforms
     def transform(self, matrix: Any) -> Shape2D:
         """The image under ``x -> A x + t``, ``matrix`` a 2x3 ``[A | t]`` or 3x3 affine matrix."""
-        from .transforms import transform2d
-
-        return transform2d(self, matrix)
+        return OPERATIONS["transform2d"](self, matrix)
 
     def translate(self, v: Any) -> Shape2D:
         """The shape moved by ``v = [x, y]``."""
-        from .transforms import translate2d
-
-        return translate2d(self, v)
+        return OPERATIONS["translate2d"](self, v)
 
     def rotate(self, angle: Any) -> Shape2D:
         """The shape rotated counter-clockwise by ``angle`` degrees about the origin."""
-        from .transforms import rotate2d
-
-        return rotate2d(self, angle)
+        return OPERATIONS["rotate2d"](self, angle)
 
     def scale(self, s: Any) -> Shape2D:
         """The shape scaled about the origin by ``s`` (a number or ``[sx, sy]``)."""
-        from .transforms import scale2d
-
-        return scale2d(self, s)
+        return OPERATIONS["scale2d"](self, s)
 
     def mirror(self, v: Any) -> Shape2D:
         """The mirror image across the line through the origin with normal ``v`` (OpenSCAD's ``mirror``)."""
-        from .transforms import mirror2d
-
-        return mirror2d(self, v)
+        return OPERATIONS["mirror2d"](self, v)
 
     def offset(self, r: Any = None, *, delta: Any = None, chamfer: bool = False, tolerance: Any = None) -> Shape2D:
         """OpenSCAD's ``offset`` (see :func:`~isocsg.shapes2d.offset`)."""
-        from .offset import offset
-
-        return offset(self, r, delta=delta, chamfer=chamfer, tolerance=tolerance)
+        return OPERATIONS["offset"](self, r, delta=delta, chamfer=chamfer, tolerance=tolerance)
 
     def linear_extrude(self, height: Any, *, center: bool = False, scale: Any = 1.0) -> Any:
         """The exact 3D solid swept along +z (see :func:`~isocsg.shapes2d.linear_extrude`)."""
-        from .extrude import linear_extrude
-
-        return linear_extrude(self, height, center=center, scale=scale)
+        return OPERATIONS["linear_extrude"](self, height, center=center, scale=scale)
 
     # -------------------------------------------------------- conversions
     @property
     def bounds(self) -> tuple[float, float, float, float]:
         """``(xmin, ymin, xmax, ymax)`` of a box that contains the shape (see :func:`~isocsg.shapes2d.bounds`)."""
-        from .measure import bounds
-
-        return bounds(self)
+        return OPERATIONS["bounds"](self)
 
     @property
     def area(self) -> float:
         """The area (see :func:`~isocsg.shapes2d.area`)."""
-        from .measure import area
-
-        return area(self)
+        return OPERATIONS["area"](self)
 
     def to_shapely(self, resolution: int = 128) -> Any:
         """A shapely polygon of the shape, circles as inscribed polygons (see :func:`~isocsg.shapes2d.to_shapely`)."""
-        from .measure import to_shapely
+        return OPERATIONS["to_shapely"](self, resolution=resolution)
 
-        return to_shapely(self, resolution=resolution)
+
+#: The functions behind the methods, by name. ``isocsg/shapes2d/__init__.py`` fills it in, so that
+#: this module, at the bottom of the package, imports none of the modules above it.
+OPERATIONS: dict[str, Callable[..., Any]] = {}
 
 
 def _check_children(name: str, children: Iterable[Any]) -> tuple[Shape2D, ...]:
