@@ -10,8 +10,14 @@ exact prisms (:class:`isocsg.ConvexPolyhedron`) and cylinders. See
 
 from __future__ import annotations
 
+from . import shape as _shape
 from .constructors import circle, polygon, regular_polygon, square
+from .extrude import linear_extrude
 from .leaves import Circle, ConvexPolygon, Ellipse, convex_polygon
+from .measure import area, area_bounds, bounds, to_shapely
+from .offset import offset
+from .openscad import fragments, from_openscad, text_segments
+from .region import convex_pieces, fill, shape_from_region
 from .shape import (
     EMPTY,
     Difference2D,
@@ -23,15 +29,8 @@ from .shape import (
     union2d,
     union_all2d,
 )
-from .transforms import mirror2d, rotate2d, scale2d, transform2d, translate2d
-from .measure import area, area_bounds, bounds, to_shapely
-from .region import convex_pieces, fill, shape_from_region
-from .offset import offset
-from .extrude import linear_extrude
 from .text import FontFallbackWarning, font_path, text
-from .openscad import from_openscad, fragments, text_segments
-
-from . import shape as _shape
+from .transforms import mirror2d, rotate2d, scale2d, transform2d, translate2d
 
 _shape.OPERATIONS.update(
     transform2d=transform2d, translate2d=translate2d, rotate2d=rotate2d, scale2d=scale2d, mirror2d=mirror2d,

@@ -42,7 +42,8 @@ def _sector(c: Any, R: float, r: float, t0: float, t1: float, scale: float) -> l
     for i in range(k):
         a, b = t0 + (t1 - t0) * i / k, t0 + (t1 - t0) * (i + 1) / k
         reach = (R + r) / math.cos(0.5 * (b - a)) * (1 + 1e-9)
-        wedge = _convex([c, c + reach * np.array([math.cos(a), math.sin(a)]), c + reach * np.array([math.cos(b), math.sin(b)])], scale)
+        ua, ub = np.array([math.cos(a), math.sin(a)]), np.array([math.cos(b), math.sin(b)])
+        wedge = _convex([c, c + reach * ua, c + reach * ub], scale)
         if wedge is None:
             continue
         part: Shape2D = Intersection2D((outer, wedge))

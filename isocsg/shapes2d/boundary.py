@@ -28,7 +28,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from .leaves import Circle, ConvexPolygon, Ellipse
-from .shape import Shape2D, _Node, iter_leaves
+from .shape import Shape2D, iter_leaves
 
 __all__ = ["Piece", "boundary_pieces", "boundary_area", "closed", "contains_points", "PROBE_RTOL"]
 
@@ -185,9 +185,9 @@ def _candidates(shape: Shape2D, eps: float) -> list[Piece]:
         cut = cut + [cut[0] + TWO_PI]
         for t0, t1 in zip(cut, cut[1:]):
             if t1 - t0 > 1e-15:
-                a = (float(c[0] + r * math.cos(t0)), float(c[1] + r * math.sin(t0)))
-                b = (float(c[0] + r * math.cos(t1)), float(c[1] + r * math.sin(t1)))
-                pieces.append(Piece(a, b, (float(c[0]), float(c[1])), r, t0, t1))
+                start = (float(c[0] + r * math.cos(t0)), float(c[1] + r * math.sin(t0)))
+                end = (float(c[0] + r * math.cos(t1)), float(c[1] + r * math.sin(t1)))
+                pieces.append(Piece(start, end, (float(c[0]), float(c[1])), r, t0, t1))
     return pieces
 
 
@@ -234,18 +234,19 @@ def boundary_pieces(shape: Shape2D, box: tuple[float, float, float, float]) -> l
     cands = _candidates(shape, eps)
     if not cands:
         return []
-    mids, normals = [], []
+    mids: list[NDArray[np.float64]] = []
+    normals: list[tuple[float, float]] = []
     for p in cands:
         if p.radius == 0.0:
             a, b = np.array(p.a), np.array(p.b)
             d = (b - a) / float(np.hypot(*(b - a)))
             mids.append(0.5 * (a + b))
-            normals.append((-d[1], d[0]))
+            normals.append((float(-d[1]), float(d[0])))
         else:
             t = 0.5 * (p.t0 + p.t1)
             u = np.array([math.cos(t), math.sin(t)])
             mids.append(np.array(p.center) + p.radius * u)
-            normals.append(-u)
+            normals.append((float(-u[0]), float(-u[1])))
     m, n = np.array(mids), np.array(normals)
     inside = contains_points(shape, np.vstack([m + eps * n, m - eps * n]))
     left, right = inside[: len(m)], inside[len(m) :]
@@ -259,7 +260,8 @@ def boundary_pieces(shape: Shape2D, box: tuple[float, float, float, float]) -> l
             ends = sorted([(round(p.a[0] / q), round(p.a[1] / q)), (round(p.b[0] / q), round(p.b[1] / q))])
             key: tuple[Any, ...] = ("s", *ends)
         else:
-            key = ("a", round(p.center[0] / q), round(p.center[1] / q), round(p.radius / q), round(p.t0, 9), round(p.t1, 9))
+            cx, cy, r = round(p.center[0] / q), round(p.center[1] / q), round(p.radius / q)
+            key = ("a", cx, cy, r, round(p.t0, 9), round(p.t1, 9))
         if key in seen:
             continue
         seen.add(key)

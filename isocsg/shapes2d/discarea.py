@@ -12,7 +12,8 @@ not overlap one another.
 from __future__ import annotations
 
 import math
-from typing import Any, Sequence
+from collections.abc import Sequence
+from typing import Any
 
 import numpy as np
 from numpy.typing import NDArray
@@ -56,7 +57,7 @@ def region_disc_area(region: Any, center: Sequence[float], radius: float) -> flo
     """
     import shapely
 
-    total = []
+    total: list[float] = []
     c = np.asarray(center, dtype=np.float64)
     for poly in shapely.get_parts(shapely.orient_polygons(region)):
         if poly.is_empty:

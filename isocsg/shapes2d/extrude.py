@@ -54,7 +54,7 @@ def _prism(leaf: ConvexPolygon, z0: float, z1: float, s: tuple[float, float]) ->
     if s == (0.0, 0.0):
         verts = verts[: k + 1]
         verts[k] = (0.0, 0.0, z1)
-    return ConvexPolyhedron(verts)
+    return ConvexPolyhedron(verts)  # type: ignore[arg-type]  # any (n, 3) array-like
 
 
 def _round(leaf: Circle | Ellipse, z0: float, z1: float, s: tuple[float, float]) -> Any:
@@ -74,7 +74,8 @@ def _round(leaf: Circle | Ellipse, z0: float, z1: float, s: tuple[float, float])
             return Cylinder((cx, cy, zm), (0.0, 0.0, h), leaf.radius)
         return Truncus((0.0, 0.0, zm), (0.0, 0.0, h), leaf.radius * k, leaf.radius)
     M = np.array(leaf.matrix)
-    base = Cylinder((0.0, 0.0, 0.0), (0.0, 0.0, h), 1.0) if k == 1.0 else Truncus((0.0, 0.0, 0.0), (0.0, 0.0, h), k, 1.0)
+    origin, axis = (0.0, 0.0, 0.0), (0.0, 0.0, h)
+    base = Cylinder(origin, axis, 1.0) if k == 1.0 else Truncus(origin, axis, k, 1.0)
     # Unit solid spans z in [-h/2, h/2]; at height z its section is k(z) u with k linear in z.
     # Map: (x, y) -> M (x, y) + c k(z), z -> z + zm, with k(z) = 1 + (k - 1)(z + h/2)/h.
     g = (k - 1.0) / h

@@ -15,7 +15,8 @@ polygonisations of every curved leaf, inscribed and circumscribed (see
 from __future__ import annotations
 
 import math
-from typing import Any, Callable
+from collections.abc import Callable
+from typing import Any
 
 import numpy as np
 from numpy.typing import NDArray
@@ -168,13 +169,16 @@ def _overlap(a: Box, b: Box) -> bool:
     return a[0] < b[2] and b[0] < a[2] and a[1] < b[3] and b[1] < a[3]
 
 
+_Fact = tuple[Box | None, float | None, bool]  # (box, exact area or None, polygons only)
+
+
 def _exact(shape: Shape2D) -> tuple[Box | None, float | None]:
     """(box, exact area or None) of a tree, by the rules of the module docstring."""
 
-    def leaf(s: Shape2D) -> tuple[Box | None, float | None, bool]:
+    def leaf(s: Shape2D) -> _Fact:
         return s.bounds, s.area, isinstance(s, ConvexPolygon)
 
-    def node(op: str, s: Shape2D, kids: list[tuple[Box | None, float | None, bool]]) -> tuple[Box | None, float | None, bool]:
+    def node(op: str, s: Shape2D, kids: list[_Fact]) -> _Fact:
         box = _box(op, [k[0] for k in kids])
         poly = all(k[2] for k in kids)
         present = [k for k in kids if k[0] is not None]

@@ -146,7 +146,8 @@ def _direct(s: Shape2D, d: float, mode: str, tol: float | None, polygonal: dict[
         what = type(s).__name__ if not isinstance(s, _Node) else f"{'dilated' if d > 0 else 'eroded'} {s.op}"
         raise InvalidGeometryError(
             f"offset.{'r' if mode == 'round' else 'delta'}: the offset of {'an' if what[0] in 'aeiouE' else 'a'} "
-            f"{what} with curved parts has no exact form here; pass offset(..., tolerance=...) to offset a polygonisation"
+            f"{what} with curved parts has no exact form here; "
+            "pass offset(..., tolerance=...) to offset a polygonisation"
         )
     return _region_offset(to_shapely(s, resolution=_segments(s, tol)), d, mode)
 

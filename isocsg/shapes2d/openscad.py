@@ -15,7 +15,8 @@ polygons are OpenSCAD's.
 from __future__ import annotations
 
 import math
-from typing import Any, Sequence
+from collections.abc import Sequence
+from typing import Any
 
 import numpy as np
 
@@ -70,7 +71,9 @@ def _matrix(name: str, args: dict[str, Any]) -> Any:
     if m.shape not in ((4, 4), (3, 4)):
         raise InvalidGeometryError(f"{name}.m must be a 4x4 matrix, got shape {m.shape}")
     if np.any(m[:2, 2] != 0) or np.any(m[2, :2] != 0):
-        raise InvalidGeometryError(f"{name}.m must keep 2D shapes in the xy plane (no x/y-z mixing), got {m[:3].tolist()}")
+        raise InvalidGeometryError(
+            f"{name}.m must keep 2D shapes in the xy plane (no x/y-z mixing), got {m[:3].tolist()}"
+        )
     return [[m[0, 0], m[0, 1], m[0, 3]], [m[1, 0], m[1, 1], m[1, 3]]]
 
 

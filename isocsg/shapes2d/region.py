@@ -16,7 +16,8 @@ merged piece stays convex (at most four times the minimal number of pieces).
 
 from __future__ import annotations
 
-from typing import Any, Sequence
+from collections.abc import Sequence
+from typing import Any
 
 import numpy as np
 from numpy.typing import NDArray

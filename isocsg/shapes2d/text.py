@@ -38,6 +38,7 @@ import functools
 import importlib.util
 import math
 import os
+import struct
 import warnings
 from typing import Any
 
@@ -72,7 +73,8 @@ def _mpl_fonts() -> str:
     spec = importlib.util.find_spec("matplotlib")
     if spec is None or not spec.submodule_search_locations:
         raise MissingDependencyError(
-            "text needs the DejaVu fonts that matplotlib ships: pip install 'isocsg[text]' (or pass font=<path to a .ttf>)"
+            "text needs the DejaVu fonts that matplotlib ships: pip install 'isocsg[text]' "
+            "(or pass font=<path to a .ttf>)"
         )
     return os.path.join(list(spec.submodule_search_locations)[0], "mpl-data", "fonts", "ttf")
 
@@ -110,32 +112,41 @@ class _Font:
 
     def __init__(self, path: str) -> None:
         try:
-            from fontTools.ttLib import TTFont
+            from fontTools.ttLib import TTFont, TTLibError  # type: ignore[import-untyped]
         except ImportError:  # pragma: no cover - fontTools comes with matplotlib
             raise MissingDependencyError("text needs fontTools: pip install 'isocsg[text]'") from None
+        self.path = path
         try:
             self.tt = TTFont(path, lazy=True)
             self.glyphs = self.tt.getGlyphSet()
             self.cmap = self.tt.getBestCmap() or {}
             self.upem = float(self.tt["head"].unitsPerEm)
             self.hmtx = self.tt["hmtx"]
-        except Exception as exc:  # fontTools raises many kinds on a broken file
+        except (TTLibError, OSError, ValueError, KeyError, AssertionError, struct.error) as exc:
             raise InvalidGeometryError(f"text.font: cannot read {path!r} ({type(exc).__name__}: {exc})") from None
 
     def glyph_name(self, ch: str) -> str:
         return self.cmap.get(ord(ch), ".notdef")
 
-    @functools.lru_cache(maxsize=4096)
-    def outline(self, name: str, tolerance: float, segments: int) -> tuple[list[np.ndarray], tuple[float, float] | None]:
-        """(rings in font units, (yMin, yMax) of the control box or None without ink)."""
-        from fontTools.pens.boundsPen import ControlBoundsPen
+    def outline(self, name: str, tolerance: float, segments: int) -> _Outline:
+        """(rings in font units, (yMin, yMax) of the control box or None without ink), cached."""
+        return _outline(self.path, name, tolerance, segments)
 
-        pen = _FlatPen(self.glyphs, tolerance, segments)
-        self.glyphs[name].draw(pen)
-        box = ControlBoundsPen(self.glyphs)
-        self.glyphs[name].draw(box)
-        ink = None if box.bounds is None or box.bounds[3] <= box.bounds[1] else (box.bounds[1], box.bounds[3])
-        return pen.rings, ink
+
+_Outline = tuple[list[np.ndarray], tuple[float, float] | None]
+
+
+@functools.lru_cache(maxsize=4096)
+def _outline(path: str, name: str, tolerance: float, segments: int) -> _Outline:
+    from fontTools.pens.boundsPen import ControlBoundsPen  # type: ignore[import-untyped]
+
+    glyphs = _font(path).glyphs
+    pen = _FlatPen(glyphs, tolerance, segments)
+    glyphs[name].draw(pen)
+    box = ControlBoundsPen(glyphs)
+    glyphs[name].draw(box)
+    ink = None if box.bounds is None or box.bounds[3] <= box.bounds[1] else (box.bounds[1], box.bounds[3])
+    return pen.rings, ink
 
 
 @functools.lru_cache(maxsize=16)
@@ -144,7 +155,7 @@ def _font(path: str) -> _Font:
 
 
 def _pen_base() -> type:
-    from fontTools.pens.basePen import BasePen
+    from fontTools.pens.basePen import BasePen  # type: ignore[import-untyped]
 
     return BasePen
 
@@ -279,7 +290,8 @@ def text(
     k = s * EM_PER_SIZE / f.upem  # font units -> model units
     m = 1000.0 / 1024.0 if legacy else 1.0  # OpenSCAD 2021.01's advance and metrics divisor
     tol = (s / 1000.0 if tolerance is None else number("text.tolerance", tolerance, low=0.0)) / k
-    rings, pen_x, top, bottom = [], 0.0, -math.inf, math.inf
+    rings: list[np.ndarray] = []
+    pen_x, top, bottom = 0.0, -math.inf, math.inf
     for ch in string:
         name = f.glyph_name(ch)
         outline, ink = f.outline(name, tol, nseg)

@@ -26,7 +26,9 @@ def affine2d(matrix: Any, *, name: str = "matrix") -> tuple[NDArray[np.float64],
     try:
         m = np.asarray(matrix, dtype=np.float64)
     except (ValueError, TypeError):
-        raise InvalidGeometryError(f"{name} must be a 2x3 or 3x3 matrix of numbers, got {type(matrix).__name__}") from None
+        raise InvalidGeometryError(
+            f"{name} must be a 2x3 or 3x3 matrix of numbers, got {type(matrix).__name__}"
+        ) from None
     if m.shape not in ((2, 3), (3, 3)):
         raise InvalidGeometryError(f"{name} must have shape (2, 3) or (3, 3), got {m.shape}")
     points2(name, m.reshape(-1, 1).repeat(2, axis=1))  # finite, bounded
@@ -56,7 +58,7 @@ def transform2d(shape: Shape2D, matrix: Any) -> Shape2D:
 
 
 def _apply(shape: Shape2D, A: NDArray[np.float64], t: NDArray[np.float64]) -> Shape2D:
-    return fold(shape, lambda leaf: leaf._affine(A, t), lambda op, node, kids: type(node)(tuple(kids)))  # type: ignore[attr-defined]
+    return fold(shape, lambda leaf: leaf._affine(A, t), lambda op, node, kids: type(node)(tuple(kids)))  # type: ignore[attr-defined, call-arg]
 
 
 def translate2d(shape: Shape2D, v: Any) -> Shape2D:
