@@ -54,6 +54,10 @@ _EXPORTS: dict[str, str] = {
                      "OpenSCADSkipWarning"], ".openscad"),
     **dict.fromkeys(["memory_budget", "set_memory_budget"], ".limits"),
     "compile_kernels": ".kernels",
+    **dict.fromkeys([
+        "Shape2D", "ConvexPolygon", "Circle", "Ellipse", "Union2D", "Intersection2D", "Difference2D", "polygon",
+        "square", "circle", "text", "offset", "linear_extrude", "union_all2d", "to_shapely",
+    ], ".shapes2d"),
 }
 
 # Written out for linters and type checkers: the keys of _EXPORTS (tests/test_public_api.py).
@@ -63,15 +67,20 @@ __all__ = [
     "Box",
     "CSGNode",
     "Camera",
+    "Circle",
     "Cone",
+    "ConvexPolygon",
     "ConvexPolyhedron",
     "Cylinder",
     "Difference",
+    "Difference2D",
     "DirectionalLight",
+    "Ellipse",
     "Ellipsoid",
     "EllipticTruncus",
     "HalftoneResult",
     "Intersection",
+    "Intersection2D",
     "InvalidGeometryError",
     "InvalidLightError",
     "InvalidParameterError",
@@ -97,15 +106,18 @@ __all__ = [
     "SceneFileError",
     "SceneObject",
     "ShadedSurface",
+    "Shape2D",
     "Solid",
     "Sphere",
     "Truncus",
     "Union",
+    "Union2D",
     "UnsupportedOpenSCADError",
     "__version__",
     "build_laminae",
     "builtin_scene",
     "builtin_scene_path",
+    "circle",
     "clip_laminae",
     "compile_kernels",
     "difference",
@@ -118,6 +130,7 @@ __all__ = [
     "illuminance_grid",
     "illuminance_map",
     "intersection",
+    "linear_extrude",
     "load_openscad",
     "load_scene",
     "loads_openscad",
@@ -125,6 +138,8 @@ __all__ = [
     "lux_statistics",
     "memory_budget",
     "object_surface",
+    "offset",
+    "polygon",
     "read_openscad",
     "render",
     "render_halftone",
@@ -145,12 +160,16 @@ __all__ = [
     "shadow_state",
     "shadow_volumes",
     "show",
+    "square",
+    "text",
     "to_manifold",
     "to_pyvista",
+    "to_shapely",
     "to_trimesh",
     "turntable",
     "union",
     "union_all",
+    "union_all2d",
     "volume"
 ]
 
@@ -171,6 +190,23 @@ class _Package(types.ModuleType):
 sys.modules[__name__].__class__ = _Package
 
 if TYPE_CHECKING:  # what the names are, for type checkers and editors
+    from .shapes2d import (
+        Circle,
+        ConvexPolygon,
+        Difference2D,
+        Ellipse,
+        Intersection2D,
+        Shape2D,
+        Union2D,
+        circle,
+        linear_extrude,
+        offset,
+        polygon,
+        square,
+        text,
+        to_shapely,
+        union_all2d,
+    )
     from .batch import illuminance_grid, render_views, turntable
     from .camera import Camera
     from .csg import (
