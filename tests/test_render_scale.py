@@ -42,7 +42,8 @@ from isocsg.csg.program import compile_program
 from isocsg.errors import ResourceLimitError
 from isocsg.laminae import build_bands
 from isocsg.limits import set_memory_budget
-from isocsg.render import Renderer, policy, surfaces, tiled, tiles
+from isocsg.render import Renderer, painter, policy, surfaces, tiles
+from isocsg.render import tiled as tiled_path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
@@ -106,8 +107,8 @@ def test_tiled_render_equals_the_whole_rectangle_render(name, sides, monkeypatch
     whole = Renderer(csg="pixel").render(scene)
     _tiled(monkeypatch, sides)
     calls = []
-    real = tiled.resolve_packed
-    monkeypatch.setattr(tiled, "resolve_packed", lambda *a: calls.append(len(a[0])) or real(*a))
+    real = tiled_path.resolve_packed
+    monkeypatch.setattr(tiled_path, "resolve_packed", lambda *a: calls.append(len(a[0])) or real(*a))
     tiled = Renderer(csg="pixel").render(scene)
     assert len(calls) > 1  # resolved tile by tile
     _assert_same(tiled, whole)
@@ -147,8 +148,8 @@ def test_tiles_prune_absent_leaves(monkeypatch):
     # resolution sees programs of a few leaves, never the whole difference.
     _tiled(monkeypatch, (16,))
     sizes = []
-    real = tiled.resolve_packed
-    monkeypatch.setattr(tiled, "resolve_packed", lambda *a: sizes.append(len(a[9])) or real(*a))  # a[9]: leaf ids
+    real = tiled_path.resolve_packed
+    monkeypatch.setattr(tiled_path, "resolve_packed", lambda *a: sizes.append(len(a[9])) or real(*a))  # a[9]: leaf ids
     scene = plate_scene(10, 128, 96)
     Renderer(csg="pixel").render(scene)
     assert len(sizes) > 20 and max(sizes) <= 16 < 101
@@ -451,8 +452,8 @@ def test_auto_builds_large_trees_in_the_background_within_the_budget_share(monke
 
     monkeypatch.setattr(surfaces, "surface_from_bands", spy)
     tiled = []
-    real_tiled = Renderer._render_tiled
-    monkeypatch.setattr(Renderer, "_render_tiled", lambda self, *a, **k: tiled.append(1) or real_tiled(self, *a, **k))
+    real_tiled = painter.render_tiled
+    monkeypatch.setattr(painter, "render_tiled", lambda *a, **k: tiled.append(1) or real_tiled(*a, **k))
     big = plate_scene(9, 96, 80)  # 82 leaves
     eyes = [(20.0, -70.0, 90.0), (-30.0, -65.0, 90.0), (35.0, -60.0, 95.0)]
     r = Renderer(surface_build="now")
@@ -527,8 +528,8 @@ def test_large_tree_surface_views_match_the_ray_caster(k, monkeypatch):
     analytic ray caster with the catalogue's bars (IoU >= 0.99, 98 % of compared pixels
     within 0.05)."""
     tiled = []
-    real_tiled = Renderer._render_tiled
-    monkeypatch.setattr(Renderer, "_render_tiled", lambda self, *a, **kw: tiled.append(1) or real_tiled(self, *a, **kw))
+    real_tiled = painter.render_tiled
+    monkeypatch.setattr(painter, "render_tiled", lambda *a, **kw: tiled.append(1) or real_tiled(*a, **kw))
     scene = plate_scene(k, 224, 176, contours=64)
     r = Renderer()
     r.render(scene)

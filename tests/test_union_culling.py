@@ -2,8 +2,8 @@
 
 A union of leaves is drawn by filling its leaves' front faces with the depth
 test, nearest leaves first, skipping each leaf whose bounding ball is already
-hidden everywhere on screen (``Renderer._render_union``,
-:func:`isocsg.render.raster.ball_covered`). Hypothesis draws clusters of 2 to
+hidden everywhere on screen (:func:`isocsg.render.union.render_union`,
+:func:`isocsg.render.occlusion.ball_covered`). Hypothesis draws clusters of 2 to
 90 leaves of every kind (so the level of detail of trees over 64 leaves is
 drawn too), many of them hidden behind others, under random cameras
 (perspective and orthographic, any direction) and lights. Each image is

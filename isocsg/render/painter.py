@@ -30,6 +30,7 @@ from typing import Any
 
 import numpy as np
 
+from .. import _workers
 from .._cache import ByteCache
 from .._validation import integer, light_budget
 from ..camera import Camera
@@ -380,7 +381,7 @@ class Renderer:
             of the smallest size, would exceed :func:`isocsg.limits.memory_budget`
             (raised before they are allocated).
         """
-        with self._lock:
+        with self._lock, _workers.foreground():
             self._prepared.new_pass()
             self._surfaces.deferred.clear()
             try:

@@ -9,7 +9,8 @@ kept as :class:`~isocsg.render.meshes.SurfaceRuns`.
 
 Background builds run on daemon threads (:func:`isocsg._workers.background`):
 a process that ends meanwhile does not wait for them, and they stop at their
-next check (:func:`isocsg._workers.raise_if_cancelled`) once it is ending.
+next check (:func:`isocsg._workers.checkpoint`) once it is ending; they wait
+there while a view is rendered, so they never slow a view down.
 """
 
 from __future__ import annotations
@@ -22,7 +23,7 @@ from typing import Any
 import numpy as np
 
 from .._cache import ByteCache
-from .._workers import Cancelled, background, raise_if_cancelled
+from .._workers import Cancelled, background, checkpoint, raise_if_cancelled
 from ..csg.program import Program
 from ..csg.surface import (
     BYTES_PER_BOOLEAN_TRIANGLE,
@@ -152,6 +153,12 @@ class SurfaceBuilds:
             self.cache.clear()
 
     def _build_in_background(self, key: Hashable, program: Program, bands: tuple[BandMesh, ...]) -> Parts | None:
+        try:
+            checkpoint()  # not while a view is rendered
+        except Cancelled:
+            with self.lock:
+                self.building.pop(key, None)
+            raise
         with _SURFACE_LOCK:
             return self._build(key, program, bands)
 
@@ -160,7 +167,7 @@ class SurfaceBuilds:
     ) -> Parts | None:
         """Build (and keep, for view-independent bands) one clipped surface."""
         try:
-            raise_if_cancelled()
+            raise_if_cancelled()  # (a build on the view's own path must not wait for views)
             try:
                 surface = surface_from_bands(program, bands)
             except (InvalidGeometryError, ResourceLimitError):
@@ -206,7 +213,7 @@ class SurfaceBuilds:
     ) -> None:
         try:
             bands, held = self._large_bands(program, lights, material, detail, eye)
-            raise_if_cancelled()
+            checkpoint()
             share = policy.LARGE_SURFACE_SHARE * memory_budget()
             surface = surface_from_bands(program, bands, trim=True, max_bytes=int(share - held))
             del bands  # no cache holds them: gone before the parts below are made
@@ -214,7 +221,7 @@ class SurfaceBuilds:
             with self.lock:  # too large, or bands that do not close: per pixel from now on
                 self.cache.put(key, (detail, None), 64)
             return
-        raise_if_cancelled()
+        checkpoint()
         parts = [(int(i), prepare_mesh(surface.leaf_bands(int(i)))) for i in np.unique(surface.leaf)]
         del surface
         runs = SurfaceRuns.of(parts)
@@ -247,7 +254,7 @@ class SurfaceBuilds:
         for group in untrimmed_groups(program, geom.lo, geom.hi):
             n_tri = 0
             for k, i in enumerate(group, 1):
-                raise_if_cancelled()
+                checkpoint()
                 if i not in built:
                     built[i] = self.bands_of(leaves[i], lights, material, detail[i], eye, hidden)
                 n_tri += len(built[i][0].triangles)
@@ -261,7 +268,7 @@ class SurfaceBuilds:
         share = policy.LARGE_SURFACE_SHARE * memory_budget()
         held = 0
         for k, i in enumerate(range(len(leaves)), 1):
-            raise_if_cancelled()
+            checkpoint()
             if i not in built:
                 built[i] = self.bands_of(leaves[i], lights, material, detail[i], eye, hidden)
             held += mesh_bytes(built[i][0])
