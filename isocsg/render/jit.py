@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from typing import Any
+
 __all__ = ["RAW"]
 
 # Options of the per-polygon kernels. They are compiled without numba's
@@ -9,7 +11,7 @@ __all__ = ["RAW"]
 # or sliced into a row view costs two atomic operations per polygon, which
 # was most of the cost of a small polygon (4x the set-up itself). These
 # kernels allocate nothing; their thin entry points do.
-RAW = {"cache": True, "nogil": True, "_nrt": False}
+RAW: dict[str, Any] = {"cache": True, "nogil": True, "_nrt": False}
 # Constant flags are passed to these kernels as ``np.bool_(...)`` and
 # ``np.int64(...)``: a bare ``True`` or ``-1`` is typed as a literal, and numba
 # compiles one specialisation per literal value (the fill kernels four times

@@ -153,6 +153,8 @@ class CSGObject:
         The box outside which nothing of the object shows (for the default builder).
     built : list, optional
         The leaves' band meshes when obtained already.
+    by_rays : ndarray of bool, shape (n,), optional
+        Leaves drawn by exact rays instead of bands (:mod:`~isocsg.render.small_leaves`).
     """
 
     leaves: Sequence[Primitive]
@@ -166,6 +168,7 @@ class CSGObject:
     base: int
     hidden: Any = None
     built: list[Built] | None = None
+    by_rays: NDArray[np.bool_] | None = None
 
     @property
     def rows(self) -> Rows:

@@ -38,6 +38,7 @@ from .meshes import PreparedMesh
 from .pixel_csg import fill_leaf, resolve_packed, resolve_scratch, table_of
 from .projection import project_kernel
 from .renderpass import CSGObject, RenderPass
+from .small_leaves import PixelRays, ray_intervals
 from .tiles import LEAF_PIXEL_BYTES, open_tile_pixels, plan_tiles, tile_leaves
 
 __all__ = ["render_tiled"]
@@ -92,6 +93,7 @@ class _TiledResolve:
         self.done = 0  # rows of tiles resolved
         self.fills = 0  # fills queued or running
         self.open = True
+        self.rays = PixelRays(rp.cam)
 
     def _group(self) -> None:
         """Groups of equal leaves (equal leaves have equal rectangles), in order of their first row."""
@@ -155,6 +157,23 @@ class _TiledResolve:
                 self.ready(t)
             self.cond.notify_all()
 
+    def fill_rays(self, g: int) -> None:
+        """Group ``g``'s leaf into all its tiles by exact rays (:mod:`~isocsg.render.small_leaves`)."""
+        leaf = self.obj.leaves[self.members[g][0]]
+        near = self.nears_l[self.members[g][0]]
+        done = []
+        for t, j in self.slots[g]:
+            (kf, vf, kb, vb), _, _, _, off, lr0, lc0, lh, lw = self.tiles[t]
+            o, h, w = int(off[j]), int(lh[j]), int(lw[j])
+            kf[o : o + h * w], vf[o : o + h * w], kb[o : o + h * w], vb[o : o + h * w] = ray_intervals(
+                leaf, self.rays, int(lr0[j]), int(lc0[j]), h, w, near, self.rp.lights, self.obj.material)
+            done.append(t)
+        with self.cond:
+            self.fills -= 1
+            for t in done:
+                self.ready(t)
+            self.cond.notify_all()
+
     def resolve(self, t: int) -> None:
         """Tile ``t``'s program on its leaves' intervals, into the image; its buffers released."""
         rp = self.rp
@@ -188,6 +207,8 @@ class _TiledResolve:
             try:
                 if task[0] == "tile":
                     self.resolve(task[1])
+                elif task[0] == "rays":
+                    self.fill_rays(task[1])
                 else:
                     self.fill(*task[1:])
             except BaseException as exc:  # handed to the main thread
@@ -257,23 +278,32 @@ class _TiledResolve:
                 for tc in range((c0 - self.ox) // side, (c1 - 1 - self.ox) // side + 1):
                     if tr * plan.cols + tc not in self.tiles:
                         self.open_tile(tr * plan.cols + tc)
+            if obj.by_rays is not None and obj.by_rays[i]:
+                self._queue(("rays", g), len(self.members[g]))  # a few pixels: no bands
+                if self.error is not None:
+                    break
+                continue
             t = time.perf_counter()
             prep, vd = self.rp.meshes.leaf_mesh(obj.leaves[i], self.rp.lights, obj.material, self.details[i],
                                                 self.rp.cam.eye, None if obj.built is None else obj.built[i],
                                                 tiled=True, hidden=obj.hidden)
             self.seconds += time.perf_counter() - t
             self.view_dependent = bool(self.view_dependent) or vd
-            with self.cond:
-                self.queue.append(("fill", g, prep))
-                self.fills += 1
-                self.cond.notify_all()
+            self._queue(("fill", g, prep), len(self.members[g]))
             del prep
-            self.rp.report.add(len(self.members[g]))
-            # Waiting fills hold their meshes: help once there are more than a few.
-            self.help_until(lambda: self.fills <= 2 * self.threads)
             if self.error is not None:
                 break
         return pos
+
+    def _queue(self, task: tuple[Any, ...], leaves: int) -> None:
+        """Queue a group's fill (main thread), and help once more than a few fills wait (they hold
+        their meshes)."""
+        with self.cond:
+            self.queue.append(task)
+            self.fills += 1
+            self.cond.notify_all()
+        self.rp.report.add(leaves)
+        self.help_until(lambda: self.fills <= 2 * self.threads)
 
     def _close_row(self, row: int) -> None:
         """Under the lock: row ``row`` of tiles gets no more groups."""
