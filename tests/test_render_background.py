@@ -129,3 +129,36 @@ def test_checkpoint_waits_for_the_foreground_and_raises_once_cancelled(monkeypat
         pass
     else:
         raise AssertionError("a cancelled task went on")
+
+
+def test_pools_are_made_once_and_forgotten_in_a_forked_child():
+    # A forked child inherits the parent's pool objects but none of their threads: a pool
+    # asked for there must be a new one that runs its work.
+    import threading
+
+    import pytest
+
+    from isocsg import _workers
+
+    if not hasattr(os, "fork"):
+        pytest.skip("no fork on this platform")
+    made: list[object] = []
+    threads = [threading.Thread(target=lambda: made.append(_workers.pool("test-fork", 1))) for _ in range(8)]
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join()
+    pool = made[0]
+    assert all(p is pool for p in made) and pool.submit(lambda: 1).result(10) == 1
+    read, write = os.pipe()
+    pid = os.fork()
+    if pid == 0:  # the child: answer through the pipe, never return into pytest
+        try:
+            fresh = _workers.pool("test-fork", 1)
+            ok = fresh is not pool and fresh.submit(lambda: 2).result(10) == 2
+        except BaseException:  # noqa: BLE001
+            ok = False
+        os.write(write, b"1" if ok else b"0")
+        os._exit(0)
+    os.waitpid(pid, 0)
+    assert os.read(read, 1) == b"1"
