@@ -53,10 +53,14 @@ class TreeDetail:
     ----------
     contours, segments : ndarray of int64, shape (n,)
         Leaf ``i``'s contour count and tessellation segments.
+    sizes : ndarray of float64, shape (n,), optional
+        Leaf ``i``'s size on screen in pixels (:func:`~isocsg.render.tiles.leaf_screen_sizes`),
+        where the level of detail applies.
     """
 
     contours: NDArray[np.int64]
     segments: NDArray[np.int64]
+    sizes: NDArray[np.float64] | None = None
 
     @classmethod
     def uniform(cls, n: int, contours: int) -> TreeDetail:
@@ -181,7 +185,7 @@ class LevelOfDetail:
                 used[key] = (out[i], seg[i])
         while len(used) > policy.LOD_MEMORY:
             used.popitem(last=False)
-        return TreeDetail(np.asarray(out, np.int64), np.minimum(np.asarray(seg, np.int64), DEFAULT_SEGMENTS))
+        return TreeDetail(np.asarray(out, np.int64), np.minimum(np.asarray(seg, np.int64), DEFAULT_SEGMENTS), sizes)
 
     def clear(self) -> None:
         """Forget what earlier views used."""

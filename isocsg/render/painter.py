@@ -517,9 +517,10 @@ class Renderer:
         if n <= policy.DENSE_MAX_LEAVES and n * h * w * LEAF_PIXEL_BYTES <= dense_bytes:
             spent, view_dependent = render_dense(rp, csg)
         else:
-            if csg.hidden is not None and csg.built is None:  # the level of detail, default builder
+            sizes = csg.detail.sizes
+            if csg.hidden is not None and csg.built is None and sizes is not None:  # level of detail, default builder
                 area = np.maximum(csg.rects[:, 2] - csg.rects[:, 0], 0) * np.maximum(csg.rects[:, 3] - csg.rects[:, 1], 0)
-                csg.by_rays = area <= policy.RAY_LEAF_PIXELS
+                csg.by_rays = (sizes <= policy.RAY_LEAF_SIZE) & (area <= policy.RAY_LEAF_PIXELS)
             spent, view_dependent = render_tiled(rp, csg)
         rp.grow(csg.rows)
         if view_dependent is not None and seen_key not in self._csg_seen:

@@ -14,7 +14,7 @@ __all__ = [
     "SURFACE_MAX_LEAVES", "LARGE_SURFACE_SHARE", "LOD_MEMORY", "SURFACE_MAX_TRIANGLES", "DENSE_MAX_LEAVES",
     "DENSE_MAX_BYTES", "TILE_MAX_BYTES", "IMAGE_PIXEL_BYTES", "LOD_PIXELS", "LOD_MIN_LEAVES", "MIN_CONTOURS",
     "CHORD_PIXELS", "MIN_SEGMENTS", "TABLE_LEAVES", "STRIPES", "STRIPE_MIN_PIXELS", "UNION_SPLIT_PIXELS",
-    "LAST_CHUNKS", "ROWS_AHEAD", "CSG_SEEN_MEMORY", "RAY_LEAF_PIXELS",
+    "LAST_CHUNKS", "ROWS_AHEAD", "CSG_SEEN_MEMORY", "RAY_LEAF_SIZE", "RAY_LEAF_PIXELS",
 ]
 
 #: The ways a :class:`~isocsg.render.Renderer` resolves CSG objects (see its ``csg`` parameter).
@@ -88,9 +88,12 @@ CHORD_PIXELS = 0.0125
 MIN_SEGMENTS = 16
 
 #: Under the level of detail (default builder), the leaves of a tree resolved in screen tiles
-#: whose screen rectangle holds at most this many pixels are drawn by exact rays, not bands
-#: (:mod:`isocsg.render.small_leaves`): a leaf a few pixels across costs next to nothing.
-RAY_LEAF_PIXELS = 256
+#: at most this many pixels across (their level-of-detail size, a bound of about twice a
+#: hole's or a rod's diameter on screen) are drawn by exact rays, not bands
+#: (:mod:`isocsg.render.small_leaves`), if their screen rectangle holds at most
+#: :data:`RAY_LEAF_PIXELS` pixels: a leaf about a pixel across costs next to nothing.
+RAY_LEAF_SIZE = 4.0
+RAY_LEAF_PIXELS = 4096
 
 #: Objects with at most this many leaves are resolved through a truth table of their program.
 TABLE_LEAVES = 16
