@@ -42,7 +42,7 @@ _idle = threading.Condition(threading.Lock())
 _foreground = [0]  # renders in progress
 
 
-class Cancelled(Exception):  # noqa: N818 - a state, not an error
+class Cancelled(Exception):  # a state the task is in, not a failure
     """Raised inside a background task asked to stop (the process is ending)."""
 
 
@@ -78,7 +78,7 @@ def background(name: str, fn: Callable[..., Any], *args: Any) -> Future[Any]:
                 return
             try:
                 fut.set_result(fn(*args))
-            except BaseException as exc:  # noqa: BLE001 - handed to whoever waits
+            except BaseException as exc:  # handed to whoever waits
                 fut.set_exception(exc)
         finally:
             with _lock:

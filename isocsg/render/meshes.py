@@ -100,7 +100,7 @@ class SurfaceRuns(Projected):
     projs: list[NDArray[np.float64]] = field(default_factory=list)
 
     @classmethod
-    def of(cls, parts: list[tuple[int, PreparedMesh]]) -> "SurfaceRuns":
+    def of(cls, parts: list[tuple[int, PreparedMesh]]) -> SurfaceRuns:
         if not parts:  # an empty result
             return cls(np.zeros((0, 3)), np.zeros((0, 4), np.int32), np.zeros(0, np.float32), np.zeros(1, np.int64),
                        np.zeros(1, np.int64), np.zeros(0, np.int64))
