@@ -5,6 +5,7 @@ Run from the repository root::
     python benchmarks/scale.py            # n = 10, 100, 1000, 10 000 at 1024 x 1024, 3 repeats
     python benchmarks/scale.py --quick    # the same cases, 1 repeat and a shorter time limit per case
     python benchmarks/scale.py --geometry # volume() and section() only, against manifold3d's volume and slice
+    python benchmarks/scale.py --tiny-holes  # 1 000 to 100 000 holes smaller than a pixel at 256 x 256
 
 Models (``tests/reference/models.py``), for each n:
 
@@ -257,6 +258,57 @@ def _set_camera(pl, cam) -> None:
     pl.reset_camera_clipping_range()
 
 
+# ---------------------------------------------------------------- holes smaller than a pixel (--tiny-holes)
+TINY_NS = (1000, 10_000, 100_000)
+TINY_SIZE = 256
+
+
+def child_tiny_isocsg(n: int, contours: int) -> None:
+    """A plate with ``n`` holes built by a loop of ``part = part - Cylinder(...)``, its first
+    256 x 256 render: the holes of 10 000 are about a pixel across, of 100 000 a third of one."""
+    import numpy as np
+    from isocsg import Camera, Cylinder, PointLight, RenderSettings, Scene, Sphere
+    from isocsg.render import Renderer
+
+    lights = (PointLight(LIGHT),)
+    warm = Sphere((0, 0, 0), 1.0)
+    for k in range(80):  # the tiled path under the level of detail (more than 64 leaves)
+        warm = warm - Cylinder((0.02 * k - 0.8, 0, 0), (0, 0, 3), 0.005)
+    Renderer().render(Scene(Camera((3, -3, 2), (0, 0, 0), width=64, height=64), lights, [warm],
+                            RenderSettings(contours=contours)))
+    _emit("warmup", None)
+    t, solid = _timed(lambda: build("plate", n, "loop"))
+    _emit("build", t)
+    cam = Camera(VIEWS["plate"][0], (0, 0, 0), fov=FOV, width=TINY_SIZE, height=TINY_SIZE)
+    t, res = _timed(lambda: Renderer().render(Scene(cam, lights, [solid], RenderSettings(contours=contours))))
+    _emit("iso_first", t, per_leaf_us=1e6 * t / n, object_pixels=int(np.isfinite(res.image).sum()))
+
+
+def main_tiny(args, timeout: float, env: dict) -> int:
+    """``--tiny-holes``: time per hole of the first render, which must fall as the holes shrink below a pixel."""
+    ns = [n for n in args.n if n >= 1000] if args.n != list(NS) else list(TINY_NS)
+    print(f"tiny holes: plate with n holes (loop-built), first render at {TINY_SIZE} x {TINY_SIZE} px, "
+          f"N = {args.contours}, {timeout:.0f} s per case")
+    per_leaf = []
+    for n in ns:
+        spec = json.dumps({"side": "tiny", "n": n, "contours": args.contours})
+        records, status, peak = run_child([sys.executable, __file__, "--child", spec], timeout, env=env,
+                                          max_rss_mb=args.max_rss)
+        rec = {r["stage"]: r for r in records}
+        first = rec.get("iso_first")
+        us = first["per_leaf_us"] if first else None
+        per_leaf.append(us)
+        print(f"  n={n:<7d} {status[:40]:8s} peak {peak:7.0f} MB  build "
+              f"{fmt_seconds(rec['build']['seconds'][0]) if 'build' in rec else '-':>8s}  first render "
+              f"{fmt_seconds(first['seconds'][0]) if first else '-':>8s}  per hole "
+              f"{f'{us:.0f} us' if us is not None else '-'}", flush=True)
+        if status != "ok":
+            break
+    done = [u for u in per_leaf if u is not None]
+    print("  time per hole falls as the holes shrink:", _yes(all(b <= a * 1.1 for a, b in zip(done, done[1:]))))
+    return 0
+
+
 # ------------------------------------------------------------------- volume() and section() alone (--geometry)
 
 
@@ -388,11 +440,15 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--quick", action="store_true", help="1 repeat, 150 s per case and side")
     ap.add_argument("--geometry", action="store_true",
                     help="volume() and section() only, against manifold3d's volume() and slice()")
+    ap.add_argument("--tiny-holes", action="store_true",
+                    help="plates of 1 000 to 100 000 holes smaller than a pixel: first render's time per hole")
     ap.add_argument("--child", help=argparse.SUPPRESS)
     args = ap.parse_args(argv)
     if args.child:
         spec = json.loads(args.child)
-        if spec["side"] == "geo_isocsg":
+        if spec["side"] == "tiny":
+            child_tiny_isocsg(spec["n"], spec["contours"])
+        elif spec["side"] == "geo_isocsg":
             child_geometry_isocsg(spec["model"], spec["n"], spec["repeats"])
         elif spec["side"] == "geo_peer":
             child_geometry_peer(spec["model"], spec["n"], spec["repeats"])
@@ -407,6 +463,8 @@ def main(argv: list[str] | None = None) -> int:
     env.setdefault("ISOCSG_MEMORY_BUDGET", "3G")
     if args.geometry:
         return main_geometry(args, repeats, timeout, env)
+    if args.tiny_holes:
+        return main_tiny(args, args.timeout, env)
 
     print(f"scale benchmark: {args.size} x {args.size} px, N = {args.contours} contours, {repeats} repeat(s), "
           f"{timeout:.0f} s per case and side, manifold3d at {SEGMENTS} segments")

@@ -34,7 +34,7 @@ from isocsg.laminae.model import BandMesh
 from isocsg.render import Renderer
 from isocsg.render import image as imagemod
 from isocsg.csg.program import compile_program
-from isocsg.render.painter import resolve_csg, truth_table
+from isocsg.render.pixel_csg import resolve_csg, truth_table
 
 RES = 48  # segments of the inscribed test meshes
 
@@ -531,19 +531,19 @@ def test_concurrent_fill_equals_the_serial_one(name, csg, monkeypatch):
     # objects fill their leaves and resolve row stripes concurrently (per pixel)
     # or fill their surface's parts in stripes. Every pixel must come out
     # exactly as from one serial pass.
-    from isocsg.render import painter
+    from isocsg.render import dense, policy
 
     scene = _concurrency_scenes()[name]
-    monkeypatch.setattr(painter, "_STRIPES", 3)
+    monkeypatch.setattr(policy, "STRIPES", 3)
     calls = []
-    fill = painter.fill_projected
-    monkeypatch.setattr(painter, "fill_projected", lambda *a: calls.append(a[7]) or fill(*a))  # a[7]: first row
+    fill = dense.fill_projected
+    monkeypatch.setattr(dense, "fill_projected", lambda *a: calls.append(a[7]) or fill(*a))  # a[7]: first row
     threaded = Renderer(csg=csg).render(scene)
     if csg == "pixel" and name == "csg-large":  # the sphere (last) in row chunks
-        assert len(calls) == 1 + painter._LAST_CHUNKS and len(set(calls)) == painter._LAST_CHUNKS
+        assert len(calls) == 1 + policy.LAST_CHUNKS and len(set(calls)) == policy.LAST_CHUNKS
     if csg == "pixel" and name == "csg-repeated-leaf":  # the last leaf's mesh was filled before: whole
         assert len(calls) == 4
-    monkeypatch.setattr(painter, "_STRIPES", 1)
+    monkeypatch.setattr(policy, "STRIPES", 1)
     serial = Renderer(csg=csg).render(scene)
     np.testing.assert_array_equal(threaded.image, serial.image)
     np.testing.assert_array_equal(threaded.object_index, serial.object_index)
@@ -578,7 +578,7 @@ def test_reused_buffers_render_like_fresh_ones(method):
 def test_auto_builds_the_csg_surface_on_the_second_render_only(monkeypatch):
     # "auto" with surface_build="now": the first view of a CSG object is resolved per
     # pixel; the second view builds the clipped surface once, and later views reuse it.
-    from isocsg.render import painter
+    from isocsg.render import surfaces
 
     scene = _concurrency_scenes()["csg-leaves-and-stripes"]
     views = [scene.camera, scene.camera.with_view((-3.0, -4.0, 2.0)), scene.camera]
@@ -587,8 +587,8 @@ def test_auto_builds_the_csg_surface_on_the_second_render_only(monkeypatch):
     expected = [Renderer(csg=m, adaptive_contours=False).render(scene, camera=c).image
                 for m, c in zip(["pixel", "surface", "surface"], views)]
     calls = []
-    real = painter.surface_from_bands
-    monkeypatch.setattr(painter, "surface_from_bands", lambda program, bands: calls.append(1) or real(program, bands))
+    real = surfaces.surface_from_bands
+    monkeypatch.setattr(surfaces, "surface_from_bands", lambda program, bands: calls.append(1) or real(program, bands))
     renderer = Renderer(surface_build="now", adaptive_contours=False)
     counts = []
     for cam, want in zip(views, expected):
@@ -604,7 +604,7 @@ def test_auto_builds_the_csg_surface_in_the_background(monkeypatch):
     # Boolean, held here until the view is done); views after it is ready use it.
     import threading
 
-    from isocsg.render import painter
+    from isocsg.render import surfaces
 
     scene = _concurrency_scenes()["csg-leaves-and-stripes"]
     views = [scene.camera, scene.camera.with_view((-3.0, -4.0, 2.0)), scene.camera]
@@ -613,14 +613,14 @@ def test_auto_builds_the_csg_surface_in_the_background(monkeypatch):
     surface = Renderer(csg="surface", **fixed).render(scene, camera=views[2]).image
     release = threading.Event()
     calls = []
-    real = painter.surface_from_bands
+    real = surfaces.surface_from_bands
 
     def held(program, bands):
         calls.append(threading.current_thread().name)
         assert release.wait(60)
         return real(program, bands)
 
-    monkeypatch.setattr(painter, "surface_from_bands", held)
+    monkeypatch.setattr(surfaces, "surface_from_bands", held)
     renderer = Renderer(**fixed)
     np.testing.assert_array_equal(renderer.render(scene, camera=views[0]).image, pixel[0])
     np.testing.assert_array_equal(renderer.render(scene, camera=views[1]).image, pixel[1])  # not blocked
@@ -654,7 +654,7 @@ def test_screen_rectangle_holds_every_pixel_of_the_solid(cam):
     # exists; every pixel whose ray meets the solid must lie inside it, and a
     # sphere's rectangle must be tight (one pixel of margin). Rays against
     # spheres and boxes are intersected here, independently of the renderer.
-    from isocsg.render import painter
+    from isocsg.render import renderpass
 
     s1, s2 = Sphere((0.3, 0.2, -0.1), 0.9), Sphere((-0.8, 0.4, 0.5), 0.6)
     box = Box((0.6, -0.2, 0.3), (1.4, 0.8, 1.1))
@@ -680,7 +680,7 @@ def test_screen_rectangle_holds_every_pixel_of_the_solid(cam):
         s1 - box: hits_sphere(s1),
     }
     for solid, hit in cases.items():
-        c0, r0, c1, r1 = painter._screen_rect(compile_program(solid), cam)
+        c0, r0, c1, r1 = renderpass.screen_rect(compile_program(solid), cam)
         rows, cols = np.divmod(np.flatnonzero(hit), cam.width)
         assert len(rows) > 20
         assert r0 <= rows.min() and rows.max() < r1 and c0 <= cols.min() and cols.max() < c1, solid

@@ -20,7 +20,8 @@ import pytest
 import isocsg.laminae as laminae
 from isocsg import Camera, PointLight, RenderSettings, Scene, SceneObject, Sphere, union_all
 from isocsg.csg.program import compile_program
-from isocsg.render import Renderer, painter, tiles
+from isocsg.render import Renderer, detail, policy, tiles
+from isocsg.laminae.builder import DEFAULT_SEGMENTS
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
@@ -35,11 +36,11 @@ MIN_FRACTION = 0.98
 def _lod_for_every_tree(monkeypatch):
     # The rule applies to trees of more than LOD_MIN_LEAVES leaves; these scenes are
     # smaller so that the ray caster judges them quickly: apply it to every tree here.
-    monkeypatch.setattr(painter, "LOD_MIN_LEAVES", 0)
+    monkeypatch.setattr(policy, "LOD_MIN_LEAVES", 0)
 
 
 def test_small_objects_get_the_requested_count(monkeypatch):
-    monkeypatch.setattr(painter, "LOD_MIN_LEAVES", 64)
+    monkeypatch.setattr(policy, "LOD_MIN_LEAVES", 64)
     asked = []
     real = laminae.build_bands
 
@@ -69,31 +70,31 @@ def lod_counts(scene: Scene, contours: int) -> np.ndarray:
     prog = compile_program(scene.objects[0].shape)
     geom = tiles.leaf_geometry(prog.leaves)
     box = tiles.combine_boxes(prog.op, prog.arg, geom.lo, geom.hi)
-    return painter.screen_contours(tiles.leaf_screen_sizes(geom, scene.camera, *box), contours)
+    return detail.screen_contours(tiles.leaf_screen_sizes(geom, scene.camera, *box), contours)
 
 
 def test_counts_are_proportional_to_n_above_the_floor():
     sizes = np.array([2.0, 10.0, 30.0, 60.0, 100.0, 127.0, 200.0, np.inf])
     for n in (16, 48, 64, 256, 1024):
-        got = painter.screen_contours(sizes, n)
-        assert np.all(got <= n) and np.all(got >= max(min(n, painter.MIN_CONTOURS), n // 2))
+        got = detail.screen_contours(sizes, n)
+        assert np.all(got <= n) and np.all(got >= max(min(n, policy.MIN_CONTOURS), n // 2))
         assert np.all(np.diff(got) >= 0)  # larger on screen, never fewer
-        need = n * sizes / painter.LOD_PIXELS
+        need = n * sizes / policy.LOD_PIXELS
         assert np.all((got >= np.minimum(need, n)) | (got == n))
         # quadrupling N quadruples every count above the floor
-        up = painter.screen_contours(sizes, 4 * n)
-        above = got > painter.MIN_CONTOURS
+        up = detail.screen_contours(sizes, 4 * n)
+        above = got > policy.MIN_CONTOURS
         np.testing.assert_array_equal(up[above], 4 * got[above])
         assert np.all(up >= got)
 
 
 def test_segments_keep_the_chord_error_under_a_fraction_of_a_pixel():
     sizes = np.array([3.0, 12.0, 40.0, 90.0, 250.0, 1000.0])
-    m = painter.screen_segments(sizes)
+    m = detail.screen_segments(sizes)
     r = sizes / 2
     sagitta = r * (1 - np.cos(np.pi / m))
-    assert np.all((sagitta <= painter.CHORD_PIXELS) | (m == painter.DEFAULT_SEGMENTS) | (r < 1))
-    assert m[-1] == painter.DEFAULT_SEGMENTS
+    assert np.all((sagitta <= policy.CHORD_PIXELS) | (m == DEFAULT_SEGMENTS) | (r < 1))
+    assert m[-1] == DEFAULT_SEGMENTS
 
 
 @pytest.mark.parametrize("case", ["plate-10x10", "lattice-4"])

@@ -42,7 +42,8 @@ from isocsg.csg.program import compile_program
 from isocsg.errors import ResourceLimitError
 from isocsg.laminae import build_bands
 from isocsg.limits import set_memory_budget
-from isocsg.render import Renderer, painter, tiles
+from isocsg.render import Renderer, painter, policy, surfaces, tiles
+from isocsg.render import tiled as tiled_path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
@@ -69,7 +70,7 @@ def plate_scene(k: int, width: int, height: int, contours: int = 32) -> Scene:
 
 def _tiled(monkeypatch, sides=(8,)) -> None:
     """Force screen tiles of the given sides for every CSG object."""
-    monkeypatch.setattr(painter, "DENSE_MAX_LEAVES", 0)
+    monkeypatch.setattr(policy, "DENSE_MAX_LEAVES", 0)
     monkeypatch.setattr(tiles, "TILE_SIDES", sides)
 
 
@@ -106,8 +107,8 @@ def test_tiled_render_equals_the_whole_rectangle_render(name, sides, monkeypatch
     whole = Renderer(csg="pixel").render(scene)
     _tiled(monkeypatch, sides)
     calls = []
-    real = painter._resolve_packed
-    monkeypatch.setattr(painter, "_resolve_packed", lambda *a: calls.append(len(a[0])) or real(*a))
+    real = tiled_path.resolve_packed
+    monkeypatch.setattr(tiled_path, "resolve_packed", lambda *a: calls.append(len(a[0])) or real(*a))
     tiled = Renderer(csg="pixel").render(scene)
     assert len(calls) > 1  # resolved tile by tile
     _assert_same(tiled, whole)
@@ -147,8 +148,8 @@ def test_tiles_prune_absent_leaves(monkeypatch):
     # resolution sees programs of a few leaves, never the whole difference.
     _tiled(monkeypatch, (16,))
     sizes = []
-    real = painter._resolve_packed
-    monkeypatch.setattr(painter, "_resolve_packed", lambda *a: sizes.append(len(a[9])) or real(*a))  # a[9]: leaf ids
+    real = tiled_path.resolve_packed
+    monkeypatch.setattr(tiled_path, "resolve_packed", lambda *a: sizes.append(len(a[9])) or real(*a))  # a[9]: leaf ids
     scene = plate_scene(10, 128, 96)
     Renderer(csg="pixel").render(scene)
     assert len(sizes) > 20 and max(sizes) <= 16 < 101
@@ -225,6 +226,33 @@ def test_plate_with_many_holes_matches_the_ray_caster(k):
     assert result.fraction >= 0.98, result.summary()
 
 
+def test_leaves_a_few_pixels_across_are_drawn_by_rays_without_bands(monkeypatch):
+    # A plate drilled by a long loop, seen from afar: 100 000 holes of a third of a pixel had
+    # not rendered after 600 s (each hole's bands were built). Holes at most RAY_LEAF_SIZE
+    # pixels across are now drawn by exact rays: none of their bands is built, and the image
+    # still matches the ray caster. (benchmarks/scale.py --tiny-holes measures the time per
+    # hole from 1 000 to 100 000 holes.)
+    built = []
+    real = Renderer._bands
+
+    def spy(self, primitive, *a, **kw):
+        built.append(primitive)
+        return real(self, primitive, *a, **kw)
+
+    monkeypatch.setattr(Renderer, "_bands", spy)
+    scene = plate_scene(30, 72, 60, contours=32)  # 901 leaves, holes about a pixel across
+    image = Renderer(csg="pixel").render(scene).image
+    assert len(built) == 1  # the plate only
+    result = compare(image, plate_reference(scene))
+    assert result.iou >= 0.99, result.summary()
+    assert result.fraction >= 0.98, result.summary()
+    # The same tree with the rays turned off builds the bands of every hole on screen.
+    monkeypatch.setattr(policy, "RAY_LEAF_SIZE", -1.0)
+    built.clear()
+    Renderer(csg="pixel").render(scene)
+    assert len(built) > 800
+
+
 def test_small_leaves_get_fewer_contours(monkeypatch):
     # Holes under 64 pixels across are built with fewer contours (half of N);
     # the plate, large on screen, keeps the requested count.
@@ -236,7 +264,7 @@ def test_small_leaves_get_fewer_contours(monkeypatch):
         asked[primitive] = contours
         return build_laminae(primitive, lights, material, contours, eye=eye)
 
-    monkeypatch.setattr(painter, "LOD_MIN_LEAVES", 0)  # (the rule is for trees of more leaves)
+    monkeypatch.setattr(policy, "LOD_MIN_LEAVES", 0)  # (the rule is for trees of more leaves)
     scene = plate_scene(6, 160, 128, contours=64)
     Renderer(adaptive_contours=True, build_laminae=build).render(scene)
     tree = scene.objects[0].shape
@@ -427,7 +455,7 @@ def test_renderer_caches_are_bounded_by_bytes():
     assert info["prepared_bytes"] > 0 and info["surfaces_bytes"] > 0
     limit = info["prepared_bytes"] // 3
     r._prepared.limit = limit
-    r._surfaces.limit = 1
+    r._surfaces.cache.limit = 1
     r.render(scene, contours=48)  # new bands: prepared again, older ones evicted
     r.render(scene, camera=scene.camera.with_view((-30.0, -65.0, 90.0)), contours=48)
     info = r.cache_info()
@@ -443,16 +471,16 @@ def test_auto_builds_large_trees_in_the_background_within_the_budget_share(monke
     surface_build="now"), which later views fill; a surface over its share of the memory
     budget is given up once, and the tree stays per pixel."""
     calls = []
-    real = painter.surface_from_bands
+    real = surfaces.surface_from_bands
 
     def spy(program, bands, **kw):
         calls.append((program.n_leaves, kw.get("trim", False)))
         return real(program, bands, **kw)
 
-    monkeypatch.setattr(painter, "surface_from_bands", spy)
+    monkeypatch.setattr(surfaces, "surface_from_bands", spy)
     tiled = []
-    real_tiled = Renderer._render_tiled
-    monkeypatch.setattr(Renderer, "_render_tiled", lambda self, *a, **k: tiled.append(1) or real_tiled(self, *a, **k))
+    real_tiled = painter.render_tiled
+    monkeypatch.setattr(painter, "render_tiled", lambda *a, **k: tiled.append(1) or real_tiled(*a, **k))
     big = plate_scene(9, 96, 80)  # 82 leaves
     eyes = [(20.0, -70.0, 90.0), (-30.0, -65.0, 90.0), (35.0, -60.0, 95.0)]
     r = Renderer(surface_build="now")
@@ -467,7 +495,7 @@ def test_auto_builds_large_trees_in_the_background_within_the_budget_share(monke
     assert compare(again.image, plate_reference(view)).iou >= 0.99
     np.testing.assert_array_equal(np.isfinite(again.image), np.isfinite(first.image))
     # over its share of the budget: given up, per pixel from then on, not retried
-    monkeypatch.setattr(painter, "LARGE_SURFACE_SHARE", 1e-9)
+    monkeypatch.setattr(policy, "LARGE_SURFACE_SHARE", 1e-9)
     other = plate_scene(8, 96, 80)  # 65 leaves
     r2 = Renderer()
     for eye in eyes:
@@ -482,7 +510,7 @@ def test_auto_builds_large_trees_in_the_background_within_the_budget_share(monke
     assert r.wait_surfaces(timeout=120)
     assert calls[1:] == [(5, False)]
     # and under the triangle bound too
-    monkeypatch.setattr(painter, "SURFACE_MAX_TRIANGLES", 10)
+    monkeypatch.setattr(policy, "SURFACE_MAX_TRIANGLES", 10)
     other = plate_scene(3, 96, 80)
     r.render(other)
     r.render(other, camera=other.camera.with_view(eyes[1]))
@@ -504,7 +532,7 @@ def test_a_large_union_over_the_share_is_given_up_before_its_bands_are_all_asked
         calls.append(1)
         return build_bands(*a, **kw)
 
-    monkeypatch.setattr(painter, "LARGE_SURFACE_SHARE", 1e-9)
+    monkeypatch.setattr(policy, "LARGE_SURFACE_SHARE", 1e-9)
     spheres = [Sphere((0.6 * (i % 5), 0.6 * (i // 5 % 4), 0.6 * (i // 20)), 0.4) for i in range(80)]
     notched = Union(*spheres) - Box((2.4, 0.0, 1.8), (0.3, 0.3, 0.3))
     cam = Camera((6.0, -8.0, 6.0), (1.2, 0.9, 0.9), fov=40, width=64, height=64)
@@ -527,8 +555,8 @@ def test_large_tree_surface_views_match_the_ray_caster(k, monkeypatch):
     analytic ray caster with the catalogue's bars (IoU >= 0.99, 98 % of compared pixels
     within 0.05)."""
     tiled = []
-    real_tiled = Renderer._render_tiled
-    monkeypatch.setattr(Renderer, "_render_tiled", lambda self, *a, **kw: tiled.append(1) or real_tiled(self, *a, **kw))
+    real_tiled = painter.render_tiled
+    monkeypatch.setattr(painter, "render_tiled", lambda *a, **kw: tiled.append(1) or real_tiled(*a, **kw))
     scene = plate_scene(k, 224, 176, contours=64)
     r = Renderer()
     r.render(scene)
@@ -571,6 +599,6 @@ def test_a_failing_builder_in_the_tiled_path_leaves_the_renderer_usable(monkeypa
     with pytest.raises(RuntimeError, match="builder failed"):
         r.render(scene)
     again = r.render(scene)
-    monkeypatch.setattr(painter, "DENSE_MAX_LEAVES", 100)
+    monkeypatch.setattr(policy, "DENSE_MAX_LEAVES", 100)
     # the same builder (the default one also coarsens the tessellation by screen size)
     _assert_same(again, Renderer(build_laminae=build_laminae, csg="pixel").render(scene))

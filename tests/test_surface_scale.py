@@ -299,19 +299,19 @@ def test_extreme_frames_first_and_later_views_match_the_ray_caster(name, offset,
     """Far from the origin and tiny: the first view (per pixel), the second (through the
     clipped surface, which must build there) and ``csg="surface"`` are each judged by the
     ray caster with the catalogue's bars (IoU >= 0.99, 98 % of pixels within 0.05)."""
-    from isocsg.render import painter
+    from isocsg.render import surfaces
     from reference import compare, raycast_scene
     from test_csg_random_views import MIN_FRACTION, MIN_IOU, _placed_light, placed
 
     built = []
-    real = painter.surface_from_bands
+    real = surfaces.surface_from_bands
 
     def spy(program, bands):
         out = real(program, bands)
         built.append(out.n_triangles)
         return out
 
-    monkeypatch.setattr(painter, "surface_from_bands", spy)
+    monkeypatch.setattr(surfaces, "surface_from_bands", spy)
     off = np.asarray(offset)
     tree = placed(FRAME_TREES[name], off, scale)
     lights = tuple(_placed_light(li, off, scale) for li in FRAME_LIGHTS)
@@ -333,7 +333,7 @@ def test_a_surface_that_cannot_be_built_leaves_the_object_per_pixel(monkeypatch)
     pixel (the same image as ``csg="pixel"``) and the build is not retried; under
     ``csg="surface"`` the error is raised."""
     from isocsg.errors import InvalidGeometryError
-    from isocsg.render import painter
+    from isocsg.render import surfaces
 
     calls = []
 
@@ -341,7 +341,7 @@ def test_a_surface_that_cannot_be_built_leaves_the_object_per_pixel(monkeypatch)
         calls.append(1)
         raise InvalidGeometryError("the band mesh of leaf 0 is not a closed surface (test)")
 
-    monkeypatch.setattr(painter, "surface_from_bands", fail)
+    monkeypatch.setattr(surfaces, "surface_from_bands", fail)
     tree = FRAME_TREES["sphere-minus-cylinder"]
     auto = Renderer(csg="auto", surface_build="now")
     for eye in FRAME_EYES + FRAME_EYES:

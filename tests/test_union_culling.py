@@ -2,8 +2,8 @@
 
 A union of leaves is drawn by filling its leaves' front faces with the depth
 test, nearest leaves first, skipping each leaf whose bounding ball is already
-hidden everywhere on screen (``Renderer._render_union``,
-:func:`isocsg.render.raster.ball_covered`). Hypothesis draws clusters of 2 to
+hidden everywhere on screen (:func:`isocsg.render.union.render_union`,
+:func:`isocsg.render.occlusion.ball_covered`). Hypothesis draws clusters of 2 to
 90 leaves of every kind (so the level of detail of trees over 64 leaves is
 drawn too), many of them hidden behind others, under random cameras
 (perspective and orthographic, any direction) and lights. Each image is
@@ -33,7 +33,7 @@ from test_csg_properties import primitives  # noqa: E402
 from test_csg_random_views import MIN_FRACTION, MIN_IOU, MIN_PIXELS, cameras, lights, materials, placed  # noqa: E402
 
 from isocsg import Camera, PointLight, RenderSettings, Scene, SceneObject, Sphere, Union  # noqa: E402
-from isocsg.render import Renderer, painter  # noqa: E402
+from isocsg.render import Renderer, union  # noqa: E402
 
 EXAMPLES = int(os.environ.get("ISOCSG_SEARCH_EXAMPLES", "8"))
 SIZE = 96
@@ -53,7 +53,7 @@ def clusters(draw):
 
 def _render(scene: Scene, cull: bool, monkeypatch) -> np.ndarray:
     if not cull:
-        monkeypatch.setattr(painter, "ball_covered", lambda *a: False)
+        monkeypatch.setattr(union, "ball_covered", lambda *a: False)
     try:
         return Renderer().render(scene).image
     finally:
@@ -84,17 +84,17 @@ def test_culling_skips_the_hidden_leaves_of_a_lattice():
     cam = Camera((6.0, -7.0, 5.0), (0, 0, 0), fov=30.0, width=128, height=128)
     scene = Scene(cam, (PointLight((3.0, -4.0, 6.0)),), (SceneObject(Union(*balls)),))
     built = []
-    real = painter.Renderer._front
+    real = Renderer.front_mesh
 
     def counting(self, primitive, *a, **kw):
         built.append(primitive)
         return real(self, primitive, *a, **kw)
 
     monkeypatch = pytest.MonkeyPatch()
-    monkeypatch.setattr(painter.Renderer, "_front", counting)
+    monkeypatch.setattr(Renderer, "front_mesh", counting)
     culled = Renderer().render(scene).image
     assert len(set(built)) == 5 * 5 * 5 - 4 * 4 * 4
-    monkeypatch.setattr(painter, "ball_covered", lambda *a: False)
+    monkeypatch.setattr(union, "ball_covered", lambda *a: False)
     assert np.array_equal(culled, Renderer().render(scene).image, equal_nan=True)
     monkeypatch.undo()
 

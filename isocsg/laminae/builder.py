@@ -27,7 +27,6 @@ from __future__ import annotations
 
 import math
 import threading
-from collections import OrderedDict
 from collections.abc import Sequence
 from typing import Any
 
@@ -35,12 +34,12 @@ import numpy as np
 from numba import njit
 from numpy.typing import ArrayLike, NDArray
 
+from .._cache import ByteCache
 from .._validation import integer, vector3
 from ..errors import InvalidLightError, InvalidParameterError
 from ..kinds.base import Primitive, provides
 from ..lighting.lights import DirectionalLight, PointLight
 from ..lighting.shading import TERMINATOR_COSINE, Material
-from ..limits import memory_budget
 from .families import GRAZING, FieldFamily, diffuse_family, incidence, specular_families
 from .model import BandMesh, ContourFamily, Lamina, LaminaSet
 from .sphere import light_axis
@@ -66,11 +65,10 @@ Light = PointLight | DirectionalLight
 #: 512 MiB under a 3 GB budget).
 CACHE_BYTES = 256 << 20
 
-# key -> (lamina set, its bytes as counted by _nbytes)
-_CACHE: OrderedDict[tuple[Any, ...], tuple[LaminaSet, int]] = OrderedDict()
+# key -> lamina set (its bytes as counted by _nbytes); within a quarter of the memory budget.
+_CACHE = ByteCache(lambda: CACHE_BYTES, share=4)
 _LOCK = threading.Lock()
 _STATS = {"hits": 0, "misses": 0}
-_BYTES = [0]  # bytes of the sets kept
 
 
 def _nbytes(ls: LaminaSet) -> int:
@@ -85,7 +83,6 @@ def clear_cache() -> None:
     with _LOCK:
         _CACHE.clear()
         _STATS.update(hits=0, misses=0)
-        _BYTES[0] = 0
 
 
 def cache_info() -> dict[str, int]:
@@ -107,7 +104,7 @@ def cache_info() -> dict[str, int]:
 def cache_bytes() -> int:
     """Bytes of the lamina sets the cache holds (arrays, and 256 per lamina object)."""
     with _LOCK:
-        return _BYTES[0]
+        return _CACHE.nbytes
 
 
 def _check_lights(lights: Sequence[Any]) -> tuple[Light, ...]:
@@ -310,31 +307,23 @@ def _cached(
         for k in (key, part) if full_serves else (part,) if bands_only else (key,):  # a full set serves a bands-only request too
             hit = _CACHE.get(k)
             if hit is not None:
-                _CACHE.move_to_end(k)
                 _STATS["hits"] += 1
-                return hit[0]
+                return hit  # type: ignore[no-any-return]
         _STATS["misses"] += 1
         # A full build after a bands-only one keeps its bands (the same objects).
-        known = None if bands_only else _CACHE.pop(part, None)
-        if known is not None:
-            _BYTES[0] -= known[1]
+        known = None if bands_only else _CACHE.pop(part)
     eye_a = None if eye_t is None else np.asarray(eye_t)
     if bands_only:
         out = LaminaSet(primitive, (), (), _build_bands(primitive, lights_t, mat, n, eye_a, segments, hidden),
                         view_dependent=eye_a is not None)
         key = part
     else:
-        out = _build(primitive, lights_t, mat, n, eye_a, None if known is None else known[0].bands)
+        out = _build(primitive, lights_t, mat, n, eye_a, None if known is None else known.bands)
     if not keep:
         return out
     size = _nbytes(out)
-    limit = min(CACHE_BYTES, memory_budget() // 4)
     with _LOCK:
-        old = _CACHE.pop(key, None)
-        _BYTES[0] += size - (old[1] if old is not None else 0)
-        _CACHE[key] = (out, size)
-        while _BYTES[0] > limit and len(_CACHE) > 1:
-            _BYTES[0] -= _CACHE.popitem(last=False)[1][1]
+        _CACHE.put(key, out, size)
     return out
 
 

@@ -2,8 +2,10 @@
 
 from __future__ import annotations
 
-from .painter import Renderer, RenderResult, RenderTimings, default_renderer, render
-from .raster import Raster, homogeneous, rasterize
+from .painter import Renderer, default_renderer, render
+from .projection import homogeneous
+from .raster import Raster, rasterize
+from .result import RenderResult, RenderTimings
 from .svg import ScenePolygons, save_scene_svg, scene_polygons
 
 __all__ = [

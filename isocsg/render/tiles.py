@@ -31,7 +31,7 @@ from numpy.typing import NDArray
 from ..camera import Camera
 from ..errors import InvalidGeometryError
 from ..geometry.primitives import Box, Cone, Cylinder, Primitive, Sphere, Truncus
-from .raster import NEAR_RELATIVE
+from .projection import NEAR_RELATIVE
 
 __all__ = [
     "LeafGeometry", "leaf_geometry", "leaf_rects", "leaf_near_keys", "leaf_screen_sizes", "combine_rects", "combine_boxes", "prune_program", "tile_leaves", "TilePlan", "plan_tiles",
