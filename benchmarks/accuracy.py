@@ -25,7 +25,7 @@ from _common import print_table  # noqa: E402
 from reference import compare, comparison_mask, raycast_scene  # noqa: E402
 from scenes import CORE_SCENES, CSG_SCENES, with_contours  # noqa: E402
 
-from isocsg.render import Renderer  # noqa: E402
+from isocsg.rendering import Renderer  # noqa: E402
 
 COUNTS = (16, 64, 256)
 

@@ -100,9 +100,9 @@ def isocsg_renderer():
     try:
         import isocsg.laminae as lam
         from isocsg.laminae import build_laminae  # noqa: F401 - the renderer needs it
-        from isocsg.render import Renderer
+        from isocsg.rendering import Renderer
     except Exception as exc:  # noqa: BLE001 - report any import problem
-        return f"isocsg.render unavailable ({exc})"
+        return f"isocsg.rendering unavailable ({exc})"
 
     def clear() -> None:
         """Empty the view-independent band caches so that the next render builds everything."""

@@ -66,7 +66,7 @@ def _ratio(peer: float | None, ours: float | None) -> str:
 def isocsg_times(name: str, size: int, repeats: int, tmp: Path) -> dict[str, float | None]:
     from isocsg import load_openscad
     from isocsg.openscad import scad_to_csg
-    from isocsg.render import Renderer
+    from isocsg.rendering import Renderer
     from isocsg.scene.framing import framed_scene
 
     csg = tmp / f"{name}.csg"

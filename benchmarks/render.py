@@ -148,7 +148,7 @@ def clear_laminae_cache() -> None:
 def isocsg_times(shape, side: int, repeats: int) -> dict[str, float]:
     """Build, first render, cached re-render and fill-only times for one shape and size."""
     from isocsg.laminae import build_laminae
-    from isocsg.render import Renderer
+    from isocsg.rendering import Renderer
 
     scene = Scene(camera(side), LIGHTS, [shape])
     cam0 = camera(side)
@@ -208,7 +208,7 @@ def main(argv: list[str] | None = None) -> int:
         print(f"isocsg columns impossible: the laminae builder is unavailable ({exc})")
         return 1
     # Compile the numba kernels (cached on disk) outside the timings.
-    from isocsg.render import Renderer
+    from isocsg.rendering import Renderer
 
     Renderer().render(Scene(camera(16), LIGHTS, [SHAPES["sphere"]]), contours=4)
 

@@ -114,7 +114,7 @@ def child_isocsg(model: str, n: int, size: int, repeats: int, contours: int) -> 
     from isocsg import Camera, Cylinder, PointLight, RenderSettings, Scene, Sphere
     from isocsg.csg.section import section
     from isocsg.csg.volume import volume
-    from isocsg.render import Renderer
+    from isocsg.rendering import Renderer
 
     def clear() -> None:
         fn = getattr(lam, "clear_cache", None) or getattr(lam, "clear_caches", None)
@@ -268,7 +268,7 @@ def child_tiny_isocsg(n: int, contours: int) -> None:
     256 x 256 render: the holes of 10 000 are about a pixel across, of 100 000 a third of one."""
     import numpy as np
     from isocsg import Camera, Cylinder, PointLight, RenderSettings, Scene, Sphere
-    from isocsg.render import Renderer
+    from isocsg.rendering import Renderer
 
     lights = (PointLight(LIGHT),)
     warm = Sphere((0, 0, 0), 1.0)

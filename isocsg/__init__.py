@@ -7,9 +7,7 @@ loads only the modules (numba kernels, shapely, scipy, pyvista) of what it calls
 
 from __future__ import annotations
 
-import sys
-import types
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
 
 from ._lazy import lazy_exports
 
@@ -36,8 +34,8 @@ _EXPORTS: dict[str, str] = {
     **dict.fromkeys(["to_manifold", "to_trimesh"], ".csg.mesh"),
     "clip_laminae": ".csg.clip",
     **dict.fromkeys(["build_laminae", "Lamina", "LaminaSet", "BandMesh"], ".laminae"),
-    **dict.fromkeys(["render", "Renderer", "RenderResult", "save_scene_svg"], ".render"),
-    **dict.fromkeys(["save_png", "save_npy"], ".render.image"),
+    **dict.fromkeys(["render", "Renderer", "RenderResult", "save_scene_svg"], ".rendering"),
+    **dict.fromkeys(["save_png", "save_npy"], ".rendering.image"),
     "show": ".view",
     **dict.fromkeys(["render_views", "turntable", "illuminance_grid"], ".batch"),
     **dict.fromkeys(["ShadedSurface", "object_surface", "scene_surfaces"], ".interop.bands"),
@@ -176,19 +174,6 @@ __all__ = [
 __getattr__, __dir__ = lazy_exports(globals(), _EXPORTS)
 
 
-class _Package(types.ModuleType):
-    """This package's module type: the function ``render`` keeps its name when the package
-    ``isocsg.render`` is first imported (the import system then binds the package's name
-    on its parent). Remove when that package is renamed."""
-
-    def __setattr__(self, name: str, value: Any) -> None:
-        if name == "render" and isinstance(value, types.ModuleType):
-            value = value.render
-        super().__setattr__(name, value)
-
-
-sys.modules[__name__].__class__ = _Package
-
 if TYPE_CHECKING:  # what the names are, for type checkers and editors
     from .shapes2d import (
         Circle,
@@ -263,8 +248,8 @@ if TYPE_CHECKING:  # what the names are, for type checkers and editors
         read_openscad,
         save_openscad,
     )
-    from .render import Renderer, RenderResult, render, save_scene_svg
-    from .render.image import save_npy, save_png
+    from .rendering import Renderer, RenderResult, render, save_scene_svg
+    from .rendering.image import save_npy, save_png
     from .scene import (
         RenderSettings,
         Scene,

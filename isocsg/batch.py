@@ -9,7 +9,7 @@ before the tasks; each worker thread gets one task, a contiguous run of the
 views, while row blocks are one task each, dealt as threads free up),
 otherwise on a local thread pool. Results are in input order and equal to
 the serial ones: every view and every node is computed by the same code as
-:func:`isocsg.render.render` and
+:func:`isocsg.rendering.render` and
 :func:`isocsg.shadows.luxmap.illuminance_map`.
 
 Threads are safe under every numba threading layer: no compiled kernel on
@@ -74,7 +74,7 @@ def _renderer() -> Any:
     # its band meshes and buffers for the next view.
     r = getattr(_local, "renderer", None)
     if r is None:
-        from .render import Renderer
+        from .rendering import Renderer
 
         r = _local.renderer = Renderer()
     return r

@@ -57,7 +57,7 @@ class Kernel:
     Attributes
     ----------
     module, name : str
-        Where the dispatcher lives (``isocsg.render.raster``, ``fill_projected``).
+        Where the dispatcher lives (``isocsg.rendering.raster``, ``fill_projected``).
     args : tuple of str
         The argument types, as numba writes them (``repr`` of a numba type).
     seconds : float
@@ -383,7 +383,7 @@ def render_path(path: str) -> None:
         s = load_scene(builtin_scene_path("halftone"))
         render_halftone(replace(s, camera=replace(s.camera, width=24, height=18)))
         return
-    from .render import Renderer
+    from .rendering import Renderer
 
     s = load_scene(builtin_scene_path("demo"))
     if path == "surface":

@@ -60,7 +60,7 @@ def render_image(scene: Scene, csg: str | None = None):
     """
     import numpy as np
 
-    from isocsg.render import Renderer, render
+    from isocsg.rendering import Renderer, render
 
     image = render(scene).image if csg is None else Renderer(csg=csg).render(scene).image
     assert image.dtype == np.float32

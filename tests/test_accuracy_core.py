@@ -1,6 +1,6 @@
 """Isoluminance renderings of single primitives against the analytic reference.
 
-Every core scene of the catalogue is rendered by ``isocsg.render.render`` with
+Every core scene of the catalogue is rendered by ``isocsg.rendering.render`` with
 64 contours and compared with the exact per-pixel image of the independent
 ray caster in ``tests/reference``: the silhouettes must agree (IoU >= 0.99)
 and at least 98 % of the compared pixels must lie within 5 % of the

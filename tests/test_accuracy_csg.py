@@ -1,6 +1,6 @@
 """Isoluminance renderings of CSG trees against the analytic reference.
 
-The CSG scenes of the catalogue are rendered by ``isocsg.render.render`` with
+The CSG scenes of the catalogue are rendered by ``isocsg.rendering.render`` with
 64 contours and judged as the core scenes are (silhouette IoU >= 0.99, at
 least 98 % of the compared pixels within 5 % of the reference's range); CSG
 seams, where the visible surface passes from one primitive to another, are

@@ -13,7 +13,7 @@ hypothesis draws
 - the material, with a Phong term or without;
 - an offset of the whole scene (up to 5e11) and a scale (1e-5 .. 1e3),
 
-renders the scene with ``isocsg.render.render`` at N = 64 and judges it with
+renders the scene with ``isocsg.rendering.render`` at N = 64 and judges it with
 the ray caster of ``tests/reference`` and the catalogue's bars: silhouette
 IoU >= 0.99 and >= 98 % of the compared pixels within 5 % of the exact image's
 intensity range (``tests/reference/metrics.py``). Only where that range is

@@ -38,14 +38,14 @@ def _write_scene(tmp_path: Path, doc: dict = SMALL_SCENE, name: str = "scene.jso
 
 def _renderer_available() -> bool:
     try:
-        from isocsg.render import render  # noqa: F401
-        from isocsg.render.image import save_npy, save_png  # noqa: F401
+        from isocsg.rendering import render  # noqa: F401
+        from isocsg.rendering.image import save_npy, save_png  # noqa: F401
     except ImportError:
         return False
     return True
 
 
-needs_renderer = pytest.mark.skipif(not _renderer_available(), reason="isocsg.render is not available")
+needs_renderer = pytest.mark.skipif(not _renderer_available(), reason="isocsg.rendering is not available")
 
 
 # ----------------------------------------------------------------------------- help and usage

@@ -22,7 +22,7 @@ from test_csg_properties import trees  # noqa: E402
 
 from isocsg import Camera, PointLight, RenderSettings, Scene  # noqa: E402
 from isocsg.csg import leaves  # noqa: E402
-from isocsg.render import Renderer  # noqa: E402
+from isocsg.rendering import Renderer  # noqa: E402
 
 IMAGE_SETTINGS = settings(max_examples=12, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 RENDERER = Renderer()

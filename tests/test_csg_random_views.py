@@ -53,7 +53,7 @@ from isocsg import (  # noqa: E402
     Sphere,
     Truncus,
 )
-from isocsg.render import Renderer  # noqa: E402
+from isocsg.rendering import Renderer  # noqa: E402
 
 EXAMPLES = int(os.environ.get("ISOCSG_SEARCH_EXAMPLES", "12"))
 LOG = os.environ.get("ISOCSG_SEARCH_LOG")

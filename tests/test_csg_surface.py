@@ -105,7 +105,7 @@ def test_a_minus_a_leaves_no_zero_volume_sheets(tree):
     axis-aligned cylinder minus itself left 592 triangles at 64 contours). They are
     dropped, so the surface is empty and renders as background."""
     from isocsg import Camera, RenderSettings, Scene
-    from isocsg.render import Renderer
+    from isocsg.rendering import Renderer
 
     lights = (PointLight((3, -4, 5)), PointLight((-4, -1, 2), 0.5))
     assert csg_surface(tree, lights, contours=64).n_triangles == 0
@@ -163,7 +163,7 @@ def test_a_minus_a_part_of_itself_keeps_its_face_outside_the_part():
     from reference import compare, raycast_scene
 
     from isocsg import Camera, ConvexPolyhedron, DirectionalLight, RenderSettings, Scene, Truncus
-    from isocsg.render import Renderer
+    from isocsg.rendering import Renderer
 
     a = Truncus(_CONE_A[0], _CONE_A[1], _CONE_A[2], 0.0)
     s = Sphere(*_SPHERE_S)

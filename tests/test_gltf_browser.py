@@ -28,7 +28,7 @@ import pytest
 
 from isocsg import Box, Camera, Cylinder, PointLight, Scene, Sphere
 from isocsg.interop import export_glb
-from isocsg.render import render
+from isocsg.rendering import render
 
 VIEWER = Path(__file__).parent / "data" / "gltf_viewer" / "viewer.html"
 BROWSERS = ("chromium", "chromium-browser", "google-chrome", "google-chrome-stable")

@@ -48,7 +48,7 @@ from scenes import render_image, with_contours  # noqa: E402
 
 def _fixed_contours(scene):
     """The image at exactly the scene's contour count (no fewer contours for objects small on screen)."""
-    from isocsg.render import Renderer
+    from isocsg.rendering import Renderer
 
     return Renderer(adaptive_contours=False).render(scene).image
 
@@ -296,7 +296,7 @@ def test_polyhedron_under_a_point_light_just_above_a_vertex_converges():
     from reference import comparison_mask, raycast_scene
 
     from isocsg import Camera, ConvexPolyhedron, Material, PointLight, RenderSettings, Scene, SceneObject
-    from isocsg.render import Renderer
+    from isocsg.rendering import Renderer
 
     poly = ConvexPolyhedron([(0.0, 0.0, -1.125), (0.0, 1.0, 0.0), (0.0, 0.0, 1.125),
                              (0.0, 0.7071067811865475, -0.795495128834866), (1.0, 0.0, 0.0)])

@@ -13,7 +13,7 @@ from PIL import Image
 
 from isocsg import Box, Camera, Cylinder, Material, PointLight, RenderSettings, Scene, Sphere, Truncus, render
 from isocsg.interop.notebook import DISPLAY_SIZE, default_light, framing_camera
-from isocsg.render.image import to_uint8
+from isocsg.rendering.image import to_uint8
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 

@@ -175,7 +175,7 @@ def test_clipped_to_box_matches_the_tiles_cut():
     """``clipped_to_box`` is the cut the renderer's clip_leaves makes of trunci and boxes."""
     from isocsg import Box, Cone, ConvexPolyhedron, Cylinder
     from isocsg.csg.program import compile_program
-    from isocsg.render.tiles import clip_leaves, combine_boxes, leaf_geometry
+    from isocsg.rendering.tiles import clip_leaves, combine_boxes, leaf_geometry
 
     tree = Box((0, 0, 0), (2, 2, 0.4)) - Cylinder((0.1, 0, 0), (0.2, 0.1, 3), 0.2) - Cone((0.5, 0.3, 0), (0, 0.3, -4), 0.3) \
         - Box((0.9, 0.9, 0), (0.1, 0.1, 5)) - ConvexPolyhedron([(0, 0, -3), (0.1, 0, 3), (0, 0.1, 3), (0.1, 0.1, 0)])

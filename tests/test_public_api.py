@@ -50,13 +50,13 @@ def test_unknown_name_is_an_attribute_error() -> None:
 
 def test_import_isocsg_loads_no_heavy_dependency() -> None:
     loaded = _modules_after("import isocsg")
-    assert not {"numpy", "numba", "shapely", "scipy", "PIL", "isocsg.render", "isocsg.csg"} & loaded
+    assert not {"numpy", "numba", "shapely", "scipy", "PIL", "isocsg.rendering", "isocsg.csg"} & loaded
 
 
 def test_a_name_loads_only_its_own_modules() -> None:
     loaded = _modules_after("from isocsg.shadows import AreaLight")
     assert "isocsg.shadows.lights" in loaded
-    assert not {"numba", "isocsg.shadows.direct", "isocsg.shadows.halftone", "isocsg.render"} & loaded
+    assert not {"numba", "isocsg.shadows.direct", "isocsg.shadows.halftone", "isocsg.rendering"} & loaded
 
 
 def test_command_line_help_imports_no_sub_command() -> None:
@@ -73,18 +73,17 @@ def test_a_sub_command_imports_only_its_module(command: str) -> None:
     assert not (others | {"numpy", "numba", "isocsg.shadows.halftone"}) & loaded, "its help loads nothing heavy"
 
 
-def test_render_stays_the_function_when_its_package_loads_first() -> None:
-    code = "import isocsg.render.image, isocsg\nprint(callable(isocsg.render) and not isinstance(isocsg.render, type(isocsg)))"
+def test_render_stays_the_function_when_the_renderer_package_loads_first() -> None:
+    code = "import isocsg.rendering.image, isocsg\nprint(callable(isocsg.render) and not isinstance(isocsg.render, type(isocsg)))"
     done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=300, check=True)
     assert done.stdout.strip() == "True"
 
 
 def test_no_function_hides_a_module_of_the_same_name() -> None:
-    """``isocsg.shadows.illuminance`` is the function; no module ``illuminance.py`` sits beside it.
-
-    (``isocsg.render``, the function, still shares its name with the package ``isocsg/render/``, to be renamed.)
-    """
-    allowed = {("isocsg", "render")}
+    """``isocsg.render`` and ``isocsg.shadows.illuminance`` are functions; no module of the same name
+    sits beside them (the renderer's package is ``isocsg.rendering``, the direct light's module
+    ``isocsg.shadows.direct``)."""
+    allowed: set[tuple[str, str]] = set()
     for package in PUBLIC_PACKAGES:
         mod = importlib.import_module(package)
         submodules = {m.name for m in pkgutil.iter_modules(mod.__path__)}

@@ -15,10 +15,10 @@ import numpy as np
 import pytest
 
 from isocsg import Camera, InvalidGeometryError, InvalidParameterError, Sphere
-from isocsg.render.polygons import fill_front_kernel
-from isocsg.render.projection import homogeneous, key_to_depth, near_distance
-from isocsg.render.quads import pair_quads
-from isocsg.render.raster import rasterize
+from isocsg.rendering.polygons import fill_front_kernel
+from isocsg.rendering.projection import homogeneous, key_to_depth, near_distance
+from isocsg.rendering.quads import pair_quads
+from isocsg.rendering.raster import rasterize
 
 EDGE_MARGIN = 1e-7  # barycentric margin that separates "clearly inside" from "on the edge"
 
@@ -352,9 +352,9 @@ def test_projected_fill_equals_the_triangle_fill_without_labels(cam, mesh):
     """fill_projected (CSG leaves: projection done once, quads, no labels) writes
     the same front and back buffers as fill_kernel with culling and back
     buffers on the triangles."""
-    from isocsg.render.polygons import fill_projected
-    from isocsg.render.projection import camera_affine, project_kernel
-    from isocsg.render.triangles import fill_kernel
+    from isocsg.rendering.polygons import fill_projected
+    from isocsg.rendering.projection import camera_affine, project_kernel
+    from isocsg.rendering.triangles import fill_kernel
 
     rng = np.random.default_rng(5)
     if mesh == "triangles":
@@ -413,8 +413,8 @@ THIN_CORNER_QUAD = [(16.786617188559035, 27.523620820517905), (16.38707035656051
 def test_degenerate_polygons_fill_like_their_triangles(ring):
     """A polygon with a zero-area fan triangle fills as fill_kernel fills its
     triangles (the zero-area one draws nothing), in the leaf and the front fill."""
-    from isocsg.render.polygons import fill_projected
-    from isocsg.render.triangles import fill_kernel
+    from isocsg.rendering.polygons import fill_projected
+    from isocsg.rendering.triangles import fill_kernel
 
     pts = list(THIN_CORNER_QUAD if ring.startswith("quad") else SLIVER)
     if ring.endswith("reversed"):

@@ -31,10 +31,10 @@ from isocsg import (
     shade,
 )
 from isocsg.laminae.model import BandMesh
-from isocsg.render import Renderer
-from isocsg.render import image as imagemod
+from isocsg.rendering import Renderer
+from isocsg.rendering import image as imagemod
 from isocsg.csg.program import compile_program
-from isocsg.render.pixel_csg import resolve_csg, truth_table
+from isocsg.rendering.pixel_csg import resolve_csg, truth_table
 
 RES = 48  # segments of the inscribed test meshes
 
@@ -327,7 +327,7 @@ def test_not_a_scene_raises():
 
 # ------------------------------------------------------------------- images
 def test_to_uint8_follows_the_conventions():
-    from isocsg.render.image import to_uint8
+    from isocsg.rendering.image import to_uint8
 
     img = np.array([[np.nan, -0.5, 0.0, 0.2], [0.5, 0.999, 1.0, 3.0]], np.float32)
     expected = [[0, 0, 0, round(0.2 * 255)], [round(0.5 * 255), round(0.999 * 255), 255, 255]]
@@ -338,7 +338,7 @@ def test_to_uint8_follows_the_conventions():
 def test_png_and_npy_round_trip(tmp_path):
     from PIL import Image
 
-    from isocsg.render.image import save_npy, save_png, to_uint8
+    from isocsg.rendering.image import save_npy, save_png, to_uint8
 
     res = renderer().render(Scene(CAM, LIGHTS, [Sphere((0, 0, 0), 1)]), contours=8)
     save_png(tmp_path / "a.png", res.image)
@@ -357,7 +357,7 @@ def test_png_goes_to_a_binary_file_object(tmp_path):
 
     from PIL import Image
 
-    from isocsg.render.image import save_png, to_uint8
+    from isocsg.rendering.image import save_png, to_uint8
 
     res = renderer().render(Scene(CAM, LIGHTS, [Sphere((0, 0, 0), 1)]), contours=8)
     buf = io.BytesIO()
@@ -375,7 +375,7 @@ def test_png_goes_to_a_binary_file_object(tmp_path):
 def test_svg_keeps_order_colour_and_fixed_decimals(tmp_path):
     import xml.etree.ElementTree as ET
 
-    from isocsg.render.image import save_svg
+    from isocsg.rendering.image import save_svg
 
     polys = [[(0, 0), (10, 0), (10, 10)], [(1.23456, 2), (5, 5), (2, 7.5), (0, 3)]]
     save_svg(tmp_path / "a.svg", polys, [0.0, 1.0], width=10, height=10, decimals=3)
@@ -531,7 +531,7 @@ def test_concurrent_fill_equals_the_serial_one(name, csg, monkeypatch):
     # objects fill their leaves and resolve row stripes concurrently (per pixel)
     # or fill their surface's parts in stripes. Every pixel must come out
     # exactly as from one serial pass.
-    from isocsg.render import dense, policy
+    from isocsg.rendering import dense, policy
 
     scene = _concurrency_scenes()[name]
     monkeypatch.setattr(policy, "STRIPES", 3)
@@ -578,7 +578,7 @@ def test_reused_buffers_render_like_fresh_ones(method):
 def test_auto_builds_the_csg_surface_on_the_second_render_only(monkeypatch):
     # "auto" with surface_build="now": the first view of a CSG object is resolved per
     # pixel; the second view builds the clipped surface once, and later views reuse it.
-    from isocsg.render import surfaces
+    from isocsg.rendering import surfaces
 
     scene = _concurrency_scenes()["csg-leaves-and-stripes"]
     views = [scene.camera, scene.camera.with_view((-3.0, -4.0, 2.0)), scene.camera]
@@ -604,7 +604,7 @@ def test_auto_builds_the_csg_surface_in_the_background(monkeypatch):
     # Boolean, held here until the view is done); views after it is ready use it.
     import threading
 
-    from isocsg.render import surfaces
+    from isocsg.rendering import surfaces
 
     scene = _concurrency_scenes()["csg-leaves-and-stripes"]
     views = [scene.camera, scene.camera.with_view((-3.0, -4.0, 2.0)), scene.camera]
@@ -654,7 +654,7 @@ def test_screen_rectangle_holds_every_pixel_of_the_solid(cam):
     # exists; every pixel whose ray meets the solid must lie inside it, and a
     # sphere's rectangle must be tight (one pixel of margin). Rays against
     # spheres and boxes are intersected here, independently of the renderer.
-    from isocsg.render import renderpass
+    from isocsg.rendering import renderpass
 
     s1, s2 = Sphere((0.3, 0.2, -0.1), 0.9), Sphere((-0.8, 0.4, 0.5), 0.6)
     box = Box((0.6, -0.2, 0.3), (1.4, 0.8, 1.1))

@@ -23,7 +23,7 @@ SCRIPT = textwrap.dedent(
     """
     import sys, time
     from isocsg import Box, Camera, Cylinder, PointLight, Scene, Sphere
-    from isocsg.render import Renderer, surfaces
+    from isocsg.rendering import Renderer, surfaces
 
     real = surfaces.surface_from_bands
     started = []
@@ -74,7 +74,7 @@ def test_background_surface_build_waits_while_another_renderer_draws(monkeypatch
     import threading
 
     from isocsg import Box, Camera, Cylinder, PointLight, Scene
-    from isocsg.render import Renderer
+    from isocsg.rendering import Renderer
 
     plate = Box((0, 0, 0), (2.0, 2.0, 0.2))
     for i in range(100):

@@ -42,8 +42,8 @@ from isocsg.csg.program import compile_program
 from isocsg.errors import ResourceLimitError
 from isocsg.laminae import build_bands
 from isocsg.limits import set_memory_budget
-from isocsg.render import Renderer, painter, policy, surfaces, tiles
-from isocsg.render import tiled as tiled_path
+from isocsg.rendering import Renderer, painter, policy, surfaces, tiles
+from isocsg.rendering import tiled as tiled_path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
@@ -324,7 +324,7 @@ _MEMORY_SCRIPT = textwrap.dedent(
     import json, resource, sys, time
     sys.path.insert(0, {tests!r})
     from test_render_scale import plate_scene
-    from isocsg.render import Renderer
+    from isocsg.rendering import Renderer
     scene = plate_scene(32, 1024, 1024, contours=64)
     def hwm():  # this process's own high-water mark (ru_maxrss would include the parent's, kept across exec)
         return next(int(l.split()[1]) for l in open("/proc/self/status") if l.startswith("VmHWM:"))

@@ -4,7 +4,7 @@ Images are judged by the analytic ray caster of ``tests/reference`` with the
 catalogue's bars (silhouette IoU >= 0.99, at least 98 % of the compared
 pixels within 0.05 of the reference's intensity range, seams left out as in
 ``tests/reference/metrics.py``), on the first view of a new
-``isocsg.render.Renderer`` (per pixel), on its second view from another
+``isocsg.rendering.Renderer`` (per pixel), on its second view from another
 viewpoint (the clipped surface, under ``csg="auto"``) and on
 ``Renderer(csg="pixel")`` from that second viewpoint. Sections and volumes are
 judged by closed forms and by manifold3d's Booleans and slices of meshes built
@@ -39,7 +39,7 @@ from hypothesis import strategies as st
 from isocsg import Camera, PointLight, RenderSettings, Scene, Sphere, union_all
 from isocsg.csg.section import section
 from isocsg.csg.volume import volume
-from isocsg.render import Renderer
+from isocsg.rendering import Renderer
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 

@@ -7,8 +7,8 @@ import threading
 import numpy as np
 
 from isocsg import Camera, Cylinder, Material, PointLight, Scene, SceneObject, Sphere
-from isocsg.render import Renderer
-from isocsg.render.scratch import ScratchPool
+from isocsg.rendering import Renderer
+from isocsg.rendering.scratch import ScratchPool
 
 
 def _ranges(arrays):

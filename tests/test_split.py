@@ -195,7 +195,7 @@ def test_sorted_half_edges_match_a_stable_lexicographic_sort(seed):
 
 
 def test_pair_quads_names_a_short_value_array():
-    from isocsg.render.quads import pair_quads
+    from isocsg.rendering.quads import pair_quads
 
     square = [(0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 1, 0)]
     with pytest.raises(InvalidParameterError, match="value_in"):

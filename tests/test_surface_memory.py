@@ -24,8 +24,8 @@ from isocsg import Box, Cylinder, PointLight
 from isocsg.csg.surface import surface_from_bands
 from isocsg.laminae import build_bands, builder as lamina_builder
 from isocsg.lighting.lights import Material
-from isocsg.render import Renderer
-from isocsg.render.tiles import combine_boxes, leaf_geometry
+from isocsg.rendering import Renderer
+from isocsg.rendering.tiles import combine_boxes, leaf_geometry
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
@@ -93,7 +93,7 @@ _RUN = textwrap.dedent(
     sys.path.insert(0, {tests!r})
     from reference.models import plate_with_holes
     from isocsg import Camera, PointLight, RenderSettings, Scene
-    from isocsg.render import Renderer
+    from isocsg.rendering import Renderer
     solid = plate_with_holes(1000).loop()
     cams = [Camera(e, (0, 0, 0), fov=40.0, width=1024, height=1024)
             for e in ((2.5, -4.5, 4.0), (-3.5, -3.0, 4.5), (4.0, 2.5, 4.0))]

@@ -27,7 +27,7 @@ from isocsg.errors import ResourceLimitError
 from isocsg.laminae import build_laminae
 from isocsg.laminae.model import BandMesh
 from isocsg.limits import set_memory_budget
-from isocsg.render import Renderer
+from isocsg.rendering import Renderer
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
@@ -299,7 +299,7 @@ def test_extreme_frames_first_and_later_views_match_the_ray_caster(name, offset,
     """Far from the origin and tiny: the first view (per pixel), the second (through the
     clipped surface, which must build there) and ``csg="surface"`` are each judged by the
     ray caster with the catalogue's bars (IoU >= 0.99, 98 % of pixels within 0.05)."""
-    from isocsg.render import surfaces
+    from isocsg.rendering import surfaces
     from reference import compare, raycast_scene
     from test_csg_random_views import MIN_FRACTION, MIN_IOU, _placed_light, placed
 
@@ -333,7 +333,7 @@ def test_a_surface_that_cannot_be_built_leaves_the_object_per_pixel(monkeypatch)
     pixel (the same image as ``csg="pixel"``) and the build is not retried; under
     ``csg="surface"`` the error is raised."""
     from isocsg.errors import InvalidGeometryError
-    from isocsg.render import surfaces
+    from isocsg.rendering import surfaces
 
     calls = []
 

@@ -18,9 +18,9 @@ from PIL import Image
 from isocsg import Box, Camera, Cylinder, InvalidParameterError, PointLight, Scene, Sphere
 from isocsg.cli import main
 from isocsg.laminae import build_laminae
-from isocsg.render import render
-from isocsg.render.image import to_uint8
-from isocsg.render.svg import save_scene_svg, scene_polygons
+from isocsg.rendering import render
+from isocsg.rendering.image import to_uint8
+from isocsg.rendering.svg import save_scene_svg, scene_polygons
 
 NS = "{http://www.w3.org/2000/svg}"
 

@@ -165,7 +165,7 @@ def test_error_shrinks_with_more_contours(name):
 
 @pytest.mark.parametrize("csg", ["pixel", "surface"])
 def test_csg_of_transformed_parts_matches_reference(csg):
-    from isocsg.render import Renderer
+    from isocsg.rendering import Renderer
 
     part = Box((0, 0, 0), (2, 2, 2)).rotate((10, 20, 30)) - Sphere((0, 0, 0), 1.2).scale((1, 1, 1.4)).rotate((0, 40, 0))
     tree = part | Cylinder((0, 0, 0), (0, 0, 3), 0.3).scale((1.5, 1, 1)).rotate((60, 0, 0))

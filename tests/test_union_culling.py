@@ -2,8 +2,8 @@
 
 A union of leaves is drawn by filling its leaves' front faces with the depth
 test, nearest leaves first, skipping each leaf whose bounding ball is already
-hidden everywhere on screen (:func:`isocsg.render.union.render_union`,
-:func:`isocsg.render.occlusion.ball_covered`). Hypothesis draws clusters of 2 to
+hidden everywhere on screen (:func:`isocsg.rendering.union.render_union`,
+:func:`isocsg.rendering.occlusion.ball_covered`). Hypothesis draws clusters of 2 to
 90 leaves of every kind (so the level of detail of trees over 64 leaves is
 drawn too), many of them hidden behind others, under random cameras
 (perspective and orthographic, any direction) and lights. Each image is
@@ -33,7 +33,7 @@ from test_csg_properties import primitives  # noqa: E402
 from test_csg_random_views import MIN_FRACTION, MIN_IOU, MIN_PIXELS, cameras, lights, materials, placed  # noqa: E402
 
 from isocsg import Camera, PointLight, RenderSettings, Scene, SceneObject, Sphere, Union  # noqa: E402
-from isocsg.render import Renderer, union  # noqa: E402
+from isocsg.rendering import Renderer, union  # noqa: E402
 
 EXAMPLES = int(os.environ.get("ISOCSG_SEARCH_EXAMPLES", "8"))
 SIZE = 96

@@ -178,9 +178,9 @@ def test_scene_rejects_a_non_solid_object() -> None:
 
 def _render_function():
     try:
-        from isocsg.render import render
+        from isocsg.rendering import render
     except ImportError:
-        pytest.skip("isocsg.render is not available")
+        pytest.skip("isocsg.rendering is not available")
     return render
 
 

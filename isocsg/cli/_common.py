@@ -187,7 +187,7 @@ def render_scene(scene: Scene, *, progress: ProgressCallback | None = None) -> A
         from ..shadows.halftone import render_halftone
 
         return render_halftone(scene, progress=progress)
-    from ..render import render
+    from ..rendering import render
 
     return render(scene, progress=progress)
 
@@ -208,7 +208,7 @@ def write_outputs(result: Any, png: str | Path | None, npy: str | Path | None = 
     the PNG shows ``result.display`` where the result has one (E times the scene's
     ``render.exposure``, clipped), else the image.
     """
-    from ..render.image import save_npy, save_png
+    from ..rendering.image import save_npy, save_png
 
     check_outputs(png, npy)
     written = []

@@ -100,7 +100,7 @@ def run(args: argparse.Namespace) -> int:
         for path in write_outputs(result, None if gltf else args.output, args.npy):
             print(f"wrote {path}")
     if args.svg is not None:
-        from ..render.svg import save_scene_svg
+        from ..rendering.svg import save_scene_svg
 
         Path(args.svg).parent.mkdir(parents=True, exist_ok=True)
         save_scene_svg(args.svg, scene)

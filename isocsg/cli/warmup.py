@@ -32,7 +32,7 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
 def run(args: argparse.Namespace) -> int:
     """Compile the listed kernels, render the built-in scenes at a tiny size; prints what it did and how long it took."""
     from ..kernels import PATHS, compile_kernels
-    from ..render import Renderer
+    from ..rendering import Renderer
     from ..scene.io import builtin_scene_path, load_scene
     from ..shadows.halftone import render_halftone
 

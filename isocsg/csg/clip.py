@@ -15,7 +15,7 @@ depth, carrying ``A``'s intensity: painting them would show ``A``'s shading on
 ``B``'s surface. Each visible surface point must take the intensity of the
 primitive whose boundary it lies on, and inside a difference the subtracted
 primitive's boundary is seen with its normal reversed. The renderer
-(:mod:`isocsg.render`, see ``docs/architecture.md``) therefore fills each
+(:mod:`isocsg.rendering`, see ``docs/architecture.md``) therefore fills each
 primitive's surface *bands* and resolves ownership per pixel with the tree's
 interval program. Clipped laminae are the geometric by-product: inspectable
 cross-sections (areas, outlines, SVG figures) and a check of the result's

@@ -1578,7 +1578,7 @@ def csg_surface(
     lights : sequence of PointLight or DirectionalLight
     material : Material, optional
         Defaults to ``Material()``. A specular material depends on the eye:
-        use :class:`isocsg.render.Renderer`, which passes it.
+        use :class:`isocsg.rendering.Renderer`, which passes it.
     contours : int, default 64
 
     Returns

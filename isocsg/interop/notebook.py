@@ -80,10 +80,10 @@ def default_light(bounds: ArrayLike) -> PointLight:
 
 
 def png_bytes(image: ArrayLike) -> bytes:
-    """An intensity image (H, W) (NaN background) as 8-bit grey PNG bytes (see :func:`isocsg.render.image.to_uint8`)."""
+    """An intensity image (H, W) (NaN background) as 8-bit grey PNG bytes (see :func:`isocsg.rendering.image.to_uint8`)."""
     from PIL import Image
 
-    from ..render.image import to_uint8
+    from ..rendering.image import to_uint8
 
     buf = io.BytesIO()
     Image.fromarray(to_uint8(image), mode="L").save(buf, format="PNG")
@@ -105,7 +105,7 @@ def _solid_scene(solid: Any) -> Any:
 
 def solid_png(solid: Any) -> bytes:
     """A PNG of a solid (primitive or CSG tree) framed by :func:`framing_camera`, lit by :func:`default_light`."""
-    from ..render import render
+    from ..rendering import render
 
     return png_bytes(render(_solid_scene(solid)).image)
 
@@ -119,7 +119,7 @@ def scene_png(scene: Any) -> bytes:
         from ..shadows.halftone import render_halftone
 
         return png_bytes(render_halftone(small).display)
-    from ..render import render
+    from ..rendering import render
 
     return png_bytes(render(small).image)
 
@@ -138,7 +138,7 @@ def scene_svg(scene: Any) -> str | None:
 
     if scene.render.mode != "isoluminance" or not all(isinstance(o.shape, Primitive) for o in scene.objects):
         return None
-    from ..render.svg import save_scene_svg
+    from ..rendering.svg import save_scene_svg
 
     small = dataclasses.replace(scene, camera=_fit(scene.camera))
     fd, path = tempfile.mkstemp(suffix=".svg")

@@ -184,7 +184,7 @@ def leaf_rects(geom: LeafGeometry, cam: Camera) -> tuple[Rects, NDArray[np.float
 def leaf_near_keys(geom: LeafGeometry, cam: Camera, near: NDArray[np.float64]) -> NDArray[np.float64]:
     """The smallest depth key any point of each leaf can have (for occlusion culling).
 
-    The depth key is the fills' (:func:`~isocsg.render.raster.project_kernel`):
+    The depth key is the fills' (:func:`~isocsg.rendering.raster.project_kernel`):
     ``-1 / depth`` under perspective, the depth itself under an orthographic
     camera; the depth of a leaf's points is bounded below by its box's
     nearest corner, and for a sphere by its centre's depth less its radius.

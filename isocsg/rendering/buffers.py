@@ -47,7 +47,7 @@ def staggered_empty(shape: tuple[int, ...], dtype: Any, k: int) -> NDArray[Any]:
 
 
 def fill_pool() -> ThreadPoolExecutor:
-    """The threads that fill row stripes of the image (:data:`~isocsg.render.policy.STRIPES` - 1 of them)."""
+    """The threads that fill row stripes of the image (:data:`~isocsg.rendering.policy.STRIPES` - 1 of them)."""
     return _workers.pool("fill", max(policy.STRIPES - 1, 1))
 
 

@@ -1,6 +1,6 @@
 """Level of detail: each leaf's contour count and tessellation from its size on screen.
 
-Large CSG trees (more than :data:`~isocsg.render.policy.LOD_MIN_LEAVES` leaves)
+Large CSG trees (more than :data:`~isocsg.rendering.policy.LOD_MIN_LEAVES` leaves)
 spend most of a render building bands; a leaf a few pixels across needs few
 contours and a coarse tessellation. A leaf's choice is a :class:`LeafDetail`,
 a tree's a :class:`TreeDetail` (one entry per leaf); :class:`LevelOfDetail`
@@ -54,7 +54,7 @@ class TreeDetail:
     contours, segments : ndarray of int64, shape (n,)
         Leaf ``i``'s contour count and tessellation segments.
     sizes : ndarray of float64, shape (n,), optional
-        Leaf ``i``'s size on screen in pixels (:func:`~isocsg.render.tiles.leaf_screen_sizes`),
+        Leaf ``i``'s size on screen in pixels (:func:`~isocsg.rendering.tiles.leaf_screen_sizes`),
         where the level of detail applies.
     """
 
@@ -79,7 +79,7 @@ class TreeDetail:
     def covers(self, need: TreeDetail) -> bool:
         """Whether a large tree's surface built at this detail serves a view asking ``need``:
         every leaf has the contours asked and at least half the segments (a chord error within
-        four times :data:`~isocsg.render.policy.CHORD_PIXELS`, 0.05 pixel), so a view that finds
+        four times :data:`~isocsg.rendering.policy.CHORD_PIXELS`, 0.05 pixel), so a view that finds
         a few leaves grown on screen does not wait for a new Boolean of the whole tree."""
         return bool(np.all(self.contours >= need.contours) and np.all(2 * self.segments >= need.segments))
 
@@ -88,7 +88,7 @@ class TreeDetail:
         return TreeDetail(np.maximum(self.contours, other.contours), np.maximum(self.segments, other.segments))
 
 def screen_contours(extent: NDArray[np.float64], contours: int) -> NDArray[np.int64]:
-    """Contour count of each leaf from its screen size in pixels (see :data:`~isocsg.render.policy.LOD_PIXELS`).
+    """Contour count of each leaf from its screen size in pixels (see :data:`~isocsg.rendering.policy.LOD_PIXELS`).
 
     Parameters
     ----------
@@ -120,7 +120,7 @@ def screen_contours(extent: NDArray[np.float64], contours: int) -> NDArray[np.in
 
 
 def screen_segments(extent: NDArray[np.float64]) -> NDArray[np.int64]:
-    """Tessellation segments of each leaf from its screen size in pixels (see :data:`~isocsg.render.policy.CHORD_PIXELS`).
+    """Tessellation segments of each leaf from its screen size in pixels (see :data:`~isocsg.rendering.policy.CHORD_PIXELS`).
 
     Examples
     --------
@@ -155,7 +155,7 @@ class LevelOfDetail:
 
     def applies(self, program: Program | None) -> bool:
         """Whether the level of detail applies to an object (a tree of more than
-        :data:`~isocsg.render.policy.LOD_MIN_LEAVES` leaves, when adaptive)."""
+        :data:`~isocsg.rendering.policy.LOD_MIN_LEAVES` leaves, when adaptive)."""
         return self.adaptive and program is not None and program.n_leaves > policy.LOD_MIN_LEAVES
 
     def tree(
@@ -163,7 +163,7 @@ class LevelOfDetail:
         program: Program | None, contours: int,
     ) -> TreeDetail:
         """Each leaf's detail: :func:`screen_contours` of its size on screen (its box cut to
-        the object's, :func:`~isocsg.render.tiles.leaf_screen_sizes`), or more when an earlier
+        the object's, :func:`~isocsg.rendering.tiles.leaf_screen_sizes`), or more when an earlier
         view used more (up to ``contours``): those bands are likely still cached, and a leaf
         that shrank on screen is only more accurate with them than it needs to be."""
         if program is None or not self.applies(program):

@@ -26,9 +26,9 @@ def render_union(rp: RenderPass, obj: CSGObject) -> float:
     """Fill a union of leaves by the depth test, nearest leaves first, skipping hidden ones.
 
     The leaves are taken in the order of their nearest possible depth
-    (:func:`~isocsg.render.tiles.leaf_near_keys`); a leaf whose bounding
+    (:func:`~isocsg.rendering.tiles.leaf_near_keys`); a leaf whose bounding
     ball is hidden everywhere by what is already drawn
-    (:func:`~isocsg.render.occlusion.ball_covered`) is skipped without its
+    (:func:`~isocsg.rendering.occlusion.ball_covered`) is skipped without its
     bands being built or filled (in a lattice of 1000 spheres, 729 are hidden
     from any corner view). The others' front faces are filled into the image
     buffers, each leaf's rows split between the fill threads. Returns the

@@ -1,6 +1,6 @@
 """Leaves a few pixels across: their depth intervals by exact rays instead of band meshes.
 
-A leaf at most :data:`~isocsg.render.policy.RAY_LEAF_SIZE` pixels across
+A leaf at most :data:`~isocsg.rendering.policy.RAY_LEAF_SIZE` pixels across
 (the holes of a plate drilled by a long modelling loop, seen from afar) costs
 more to cut into bands than its few pixels are worth. Its front and back surfaces per pixel are
 instead where the pixel's ray (through its centre, where the fills sample)

@@ -42,7 +42,7 @@ def _cached_table(op: bytes, arg: bytes, n: int) -> NDArray[np.bool_]:
 
 
 def table_of(op: NDArray[np.int8], arg: NDArray[np.int64], n: int) -> NDArray[np.bool_]:
-    """The truth table of a program of ``n`` leaves if ``n`` is at most :data:`~isocsg.render.policy.TABLE_LEAVES`, else empty."""
+    """The truth table of a program of ``n`` leaves if ``n`` is at most :data:`~isocsg.rendering.policy.TABLE_LEAVES`, else empty."""
     if n > policy.TABLE_LEAVES:
         return np.zeros(0, np.bool_)
     return _cached_table(op.tobytes(), arg.tobytes(), n)
@@ -96,7 +96,7 @@ def resolve_csg(
                     np.zeros(max(len(op), 1), np.bool_), np.zeros(n, np.int64))
 
 
-# Without reference counting (see isocsg.render.jit): the per-pixel loop
+# Without reference counting (see isocsg.rendering.jit): the per-pixel loop
 # passes arrays to inlined helpers, two atomic operations each otherwise.
 @njit(**RAW)
 def resolve_packed(

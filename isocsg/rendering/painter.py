@@ -6,17 +6,17 @@ depend on the viewpoint) are filled into the image with a depth test. The
 renderer decides, object by object, which path draws it:
 
 - a single primitive, or a CSG object's clipped surface once built
-  (:mod:`~isocsg.render.surfaces`): its front faces (:mod:`~isocsg.render.fronts`);
-- a union of leaves: nearest leaves first, hidden ones skipped (:mod:`~isocsg.render.union`);
+  (:mod:`~isocsg.rendering.surfaces`): its front faces (:mod:`~isocsg.rendering.fronts`);
+- a union of leaves: nearest leaves first, hidden ones skipped (:mod:`~isocsg.rendering.union`);
 - another CSG tree: per-pixel CSG on its leaves' depth intervals
-  (:mod:`~isocsg.render.pixel_csg`), over its whole screen rectangle for small
-  trees (:mod:`~isocsg.render.dense`), in screen tiles for larger ones
-  (:mod:`~isocsg.render.tiled`);
+  (:mod:`~isocsg.rendering.pixel_csg`), over its whole screen rectangle for small
+  trees (:mod:`~isocsg.rendering.dense`), in screen tiles for larger ones
+  (:mod:`~isocsg.rendering.tiled`);
 - each leaf of a large tree gets the contours and tessellation its size on
-  screen can show (:mod:`~isocsg.render.detail`).
+  screen can show (:mod:`~isocsg.rendering.detail`).
 
-The state of one render travels as a :class:`~isocsg.render.renderpass.RenderPass`;
-the tunables live in :mod:`~isocsg.render.policy`. Several objects: the nearest
+The state of one render travels as a :class:`~isocsg.rendering.renderpass.RenderPass`;
+the tunables live in :mod:`~isocsg.rendering.policy`. Several objects: the nearest
 visible point wins.
 """
 
@@ -92,10 +92,10 @@ class Renderer:
         fill. ``"auto"``: per pixel the first time an object is rendered; from
         its second render on (a new viewpoint of the same bands), the surface,
         built then and cached, if the tree has at most
-        :data:`~isocsg.render.policy.SURFACE_MAX_LEAVES` leaves and its bands at most
-        :data:`~isocsg.render.policy.SURFACE_MAX_TRIANGLES` triangles. Larger trees get it too,
+        :data:`~isocsg.rendering.policy.SURFACE_MAX_LEAVES` leaves and its bands at most
+        :data:`~isocsg.rendering.policy.SURFACE_MAX_TRIANGLES` triangles. Larger trees get it too,
         always built in the background with their operands trimmed, and only
-        if its Booleans fit :data:`~isocsg.render.policy.LARGE_SURFACE_SHARE` of the memory budget
+        if its Booleans fit :data:`~isocsg.rendering.policy.LARGE_SURFACE_SHARE` of the memory budget
         (else they stay per pixel). Objects with view-dependent (specular)
         bands use ``"pixel"`` under ``"auto"``. A union of leaves needs
         neither under ``"auto"`` and ``"pixel"``: its leaves are filled by the
@@ -110,11 +110,11 @@ class Renderer:
         view's own path, which it delays by the build.
     adaptive_contours : bool, default True
         The level of detail, for CSG objects of more than
-        :data:`~isocsg.render.policy.LOD_MIN_LEAVES` (64) leaves. ``True``: each of their leaves
-        gets contours by its size on screen (:func:`~isocsg.render.detail.screen_contours`): a
+        :data:`~isocsg.rendering.policy.LOD_MIN_LEAVES` (64) leaves. ``True``: each of their leaves
+        gets contours by its size on screen (:func:`~isocsg.rendering.detail.screen_contours`): a
         primitive ``e`` pixels across needs about ``N * e / 128`` (bands about
         two pixels apart at N = 64) and gets ``N``, or ``N / 2`` where that
-        need allows (never fewer than :data:`~isocsg.render.policy.MIN_CONTOURS`, 16, which keeps
+        need allows (never fewer than :data:`~isocsg.rendering.policy.MIN_CONTOURS`, 16, which keeps
         every pixel within 0.05 of the range, nor more than ``N``);
         primitives 64 pixels across or more get ``N`` (at N = 64). Every count
         is ``N`` or ``N / 2``, so the error still shrinks as ``N`` grows. A
@@ -213,7 +213,7 @@ class Renderer:
 
     def _visible_leaves(self, program: Program, geom: LeafGeometry) -> tuple[list[Primitive], LeafGeometry, Any]:
         """The leaves of a tree under the level of detail cut to where they can be seen, their
-        geometry and the object's box (:func:`~isocsg.render.tiles.clip_leaves`): the bands of a
+        geometry and the object's box (:func:`~isocsg.rendering.tiles.clip_leaves`): the bands of a
         hole through a plate are built for the plate's thickness, and the parts of a leaf outside
         the object's box (the hole's ends) are not cut into bands (``build_bands(hidden=...)``).
         The image is the same solid's; band values follow each leaf's visible range. Kept per
@@ -233,7 +233,7 @@ class Renderer:
     def _per_pixel(self, key: Hashable, n_leaves: int) -> bool:
         """Whether the CSG object ``(shape, lights, material, contours)`` is resolved per pixel,
         decided before its bands are built: ``"pixel"``; under ``"auto"`` on its first render,
-        for trees of more than :data:`~isocsg.render.policy.SURFACE_MAX_LEAVES` leaves, or when
+        for trees of more than :data:`~isocsg.rendering.policy.SURFACE_MAX_LEAVES` leaves, or when
         an earlier render found its bands view-dependent or too many for a surface."""
         if self.csg != "auto":
             return self.csg == "pixel"
@@ -282,7 +282,7 @@ class Renderer:
         hidden: Any = None,
     ) -> FrontMesh:
         """One primitive's band mesh as its front-face fill needs it (a union's leaf), cached
-        apart from the prepared meshes of per-pixel CSG (:class:`~isocsg.render.meshes.FrontMesh`)."""
+        apart from the prepared meshes of per-pixel CSG (:class:`~isocsg.rendering.meshes.FrontMesh`)."""
         key: Any = ("front", primitive, tuple(lights), material, detail, hidden)
         if self._by_request:
             hit = self._prepared.get(key)

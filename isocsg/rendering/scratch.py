@@ -5,7 +5,7 @@ The first write to fresh memory costs a page fault per 4 KiB page (about
 thread faults or frees memory at the same time): more than filling the
 buffers. The per-pixel CSG buffers are needed only while an object is
 resolved, so they are lent from a pool and given back afterwards; a new
-:class:`~isocsg.render.Renderer` reuses the pages of the last one.
+:class:`~isocsg.rendering.Renderer` reuses the pages of the last one.
 
 Examples
 --------

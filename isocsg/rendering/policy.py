@@ -17,7 +17,7 @@ __all__ = [
     "LAST_CHUNKS", "ROWS_AHEAD", "CSG_SEEN_MEMORY", "RAY_LEAF_SIZE", "RAY_LEAF_PIXELS",
 ]
 
-#: The ways a :class:`~isocsg.render.Renderer` resolves CSG objects (see its ``csg`` parameter).
+#: The ways a :class:`~isocsg.rendering.Renderer` resolves CSG objects (see its ``csg`` parameter).
 CSG_METHODS = ("auto", "surface", "pixel")
 #: Where its clipped surfaces are built (see its ``surface_build`` parameter).
 SURFACE_BUILDS = ("background", "now")
@@ -90,7 +90,7 @@ MIN_SEGMENTS = 16
 #: Under the level of detail (default builder), the leaves of a tree resolved in screen tiles
 #: at most this many pixels across (their level-of-detail size, a bound of about twice a
 #: hole's or a rod's diameter on screen) are drawn by exact rays, not bands
-#: (:mod:`isocsg.render.small_leaves`), if their screen rectangle holds at most
+#: (:mod:`isocsg.rendering.small_leaves`), if their screen rectangle holds at most
 #: :data:`RAY_LEAF_PIXELS` pixels: a leaf about a pixel across costs next to nothing.
 RAY_LEAF_SIZE = 4.0
 RAY_LEAF_PIXELS = 4096

@@ -3,9 +3,9 @@
 Under ``Renderer(csg="auto")`` a tree's first view is resolved per pixel; its
 second view starts the surface's build, in the background by default, and the
 first view after it is ready fills it like a plain mesh. Trees of more than
-:data:`~isocsg.render.policy.SURFACE_MAX_LEAVES` leaves get a trimmed surface
-within :data:`~isocsg.render.policy.LARGE_SURFACE_SHARE` of the memory budget,
-kept as :class:`~isocsg.render.meshes.SurfaceRuns`.
+:data:`~isocsg.rendering.policy.SURFACE_MAX_LEAVES` leaves get a trimmed surface
+within :data:`~isocsg.rendering.policy.LARGE_SURFACE_SHARE` of the memory budget,
+kept as :class:`~isocsg.rendering.meshes.SurfaceRuns`.
 
 Background builds run on daemon threads (:func:`isocsg._workers.background`):
 a process that ends meanwhile does not wait for them, and they stop at their
@@ -61,7 +61,7 @@ class SurfaceBuilds:
     Parameters
     ----------
     csg, surface_build : str
-        The renderer's settings (see :class:`~isocsg.render.Renderer`).
+        The renderer's settings (see :class:`~isocsg.rendering.Renderer`).
     bands_of : callable
         The renderer's band meshes (:data:`BandsOf`).
     by_request : bool
@@ -110,7 +110,7 @@ class SurfaceBuilds:
         self, seen_key: Hashable, seen: bool | None, program: Program, lights: Sequence[Any], material: Any,
         detail: TreeDetail, eye: Any,
     ) -> SurfaceRuns | None:
-        """The clipped surface of a tree of more than :data:`~isocsg.render.policy.SURFACE_MAX_LEAVES`
+        """The clipped surface of a tree of more than :data:`~isocsg.rendering.policy.SURFACE_MAX_LEAVES`
         leaves, if ready; else None, and its background build is deferred to the pass's end when
         an earlier view found the tree's bands view-independent (``seen`` is False)."""
         key = ("tree", seen_key)

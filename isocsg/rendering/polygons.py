@@ -1,8 +1,8 @@
-"""Compiled fill of convex polygons (the quads of :func:`~isocsg.render.quads.pair_quads`).
+"""Compiled fill of convex polygons (the quads of :func:`~isocsg.rendering.quads.pair_quads`).
 
 A quad that projects strictly convex is filled with one span per row between
 its left and right chains, each edge's crossing of a row computed exactly as
-the triangle fill does (:mod:`isocsg.render.triangles`), so the result is the
+the triangle fill does (:mod:`isocsg.rendering.triangles`), so the result is the
 union of its fan triangles pixel for pixel; any other quad goes as its two
 triangles. Front faces keep the nearest depth key, back faces the farthest.
 """
@@ -129,7 +129,7 @@ def _fill_convex(
 
     One span per row between the polygon's left and right chains. Each edge's
     crossing of a row is computed exactly as in
-    :func:`~isocsg.render.triangles._fill_triangle` (from its upper end, with
+    :func:`~isocsg.rendering.triangles._fill_triangle` (from its upper end, with
     its own slope), so the result is the union of the fan triangles pixel for
     pixel, and neighbours sharing an edge split rows identically. The buffers
     cover the viewport whose top-left pixel is ``(oy, ox)``; ``front`` keeps

@@ -35,7 +35,7 @@ Built = tuple[BandMesh, bool]
 
 
 class MeshSource(Protocol):
-    """Where a pass gets its leaves' meshes (the :class:`~isocsg.render.Renderer` and its caches)."""
+    """Where a pass gets its leaves' meshes (the :class:`~isocsg.rendering.Renderer` and its caches)."""
 
     def leaf_mesh(
         self, primitive: Primitive, lights: Sequence[Any], material: Any, detail: LeafDetail, eye: Any,
@@ -154,7 +154,7 @@ class CSGObject:
     built : list, optional
         The leaves' band meshes when obtained already.
     by_rays : ndarray of bool, shape (n,), optional
-        Leaves drawn by exact rays instead of bands (:mod:`~isocsg.render.small_leaves`).
+        Leaves drawn by exact rays instead of bands (:mod:`~isocsg.rendering.small_leaves`).
     """
 
     leaves: Sequence[Primitive]
@@ -184,7 +184,7 @@ def screen_rect(program: Program, cam: Camera) -> Rect:
     (exact, from the tangents in the camera's two vertical planes); a union
     takes the hull of its operands', an intersection their overlap, a
     difference its first operand's. The whole image when anything reaches
-    behind its near plane (:func:`isocsg.render.tiles.leaf_rects`).
+    behind its near plane (:func:`isocsg.rendering.tiles.leaf_rects`).
     """
     rects, _, _ = leaf_rects(leaf_geometry(program.leaves), cam)
     return tuple(int(x) for x in combine_rects(program.op, program.arg, rects))  # type: ignore[return-value]

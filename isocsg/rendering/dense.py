@@ -2,8 +2,8 @@
 
 Each leaf's front and back surfaces are filled into buffers of the object's
 screen rectangle (known before any band exists), then row stripes resolve the
-program per pixel (:mod:`isocsg.render.pixel_csg`). Larger objects go through
-screen tiles (:mod:`isocsg.render.tiled`).
+program per pixel (:mod:`isocsg.rendering.pixel_csg`). Larger objects go through
+screen tiles (:mod:`isocsg.rendering.tiled`).
 """
 
 from __future__ import annotations

@@ -1,10 +1,10 @@
-"""Per-pixel CSG of a large object in screen tiles (see :mod:`isocsg.render.tiles` for the plan).
+"""Per-pixel CSG of a large object in screen tiles (see :mod:`isocsg.rendering.tiles` for the plan).
 
 Equal leaves (the same primitive at the same level of detail, e.g. a hole
 subtracted again and again by a modelling loop) form one group: its bands are
 obtained, projected and filled once per tile, and the equal leaves of a tile
 read the same buffers. Groups are built in the order of the first row of tiles
-their rectangle meets (:func:`~isocsg.render.tiles.plan_tiles`). A tile's
+their rectangle meets (:func:`~isocsg.rendering.tiles.plan_tiles`). A tile's
 buffers (its groups' clipped rectangles, packed) are allocated when the first
 group meeting it is built; each group is filled into all its tiles at once and
 its mesh and projection are dropped right after, so the meshes alive are only
@@ -12,10 +12,10 @@ those waiting to be filled, never one per leaf. Once every group meeting a tile
 is filled and its row closed, the tile resolves the program pruned to its
 leaves and releases its buffers. Fills and tiles are taken from one queue by
 the other threads and by the main thread whenever too many fills wait or when
-more than :data:`~isocsg.render.policy.ROWS_AHEAD` rows are open behind the row
+more than :data:`~isocsg.rendering.policy.ROWS_AHEAD` rows are open behind the row
 it builds. What is alive therefore grows with the image and the leaves' screen
 footprints (bounded before anything is allocated, see
-:func:`~isocsg.render.tiles.open_tile_pixels`). Leaves off screen are never built.
+:func:`~isocsg.rendering.tiles.open_tile_pixels`). Leaves off screen are never built.
 """
 
 from __future__ import annotations
@@ -158,7 +158,7 @@ class _TiledResolve:
             self.cond.notify_all()
 
     def fill_rays(self, g: int) -> None:
-        """Group ``g``'s leaf into all its tiles by exact rays (:mod:`~isocsg.render.small_leaves`)."""
+        """Group ``g``'s leaf into all its tiles by exact rays (:mod:`~isocsg.rendering.small_leaves`)."""
         leaf = self.obj.leaves[self.members[g][0]]
         near = self.nears_l[self.members[g][0]]
         done = []

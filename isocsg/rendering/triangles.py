@@ -1,4 +1,4 @@
-"""Compiled triangle fill: nearest and farthest surface per pixel (see :mod:`isocsg.render.raster`).
+"""Compiled triangle fill: nearest and farthest surface per pixel (see :mod:`isocsg.rendering.raster`).
 
 Coverage follows the top-left rule of scanline fill (a pixel centre belongs
 to a triangle when ``y_top <= row < y_bottom`` and ``x_left <= col < x_right``
