@@ -16,8 +16,8 @@ import numpy as np
 import pytest
 import trimesh
 
-from isocsg.csg.program import compile_program
 from isocsg import Box, Cylinder, Material, PointLight, Sphere
+from isocsg.csg.program import compile_program
 from isocsg.csg.surface import close_mesh, csg_surface, surface_from_bands
 from isocsg.errors import InvalidGeometryError, InvalidParameterError
 from isocsg.laminae.model import BandMesh
@@ -133,7 +133,10 @@ def test_sheet_removal_keeps_thin_solids_and_other_parts():
 def test_opposite_layers_overlapping_in_part_cancel_where_they_overlap():
     """A large triangle with a small opposite one inside it (in its plane): the overlap
     cancels, the rest of the large one stays (area by hand: 2 - 0.02), the small one goes."""
-    from isocsg.csg.surface import COINCIDENT_DISTANCE, _cancel_partial_overlaps
+    from isocsg.csg.surface.coincident import (
+        COINCIDENT_DISTANCE,
+        _cancel_partial_overlaps,
+    )
 
     v = np.array([[0, 0, 0], [2, 0, 0], [0, 2, 0], [0.5, 0.5, 0], [0.5, 0.7, 0], [0.7, 0.5, 0]], float)
     t = np.array([[0, 1, 2], [3, 4, 5]])  # the second faces -z
@@ -162,7 +165,14 @@ def test_a_minus_a_part_of_itself_keeps_its_face_outside_the_part():
     triangle half covered was dropped whole. Now every pixel matches."""
     from reference import compare, raycast_scene
 
-    from isocsg import Camera, ConvexPolyhedron, DirectionalLight, RenderSettings, Scene, Truncus
+    from isocsg import (
+        Camera,
+        ConvexPolyhedron,
+        DirectionalLight,
+        RenderSettings,
+        Scene,
+        Truncus,
+    )
     from isocsg.render import Renderer
 
     a = Truncus(_CONE_A[0], _CONE_A[1], _CONE_A[2], 0.0)
