@@ -23,7 +23,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from ..errors import InvalidGeometryError
 from ..geometry.primitives import Primitive, Solid
-from .program import OP_DIFFERENCE, OP_INTERSECTION, OP_UNION, Program, compile_program
+from .program import OP_DIFFERENCE, OP_INTERSECTION, OP_NAMES, OP_UNION, Program, compile_program
 
 __all__ = [
     "CSGNode",
@@ -38,6 +38,7 @@ __all__ = [
     "OP_UNION",
     "OP_INTERSECTION",
     "OP_DIFFERENCE",
+    "NODE_TYPES",
 ]
 
 #: Trees with more leaves than this print as a summary (their full repr would be huge).
@@ -231,7 +232,7 @@ def _rebuild(kinds: list[str], arity: list[int], prims: list[Primitive]) -> Soli
             continue
         args = stack[len(stack) - k :]
         del stack[len(stack) - k :]
-        stack.append(_KINDS[kind](*args))
+        stack.append(NODE_TYPES[kind](*args))
     return stack[-1]
 
 
@@ -247,7 +248,7 @@ class Union(CSGNode):
     [True, False]
     """
 
-    kind = "union"
+    kind = OP_NAMES[OP_UNION]
     opcode = OP_UNION
 
 
@@ -255,7 +256,7 @@ class Union(CSGNode):
 class Intersection(CSGNode):
     """The points common to every operand."""
 
-    kind = "intersection"
+    kind = OP_NAMES[OP_INTERSECTION]
     opcode = OP_INTERSECTION
 
 
@@ -263,11 +264,13 @@ class Intersection(CSGNode):
 class Difference(CSGNode):
     """The first operand minus all the others."""
 
-    kind = "difference"
+    kind = OP_NAMES[OP_DIFFERENCE]
     opcode = OP_DIFFERENCE
 
 
-_KINDS: dict[str, type[CSGNode]] = {"union": Union, "intersection": Intersection, "difference": Difference}
+#: The node class of each operation, by its name (:data:`~isocsg.csg.program.OP_NAMES`: scene
+#: files, ``to_dict``, pickles).
+NODE_TYPES: dict[str, type[CSGNode]] = {cls.kind: cls for cls in (Union, Intersection, Difference)}
 
 
 def union(*solids: Solid) -> Union:

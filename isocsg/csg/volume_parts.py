@@ -15,7 +15,14 @@ import numpy as np
 import shapely
 from numpy.typing import NDArray
 
-from .program import OP_DIFFERENCE, OP_INTERSECTION, OP_LEAF, OP_UNION, Program, _make
+from .program import (
+    OP_DIFFERENCE,
+    OP_INTERSECTION,
+    OP_LEAF,
+    OP_UNION,
+    Program,
+    compile_program,
+)
 from .section import leaf_table
 
 __all__ = ["leaf_boxes", "lens_volume", "pairwise_union", "split_parts"]
@@ -30,44 +37,6 @@ def leaf_boxes(prog: Program) -> NDArray[np.float64]:
         lo[:, j], hi[:, j] = tab.extents(e)
     return np.stack([lo, hi], axis=1)
 
-
-
-def _operand_spans(prog: Program) -> list[tuple[int, int, int, int]]:
-    """``(first instruction, last instruction + 1, first leaf, last leaf + 1)`` of each root operand.
-
-    Leaves are numbered in the order of their instructions, so each operand's leaves are a run."""
-    n = len(prog.op)
-    op, arg = prog.op, prog.arg
-    if n == 0 or op[-1] == OP_LEAF:
-        return []
-    # stack of subtree starts, one pass
-    starts: list[int] = []
-    for k, (o, a) in enumerate(zip(op[:-1].tolist(), arg[:-1].tolist())):
-        if o == OP_LEAF:
-            starts.append(k)
-        else:
-            s = starts[len(starts) - a]
-            del starts[len(starts) - a :]
-            starts.append(s)
-    ends = starts[1:] + [n - 1]
-    leaf_before = np.concatenate([[0], np.cumsum(op == OP_LEAF)])
-    return [(s, e, int(leaf_before[s]), int(leaf_before[e])) for s, e in zip(starts, ends)]
-
-
-def _slice(prog: Program, spans: list[tuple[int, int, int, int]], root: int) -> Program:
-    """The program of the given root operands joined by ``root`` (one operand: itself)."""
-    ops, args, leaves = [], [], []
-    for s, e, l0, l1 in spans:
-        o = prog.op[s:e]
-        a = prog.arg[s:e].copy()
-        a[o == OP_LEAF] += len(leaves) - l0
-        ops.append(o)
-        args.append(a)
-        leaves.extend(prog.leaves[l0:l1])
-    if len(spans) > 1:
-        ops.append(np.array([root], np.int8))
-        args.append(np.array([len(spans)], np.int64))
-    return _make(tuple(leaves), np.concatenate(ops).astype(np.int8), np.concatenate(args).astype(np.int64))
 
 
 def _overlap_pairs(lo: NDArray[np.float64], hi: NDArray[np.float64]) -> tuple[NDArray[np.int64], NDArray[np.int64]]:
@@ -108,20 +77,19 @@ def split_parts(prog: Program) -> list[tuple[Program, float]] | None:
     root = int(prog.op[-1]) if len(prog.op) else OP_LEAF
     if root not in (OP_UNION, OP_DIFFERENCE):
         return None
-    spans = _operand_spans(prog)
-    subs = [_slice(prog, [sp], root) for sp in spans]
+    subs = prog.operands()
     if root == OP_UNION:  # A | A = A: equal operands once
         keys = [(q.op.tobytes(), q.arg.tobytes(), q.leaves) for q in subs]
         first_of = dict(zip(reversed(keys), reversed(range(len(keys)))))
         if len(first_of) < len(keys):
             kept = sorted(first_of.values())
-            return [(_slice(prog, [spans[k] for k in kept], OP_UNION), 1.0)]
+            return [(Program.join(OP_UNION, [subs[k] for k in kept]), 1.0)]
     boxes = np.array([s.bounds() for s in subs])  # (m, 2, 3)
     if root == OP_UNION:
         groups = _clusters(len(subs), *_overlap_pairs(boxes[:, 0], boxes[:, 1]))
         if len(groups) < 2:
             return None
-        return [(_slice(prog, [spans[k] for k in g.tolist()], OP_UNION), 1.0) for g in groups]
+        return [(Program.join(OP_UNION, [subs[k] for k in g.tolist()]), 1.0) for g in groups]
     first, pbox = subs[0], boxes[0]
     rest = 1 + np.nonzero(np.all((boxes[1:, 0] < pbox[1]) & (boxes[1:, 1] > pbox[0]), axis=1))[0]
     if not len(rest):
@@ -145,11 +113,8 @@ def split_parts(prog: Program) -> list[tuple[Program, float]] | None:
         pruned = first.prune(present) if present.any() else None
         if pruned is None:
             continue
-        cut = _slice(prog, [spans[k] for k in members.tolist()], OP_UNION)
-        both = (pruned[0], cut)
-        op = np.concatenate([both[0].op, cut.op, [OP_INTERSECTION]]).astype(np.int8)
-        arg = np.concatenate([both[0].arg, cut.arg + np.where(cut.op == OP_LEAF, len(both[0].leaves), 0), [2]])
-        parts.append((_make(both[0].leaves + cut.leaves, op, arg.astype(np.int64)), -1.0))
+        cut = Program.join(OP_UNION, [subs[k] for k in members.tolist()])
+        parts.append((Program.join(OP_INTERSECTION, [pruned[0], cut]), -1.0))
     return parts
 
 
@@ -177,10 +142,7 @@ def pairwise_union(prog: Program) -> float | None:
         if len(distinct) == 1:
             return float(distinct[0].volume)
         n = len(distinct)
-        op = np.zeros(n + 1, np.int8)
-        arg = np.arange(n + 1, dtype=np.int64)
-        op[-1], arg[-1] = OP_UNION, n
-        prog = _make(tuple(distinct), op, arg)
+        prog = Program.join(OP_UNION, [compile_program(p) for p in distinct])
         tab = leaf_table(prog)
     boxes = leaf_boxes(prog)
     i, j = _overlap_pairs(boxes[:, 0], boxes[:, 1])

@@ -32,7 +32,7 @@ from pathlib import Path
 import numpy as np
 from numpy.typing import NDArray
 
-from ..csg.tree import CSGNode, Difference, Intersection, Union
+from ..csg.tree import NODE_TYPES, CSGNode
 from ..errors import InvalidGeometryError, InvalidParameterError
 from ..geometry.ellipsoid import Ellipsoid
 from ..geometry.elliptic import EllipticTruncus
@@ -41,7 +41,8 @@ from ..geometry.registry import hook_for
 
 __all__ = ["dumps_openscad", "save_openscad"]
 
-_OPS = {Union: "union", Intersection: "intersection", Difference: "difference"}
+# OpenSCAD's Boolean modules have isocsg's operation names.
+_OPS = {cls: name for name, cls in NODE_TYPES.items()}
 
 
 def _num(x: float) -> str:

@@ -61,7 +61,7 @@ from .raster import (
 )
 from .scratch import SCRATCH
 from .tiles import (
-    LEAF_PIXEL_BYTES, LeafGeometry, clip_leaves, combine_boxes, combine_rects, hidden_box, leaf_geometry,
+    LEAF_PIXEL_BYTES, LeafGeometry, clip_leaves, combine_rects, hidden_box, leaf_geometry,
     leaf_near_keys, leaf_rects, leaf_screen_sizes, open_tile_pixels, plan_tiles, tile_leaves,
 )
 
@@ -869,7 +869,7 @@ class Renderer:
         hit = self._geometry.get(key)
         if hit is not None and hit[0] is program:
             return hit[1]
-        lo, hi = combine_boxes(program.op, program.arg, geom.lo, geom.hi)
+        lo, hi = program.bounds(geom.lo, geom.hi)
         leaves = clip_leaves(program.leaves, geom, lo, hi)
         changed = any(a is not b for a, b in zip(leaves, program.leaves))
         geom_v = leaf_geometry(leaves) if changed else geom
@@ -887,7 +887,7 @@ class Renderer:
         shrank on screen is only more accurate with them than it needs to be."""
         if not self.adaptive_contours or program is None or program.n_leaves <= LOD_MIN_LEAVES:
             return np.full(len(leaves), contours, np.int64)
-        box = (None, None) if program is None else combine_boxes(program.op, program.arg, geom.lo, geom.hi)
+        box = (None, None) if program is None else program.bounds(geom.lo, geom.hi)
         # A truncus's diameter caps its size (holes, rods), alone or in a tree alike, so that
         # a primitive and a tree of it (A | A) get the same bands.
         sizes = leaf_screen_sizes(geom, cam, *box)
@@ -1009,7 +1009,7 @@ class Renderer:
             # and then trimmed away or kept as they are, and these bands are kept by no cache.
             hidden = None
             if self._by_request:
-                hidden = hidden_box(*combine_boxes(program.op, program.arg, geom.lo, geom.hi))
+                hidden = hidden_box(*program.bounds(geom.lo, geom.hi))
             most = LARGE_SURFACE_SHARE * memory_budget() / BYTES_PER_BOOLEAN_TRIANGLE
             built: dict[int, tuple[BandMesh, bool]] = {}
             for group in untrimmed_groups(program, geom.lo, geom.hi):

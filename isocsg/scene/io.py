@@ -62,7 +62,7 @@ from typing import Any, BinaryIO
 
 from .._validation import MAX_LIGHTS, MAX_SCENE_FILE_BYTES, show
 from ..camera import Camera
-from ..csg.tree import CSGNode, Difference, Intersection, Union
+from ..csg.tree import NODE_TYPES, CSGNode
 from ..errors import (
     InvalidGeometryError,
     InvalidLightError,
@@ -109,7 +109,7 @@ _CLASS_NAMES = {k.name: k.cls.__name__ for k in registered_kinds()}
 _PRIMITIVE_FIELDS["extrude"] = (("polygon", "height"), ("holes", "center"))
 _PRIMITIVE_TYPES["extrude"] = extrude_rings
 _CLASS_NAMES["extrude"] = "extrude"
-_CSG_TYPES: dict[str, type[CSGNode]] = {"union": Union, "intersection": Intersection, "difference": Difference}
+_CSG_TYPES: dict[str, type[CSGNode]] = NODE_TYPES
 
 #: Every node kind accepted in an object's ``shape`` tree.
 #: Transform nodes, OpenSCAD's names and parameters, each around one ``shape``:
