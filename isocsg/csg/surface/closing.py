@@ -202,7 +202,11 @@ def _points_on_edges(
                 continue
             rx, ry, rz = px - ax, py - ay, pz - az
             s = (rx * dx + ry * dy + rz * dz) / length2
-            if s <= 1e-7 or s >= 1.0 - 1e-7:  # strictly inside: not an end point
+            # Strictly inside. Vertices within ``tol`` of an end were merged with it, so any other
+            # vertex near the line is a T-junction, however close to an end: a relative margin
+            # here left open the edges of nearly coplanar faces, whose cuts of a shared edge
+            # come out a few nanometres apart (more than ``tol``, less than the margin).
+            if s <= 0.0 or s >= 1.0:
                 continue
             qx, qy, qz = rx - s * dx, ry - s * dy, rz - s * dz
             if qx * qx + qy * qy + qz * qz <= tol * tol:
