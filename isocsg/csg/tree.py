@@ -23,7 +23,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from ..errors import InvalidGeometryError
 from ..geometry.primitives import Primitive, Solid
-from .program import OP_DIFFERENCE, OP_INTERSECTION, OP_NAMES, OP_UNION, Program, compile_program
+from .program import OP_DIFFERENCE, OP_INTERSECTION, OP_LEAF, OP_NAMES, OP_UNION, Program, compile_program
 
 __all__ = [
     "CSGNode",
@@ -222,18 +222,14 @@ def _postorder_unhashed(root: CSGNode) -> Iterator[CSGNode]:
         todo.extend((c, False) for c in reversed(s.children) if isinstance(c, CSGNode) and c._hash is None)
 
 
-def _rebuild(kinds: list[str], arity: list[int], prims: list[Primitive]) -> Solid:
-    """Inverse of :meth:`CSGNode.__reduce__`: nodes from their postorder."""
-    stack: list[Solid] = []
-    it = iter(prims)
-    for kind, k in zip(kinds, arity):
-        if not kind:
-            stack.append(next(it))
-            continue
-        args = stack[len(stack) - k :]
-        del stack[len(stack) - k :]
-        stack.append(NODE_TYPES[kind](*args))
-    return stack[-1]
+def _rebuild(kinds: list[str], arity: list[int], prims: list[Solid]) -> Solid:
+    """Inverse of :meth:`CSGNode.__reduce__`: the postorder read as a program (nested nodes of
+    one operation kept apart, not flattened) and evaluated into nodes."""
+    code = {name: op for op, name in OP_NAMES.items()}
+    leaf = np.cumsum([not k for k in kinds]) - 1
+    op = np.array([code[k] if k else OP_LEAF for k in kinds], np.int8)
+    arg = np.array([a if k else leaf[j] for j, (k, a) in enumerate(zip(kinds, arity))], np.int64)
+    return Program(tuple(prims), op, arg).to_solid()  # type: ignore[arg-type]
 
 
 @dataclass(frozen=True, slots=True, eq=False, repr=False, init=False)
