@@ -222,9 +222,20 @@ class Program:
             return self.evaluate(lambda _, p: np.asarray(p.bounds, dtype=np.float64), _combine_boxes)
         lo_ = np.asarray(lo, dtype=np.float64).reshape(-1, 3)
         hi_ = np.asarray(hi, dtype=np.float64).reshape(-1, 3)
-        # A leaf's box as a pair of row views: no array is made per leaf (trees of 100 000 leaves).
-        box = self.evaluate(lambda i, _: (lo_[i], hi_[i]), _combine_boxes)
-        return np.asarray(box, dtype=np.float64)
+
+        # A leaf stays its index until an operation reads its box: the leaf operands of an
+        # operation are read at once, not one row each (trees of 100 000 leaves).
+        def box(x: Any) -> Any:
+            return (lo_[x], hi_[x]) if isinstance(x, int) else x
+
+        def combine(o: int, xs: list[Any]) -> Any:
+            if o == OP_DIFFERENCE:
+                return box(xs[0])
+            ids = [x for x in xs if isinstance(x, int)]
+            nodes = [x for x in xs if not isinstance(x, int)]
+            return _combine_boxes(o, [(lo_[ids], hi_[ids])] * bool(ids) + nodes, stacked=True)
+
+        return np.stack(box(self.evaluate(lambda i, _: i, combine)))
 
     def prune(self, present: ArrayLike) -> tuple[Program, NDArray[np.int64]] | None:
         """The program with the leaves marked absent replaced by the empty set, simplified.
@@ -344,12 +355,13 @@ def combine_masks(o: int, xs: list[NDArray[np.bool_]]) -> NDArray[np.bool_]:
     return out
 
 
-def _combine_boxes(o: int, xs: list[Any]) -> Any:
-    """``combine`` for :meth:`Program.evaluate` on boxes ``(lo, hi)``."""
+def _combine_boxes(o: int, xs: list[Any], stacked: bool = False) -> Any:
+    """``combine`` for :meth:`Program.evaluate` on boxes ``(lo, hi)``; where ``stacked``, an
+    operand may hold several boxes (``lo`` and ``hi`` of shape (k, 3))."""
     if o == OP_DIFFERENCE:
         return xs[0]
-    lo = np.array([x[0] for x in xs])
-    hi = np.array([x[1] for x in xs])
+    lo = np.vstack([x[0] for x in xs]) if stacked else np.array([x[0] for x in xs])
+    hi = np.vstack([x[1] for x in xs]) if stacked else np.array([x[1] for x in xs])
     if o == OP_UNION:
         return np.stack([lo.min(axis=0), hi.max(axis=0)])
     lo, hi = lo.max(axis=0), hi.min(axis=0)
