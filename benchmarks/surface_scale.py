@@ -9,7 +9,7 @@ every 5 ms while the surface is built, minus what it held before):
     python benchmarks/surface_scale.py layers 64          # coincident opposite layers alone (see _layers)
     python benchmarks/surface_scale.py all                # the table of docs/csg.md, one process per case
 
-``--module path/to/surface.py`` times another implementation of
+``--module path/to/surface.py`` (a single-module version) times another implementation of
 ``surface_from_bands`` (e.g. an older version) on the same band meshes.
 """
 
@@ -77,12 +77,13 @@ def run_layers(k: int, module: str | None) -> dict:
     import statistics
 
     mod = _surface_module(module)
-    mod._cancel_partial_overlaps(*_layers(2), mod.COINCIDENT_DISTANCE)  # compiled kernels warm
+    cancel = getattr(mod, "coincident", mod)._cancel_partial_overlaps
+    cancel(*_layers(2), mod.COINCIDENT_DISTANCE)  # compiled kernels warm
     args = _layers(k)
     times = []
     for _ in range(3):
         t0 = time.perf_counter()
-        out = mod._cancel_partial_overlaps(*args, mod.COINCIDENT_DISTANCE)
+        out = cancel(*args, mod.COINCIDENT_DISTANCE)
         times.append(time.perf_counter() - t0)
     kept = out[1][~out[3]]
     area = 0.5 * np.cross(out[0][kept[:, 1]] - out[0][kept[:, 0]], out[0][kept[:, 2]] - out[0][kept[:, 0]])[:, 2].sum()
@@ -129,7 +130,8 @@ def run(kind: str, count: int, contours: int, module: str | None) -> dict:
     mod.surface_from_bands(small, [build_laminae(p, lights, Material(), 8).bands for p in small.leaves])
     # The time spent cancelling partly overlapping coincident faces, where the module has that step.
     cancel = [0.0]
-    inner = getattr(mod, "_cancel_partial_overlaps", None)
+    holder = getattr(mod, "coincident", mod)  # the package's module of that step, or a single module
+    inner = getattr(holder, "_cancel_partial_overlaps", None)
     if inner is not None:
         def timed(*args):  # type: ignore[no-untyped-def]
             t0 = time.perf_counter()
@@ -137,7 +139,7 @@ def run(kind: str, count: int, contours: int, module: str | None) -> dict:
             cancel[0] += time.perf_counter() - t0
             return out
 
-        mod._cancel_partial_overlaps = timed
+        holder._cancel_partial_overlaps = timed
     surf, seconds, peak = _peak_rss(lambda: mod.surface_from_bands(prog, bands))
     # What the renderer then does with it: one part per leaf.
     t0 = time.perf_counter()

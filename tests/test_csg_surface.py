@@ -16,8 +16,8 @@ import numpy as np
 import pytest
 import trimesh
 
-from isocsg.csg.program import compile_program
 from isocsg import Box, Cylinder, Material, PointLight, Sphere
+from isocsg.csg.program import compile_program
 from isocsg.csg.surface import close_mesh, csg_surface, surface_from_bands
 from isocsg.errors import InvalidGeometryError, InvalidParameterError
 from isocsg.laminae.model import BandMesh
@@ -133,7 +133,10 @@ def test_sheet_removal_keeps_thin_solids_and_other_parts():
 def test_opposite_layers_overlapping_in_part_cancel_where_they_overlap():
     """A large triangle with a small opposite one inside it (in its plane): the overlap
     cancels, the rest of the large one stays (area by hand: 2 - 0.02), the small one goes."""
-    from isocsg.csg.surface import COINCIDENT_DISTANCE, _cancel_partial_overlaps
+    from isocsg.csg.surface.coincident import (
+        COINCIDENT_DISTANCE,
+        _cancel_partial_overlaps,
+    )
 
     v = np.array([[0, 0, 0], [2, 0, 0], [0, 2, 0], [0.5, 0.5, 0], [0.5, 0.7, 0], [0.7, 0.5, 0]], float)
     t = np.array([[0, 1, 2], [3, 4, 5]])  # the second faces -z
@@ -203,6 +206,22 @@ def test_close_mesh_welds_t_junctions_of_a_box_split_face_by_face():
     assert src.min() == 0 and src.max() == len(tris) - 1
 
 
+def test_close_mesh_splits_an_edge_at_a_vertex_nanometres_from_its_end():
+    # Nearly coplanar faces cut their common edge a few nanometres apart: farther than the
+    # welding tolerance (1e-9 of the size), nearer an end than 1e-7 of the edge. Still a T-junction.
+    box = trimesh.creation.box((1, 1, 1))
+    v, t = np.asarray(box.vertices), np.asarray(box.faces)
+    e0, e1, apex = t[1]
+    near_end = v[e1] + 5e-9 * (v[e0] - v[e1]) / np.linalg.norm(v[e0] - v[e1])
+    v2 = np.vstack([v, near_end])
+    j = len(v)
+    tris = np.vstack([t[:1], [[e0, j, apex], [j, e1, apex]], t[2:]])
+    vw, tw, _ = close_mesh(v2, tris)
+    welded = trimesh.Trimesh(vw, tw, process=False)
+    assert welded.is_watertight and welded.is_winding_consistent
+    assert abs(welded.volume - 1.0) < 1e-12
+
+
 def test_bad_inputs_name_what_is_wrong():
     with pytest.raises(InvalidGeometryError, match="tree must be a CSG node"):
         csg_surface(Sphere((0, 0, 0), 1), LIGHTS)
@@ -215,3 +234,45 @@ def test_bad_inputs_name_what_is_wrong():
         surface_from_bands(two, [square, square])
     with pytest.raises(InvalidParameterError, match="does not match 1 band meshes"):
         surface_from_bands(two, [square])
+
+
+def _nearly_coplanar_box(seed: int, eps: float):
+    """A 2 m cube's corners and six points inside each face, all moved by up to ``eps``: its hull has
+    nearly coplanar facets."""
+    from isocsg import ConvexPolyhedron
+
+    rng = np.random.default_rng(seed)
+    corners = np.array([[x, y, z] for x in (-1, 1) for y in (-1, 1) for z in (-1, 1)], float)
+    on_faces = []
+    for axis in range(3):
+        for side in (-1.0, 1.0):
+            q = rng.uniform(-1, 1, size=(6, 3))
+            q[:, axis] = side
+            on_faces.append(q)
+    p = np.vstack([corners, *on_faces])
+    return ConvexPolyhedron(p + rng.uniform(-eps, eps, size=p.shape))
+
+
+@pytest.mark.parametrize(("eps", "seed"), [(1e-9, 0), (1e-8, 1), (1e-7, 0), (1e-6, 2)], ids=str)
+def test_nearly_coplanar_polyhedron_minus_cylinders_and_box_draws_as_per_pixel(eps, seed):
+    """Issue 21: ``Renderer(csg="surface")`` raised "the band mesh of leaf 0 is not a closed surface
+    (Error.NotManifold)" on a convex polyhedron with nearly coplanar vertices minus
+    (cylinder & cylinder & box). Two causes: the hull's nearly coplanar facets were grouped into
+    faces by rounding their planes, which joined non-convex sets of them whose fans overlapped
+    (1e-9 to 1e-7); and two nearly coplanar faces cut their common edge a few nanometres apart,
+    farther than the welding tolerance and nearer an end than the T-junction test looked (1e-6).
+    Now the clipped surface draws what the per-pixel path draws."""
+    from isocsg import Camera, RenderSettings, Scene
+    from isocsg.rendering import Renderer
+
+    c = (0.7, -0.8, 0.7)
+    tree = _nearly_coplanar_box(seed, eps) - (
+        Cylinder(c, (0, 0, 3), 0.5) & Cylinder(c, (3, 0, 0), 0.5) & Box(c, (0.9, 0.9, 0.9))
+    )
+    scene = Scene(Camera((3, -4, 2.5), (0, 0, 0), width=96, height=96), LIGHTS, [tree], RenderSettings(contours=32))
+    surface = Renderer(csg="surface").render(scene).image
+    pixel = Renderer(csg="pixel").render(scene).image
+    assert (np.isfinite(surface) == np.isfinite(pixel)).all()
+    hit = np.isfinite(pixel)
+    assert hit.sum() > 3000
+    assert np.abs(surface[hit] - pixel[hit]).max() <= 0.02

@@ -175,13 +175,13 @@ def test_clipped_to_box_matches_the_tiles_cut():
     """``clipped_to_box`` is the cut the renderer's clip_leaves makes of trunci and boxes."""
     from isocsg import Box, Cone, ConvexPolyhedron, Cylinder
     from isocsg.csg.program import compile_program
-    from isocsg.rendering.tiles import clip_leaves, combine_boxes, leaf_geometry
+    from isocsg.rendering.tiles import clip_leaves, leaf_geometry
 
     tree = Box((0, 0, 0), (2, 2, 0.4)) - Cylinder((0.1, 0, 0), (0.2, 0.1, 3), 0.2) - Cone((0.5, 0.3, 0), (0, 0.3, -4), 0.3) \
         - Box((0.9, 0.9, 0), (0.1, 0.1, 5)) - ConvexPolyhedron([(0, 0, -3), (0.1, 0, 3), (0, 0.1, 3), (0.1, 0.1, 0)])
     prog = compile_program(tree)
     g = leaf_geometry(prog.leaves)
-    lo, hi = combine_boxes(prog.op, prog.arg, g.lo, g.hi)
+    lo, hi = prog.bounds(g.lo, g.hi)
     want = clip_leaves(prog.leaves, g, lo, hi)
     margin = 1e-3 * float(np.linalg.norm(hi - lo))
     got = [p.clipped_to_box(lo - margin, hi + margin) for p in prog.leaves]

@@ -69,7 +69,7 @@ def lod_counts(scene: Scene, contours: int) -> np.ndarray:
     """The counts the rule gives the scene's leaves (computed from the public pieces, not the renderer)."""
     prog = compile_program(scene.objects[0].shape)
     geom = tiles.leaf_geometry(prog.leaves)
-    box = tiles.combine_boxes(prog.op, prog.arg, geom.lo, geom.hi)
+    box = prog.bounds(geom.lo, geom.hi)
     return detail.screen_contours(tiles.leaf_screen_sizes(geom, scene.camera, *box), contours)
 
 
@@ -203,7 +203,7 @@ def _tilted_plate_tree():
 def test_clipped_leaves_give_the_same_solid():
     prog = compile_program(_tilted_plate_tree())
     geom = tiles.leaf_geometry(prog.leaves)
-    lo, hi = tiles.combine_boxes(prog.op, prog.arg, geom.lo, geom.hi)
+    lo, hi = prog.bounds(geom.lo, geom.hi)
     clipped = tiles.clip_leaves(prog.leaves, geom, lo, hi)
     changed = [i for i, (a, b) in enumerate(zip(prog.leaves, clipped)) if a is not b]
     assert len(changed) >= 10  # the cutters (and the boss's cylinder is within the box: kept)

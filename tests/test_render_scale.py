@@ -38,7 +38,7 @@ from isocsg import (
     Sphere,
     Union,
 )
-from isocsg.csg.program import compile_program
+from isocsg.csg.program import OP_DIFFERENCE, OP_INTERSECTION, OP_LEAF, compile_program
 from isocsg.errors import ResourceLimitError
 from isocsg.laminae import build_bands
 from isocsg.limits import set_memory_budget
@@ -115,7 +115,22 @@ def test_tiled_render_equals_the_whole_rectangle_render(name, sides, monkeypatch
     assert np.isfinite(whole.image).sum() > 300
 
 
-def test_prune_program_matches_program_prune():
+def _pruned_by_hand(prog, keep):
+    """The oracle of ``Program.prune``: the program evaluated with absent leaves as the empty set
+    (an absent operand leaves a union and a difference's subtracted operands, empties an
+    intersection or a difference whose first operand it is; one operand left is the node)."""
+    def combine(o, xs):
+        if (o == OP_INTERSECTION and None in xs) or (o == OP_DIFFERENCE and xs[0] is None):
+            return None
+        kept = [x for x in xs if x is not None]
+        if len(kept) <= 1:
+            return kept[0] if kept else None
+        return ([v for x in kept for v in x[0]] + [o], [v for x in kept for v in x[1]] + [len(kept)])
+
+    return prog.evaluate(lambda i, _: ([OP_LEAF], [i]) if keep[i] else None, combine)
+
+
+def test_program_prune_matches_the_empty_set_rules():
     rng = np.random.default_rng(5)
     pool = [Sphere((float(x), 0.0, 0.0), 1.0) for x in range(7)] + [Box((0, float(y), 0), (1, 1, 1)) for y in range(5)]
 
@@ -131,14 +146,18 @@ def test_prune_program_matches_program_prune():
         prog = compile_program(t)
         for _ in range(5):
             keep = rng.random(prog.n_leaves) < 0.6
-            want = prog.prune(keep)
-            op, arg, ids = tiles.prune_program(prog.op, prog.arg, keep)
+            want = _pruned_by_hand(prog, keep)
+            got = prog.prune(keep)
             if want is None:
-                assert len(op) == 0 and len(ids) == 0
+                assert got is None
             else:
-                assert op.tolist() == want[0].op.tolist()
-                assert arg.tolist() == want[0].arg.tolist()
-                assert ids.tolist() == want[1].tolist()
+                op, arg = want
+                ids = [a for o, a in zip(op, arg) if o == OP_LEAF]
+                renumbered = [ids.index(a) if o == OP_LEAF else a for o, a in zip(op, arg)]
+                assert got[0].op.tolist() == op
+                assert got[0].arg.tolist() == renumbered
+                assert got[1].tolist() == ids
+                assert got[0].leaves == tuple(prog.leaves[i] for i in ids)
             checked += want is not None
     assert checked > 50
 

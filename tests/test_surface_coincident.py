@@ -12,12 +12,12 @@ import pytest
 import trimesh
 
 from isocsg import Box, PointLight, union_all
-from isocsg.csg.surface import (
+from isocsg.csg.surface import csg_surface
+from isocsg.csg.surface.coincident import (
+    _SIDE_DIRECTION,
     COINCIDENT_DISTANCE,
     _cancel_partial_overlaps,
     _opposite_pairs,
-    _SIDE_DIRECTION,
-    csg_surface,
 )
 
 LIGHTS = (PointLight((1.2, -1.6, 5.0)),)

@@ -25,7 +25,7 @@ from isocsg.csg.surface import surface_from_bands
 from isocsg.laminae import build_bands, builder as lamina_builder
 from isocsg.lighting.lights import Material
 from isocsg.rendering import Renderer
-from isocsg.rendering.tiles import combine_boxes, leaf_geometry
+from isocsg.rendering.tiles import leaf_geometry
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
@@ -55,7 +55,7 @@ def test_bands_with_their_hidden_parts_uncut_give_the_same_trimmed_surface(name)
     for array."""
     prog = _trees()[name].program()
     geom = leaf_geometry(prog.leaves)
-    lo, hi = combine_boxes(prog.op, prog.arg, geom.lo, geom.hi)
+    lo, hi = prog.bounds(geom.lo, geom.hi)
     hidden = (tuple(lo.tolist()), tuple(hi.tolist()))
     full = [build_bands(p, LIGHTS, Material(), 16, keep=False).bands for p in prog.leaves]
     lean = [build_bands(p, LIGHTS, Material(), 16, hidden=hidden, keep=False).bands for p in prog.leaves]

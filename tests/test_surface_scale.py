@@ -17,11 +17,27 @@ import trimesh
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from isocsg import Box, Camera, Cylinder, Material, PointLight, RenderSettings, Scene, Sphere, union_all
-from isocsg.csg import surface as surface_module
+from isocsg import (
+    Box,
+    Camera,
+    Cylinder,
+    Material,
+    PointLight,
+    RenderSettings,
+    Scene,
+    Sphere,
+    union_all,
+)
 from isocsg.csg.mesh import to_manifold
 from isocsg.csg.program import compile_program
-from isocsg.csg.surface import estimate_surface_bytes, estimate_surface_triangles, surface_from_bands
+from isocsg.csg.surface import (
+    BYTES_PER_BOOLEAN_TRIANGLE,
+    BYTES_PER_PLAIN_TRIANGLE,
+    estimate_surface_bytes,
+    estimate_surface_triangles,
+    surface_from_bands,
+)
+from isocsg.csg.surface import booleans as boolean_module
 from isocsg.csg.tree import Difference, Intersection, Union
 from isocsg.errors import ResourceLimitError
 from isocsg.laminae import build_laminae
@@ -61,7 +77,7 @@ def test_disjoint_leaves_need_no_boolean(monkeypatch):
     them: fails there). Volume against manifold3d's own 512-segment spheres."""
     spheres = [Sphere((3.0 * (i % 6), 3.0 * (i // 6), 0.0), 0.5 + 0.1 * (i % 3)) for i in range(30)]
     prog, bands = _bands(union_all(spheres), contours=16)
-    monkeypatch.setattr(surface_module, "_manifold3d", lambda: pytest.fail("manifold3d was called"))
+    monkeypatch.setattr(boolean_module, "_manifold3d", lambda: pytest.fail("manifold3d was called"))
     surf = surface_from_bands(prog, bands)
     monkeypatch.undo()
     assert surf.n_triangles >= estimate_surface_triangles(bands)  # T-junctions split into fans
@@ -115,7 +131,7 @@ def test_trimmed_operands_give_the_same_solid(name):
     segments) and the untrimmed surface's area."""
     tree = _trim_trees()[name]
     prog, bands = _bands(tree, contours=16)
-    real = surface_module._manifold3d()
+    real = boolean_module._manifold3d()
 
     class Counting:  # manifold3d, counting the triangles of the meshes made for it
         n = 0
@@ -131,7 +147,7 @@ def test_trimmed_operands_give_the_same_solid(name):
     for trim in (False, True):
         Counting.n = 0
         with pytest.MonkeyPatch.context() as mp:
-            mp.setattr(surface_module, "_manifold3d", Counting)
+            mp.setattr(boolean_module, "_manifold3d", Counting)
             surfaces.append(surface_from_bands(prog, bands, trim=trim))
         counts.append(Counting.n)
     assert 0 < counts[1] < counts[0]
@@ -163,7 +179,7 @@ def test_a_difference_of_many_cuts_is_built_in_slabs_within_its_bound(monkeypatc
         part = part - Cylinder((0.5 * (i % 8), 0.5 * (i // 8), 0.0), (0, 0, 0.4), 0.15)
     prog, bands = _bands(part, contours=8)
     whole = surface_from_bands(prog, bands, trim=True)
-    real = surface_module._manifold3d()
+    real = boolean_module._manifold3d()
     largest = []
 
     class Counting:  # manifold3d, recording the triangles each batch Boolean takes
@@ -185,10 +201,10 @@ def test_a_difference_of_many_cuts_is_built_in_slabs_within_its_bound(monkeypatc
             return real.Manifold.batch_boolean(parts, op)
 
     Counting.Manifold = Solids()
-    monkeypatch.setattr(surface_module, "_manifold3d", Counting)
-    per = surface_module.BYTES_PER_BOOLEAN_TRIANGLE
+    monkeypatch.setattr(boolean_module, "_manifold3d", Counting)
+    per = BYTES_PER_BOOLEAN_TRIANGLE
     n_tri = sum(len(b.triangles) for b in bands)
-    bound = n_tri * surface_module.BYTES_PER_PLAIN_TRIANGLE + (len(bands[0].triangles) + n_tri // 3) * per
+    bound = n_tri * BYTES_PER_PLAIN_TRIANGLE + (len(bands[0].triangles) + n_tri // 3) * per
     parted = surface_from_bands(prog, bands, trim=True, max_bytes=bound)
     assert len(largest) >= 3  # slabs
     assert max(largest) <= bound // per
@@ -302,6 +318,8 @@ def test_extreme_frames_first_and_later_views_match_the_ray_caster(name, offset,
     from isocsg.rendering import surfaces
     from reference import compare, raycast_scene
     from test_csg_random_views import MIN_FRACTION, MIN_IOU, _placed_light, placed
+
+    from isocsg.rendering import painter
 
     built = []
     real = surfaces.surface_from_bands

@@ -18,8 +18,8 @@ flattens nested nodes of the same operation on the way:
 ``(a | b) | c`` is one union of three, ``(a - b) - c`` is ``a - b - c`` and
 ``a - (b | c)`` is ``a - b - c`` too. :meth:`Program.evaluate` is the one
 generic evaluator; :func:`evaluate_mask` is its compiled form for inside
-masks (per pixel); :meth:`Program.prune` drops the leaves that are absent
-from a region (a screen tile, a plane, a group of receivers), simplifying
+masks (per pixel); :meth:`Program.prune` (compiled: :func:`prune_arrays`)
+drops the leaves that are absent from a region (a screen tile, a plane, a group of receivers), simplifying
 the program the way bounding-box pruning does in image-space CSG.
 
 There is no limit on depth or width short of memory.
@@ -51,6 +51,7 @@ __all__ = [
     "compile_program",
     "combine_masks",
     "evaluate_mask",
+    "prune_arrays",
 ]
 
 OP_LEAF = 0
@@ -197,11 +198,44 @@ class Program:
 
         return default_tolerance(np.array([np.asarray(p.bounds, dtype=np.float64) for p in self.leaves]).reshape(-1, 2, 3))
 
-    def bounds(self) -> NDArray[np.float64]:
+    def bounds(self, lo: ArrayLike | None = None, hi: ArrayLike | None = None) -> NDArray[np.float64]:
         """A conservative axis-aligned box ``(2, 3)``: unions take the hull,
         intersections the overlap (collapsed to a point where there is none),
-        differences their first operand's."""
-        return self.evaluate(lambda _, p: np.asarray(p.bounds, dtype=np.float64), _combine_boxes)
+        differences their first operand's.
+
+        Parameters
+        ----------
+        lo, hi : array_like, shape (n_leaves, 3), optional
+            The leaves' boxes (e.g. the renderer's, of the leaves as drawn);
+            by default each leaf's own ``bounds``.
+
+        Examples
+        --------
+        >>> from isocsg import Box, Cylinder
+        >>> prog = compile_program(Box((0, 0, 0), (2, 2, 0.4)) - Cylinder((0, 0, 0), (0, 0, 3), 0.2))
+        >>> prog.bounds().tolist()
+        [[-1.0, -1.0, -0.2], [1.0, 1.0, 0.2]]
+        >>> prog.bounds([[0, 0, 0], [-5, -5, -5]], [[1, 1, 1], [5, 5, 5]]).tolist()
+        [[0.0, 0.0, 0.0], [1.0, 1.0, 1.0]]
+        """
+        if lo is None or hi is None:
+            return self.evaluate(lambda _, p: np.asarray(p.bounds, dtype=np.float64), _combine_boxes)
+        lo_ = np.asarray(lo, dtype=np.float64).reshape(-1, 3)
+        hi_ = np.asarray(hi, dtype=np.float64).reshape(-1, 3)
+
+        # A leaf stays its index until an operation reads its box: the leaf operands of an
+        # operation are read at once, not one row each (trees of 100 000 leaves).
+        def box(x: Any) -> Any:
+            return (lo_[x], hi_[x]) if isinstance(x, int) else x
+
+        def combine(o: int, xs: list[Any]) -> Any:
+            if o == OP_DIFFERENCE:
+                return box(xs[0])
+            ids = [x for x in xs if isinstance(x, int)]
+            nodes = [x for x in xs if not isinstance(x, int)]
+            return _combine_boxes(o, [(lo_[ids], hi_[ids])] * bool(ids) + nodes, stacked=True)
+
+        return np.stack(box(self.evaluate(lambda i, _: i, combine)))
 
     def prune(self, present: ArrayLike) -> tuple[Program, NDArray[np.int64]] | None:
         """The program with the leaves marked absent replaced by the empty set, simplified.
@@ -238,46 +272,69 @@ class Program:
             raise InvalidGeometryError(f"present must have {len(self.leaves)} entries, got {keep.shape[0]}")
         if keep.all():
             return self, np.arange(len(self.leaves), dtype=np.int64)
-        # Each stack entry is a sub-program (op list, arg list of original leaf
-        # indices) or None for the empty set.
-        stack: list[tuple[list[int], list[int]] | None] = []
-        for o, a in zip(self.op.tolist(), self.arg.tolist()):
-            if o == OP_LEAF:
-                stack.append(([OP_LEAF], [a]) if keep[a] else None)
-                continue
-            args = stack[len(stack) - a :]
-            del stack[len(stack) - a :]
-            if o == OP_INTERSECTION and any(x is None for x in args):
-                stack.append(None)
-                continue
-            if o == OP_DIFFERENCE and args[0] is None:
-                stack.append(None)
-                continue
-            kept = [x for x in args if x is not None]
-            if not kept:
-                stack.append(None)
-            elif len(kept) == 1:
-                stack.append(kept[0])
-            else:
-                ops = [v for x in kept for v in x[0]] + [o]
-                arg = [v for x in kept for v in x[1]] + [len(kept)]
-                stack.append((ops, arg))
-        top = stack[-1]
-        if top is None:
+        op, arg, ids = prune_arrays(self.op, self.arg, keep)
+        if not len(op):
             return None
-        op = np.asarray(top[0], dtype=np.int8)
-        arg = np.asarray(top[1], dtype=np.int64)
-        is_leaf = op == OP_LEAF
-        ids = arg[is_leaf].copy()
-        arg[is_leaf] = np.arange(len(ids))
         return _make(tuple(self.leaves[i] for i in ids.tolist()), op, arg), ids
+
+    def operands(self) -> list[Program]:
+        """The programs of the root operation's operands, in order (a leaf program has none).
+
+        Leaves are numbered in the order of their instructions, so each operand's
+        instructions and leaves are runs of this program's.
+
+        Examples
+        --------
+        >>> from isocsg import Box, Sphere
+        >>> a, b, c = Sphere((0, 0, 0), 1), Box((0, 0, 0), (1, 1, 1)), Sphere((2, 0, 0), 1)
+        >>> [q.op.tolist() for q in compile_program((a & b) | c).operands()]
+        [[0, 0, 2], [0]]
+        """
+        if not len(self.op) or self.op[-1] == OP_LEAF:
+            return []
+        at = np.flatnonzero(self.op == OP_LEAF)  # each leaf's instruction
+        root: list[list[tuple[int, int]]] = []
+
+        def combine(_: int, spans: list[tuple[int, int]]) -> tuple[int, int]:
+            root[:] = [spans]  # the last call is the root's
+            return spans[0][0], spans[-1][1] + 1
+
+        self.evaluate(lambda i, _: (int(at[i]), int(at[i]) + 1), combine)
+        leaf_before = np.concatenate([[0], np.cumsum(self.op == OP_LEAF)])
+        out = []
+        for s, e in root[0]:
+            l0, l1 = int(leaf_before[s]), int(leaf_before[e])
+            op = self.op[s:e].copy()
+            arg = np.where(op == OP_LEAF, self.arg[s:e] - l0, self.arg[s:e])
+            out.append(_make(self.leaves[l0:l1], op, arg.astype(np.int64)))
+        return out
+
+    @staticmethod
+    def join(op: int, parts: Sequence[Program]) -> Program:
+        """One operation ``op`` over programs (one part: that part), their leaves renumbered in order.
+
+        Examples
+        --------
+        >>> from isocsg import Box, Sphere
+        >>> a, b = compile_program(Sphere((0, 0, 0), 1)), compile_program(Box((0, 0, 0), (1, 1, 1)))
+        >>> both = Program.join(OP_INTERSECTION, [a, b])
+        >>> both.op.tolist(), both.arg.tolist()
+        ([0, 0, 2], [0, 1, 2])
+        """
+        if len(parts) == 1:
+            return parts[0]
+        offsets = np.cumsum([0] + [p.n_leaves for p in parts[:-1]])
+        ops = [p.op for p in parts] + [np.array([op], np.int8)]
+        args = [np.where(p.op == OP_LEAF, p.arg + k, p.arg) for p, k in zip(parts, offsets.tolist())]
+        args.append(np.array([len(parts)], np.int64))
+        leaves = tuple(leaf for p in parts for leaf in p.leaves)
+        return _make(leaves, np.concatenate(ops).astype(np.int8), np.concatenate(args).astype(np.int64))
 
     def to_solid(self) -> Solid:
         """The program as a tree of CSG nodes (flat: one node per operation)."""
-        from .tree import Difference, Intersection, Union
+        from .tree import NODE_TYPES
 
-        kinds = {OP_UNION: Union, OP_INTERSECTION: Intersection, OP_DIFFERENCE: Difference}
-        return self.evaluate(lambda _, p: p, lambda o, xs: kinds[o](*xs))
+        return self.evaluate(lambda _, p: p, lambda o, xs: NODE_TYPES[OP_NAMES[o]](*xs))
 
 
 def _make(leaves: tuple[Primitive, ...], op: NDArray[np.int8], arg: NDArray[np.int64]) -> Program:
@@ -298,11 +355,13 @@ def combine_masks(o: int, xs: list[NDArray[np.bool_]]) -> NDArray[np.bool_]:
     return out
 
 
-def _combine_boxes(o: int, xs: list[NDArray[np.float64]]) -> NDArray[np.float64]:
+def _combine_boxes(o: int, xs: list[Any], stacked: bool = False) -> Any:
+    """``combine`` for :meth:`Program.evaluate` on boxes ``(lo, hi)``; where ``stacked``, an
+    operand may hold several boxes (``lo`` and ``hi`` of shape (k, 3))."""
     if o == OP_DIFFERENCE:
         return xs[0]
-    lo = np.array([x[0] for x in xs])
-    hi = np.array([x[1] for x in xs])
+    lo = np.vstack([x[0] for x in xs]) if stacked else np.array([x[0] for x in xs])
+    hi = np.vstack([x[1] for x in xs]) if stacked else np.array([x[1] for x in xs])
     if o == OP_UNION:
         return np.stack([lo.min(axis=0), hi.max(axis=0)])
     lo, hi = lo.max(axis=0), hi.min(axis=0)
@@ -372,7 +431,7 @@ def compile_program(solid: Solid) -> Program:
 
 def _operands(node: Any) -> list[Solid]:
     """The operands of ``node`` after absorbing nested nodes of the same operation."""
-    from .tree import CSGNode, Difference, Union
+    from .tree import Difference, Union
 
     if isinstance(node, Difference):
         # (a - b) - c: walk down the chain of first operands.
@@ -430,3 +489,74 @@ def evaluate_mask(op: NDArray[np.int8], arg: NDArray[np.int64], inside: NDArray[
         stack[base] = r
         sp = base + 1
     return stack[0]
+
+
+@njit(cache=True, nogil=True)
+def prune_arrays(
+    op: NDArray[np.int8], arg: NDArray[np.int64], keep: NDArray[np.bool_],
+) -> tuple[NDArray[np.int8], NDArray[np.int64], NDArray[np.int64]]:
+    """:meth:`Program.prune` on the program's arrays, compiled (also for compiled callers: a
+    screen tile's program).
+
+    Returns the pruned ``op`` and ``arg`` (leaves renumbered in order) and,
+    per remaining leaf, its index in the original program; all empty when
+    the result is the empty set.
+    """
+    n = len(op)
+    out_op = np.empty(n, np.int8)
+    out_arg = np.empty(n, np.int64)
+    start = np.empty(n, np.int64)  # per stack entry: where its code begins in the output
+    empty = np.empty(n, np.bool_)
+    sp = 0
+    m = 0  # output length
+    for k in range(n):
+        o = op[k]
+        if o == 0:
+            start[sp] = m
+            if keep[arg[k]]:
+                out_op[m] = 0
+                out_arg[m] = arg[k]
+                m += 1
+                empty[sp] = False
+            else:
+                empty[sp] = True
+            sp += 1
+            continue
+        base = sp - arg[k]
+        kept = 0
+        any_empty = False
+        for s in range(base, sp):
+            if empty[s]:
+                any_empty = True
+            else:
+                kept += 1
+        s0 = start[base]
+        if kept == 0 or (o == 2 and any_empty) or (o == 3 and empty[base]):
+            m = s0  # drop the operands' code: the node is empty
+            empty[base] = True
+        elif kept > 1:
+            out_op[m] = o
+            out_arg[m] = kept
+            m += 1
+            empty[base] = False
+        else:
+            empty[base] = False  # one operand left: it is the node
+        start[base] = s0
+        sp = base + 1
+    if sp == 0 or empty[0]:
+        return np.empty(0, np.int8), np.empty(0, np.int64), np.empty(0, np.int64)
+    rop = out_op[:m].copy()
+    rarg = out_arg[:m].copy()
+    count = 0
+    for k in range(m):
+        if rop[k] == 0:
+            count += 1
+    ids = np.empty(count, np.int64)
+    j = 0
+    for k in range(m):
+        if rop[k] == 0:
+            ids[j] = rarg[k]
+            rarg[k] = j
+            j += 1
+    return rop, rarg, ids
+

@@ -23,7 +23,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from ..errors import InvalidGeometryError
 from ..geometry.primitives import Primitive, Solid
-from .program import OP_DIFFERENCE, OP_INTERSECTION, OP_UNION, Program, compile_program
+from .program import OP_DIFFERENCE, OP_INTERSECTION, OP_LEAF, OP_NAMES, OP_UNION, Program, compile_program
 
 __all__ = [
     "CSGNode",
@@ -38,6 +38,7 @@ __all__ = [
     "OP_UNION",
     "OP_INTERSECTION",
     "OP_DIFFERENCE",
+    "NODE_TYPES",
 ]
 
 #: Trees with more leaves than this print as a summary (their full repr would be huge).
@@ -221,18 +222,14 @@ def _postorder_unhashed(root: CSGNode) -> Iterator[CSGNode]:
         todo.extend((c, False) for c in reversed(s.children) if isinstance(c, CSGNode) and c._hash is None)
 
 
-def _rebuild(kinds: list[str], arity: list[int], prims: list[Primitive]) -> Solid:
-    """Inverse of :meth:`CSGNode.__reduce__`: nodes from their postorder."""
-    stack: list[Solid] = []
-    it = iter(prims)
-    for kind, k in zip(kinds, arity):
-        if not kind:
-            stack.append(next(it))
-            continue
-        args = stack[len(stack) - k :]
-        del stack[len(stack) - k :]
-        stack.append(_KINDS[kind](*args))
-    return stack[-1]
+def _rebuild(kinds: list[str], arity: list[int], prims: list[Solid]) -> Solid:
+    """Inverse of :meth:`CSGNode.__reduce__`: the postorder read as a program (nested nodes of
+    one operation kept apart, not flattened) and evaluated into nodes."""
+    code = {name: op for op, name in OP_NAMES.items()}
+    leaf = np.cumsum([not k for k in kinds]) - 1
+    op = np.array([code[k] if k else OP_LEAF for k in kinds], np.int8)
+    arg = np.array([a if k else leaf[j] for j, (k, a) in enumerate(zip(kinds, arity))], np.int64)
+    return Program(tuple(prims), op, arg).to_solid()  # type: ignore[arg-type]
 
 
 @dataclass(frozen=True, slots=True, eq=False, repr=False, init=False)
@@ -247,7 +244,7 @@ class Union(CSGNode):
     [True, False]
     """
 
-    kind = "union"
+    kind = OP_NAMES[OP_UNION]
     opcode = OP_UNION
 
 
@@ -255,7 +252,7 @@ class Union(CSGNode):
 class Intersection(CSGNode):
     """The points common to every operand."""
 
-    kind = "intersection"
+    kind = OP_NAMES[OP_INTERSECTION]
     opcode = OP_INTERSECTION
 
 
@@ -263,11 +260,13 @@ class Intersection(CSGNode):
 class Difference(CSGNode):
     """The first operand minus all the others."""
 
-    kind = "difference"
+    kind = OP_NAMES[OP_DIFFERENCE]
     opcode = OP_DIFFERENCE
 
 
-_KINDS: dict[str, type[CSGNode]] = {"union": Union, "intersection": Intersection, "difference": Difference}
+#: The node class of each operation, by its name (:data:`~isocsg.csg.program.OP_NAMES`: scene
+#: files, ``to_dict``, pickles).
+NODE_TYPES: dict[str, type[CSGNode]] = {cls.kind: cls for cls in (Union, Intersection, Difference)}
 
 
 def union(*solids: Solid) -> Union:

@@ -61,8 +61,15 @@ from numpy.typing import ArrayLike, NDArray
 from .._validation import integer, nonzero_vector3, scalar
 from ..errors import InvalidParameterError
 from ..geometry.primitives import Box, ConvexPolyhedron, Solid, Sphere
-from .program import OP_DIFFERENCE, OP_INTERSECTION, OP_LEAF, OP_UNION, Program, _make
-from .section import combine_sections, leaf_sections, leaf_table, plane_frame, solid_program
+from .program import OP_DIFFERENCE, OP_LEAF, OP_UNION, Program
+from .section import (
+    combine_sections,
+    leaf_sections,
+    leaf_table,
+    plane_frame,
+    solid_program,
+)
+from .volume_parts import leaf_boxes, lens_volume, pairwise_union, split_parts
 
 __all__ = ["volume", "section_areas", "breakpoints", "closed_form_volume"]
 
@@ -141,7 +148,7 @@ def _crossing_events(prog: Program, w: NDArray[np.float64], lo: NDArray[np.float
     F0 = plane_frame(np.zeros(3), w)
     u, v = F0[:3, 0], F0[:3, 1]
     c2 = np.column_stack([tab.center @ u, tab.center @ v])
-    boxes = _boxes(prog)
+    boxes = leaf_boxes(prog)
     vi = np.nonzero(varying)[0]
     partners = np.nonzero(round_ | prism)[0]
     # candidate pairs: boxes overlapping
@@ -227,14 +234,6 @@ def _prismatic(prog: Program, w: NDArray[np.float64]) -> NDArray[np.bool_]:
     return out
 
 
-def _boxes(prog: Program) -> NDArray[np.float64]:
-    tab = leaf_table(prog)
-    lo = np.empty((len(tab.kind), 3))
-    hi = np.empty((len(tab.kind), 3))
-    for j, e in enumerate(np.eye(3)):
-        lo[:, j], hi[:, j] = tab.extents(e)
-    return np.stack([lo, hi], axis=1)
-
 
 def _disjoint_boxes(lo: NDArray[np.float64], hi: NDArray[np.float64]) -> bool:
     """True when no two boxes overlap with positive volume (touching is fine)."""
@@ -277,7 +276,7 @@ def closed_form_volume(solid: Solid) -> float | None:
 
 
 def _closed_form(prog: Program) -> float | None:
-    boxes = _boxes(prog)
+    boxes = leaf_boxes(prog)
     leaves = prog.leaves
     # operands are compared by interned keys: equal subtrees get the same integer
     keys: dict[object, int] = {}
@@ -333,7 +332,7 @@ def _closed_form(prog: Program) -> float | None:
             p, q = leaves[xs[0][3]], leaves[xs[1][3]]
             if isinstance(p, Sphere) and isinstance(q, Sphere):  # a lens
                 d = math.dist(p.center, q.center)
-                lens = _lens(np.array(p.radius), np.array(q.radius), np.array(d))
+                lens = lens_volume(np.array(p.radius), np.array(q.radius), np.array(d))
                 return (float(lens), box_lo, box_hi, -1, k)
         # an operand whose box lies inside every other operand, each a (convex) primitive, is the result
         small = int(np.argmin(np.prod(hi - lo, axis=1)))
@@ -488,11 +487,11 @@ def volume(
         if exact is None:
             exact = _prism_minus_disjoint_prisms(p, w, res)
         if exact is None:
-            exact = _pairwise_union(p)
+            exact = pairwise_union(p)
         if exact is not None:
             total += sign * exact
             continue
-        parts = _split(p)
+        parts = split_parts(p)
         if parts is None:
             integrals.append((p, sign))
         else:
@@ -522,7 +521,7 @@ def _prism_minus_disjoint_prisms(prog: Program, w: NDArray[np.float64], res: int
     cyl = (kind == 1) & prism
     if not prism[0] or not np.all(cyl[1:] | (kind[1:] == 2) & prism[1:]):
         return None
-    boxes = _boxes(prog)
+    boxes = leaf_boxes(prog)
     order = np.asarray(prog.arg[:-1])  # leaf index of each operand, first operand first
     first, rest = int(order[0]), order[1:]
     meet = np.all((boxes[rest, 0] < boxes[first, 1]) & (boxes[rest, 1] > boxes[first, 0]), axis=1)
@@ -662,184 +661,3 @@ def _integrate(
         progress(n_pieces + splits, n_pieces + splits)
     # re-add the accepted values exactly (the running sum drifts by rounding)
     return float(max(exact_total + sum(item[4] for item in heap), 0.0))
-
-
-# ----------------------------------------------------------------------------- splitting a program into parts
-
-
-def _operand_spans(prog: Program) -> list[tuple[int, int, int, int]]:
-    """``(first instruction, last instruction + 1, first leaf, last leaf + 1)`` of each root operand.
-
-    Leaves are numbered in the order of their instructions, so each operand's leaves are a run."""
-    n = len(prog.op)
-    op, arg = prog.op, prog.arg
-    if n == 0 or op[-1] == OP_LEAF:
-        return []
-    # stack of subtree starts, one pass
-    starts: list[int] = []
-    for k, (o, a) in enumerate(zip(op[:-1].tolist(), arg[:-1].tolist())):
-        if o == OP_LEAF:
-            starts.append(k)
-        else:
-            s = starts[len(starts) - a]
-            del starts[len(starts) - a :]
-            starts.append(s)
-    ends = starts[1:] + [n - 1]
-    leaf_before = np.concatenate([[0], np.cumsum(op == OP_LEAF)])
-    return [(s, e, int(leaf_before[s]), int(leaf_before[e])) for s, e in zip(starts, ends)]
-
-
-def _slice(prog: Program, spans: list[tuple[int, int, int, int]], root: int) -> Program:
-    """The program of the given root operands joined by ``root`` (one operand: itself)."""
-    ops, args, leaves = [], [], []
-    for s, e, l0, l1 in spans:
-        o = prog.op[s:e]
-        a = prog.arg[s:e].copy()
-        a[o == OP_LEAF] += len(leaves) - l0
-        ops.append(o)
-        args.append(a)
-        leaves.extend(prog.leaves[l0:l1])
-    if len(spans) > 1:
-        ops.append(np.array([root], np.int8))
-        args.append(np.array([len(spans)], np.int64))
-    return _make(tuple(leaves), np.concatenate(ops).astype(np.int8), np.concatenate(args).astype(np.int64))
-
-
-def _overlap_pairs(lo: NDArray[np.float64], hi: NDArray[np.float64]) -> tuple[NDArray[np.int64], NDArray[np.int64]]:
-    """Pairs ``i < j`` of boxes that overlap with positive volume (an R-tree in xy, then z)."""
-    n = len(lo)
-    if n < 2:
-        return np.zeros(0, np.int64), np.zeros(0, np.int64)
-    rects = shapely.box(lo[:, 0], lo[:, 1], hi[:, 0], hi[:, 1])
-    a, b = shapely.STRtree(rects).query(rects)
-    keep = a < b
-    a, b = a[keep], b[keep]
-    ok = np.all((lo[a] < hi[b]) & (lo[b] < hi[a]), axis=1)
-    a, b = a[ok], b[ok]
-    return np.minimum(a, b), np.maximum(a, b)
-
-
-def _clusters(n: int, i: NDArray[np.int64], j: NDArray[np.int64]) -> list[NDArray[np.int64]]:
-    """Connected components of the graph on ``n`` nodes with edges ``(i, j)`` (ascending members)."""
-    from scipy.sparse import coo_matrix
-    from scipy.sparse.csgraph import connected_components
-
-    g = coo_matrix((np.ones(len(i)), (i, j)), shape=(n, n))
-    _, label = connected_components(g, directed=False)
-    order = np.argsort(label, kind="stable")
-    cuts = np.nonzero(np.diff(label[order]))[0] + 1
-    return np.split(order, cuts)
-
-
-def _split(prog: Program) -> list[tuple[Program, float]] | None:
-    """Parts whose signed volumes add up to the program's, or None when it does not split.
-
-    - a union whose operands fall into several clusters of overlapping boxes is the sum of the
-      clusters' unions (they meet in sets of zero volume);
-    - ``P - Q1 - ... - Qn`` is ``V(P) - sum V(P & C)`` over the clusters ``C`` (unions) of the
-      ``Qi`` that meet ``P``'s box, when there are several; each ``P & C`` keeps only the leaves
-      of ``P`` whose boxes meet ``C``'s (elsewhere in ``C`` they are absent).
-    """
-    root = int(prog.op[-1]) if len(prog.op) else OP_LEAF
-    if root not in (OP_UNION, OP_DIFFERENCE):
-        return None
-    spans = _operand_spans(prog)
-    subs = [_slice(prog, [sp], root) for sp in spans]
-    if root == OP_UNION:  # A | A = A: equal operands once
-        keys = [(q.op.tobytes(), q.arg.tobytes(), q.leaves) for q in subs]
-        first_of = dict(zip(reversed(keys), reversed(range(len(keys)))))
-        if len(first_of) < len(keys):
-            kept = sorted(first_of.values())
-            return [(_slice(prog, [spans[k] for k in kept], OP_UNION), 1.0)]
-    boxes = np.array([s.bounds() for s in subs])  # (m, 2, 3)
-    if root == OP_UNION:
-        groups = _clusters(len(subs), *_overlap_pairs(boxes[:, 0], boxes[:, 1]))
-        if len(groups) < 2:
-            return None
-        return [(_slice(prog, [spans[k] for k in g.tolist()], OP_UNION), 1.0) for g in groups]
-    first, pbox = subs[0], boxes[0]
-    rest = 1 + np.nonzero(np.all((boxes[1:, 0] < pbox[1]) & (boxes[1:, 1] > pbox[0]), axis=1))[0]
-    if not len(rest):
-        return [(first, 1.0)]
-    groups = _clusters(len(rest), *_overlap_pairs(boxes[rest, 0], boxes[rest, 1]))
-    if len(groups) < 2:
-        return None
-    pleaf = _boxes(first)
-    presents = []
-    for g in groups:
-        members = rest[g]
-        clo, chi = boxes[members, 0].min(axis=0), boxes[members, 1].max(axis=0)
-        presents.append(np.all((pleaf[:, 0] < chi) & (pleaf[:, 1] > clo), axis=1))
-    # when most of P meets every cluster (an intersection of many balls, dimpled all over), the
-    # parts would repeat P's leaves once per cluster: integrating the whole is cheaper
-    if sum(int(p.sum()) for p in presents) > 4 * len(prog.leaves):
-        return None
-    parts: list[tuple[Program, float]] = [(first, 1.0)]
-    for g, present in zip(groups, presents):
-        members = rest[g]
-        pruned = first.prune(present) if present.any() else None
-        if pruned is None:
-            continue
-        cut = _slice(prog, [spans[k] for k in members.tolist()], OP_UNION)
-        both = (pruned[0], cut)
-        op = np.concatenate([both[0].op, cut.op, [OP_INTERSECTION]]).astype(np.int8)
-        arg = np.concatenate([both[0].arg, cut.arg + np.where(cut.op == OP_LEAF, len(both[0].leaves), 0), [2]])
-        parts.append((_make(both[0].leaves + cut.leaves, op, arg.astype(np.int64)), -1.0))
-    return parts
-
-
-def _lens(r1: NDArray[np.float64], r2: NDArray[np.float64], d: NDArray[np.float64]) -> NDArray[np.float64]:
-    """Volume of the intersection of two balls of radii ``r1``, ``r2`` with centres ``d`` apart."""
-    small = 4.0 / 3.0 * math.pi * np.minimum(r1, r2) ** 3
-    dd = np.maximum(d, 1e-300)
-    lens = math.pi * (r1 + r2 - d) ** 2 * (d * d + 2 * d * (r1 + r2) - 3 * (r1 - r2) ** 2) / (12 * dd)
-    return np.where(d <= np.abs(r1 - r2), small, np.where(d >= r1 + r2, 0.0, lens))
-
-
-def _pairwise_union(prog: Program) -> float | None:
-    """A union of spheres, or of axis-aligned boxes, in which no three leaves overlap pairwise:
-    ``sum V(i) - sum V(i & j)`` exactly (inclusion-exclusion stops at pairs, since every triple
-    meets in zero volume), with the closed forms of a ball lens and a box overlap. None otherwise."""
-    n = len(prog.leaves)
-    if n < 2 or prog.op[-1] != OP_UNION or int(prog.arg[-1]) != n or np.any(prog.op[:-1] != OP_LEAF):
-        return None
-    tab = leaf_table(prog)
-    kind = tab.kind
-    if not (np.all(kind == 0) or np.all(kind == 2)):
-        return None
-    distinct = list(dict.fromkeys(prog.leaves))  # A | A = A
-    if len(distinct) < n:
-        if len(distinct) == 1:
-            return float(distinct[0].volume)
-        n = len(distinct)
-        op = np.zeros(n + 1, np.int8)
-        arg = np.arange(n + 1, dtype=np.int64)
-        op[-1], arg[-1] = OP_UNION, n
-        prog = _make(tuple(distinct), op, arg)
-        tab = leaf_table(prog)
-    boxes = _boxes(prog)
-    i, j = _overlap_pairs(boxes[:, 0], boxes[:, 1])
-    if np.all(kind == 0):
-        d = np.linalg.norm(tab.center[i] - tab.center[j], axis=1)
-        r1, r2 = tab.radius[i], tab.radius[j]
-        keep = d < r1 + r2
-        i, j = i[keep], j[keep]
-        vols = 4.0 / 3.0 * math.pi * tab.radius**3
-        pair = _lens(r1[keep], r2[keep], d[keep])
-    else:
-        vols = np.prod(boxes[:, 1] - boxes[:, 0], axis=1)
-        pair = np.prod(np.minimum(boxes[i, 1], boxes[j, 1]) - np.maximum(boxes[i, 0], boxes[j, 0]), axis=1)
-    if len(i) and _has_triangle(n, i, j):
-        return None
-    return max(float(np.sum(vols) - np.sum(pair)), 0.0)
-
-
-def _has_triangle(n: int, i: NDArray[np.int64], j: NDArray[np.int64]) -> bool:
-    """True when some edge's ends share a neighbour (the graph on ``n`` nodes has a triangle)."""
-    from scipy.sparse import csr_matrix
-
-    a = csr_matrix((np.ones(len(i)), (i, j)), shape=(n, n))
-    a = a + a.T
-    a.data[:] = 1.0
-    common = a[i].multiply(a[j]).sum(axis=1)  # neighbours shared by the ends of each edge
-    return bool(np.any(np.asarray(common) > 0))

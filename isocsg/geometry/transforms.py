@@ -220,7 +220,7 @@ def transform_solid(solid: "Solid", matrix: ArrayLike) -> "Solid":
     InvalidGeometryError
         If an image is not a valid primitive (e.g. it leaves the coordinate range).
     """
-    from ..csg.tree import CSGNode, _KINDS, _postorder
+    from ..csg.tree import NODE_TYPES, CSGNode, _postorder
     from ..kinds.base import Primitive
 
     m = affine_matrix(matrix)
@@ -235,7 +235,7 @@ def transform_solid(solid: "Solid", matrix: ArrayLike) -> "Solid":
         if key in done:
             continue  # a leaf or subtree shared in several places is mapped once
         if isinstance(s, CSGNode):
-            done[key] = _KINDS[s.kind](*[done[id(c)] for c in s.children])
+            done[key] = NODE_TYPES[s.kind](*[done[id(c)] for c in s.children])
         else:
             done[key] = s._affine(A, t)  # type: ignore[attr-defined]
     return done[id(solid)]

@@ -64,9 +64,10 @@ def _hull(points: NDArray[np.float64], name: str) -> tuple[NDArray[np.float64], 
     remap[verts_idx] = np.arange(len(verts_idx))
     hv = points[verts_idx]
     eq = hull.equations  # n . x + e = 0, n outward unit
-    # merge coplanar facets
-    key = np.round(np.column_stack([eq[:, :3], eq[:, 3] / scale]), 7)
-    _, group = np.unique(key, axis=0, return_inverse=True)
+    # A face is one of qhull's facets (coplanar ones merged, convex), whose triangles share
+    # their plane bit for bit. Grouping nearly coplanar facets by a rounded plane could join
+    # a non-convex set of them, whose fan then overlaps itself.
+    _, group = np.unique(eq, axis=0, return_inverse=True)
     group = group.ravel()
     faces, normals, offsets = [], [], []
     for g in range(group.max() + 1):

@@ -26,13 +26,14 @@ from __future__ import annotations
 import os
 from pathlib import Path
 
-from ..csg.tree import CSGNode, Difference, Intersection, Union
+from ..csg.tree import NODE_TYPES, CSGNode
 from ..errors import InvalidParameterError
 from ..kinds.base import Primitive, Solid
 
 __all__ = ["dumps_openscad", "save_openscad"]
 
-_OPS = {Union: "union", Intersection: "intersection", Difference: "difference"}
+# OpenSCAD's Boolean modules have isocsg's operation names.
+_OPS = {cls: name for name, cls in NODE_TYPES.items()}
 
 
 def _leaf(solid: Solid, digits: int | None, polyhedra: str = "hull") -> str:

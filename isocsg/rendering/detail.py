@@ -22,7 +22,7 @@ from ..csg.program import Program
 from ..geometry.primitives import Primitive
 from ..laminae.builder import DEFAULT_SEGMENTS
 from . import policy
-from .tiles import LeafGeometry, combine_boxes, leaf_screen_sizes
+from .tiles import LeafGeometry, leaf_screen_sizes
 
 __all__ = ["LeafDetail", "TreeDetail", "LevelOfDetail", "screen_contours", "screen_segments"]
 
@@ -168,7 +168,7 @@ class LevelOfDetail:
         that shrank on screen is only more accurate with them than it needs to be."""
         if program is None or not self.applies(program):
             return TreeDetail.uniform(len(leaves), contours)
-        box = combine_boxes(program.op, program.arg, geom.lo, geom.hi)
+        box = program.bounds(geom.lo, geom.hi)
         # A truncus's diameter caps its size (holes, rods), alone or in a tree alike, so that
         # a primitive and a tree of it (A | A) get the same bands.
         sizes = leaf_screen_sizes(geom, cam, *box)

@@ -56,7 +56,6 @@ from .tiles import (
     LEAF_PIXEL_BYTES,
     LeafGeometry,
     clip_leaves,
-    combine_boxes,
     combine_rects,
     hidden_box,
     leaf_geometry,
@@ -222,7 +221,7 @@ class Renderer:
         hit = self._geometry.get(key)
         if hit is not None and hit[0] is program:
             return hit[1]  # type: ignore[no-any-return]
-        lo, hi = combine_boxes(program.op, program.arg, geom.lo, geom.hi)
+        lo, hi = program.bounds(geom.lo, geom.hi)
         leaves = clip_leaves(program.leaves, geom, lo, hi)
         changed = any(a is not b for a, b in zip(leaves, program.leaves))
         geom_v = leaf_geometry(leaves) if changed else geom

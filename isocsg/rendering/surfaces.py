@@ -38,7 +38,7 @@ from ..limits import memory_budget
 from . import policy
 from .detail import LeafDetail, TreeDetail
 from .meshes import PreparedMesh, SurfaceRuns, mesh_bytes, prepare_mesh
-from .tiles import combine_boxes, hidden_box, leaf_geometry
+from .tiles import hidden_box, leaf_geometry
 
 __all__ = ["SurfaceBuilds", "PENDING"]
 
@@ -248,7 +248,7 @@ class SurfaceBuilds:
         # The parts of a leaf beyond the object's box (a hole's ends) cannot be on the
         # result's boundary: they are built uncut (a few triangles instead of their bands)
         # and then trimmed away or kept as they are, and these bands are kept by no cache.
-        hidden = hidden_box(*combine_boxes(program.op, program.arg, geom.lo, geom.hi)) if self.by_request else None
+        hidden = hidden_box(*program.bounds(geom.lo, geom.hi)) if self.by_request else None
         most = policy.LARGE_SURFACE_SHARE * memory_budget() / BYTES_PER_BOOLEAN_TRIANGLE
         built: dict[int, tuple[BandMesh, bool]] = {}
         for group in untrimmed_groups(program, geom.lo, geom.hi):

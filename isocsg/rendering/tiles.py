@@ -9,8 +9,8 @@ of its leaves' clipped rectangles), with the tree's program pruned to those
 leaves as bounding-box pruning does in image-space CSG: a leaf absent from
 the tile drops out of a union and out of a difference's subtracted operands,
 and empties an intersection or a difference whose first operand it is
-(:meth:`isocsg.csg.program.Program.prune`, compiled here as
-:func:`prune_program`).
+(:meth:`isocsg.csg.program.Program.prune`, whose compiled form
+:func:`~isocsg.csg.program.prune_arrays` a tile calls).
 
 Everything here is known before any band is built: the leaves' bounding
 boxes (:func:`leaf_geometry`), their screen rectangles, the near plane of
@@ -29,12 +29,13 @@ from numba import njit
 from numpy.typing import NDArray
 
 from ..camera import Camera
+from ..csg.program import prune_arrays
 from ..errors import InvalidGeometryError
 from ..geometry.primitives import Box, Cone, Cylinder, Primitive, Sphere, Truncus
 from .projection import NEAR_RELATIVE
 
 __all__ = [
-    "LeafGeometry", "leaf_geometry", "leaf_rects", "leaf_near_keys", "leaf_screen_sizes", "combine_rects", "combine_boxes", "prune_program", "tile_leaves", "TilePlan", "plan_tiles",
+    "LeafGeometry", "leaf_geometry", "leaf_rects", "leaf_near_keys", "leaf_screen_sizes", "combine_rects", "tile_leaves", "TilePlan", "plan_tiles",
     "open_tile_pixels", "clip_leaves", "hidden_box", "CLIP_MARGIN",
 ]
 
@@ -368,9 +369,10 @@ def clip_leaves(
 ) -> list[Primitive]:
     """The leaves cut down to the slab of the object's box ``[lo, hi]`` where they can be seen.
 
-    A tree's value is inside the box :func:`combine_boxes` gives (a union
-    holds its operands' boxes, an intersection lies in their overlap, a
-    difference in its first operand's box), and replacing every leaf ``L``
+    A tree's value is inside the box
+    :meth:`Program.bounds(lo, hi) <isocsg.csg.program.Program.bounds>` gives
+    (a union holds its operands' boxes, an intersection lies in their overlap,
+    a difference in its first operand's box), and replacing every leaf ``L``
     by ``L n S`` with ``S`` any set holding that box changes nothing:
     ``f(L n S) = f(L) n S`` for unions, intersections and differences, and
     the value of the cut leaves still lies in the box. So a hole three times
@@ -393,7 +395,7 @@ def clip_leaves(
     >>> from isocsg.csg.program import compile_program
     >>> prog = compile_program(Box((0, 0, 0), (2, 2, 0.4)) - Cylinder((0, 0, 0), (0, 0, 3), 0.2))
     >>> g = leaf_geometry(prog.leaves)
-    >>> hole = clip_leaves(prog.leaves, g, *combine_boxes(prog.op, prog.arg, g.lo, g.hi))[1]
+    >>> hole = clip_leaves(prog.leaves, g, *prog.bounds(g.lo, g.hi))[1]
     >>> type(hole).__name__, round(hole.height, 4), hole.radius
     ('Cylinder', 0.4057, 0.2)
     """
@@ -453,114 +455,6 @@ def _line_in_box(
     return float(t0), float(t1)
 
 
-def combine_boxes(
-    op: NDArray[np.int8], arg: NDArray[np.int64], lo: NDArray[np.float64], hi: NDArray[np.float64],
-) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
-    """The object's box from its leaves' boxes (a :class:`~isocsg.csg.program.Program`'s arrays).
-
-    As :func:`combine_rects` in 3D: a union takes the hull, an intersection
-    the overlap, a difference its first operand's box. Only the pairs of
-    (operation, operand count) are looped over, the boxes stay arrays.
-
-    Examples
-    --------
-    >>> from isocsg import Box, Cylinder
-    >>> from isocsg.csg.program import compile_program
-    >>> prog = compile_program(Box((0, 0, 0), (2, 2, 0.4)) - Cylinder((0, 0, 0), (0, 0, 3), 0.2))
-    >>> g = leaf_geometry(prog.leaves)
-    >>> [b.tolist() for b in combine_boxes(prog.op, prog.arg, g.lo, g.hi)]
-    [[-1.0, -1.0, -0.2], [1.0, 1.0, 0.2]]
-    """
-    los: list[NDArray[np.float64]] = []
-    his: list[NDArray[np.float64]] = []
-    for o, a in zip(op.tolist(), arg.tolist()):
-        if o == 0:
-            los.append(lo[a])
-            his.append(hi[a])
-            continue
-        base = len(los) - a
-        l0, h0 = los[base], his[base]
-        if o == 1:
-            l0 = np.min(np.stack(los[base:]), axis=0)
-            h0 = np.max(np.stack(his[base:]), axis=0)
-        elif o == 2:
-            l0 = np.max(np.stack(los[base:]), axis=0)
-            h0 = np.maximum(np.min(np.stack(his[base:]), axis=0), l0)
-        del los[base:], his[base:]
-        los.append(l0)
-        his.append(h0)
-    return los[0], his[0]
-
-
-@njit(cache=True, nogil=True)
-def prune_program(
-    op: NDArray[np.int8], arg: NDArray[np.int64], keep: NDArray[np.bool_],
-) -> tuple[NDArray[np.int8], NDArray[np.int64], NDArray[np.int64]]:
-    """:meth:`Program.prune <isocsg.csg.program.Program.prune>` on the program's arrays, compiled.
-
-    Returns the pruned ``op`` and ``arg`` (leaves renumbered in order) and,
-    per remaining leaf, its index in the original program; all empty when
-    the result is the empty set.
-    """
-    n = len(op)
-    out_op = np.empty(n, np.int8)
-    out_arg = np.empty(n, np.int64)
-    start = np.empty(n, np.int64)  # per stack entry: where its code begins in the output
-    empty = np.empty(n, np.bool_)
-    sp = 0
-    m = 0  # output length
-    for k in range(n):
-        o = op[k]
-        if o == 0:
-            start[sp] = m
-            if keep[arg[k]]:
-                out_op[m] = 0
-                out_arg[m] = arg[k]
-                m += 1
-                empty[sp] = False
-            else:
-                empty[sp] = True
-            sp += 1
-            continue
-        base = sp - arg[k]
-        kept = 0
-        any_empty = False
-        for s in range(base, sp):
-            if empty[s]:
-                any_empty = True
-            else:
-                kept += 1
-        s0 = start[base]
-        if kept == 0 or (o == 2 and any_empty) or (o == 3 and empty[base]):
-            m = s0  # drop the operands' code: the node is empty
-            empty[base] = True
-        elif kept > 1:
-            out_op[m] = o
-            out_arg[m] = kept
-            m += 1
-            empty[base] = False
-        else:
-            empty[base] = False  # one operand left: it is the node
-        start[base] = s0
-        sp = base + 1
-    if sp == 0 or empty[0]:
-        return np.empty(0, np.int8), np.empty(0, np.int64), np.empty(0, np.int64)
-    rop = out_op[:m].copy()
-    rarg = out_arg[:m].copy()
-    count = 0
-    for k in range(m):
-        if rop[k] == 0:
-            count += 1
-    ids = np.empty(count, np.int64)
-    j = 0
-    for k in range(m):
-        if rop[k] == 0:
-            ids[j] = rarg[k]
-            rarg[k] = j
-            j += 1
-    return rop, rarg, ids
-
-
 @njit(cache=True, nogil=True)
 def tile_leaves(
     op: NDArray[np.int8], arg: NDArray[np.int64], leaves: NDArray[np.int32], n: int, rects: NDArray[np.int64],
@@ -570,7 +464,7 @@ def tile_leaves(
     """A tile's pruned program and its leaves' packed rectangles.
 
     ``leaves`` are the indices (among ``n``) of the leaves whose rectangle
-    meets the tile ``(c0, r0, c1, r1)``. Returns :func:`prune_program`'s
+    meets the tile ``(c0, r0, c1, r1)``. Returns :func:`~isocsg.csg.program.prune_arrays`'s
     ``op``, ``arg`` and leaf ids, then per remaining leaf the offset of its
     rectangle in packed buffers, its first row and column and its rows and
     columns (the leaf's rectangle clipped to the tile).
@@ -578,7 +472,7 @@ def tile_leaves(
     keep = np.zeros(n, np.bool_)
     for i in leaves:
         keep[i] = True
-    pop, parg, ids = prune_program(op, arg, keep)
+    pop, parg, ids = prune_arrays(op, arg, keep)
     m = len(ids)
     off = np.empty(m, np.int64)
     lr0 = np.empty(m, np.int64)

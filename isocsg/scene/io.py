@@ -61,7 +61,7 @@ from typing import Any, BinaryIO
 
 from .._validation import MAX_LIGHTS, MAX_SCENE_FILE_BYTES, show
 from ..camera import Camera
-from ..csg.tree import CSGNode, Difference, Intersection, Union
+from ..csg.tree import NODE_TYPES, CSGNode
 from ..errors import (
     InvalidGeometryError,
     InvalidLightError,
@@ -110,7 +110,7 @@ def _primitive_node(kind: str) -> tuple[tuple[tuple[str, ...], tuple[str, ...]],
     return (k.required, k.optional), k.cls.__name__, lambda **fields: k.build(fields)
 
 
-_CSG_TYPES: dict[str, type[CSGNode]] = {"union": Union, "intersection": Intersection, "difference": Difference}
+_CSG_TYPES: dict[str, type[CSGNode]] = NODE_TYPES
 
 #: Every node kind accepted in an object's ``shape`` tree.
 #: Transform nodes, OpenSCAD's names and parameters, each around one ``shape``:
