@@ -297,17 +297,32 @@ def test_render_union_with_sphere():
     _render_compare(scene)
 
 
-def test_render_difference():
-    t = Torus(**FLAT)
-    scene = Scene(Camera((3.0, -4.0, 3.0), (0, 0, 0), width=96, height=96, fov=45), [PointLight((2.0, -3.0, 5.0))],
-                  [t - Box((1.0, -1.0, 0.5), (2.0, 2.0, 1.0))])
-    try:
-        image = isocsg.render(scene, contours=64).image
-    except Exception as exc:  # pragma: no cover - reported
-        pytest.xfail(f"the per-pixel CSG takes one interval per leaf: {type(exc).__name__}: {exc}")
-    result = compare(image, raycast_scene(scene))
-    if not (result.iou >= MIN_IOU and result.fraction >= MIN_FRACTION):
-        pytest.xfail(f"the per-pixel CSG takes one interval per leaf: {result.summary()}")
+@pytest.mark.parametrize(
+    "shape, eye",
+    [
+        (Torus(**FLAT) - Box((1.0, -1.0, 0.5), (2.0, 2.0, 1.0)), (3.0, -4.0, 3.0)),
+        (Box((0.0, 0.0, 0.0), (4.0, 4.0, 0.6)) - Torus(**FLAT), (3.0, -4.0, 3.0)),
+        (Torus(**FLAT) & isocsg.Sphere((1.5, 0.0, 0.0), 1.0), (3.0, -4.0, 3.0)),
+    ],
+    ids=["torus-minus-box", "box-minus-torus", "torus-and-sphere"],
+)
+def test_render_csg_views_with_one_interval_showing(shape, eye):
+    # views where no visible point depends on the torus's second interval along the ray
+    scene = Scene(Camera(eye, (0, 0, 0), width=96, height=96, fov=45), [PointLight((2.0, -3.0, 5.0))], [shape])
+    _render_compare(scene)
+
+
+@pytest.mark.xfail(
+    strict=True,
+    reason="the renderer's per-pixel CSG keeps one [front, back] interval per leaf: a ray whose visible "
+    "point is the entry of the torus's second interval (through the hole, the first interval cut away) "
+    "is shaded wrongly (the silhouette is right)",
+)
+@pytest.mark.parametrize("eye", [(-5.0, 0.3, 0.8), (-5.0, -1.0, 0.2)], ids=["edge", "low"])
+def test_render_csg_second_interval(eye):
+    shape = Torus(**FLAT) - Box((-2.0, 0.0, 0.0), (4.0, 5.0, 2.0))  # the near half cut away
+    scene = Scene(Camera(eye, (0, 0, 0), width=96, height=96, fov=45), [PointLight((-2.0, -3.0, 5.0))], [shape])
+    _render_compare(scene)
 
 
 # ----------------------------------------------------------------------------- shadows
