@@ -351,7 +351,16 @@ def test_turned_box_sections_against_closed_forms():
 
 def test_registry_table():
     from isocsg import Ellipsoid, EllipticTruncus
-    from isocsg.kinds import Primitive, PrimitiveKind, Torus, kind_named, kind_of, provides, register_kind, registered_kinds
+    from isocsg.kinds import (
+        Primitive,
+        PrimitiveKind,
+        Torus,
+        kind_named,
+        kind_of,
+        provides,
+        register_kind,
+        registered_kinds,
+    )
 
     names = [k.name for k in registered_kinds()]
     assert names == ["sphere", "truncus", "cylinder", "cone", "box", "polyhedron", "ellipsoid", "elliptic_truncus", "torus"]
