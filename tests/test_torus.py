@@ -89,6 +89,17 @@ def test_volume(fields):
     assert t.to_trimesh(64).is_watertight
 
 
+def test_volume_and_section_in_a_tree():
+    t = Torus(**FLAT)
+    half = Box((-2.0, 0.0, 0.0), (4.0, 5.0, 2.0))  # cuts the torus in half through its axis
+    cut = t - half
+    assert isocsg.volume(cut, tol=1e-6) == pytest.approx(t.volume / 2, rel=1e-5)
+    assert (t.to_manifold(512) - half.to_manifold()).volume() == pytest.approx(t.volume / 2, rel=2e-4)
+    s = math.sqrt(t.minor**2 - 0.01)
+    area = isocsg.section(cut, (0.0, 0.0, 0.1), (0.0, 0.0, 1.0), resolution=512, area_exact=True).geometry.area
+    assert area == pytest.approx(math.pi * ((t.major + s) ** 2 - (t.major - s) ** 2) / 2, rel=1e-9)
+
+
 def test_bounds_and_extent():
     t = Torus(**TILTED)
     pts = t.to_trimesh(1024).vertices
@@ -290,6 +301,22 @@ def test_render_alone(eye, light):
     _render_compare(scene)
 
 
+@pytest.mark.parametrize(
+    "lights, material",
+    [
+        ([PointLight((3.0, -1.0, 4.0))], isocsg.Material(ks=0.4, shininess=30)),
+        ([isocsg.DirectionalLight((1.0, -1.0, 2.0))], isocsg.Material()),
+        ([PointLight((3.0, -1.0, 4.0)), PointLight((-2.0, 2.0, 1.0), intensity=0.5)], isocsg.Material()),
+    ],
+    ids=["specular", "directional", "two-lights"],
+)
+def test_render_alone_lights(lights, material):
+    t = Torus(**TILTED)
+    scene = Scene(Camera((3.0, -3.5, 2.5), t.center, width=96, height=96, fov=45), lights,
+                  [isocsg.scene.SceneObject(t, material)])
+    _render_compare(scene)
+
+
 def test_render_union_with_sphere():
     t = Torus(**FLAT)
     scene = Scene(Camera((3.0, -4.0, 3.0), (0, 0, 0), width=96, height=96, fov=45), [PointLight((2.0, -3.0, 5.0))],
@@ -351,6 +378,18 @@ def test_shadows_against_monte_carlo():
     # within the Monte Carlo confidence (stratified: the std bound is generous) and the
     # occluder pieces' documented tessellation error
     assert np.all(np.abs(got - ref_a) <= 3 * err_a + 5e-3 * ref_a + 1e-4), (got, ref_a, err_a)
+
+
+def test_shadows_in_a_tree():
+    t = Torus((0.0, 0.0, 1.0), (0.0, 0.0, 1.0), 0.6, 0.2)
+    cut = t - Box((-1.0, 0.0, 1.0), (2.0, 2.0, 1.0))  # the half at x < 0 cut away
+    light = isocsg.AreaLight([(-1.0, -1.0, 3.0), (-1.0, 1.0, 3.0), (1.0, 1.0, 3.0), (1.0, -1.0, 3.0)], radiance=1.0)
+    points = np.array([[0.6, 0.0, 0.0], [-0.6, 0.0, 0.0]])
+    free = isocsg.illuminance(points, (0.0, 0.0, 1.0), light)
+    whole = isocsg.illuminance(points, (0.0, 0.0, 1.0), light, [t])
+    got = isocsg.illuminance(points, (0.0, 0.0, 1.0), light, [cut])
+    assert got[0] == pytest.approx(whole[0], rel=1e-9)  # under the kept half
+    assert whole[1] < got[1] == pytest.approx(free[1], rel=1e-9)  # under the cut half: the far half casts no shadow here
 
 
 def test_convex_pieces():

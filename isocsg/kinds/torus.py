@@ -448,10 +448,9 @@ class Torus(Primitive):
     def to_openscad(self, digits: int | None = None, *, exact: bool = True) -> str:
         """``rotate_extrude() translate([R, 0]) circle(r)`` under the frame taking z to the axis."""
         m = frame(self.axis_array, self.center_array)
-        if digits is not None:
-            body = f"rotate_extrude($fn = 128) translate([{num(self.major)}, 0]) circle(r = {num(self.minor)});"
-            return encoded(body, m[:3, :3], self.center_array, digits)
         body = f"rotate_extrude() translate([{num(self.major)}, 0]) circle(r = {num(self.minor)});"
+        if digits is not None:  # the radii's digits are kept: short radii come through unchanged
+            return encoded(body, m[:3, :3], self.center_array, digits)
         return f"multmatrix({mat(m)}) {{ {body} }}"
 
     def _affine(self, A: NDArray[np.float64], t: NDArray[np.float64]) -> Primitive:
