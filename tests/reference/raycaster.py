@@ -20,7 +20,7 @@ itself:
 - a torus (``Torus.center/.axis/.major/.minor``) by its own root finder, not the
   library's quartic: sphere tracing along the ray on the exact distance
   ``sqrt((rho - R)^2 + z^2) - r`` (a 1-Lipschitz function, so no crossing is
-  stepped over, except intervals shorter than ``TORUS_MIN_STEP`` of the tube radius
+  stepped over, except intervals shorter than ``reference.torus.MIN_STEP`` of the tube radius
   at grazing incidence) from where the ray enters the bounding sphere of radius
   ``R + r`` to where it leaves it, each sign change bisected to the last bit; its up
   to two intervals are two leaves of a union in the tree (disjoint intervals),
@@ -74,6 +74,8 @@ from isocsg import (
     Union,
 )
 from isocsg.kinds import Torus
+
+from .torus import torus_intervals, torus_trace
 
 __all__ = [
     "Intervals",
@@ -485,85 +487,6 @@ def _local_intervals(params: tuple[Any, ...], o: F64, d: F64) -> Intervals:
     return Intervals(iv.t_in, iv.t_out, n_in, n_out, iv.part_in, iv.part_out)
 
 
-#: The smallest step of the torus's sphere tracing, relative to the tube radius.
-TORUS_MIN_STEP = 1e-6
-
-
-@njit(cache=True)
-def _torus_trace(o, d, c, w, R, r, out):  # pragma: no cover - compiled
-    """Sphere tracing + bisection of unit rays against a torus: ``out[i, k]`` = [t_in, t_out]."""
-    n = o.shape[0]
-    for i in range(n):
-        q0 = o[i, 0] - c[0]
-        q1 = o[i, 1] - c[1]
-        q2 = o[i, 2] - c[2]
-        d0, d1, d2 = d[i, 0], d[i, 1], d[i, 2]
-        b = q0 * d0 + q1 * d1 + q2 * d2
-        big = R + r
-        disc = b * b - (q0 * q0 + q1 * q1 + q2 * q2 - big * big)
-        if disc < 0:
-            continue
-        sq = np.sqrt(disc)
-        ta, tb = -b - sq, -b + sq
-        h = TORUS_MIN_STEP * r
-        t = ta
-        f = _torus_sd(q0 + t * d0, q1 + t * d1, q2 + t * d2, w, R, r)
-        inside = f < 0
-        count = 0
-        start = 0.0
-        if inside:
-            start = t
-        while t < tb and count < 2:
-            t1 = min(t + max(abs(f), h), tb)
-            f1 = _torus_sd(q0 + t1 * d0, q1 + t1 * d1, q2 + t1 * d2, w, R, r)
-            if (f1 < 0) != inside:
-                lo, hi = t, t1
-                for _ in range(200):  # bisection to the last bit
-                    m = 0.5 * (lo + hi)
-                    if m <= lo or m >= hi:
-                        break
-                    fm = _torus_sd(q0 + m * d0, q1 + m * d1, q2 + m * d2, w, R, r)
-                    if (fm < 0) == inside:
-                        lo = m
-                    else:
-                        hi = m
-                root = 0.5 * (lo + hi)
-                if inside:
-                    out[i, count, 0] = start
-                    out[i, count, 1] = root
-                    count += 1
-                else:
-                    start = root
-                inside = not inside
-            t, f = t1, f1
-        if inside and count < 2:
-            out[i, count, 0] = start
-            out[i, count, 1] = tb
-
-
-@njit(cache=True)
-def _torus_sd(x, y, z, w, R, r):  # pragma: no cover - compiled
-    h = x * w[0] + y * w[1] + z * w[2]
-    px, py, pz = x - h * w[0], y - h * w[1], z - h * w[2]
-    rho = np.sqrt(px * px + py * py + pz * pz)
-    return np.sqrt((rho - R) ** 2 + h * h) - r
-
-
-def torus_intervals(torus: Any, origins: Any, directions: Any) -> F64:
-    """Up to two depth intervals ``(n, 2, 2)`` (NaN for none) of rays in a torus, by the module's
-    own sphere tracing on the exact distance (``t`` in units of each direction's length)."""
-    o = np.atleast_2d(np.asarray(origins, dtype=np.float64))
-    d = np.atleast_2d(np.asarray(directions, dtype=np.float64))
-    o = np.ascontiguousarray(np.broadcast_to(o, d.shape)) if len(o) == 1 else np.ascontiguousarray(o)
-    ln = np.linalg.norm(d, axis=1)
-    du = np.ascontiguousarray(d / ln[:, None])
-    w = np.asarray(torus.axis, dtype=np.float64)
-    w = w / np.linalg.norm(w)
-    out = np.full((len(o), 2, 2), np.nan)
-    _torus_trace(o, du, np.asarray(torus.center, dtype=np.float64), w, float(torus.major), float(torus.minor), out)
-    return out / ln[:, None, None]
-
-
 def _torus_normal(p: F64, c: F64, w: F64, R: float) -> F64:
     q = p - c
     radial = q - (q @ w)[:, None] * w
@@ -575,7 +498,7 @@ def _torus_leaf(params: tuple[Any, ...], o: F64, d: F64) -> Intervals:
     c, w, R, r, k = params
     ln = np.linalg.norm(d, axis=1)
     out = np.full((len(o), 2, 2), np.nan)
-    _torus_trace(np.ascontiguousarray(o), np.ascontiguousarray(d / ln[:, None]), c, w, R, r, out)
+    torus_trace(np.ascontiguousarray(o), np.ascontiguousarray(d / ln[:, None]), c, w, R, r, out)
     t_in, t_out = out[:, k, 0] / ln, out[:, k, 1] / ln
     hit = np.isfinite(t_in)
     n_in = _torus_normal(o + np.where(hit, t_in, 0.0)[:, None] * d, c, w, R)
