@@ -137,7 +137,7 @@ def test_signed_distance_against_sampling():
 # ----------------------------------------------------------------------------- rays
 
 
-def _same_intervals(a, b, scale):
+def _same_intervals(a, b, scale, extra=0.0):
     """Intervals equal up to ``1e-9 scale``, leaving out grazing ones (shorter than 1e-3 scale:
     a ray along the top circle touches the surface to fourth order, so its contact is only
     determined to about eps^(1/4) of the size), short ones within 1e-6 scale."""
@@ -147,7 +147,7 @@ def _same_intervals(a, b, scale):
         assert len(ka) == len(kb), (ra, rb)
         for x, y in zip(ka, kb):
             tol = 1e-9 if x[1] - x[0] > 1e-2 * scale else 1e-6
-            assert np.allclose(x, y, rtol=0, atol=tol * scale), (ra, rb)
+            assert np.allclose(x, y, rtol=0, atol=tol * scale + extra), (ra, rb)
 
 
 def test_rays_special():
@@ -201,6 +201,21 @@ def test_rays_random(target, direction, axis, ratio, scale):
     ok = hits.hit
     p = o[ok] + hits.t_in[ok, None] * dd[ok]
     assert np.allclose(np.abs(hits.n_in[ok]), np.abs(t.normals_at(p)))
+
+
+@pytest.mark.parametrize("distance", [1e2, 1e4, 1e6])
+def test_rays_from_far(distance):
+    # the quartic is written from the ray's point nearest the centre: far eyes lose nothing
+    t = Torus(**TILTED)
+    rng = np.random.default_rng(11)
+    aim = np.asarray(t.center) + rng.uniform(-1.2, 1.2, (400, 3))
+    d = rng.normal(size=(400, 3))
+    d /= np.linalg.norm(d, axis=1, keepdims=True)
+    o = aim - distance * d
+    got, want = t.ray_intervals(o, d), torus_intervals(t, o, d)
+    # both lose the rounding of points at distance: a few ulps of it
+    _same_intervals(got - distance, want - distance, t.major + t.minor, extra=1e-14 * distance)
+    assert np.isfinite(got[:, 0, 0]).sum() > 100
 
 
 def test_rays_through_hole_and_tangent_batch():
@@ -279,6 +294,26 @@ def test_section_tilted_against_reference_scanlines(normal, offset):
     iv = torus_intervals(t, o, np.tile(u, (len(ys), 1)))
     area = float(np.nansum(iv[:, :, 1] - iv[:, :, 0])) * (ys[1] - ys[0])
     assert sec.geometry.area == pytest.approx(area, rel=2e-4)
+    assert sec.geometry.is_valid
+
+
+@settings(max_examples=15, deadline=None)
+@given(
+    st.lists(st.floats(-1, 1), min_size=3, max_size=3).filter(lambda v: np.linalg.norm(v) > 1e-2),
+    st.floats(-0.6, 0.6),
+)
+def test_section_random_planes(normal, offset):
+    t = Torus(**TILTED)
+    n = _unit(normal)
+    origin = np.asarray(t.center) + offset * n
+    sec = isocsg.section(t, origin, n, resolution=256)
+    F = sec.frame
+    u, v = F[:3, 0], F[:3, 1]
+    ys = np.linspace(-1.5, 1.5, 3001)
+    ys = 0.5 * (ys[1:] + ys[:-1])
+    iv = torus_intervals(t, origin - 3.0 * u + ys[:, None] * v, np.tile(u, (len(ys), 1)))
+    area = float(np.nansum(iv[:, :, 1] - iv[:, :, 0])) * (ys[1] - ys[0])
+    assert sec.geometry.area == pytest.approx(area, rel=2e-3, abs=1e-4)
     assert sec.geometry.is_valid
 
 

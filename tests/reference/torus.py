@@ -35,10 +35,13 @@ def torus_trace(o, d, c, w, R, r, out):  # pragma: no cover - compiled
         d0, d1, d2 = d[i, 0], d[i, 1], d[i, 2]
         b = q0 * d0 + q1 * d1 + q2 * d2
         big = R + r
-        disc = b * b - (q0 * q0 + q1 * q1 + q2 * q2 - big * big)
+        # the chord of the bounding sphere from the ray's point nearest the centre (no
+        # cancellation for far origins), padded by a little
+        n0, n1, n2 = q0 - b * d0, q1 - b * d1, q2 - b * d2
+        disc = big * big - (n0 * n0 + n1 * n1 + n2 * n2)
         if disc < 0:
             continue
-        sq = np.sqrt(disc)
+        sq = np.sqrt(disc) + 1e-9 * big
         ta, tb = -b - sq, -b + sq
         h = MIN_STEP * r
         t = ta
