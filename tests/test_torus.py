@@ -352,6 +352,14 @@ def test_render_alone_lights(lights, material):
     _render_compare(scene)
 
 
+def test_render_error_shrinks_with_contours():
+    scene = Scene(Camera((3.0, -3.5, 2.5), TILTED["center"], width=96, height=96, fov=45), [PointLight((3.0, -1.0, 4.0))],
+                  [Torus(**TILTED)])
+    ref = raycast_scene(scene)
+    errors = [compare(isocsg.render(scene, contours=n).image, ref).mean_error for n in (8, 32, 128)]
+    assert errors[0] > errors[1] > errors[2], errors
+
+
 def test_render_union_with_sphere():
     t = Torus(**FLAT)
     scene = Scene(Camera((3.0, -4.0, 3.0), (0, 0, 0), width=96, height=96, fov=45), [PointLight((2.0, -3.0, 5.0))],
