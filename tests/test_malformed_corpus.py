@@ -779,6 +779,12 @@ def _lamp(**kw: Any) -> Any:
 
 
 G, L, P = InvalidGeometryError, InvalidLightError, InvalidParameterError
+def _torus(**fields: Any) -> Any:
+    from isocsg.kinds import Torus
+
+    return Torus(**{"center": (0, 0, 0), "axis": (0, 0, 1), "major": 2.0, "minor": 0.5, **fields})
+
+
 BAD_SCALARS_API: list[tuple[str, Any]] = [
     ("string", "1.0"), ("bool", True), ("none", None), ("list", [1.0]), ("nan", NAN), ("inf", INF),
     ("overflow", 10**400), ("negative", -1.0), ("huge", 1e308), ("complex", 1j),
@@ -846,6 +852,24 @@ API_CASES += [
      ("EllipticTruncus.matrix",)),
     ("EllipticTruncus.r1-negative", lambda: isocsg.EllipticTruncus((0, 0, 0), np.eye(3), -1, 1), G, ("EllipticTruncus.r1",)),
 ]
+# the torus (isocsg.kinds.Torus): every field, and the ring-torus rule minor < major
+for _bad, _v in BAD_SCALARS_API:
+    API_CASES += [
+        (f"Torus.major-{_bad}", lambda v=_v: _torus(major=v), G, ("Torus.major",)),
+        (f"Torus.minor-{_bad}", lambda v=_v: _torus(minor=v), G, ("Torus.minor",)),
+    ]
+for _bad, _v in BAD_VECTORS_API:
+    API_CASES += [
+        (f"Torus.center-{_bad}", lambda v=_v: _torus(center=v), G, ("Torus.center",)),
+        (f"Torus.axis-{_bad}", lambda v=_v: _torus(axis=v), G, ("Torus.axis",)),
+    ]
+API_CASES += [
+    ("Torus.axis-zero", lambda: _torus(axis=(0, 0, 0)), G, ("Torus.axis",)),
+    ("Torus.minor-horn", lambda: _torus(minor=2.0), G, ("Torus.minor",)),
+    ("Torus.minor-spindle", lambda: _torus(minor=3.0), G, ("Torus.minor",)),
+]
+
+
 def _bands_hidden(hidden: Any) -> Any:
     from isocsg.laminae import build_bands
 

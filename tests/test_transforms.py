@@ -351,17 +351,27 @@ def test_turned_box_sections_against_closed_forms():
 
 def test_registry_table():
     from isocsg import Ellipsoid, EllipticTruncus
-    from isocsg.kinds import Primitive, PrimitiveKind, kind_named, kind_of, provides, register_kind, registered_kinds
+    from isocsg.kinds import (
+        Primitive,
+        PrimitiveKind,
+        Torus,
+        kind_named,
+        kind_of,
+        provides,
+        register_kind,
+        registered_kinds,
+    )
 
     names = [k.name for k in registered_kinds()]
-    assert names == ["sphere", "truncus", "cylinder", "cone", "box", "polyhedron", "ellipsoid", "elliptic_truncus"]
+    assert names == ["sphere", "truncus", "cylinder", "cone", "box", "polyhedron", "ellipsoid", "elliptic_truncus", "torus"]
     assert kind_of(Cylinder((0, 0, 0), (0, 0, 1), 1)).name == "cylinder"  # by the class's inheritance
     assert kind_named("elliptic_truncus").cls is EllipticTruncus
     # every kind provides its section, band surface, mesh and OpenSCAD form itself, the built-in
     # ones too; cylinders and cones through the truncus's members
     samples = [Sphere((0, 0, 0), 1), Truncus((0, 0, 0), (0, 0, 1), 1, 0.5), Cylinder((0, 0, 0), (0, 0, 1), 1),
                Cone((0, 0, 0), (0, 0, 1), 1), Box((0, 0, 0), (1, 2, 3)), ConvexPolyhedron([(0, 0, 0), (1, 0, 0), (0, 1, 0), (0, 0, 1)]),
-               Ellipsoid((0, 0, 0), (1, 2, 3)), Cylinder((0, 0, 0), (0, 0, 1), 1).scale((2, 1, 1))]
+               Ellipsoid((0, 0, 0), (1, 2, 3)), Cylinder((0, 0, 0), (0, 0, 1), 1).scale((2, 1, 1)),
+               Torus((0, 0, 0), (0, 0, 1), 2, 0.5)]
     for prim in samples:
         assert prim.kind == kind_of(prim).name
         for which in ("section", "band_surface", "manifold", "to_openscad", "signed_distance", "extent"):

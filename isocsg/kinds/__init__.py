@@ -5,7 +5,8 @@
 - one module per kind, holding all of its math and registering it where it is defined:
   :mod:`~isocsg.kinds.sphere`, :mod:`~isocsg.kinds.truncus` (with cylinder and cone),
   :mod:`~isocsg.kinds.box`, :mod:`~isocsg.kinds.polyhedron`,
-  :mod:`~isocsg.kinds.ellipsoid`, :mod:`~isocsg.kinds.elliptic`;
+  :mod:`~isocsg.kinds.ellipsoid`, :mod:`~isocsg.kinds.elliptic`,
+  :mod:`~isocsg.kinds.torus` (the first non-convex kind);
 - helpers the kinds share: :mod:`~isocsg.kinds.planar` (plane sections),
   :mod:`~isocsg.kinds.meshing` (manifold3d), :mod:`~isocsg.kinds.scad` (OpenSCAD text).
 
@@ -22,6 +23,7 @@ from .box import Box
 from .polyhedron import ConvexPolyhedron
 from .ellipsoid import Ellipsoid
 from .elliptic import EllipticTruncus
+from .torus import Torus
 
 __all__ = [
     "DEFAULT_RESOLUTION",
@@ -38,6 +40,7 @@ __all__ = [
     "RayHits",
     "Solid",
     "Sphere",
+    "Torus",
     "Truncus",
     "kind_named",
     "kind_of",
