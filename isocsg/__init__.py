@@ -23,6 +23,7 @@ _EXPORTS: dict[str, str] = {
     ], ".errors"),
     **dict.fromkeys(["Solid", "Primitive", "RayHits", "Sphere", "Truncus", "Cylinder", "Cone", "Box", "ConvexPolyhedron",
                      "Ellipsoid", "EllipticTruncus"], ".geometry"),
+    "Torus": ".kinds",
     "extrude": ".geometry.extrude",
     **dict.fromkeys(["PointLight", "DirectionalLight", "Material", "shade"], ".lighting"),
     **dict.fromkeys(["Scene", "SceneObject", "RenderSettings", "load_scene", "loads_scene", "save_scene", "dumps_scene",
@@ -107,6 +108,7 @@ __all__ = [
     "Shape2D",
     "Solid",
     "Sphere",
+    "Torus",
     "Truncus",
     "Union",
     "Union2D",
@@ -175,6 +177,7 @@ __getattr__, __dir__ = lazy_exports(globals(), _EXPORTS)
 
 
 if TYPE_CHECKING:  # what the names are, for type checkers and editors
+    from .kinds import Torus
     from .shapes2d import (
         Circle,
         ConvexPolygon,
