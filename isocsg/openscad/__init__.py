@@ -16,6 +16,7 @@ from pathlib import Path
 
 from ..errors import OpenSCADError
 from ..geometry.primitives import Solid
+from .flat import FN_MAX, MixedDimensionsWarning
 from .lowering import UNSUPPORTED_NODES, LoweredModel, lower
 from .parser import MAX_CSG_TEXT, CSGCall, parse_csg
 from .program import export_mesh, find_openscad, scad_to_csg
@@ -36,6 +37,8 @@ __all__ = [
     "export_mesh",
     "find_openscad",
     "UNSUPPORTED_NODES",
+    "FN_MAX",
+    "MixedDimensionsWarning",
 ]
 
 
