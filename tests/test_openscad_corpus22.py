@@ -122,3 +122,98 @@ def test_2d_beside_3d_is_ignored_with_openscads_warning() -> None:
     with pytest.warns(MixedDimensionsWarning, match="ignoring the 2D object circle"):
         model = read_openscad(DIR / "mixed_in_union.csg")
     assert len(model.left_out) == 1 and "circle(): a 2D object beside 3D ones is ignored" in model.left_out[0]
+
+
+def test_hand_written_subset_loads_without_openscad() -> None:
+    """A hand-written ``.csg`` with ``translate``, ``rotate``, ``scale``, ``mirror`` and children
+    without braces loads as OpenSCAD reads it (the issue's bracket lost all but its base plate)."""
+    from isocsg.openscad import loads_openscad
+
+    text = """
+    // a bracket
+    union() {
+        cube([40, 30, 8]);
+        translate([0, 0, 8]) cube([40, 6, 30]);
+        translate([0, 30, 0]) mirror([0, 1, 0]) scale([1, 1, 2]) cube([40, 6, 1]);
+        rotate(a = 90, v = [0, 0, 1]) translate([0, -60, 0]) rotate([0, 0, 0]) cube(2);
+    }
+    """
+    solid = loads_openscad(text)
+    assert volume(solid) == pytest.approx(40 * 30 * 8 + 40 * 6 * 30 + 8, rel=1e-12)
+    lo, hi = np.asarray(solid.bounds)
+    assert lo.tolist() == pytest.approx([0, 0, 0]) and hi.tolist() == pytest.approx([60, 30, 38])
+
+
+def test_transforms_compose_once_per_leaf(monkeypatch: pytest.MonkeyPatch) -> None:
+    """Issue 22: 6637 prisms under nested transforms took 97.5 s, most of it re-mapping every
+    prism at each level and rebuilding its hull. Now each leaf is built once and mapped once,
+    and a mapped convex polyhedron keeps its faces (no new hull)."""
+    import isocsg.kinds.polyhedron as poly
+    from isocsg.csg import leaves
+    from isocsg.openscad import loads_openscad
+
+    depth, count = 12, 6
+    head = "".join(f"multmatrix([[0, -1, 0, {k}], [1, 0, 0, 0.5], [0, 0, 1, 0.25], [0, 0, 0, 1]]) {{ " for k in range(depth))
+    body = " ".join(
+        f"linear_extrude(height = 1) {{ polygon(points = [[{4 * i}, 0], [{4 * i + 2}, 0], [{4 * i + 3}, 2], [{4 * i}, 1]]); }}"
+        for i in range(count)
+    )
+    calls = 0
+    real = poly._hull
+
+    def counted(*args, **kwargs):  # type: ignore[no-untyped-def]
+        nonlocal calls
+        calls += 1
+        return real(*args, **kwargs)
+
+    monkeypatch.setattr(poly, "_hull", counted)
+    solid = loads_openscad(head + body + " }" * depth)
+    assert sum(1 for _ in leaves(solid)) == count
+    assert calls == count  # one hull per prism, however deep the maps nest
+    assert volume(solid) == pytest.approx(count * 3.5, rel=1e-9)
+
+
+def test_thin_plate_loads_and_renders() -> None:
+    """Issue 22: ``cube([0.001, 5, 128.4])`` was refused by an aspect limit (1e-5); a valid part
+    of any aspect loads and renders (a thin fin on a base, seen from the side it faces)."""
+    from isocsg.render import render
+    from isocsg.scene.framing import framed_scene
+
+    solid = _load("thin_plate_union")
+    assert volume(solid) == pytest.approx(800 + 0.001 * 5 * 128.4, rel=1e-12)
+    fin = _load("thin_plate")
+    scene = framed_scene(fin, width=48, height=48, contours=8)
+    image = render(scene).image
+    hit = np.isfinite(image)
+    assert hit.any() and float(np.nanmax(image)) > 0
+
+
+def test_skipped_nodes_are_reported_not_dropped_silently(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    """``skip_unsupported`` says what it left out: ``LoweredModel.left_out`` (node, line, why), the
+    warning of :func:`load_openscad`, and the CLI's render command."""
+    from isocsg.cli import main
+    from isocsg.openscad import OpenSCADSkipWarning
+
+    path = tmp_path / "m.csg"
+    path.write_text("cube(size = [2, 2, 2]);\nminkowski() {\n  cube(size = 1);\n  sphere(r = 0.1);\n}\n")
+    model = read_openscad(path, skip_unsupported=True)
+    assert model.skipped == {"minkowski": 1}
+    assert model.left_out == (f"{path}:2: minkowski(): Minkowski sums are not exact isocsg solids",)
+    with pytest.warns(OpenSCADSkipWarning, match="skipped 1 unsupported OpenSCAD node: 1 minkowski"):
+        load_openscad(path, skip_unsupported=True)
+    out = tmp_path / "m.png"
+    assert main(["render", str(path), "-o", str(out), "--size", "32x32", "--no-progress", "--skip-unsupported"]) == 0
+    err = capsys.readouterr().err
+    assert f"left out {path}:2: minkowski(): Minkowski sums are not exact isocsg solids" in err
+
+
+def test_scad_without_the_program_reads_the_plain_subset(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    from isocsg.openscad import PlainSubsetWarning
+
+    monkeypatch.setenv("ISOCSG_OPENSCAD", str(tmp_path / "no-such-openscad"))
+    monkeypatch.setenv("PATH", str(tmp_path))
+    path = tmp_path / "m.scad"
+    path.write_text("difference() { cube([4, 4, 2]); translate([1, 1, -1]) cylinder(h = 4, r = 1, $fn = 6); }\n")
+    with pytest.warns(PlainSubsetWarning, match="read as the plain .csg subset"):
+        solid = load_openscad(path)
+    assert volume(solid) == pytest.approx(32 - 3 * np.sqrt(3) / 2 * 2, rel=1e-12)  # a hexagonal hole through 2

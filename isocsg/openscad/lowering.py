@@ -1,32 +1,36 @@
 """Lowering of parsed OpenSCAD statements to exact isocsg solids.
 
-What each node becomes:
+What each node becomes (``docs/openscad.md`` has the table and the reasons):
 
-- ``cube(size, center)`` -> :class:`~isocsg.Box`; ``sphere(r)`` -> :class:`~isocsg.Sphere`;
-  ``cylinder(h, r1, r2, center)`` -> :class:`~isocsg.Truncus` (a cylinder, cone or
-  frustum); a convex ``polyhedron(points, faces)`` -> :class:`~isocsg.ConvexPolyhedron`.
-  ``$fn``, ``$fa`` and ``$fs`` are ignored: the primitives are exact, not tessellated.
-- ``multmatrix(m)`` -> ``solid.transform(m)`` of the union of its children.
+- ``cube(size, center)`` -> :class:`~isocsg.Box` (of any aspect); ``sphere(r)`` ->
+  :class:`~isocsg.Sphere`; ``cylinder(h, r1, r2, center)`` -> :class:`~isocsg.Truncus` (a
+  cylinder, cone or frustum); a convex ``polyhedron(points, faces)`` ->
+  :class:`~isocsg.ConvexPolyhedron`. Without ``$fn``, or with ``$fn`` above
+  :data:`~isocsg.openscad.flat.FN_MAX` (64), spheres, cylinders and circles are the exact round
+  solids; an explicit ``$fn`` from 1 to 64 makes OpenSCAD's own polygonal solid (a hexagonal
+  prism, a pyramid, OpenSCAD's polyhedral sphere) as a ``ConvexPolyhedron`` with OpenSCAD's
+  vertices.
+- ``multmatrix(m)``, and the hand-written ``translate``, ``rotate``, ``scale``, ``mirror``: maps
+  composed on the way down and applied once per leaf, however deep they nest.
 - ``union``, ``group``, ``render``, ``color`` and the ``#`` and ``!`` modifiers -> a union;
-  ``difference`` and ``intersection`` -> the same Boolean.
-- ``hull`` of polyhedral children (cubes, polyhedra, under maps and groups) -> the
-  :class:`~isocsg.ConvexPolyhedron` of all their corners, exactly (what the writer's
-  exact form of a convex polyhedron is); a hull of a curved or cut child is refused. ``%`` (background) and
-  ``*`` (disabled) nodes are not part of the model and are left out.
-- ``linear_extrude(height, center)`` without twist or scale, of 2D children
-  (``square``, ``circle``, ``polygon``, 2D ``multmatrix`` and Booleans). A straight
-  extrusion commutes with union, difference, intersection and affine maps of the
-  plane, so each 2D leaf is extruded on its own: a ``circle`` becomes an exact
-  cylinder, a ``square`` a box (or a prism when rotated), a ``polygon`` the union
-  of convex prisms of :func:`~isocsg.geometry.extrude.extrude`.
+  ``difference`` and ``intersection`` -> the same Boolean. ``%`` (background) and ``*``
+  (disabled) children are left out as OpenSCAD leaves them out: they neither empty an
+  intersection nor stand first in a difference. A 2D object beside 3D ones is ignored with
+  OpenSCAD's warning (:class:`~isocsg.openscad.flat.MixedDimensionsWarning`).
+- ``hull`` of polyhedral children (cubes, polyhedra, polygonal spheres and cylinders, under maps
+  and groups) -> the :class:`~isocsg.ConvexPolyhedron` of all their corners, exactly; a hull of a
+  round or cut child is refused.
+- ``linear_extrude(height, center, scale)`` of any 2D subtree (:mod:`isocsg.openscad.flat`,
+  through :mod:`isocsg.shapes2d`): ``square``, ``circle``, ``polygon`` (non-convex, holes),
+  ``text``, ``offset``, 2D Booleans, transforms and hulls of polygons.
 
-Nodes without an exact equivalent (``hull`` of curved solids, ``minkowski``, ``rotate_extrude``,
-twisted or scaled extrusions, ``text``, ``import``, ``surface``, ``projection``,
-``offset``, ``resize``, 2D objects outside an extrusion, non-convex polyhedra and
-unknown modules) raise :class:`~isocsg.errors.UnsupportedOpenSCADError` naming the
-node and its line, or are skipped and counted when ``skip_unsupported=True``.
-Objects that OpenSCAD itself renders as nothing (a zero size, a zero radius, a
-singular matrix) are empty and are dropped like OpenSCAD drops them.
+Nodes without an exact equivalent (``hull`` of round solids, ``minkowski``, ``rotate_extrude``,
+twisted extrusions, ``import``, ``surface``, ``projection``, ``resize``, non-convex polyhedra and
+unknown modules) raise :class:`~isocsg.errors.UnsupportedOpenSCADError` naming the node and its
+line, or are skipped when ``skip_unsupported=True``: :attr:`LoweredModel.skipped` counts them
+and :attr:`LoweredModel.left_out` names each (line and reason). Objects that OpenSCAD itself
+renders as nothing (a zero size, a zero radius, a singular matrix) are empty and are dropped
+like OpenSCAD drops them.
 
 The walk is iterative (an explicit stack), so nesting depth is bounded by memory.
 """
