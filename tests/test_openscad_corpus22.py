@@ -39,7 +39,10 @@ needs_openscad = pytest.mark.skipif(not HAS_OPENSCAD, reason="the openscad progr
 VOLUME_RTOL = 0.005
 POLYGONAL_RTOL = 2e-5
 #: Models whose every curve has an explicit small $fn: OpenSCAD's polygonal solids exactly.
-EXACTLY_POLYGONAL = {"fn_circle8", "fn_frustum", "fn_hull_rounded", "fn_nut_traps", "fn_pyramid", "fn_sphere12", "fn_sphere5"}
+EXACTLY_POLYGONAL = {
+    "fn_circle8", "fn_cone_stack", "fn_frustum", "fn_hex_prism_rotated", "fn_hull_rounded", "fn_nut_traps",
+    "fn_octagon_2d_hole", "fn_pyramid", "fn_sphere12", "fn_sphere5", "fn_sphere_cut",
+}
 
 
 def _load(name: str):  # type: ignore[no-untyped-def]
