@@ -220,3 +220,14 @@ def test_scad_without_the_program_reads_the_plain_subset(tmp_path: Path, monkeyp
     with pytest.warns(PlainSubsetWarning, match="read as the plain .csg subset"):
         solid = load_openscad(path)
     assert volume(solid) == pytest.approx(32 - 3 * np.sqrt(3) / 2 * 2, rel=1e-12)  # a hexagonal hole through 2
+
+
+def test_root_modifier_keeps_only_its_subtree() -> None:
+    """``!`` makes its subtree alone the model, without its parents' maps (OpenSCAD's export of
+    ``cube(5); translate([10, 0, 0]) !sphere(2);`` is the bare sphere)."""
+    from isocsg import Sphere
+    from isocsg.openscad import loads_openscad
+
+    text = "cube(size = 5);\nmultmatrix([[1, 0, 0, 10], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) {\n  !sphere(r = 2);\n}\n"
+    assert loads_openscad(text) == Sphere((0, 0, 0), 2)
+    assert volume(loads_openscad("cube(size = 5);\n#cube(size = 1);")) == pytest.approx(125.0)

@@ -12,7 +12,8 @@ What each node becomes (``docs/openscad.md`` has the table and the reasons):
   vertices.
 - ``multmatrix(m)``, and the hand-written ``translate``, ``rotate``, ``scale``, ``mirror``: maps
   composed on the way down and applied once per leaf, however deep they nest.
-- ``union``, ``group``, ``render``, ``color`` and the ``#`` and ``!`` modifiers -> a union;
+- ``union``, ``group``, ``render``, ``color`` and the ``#`` modifier -> a union; a ``!`` (root)
+  node makes its subtree alone the model, without its parents' maps, as OpenSCAD does;
   ``difference`` and ``intersection`` -> the same Boolean. ``%`` (background) and ``*``
   (disabled) children are left out as OpenSCAD leaves them out: they neither empty an
   intersection nor stand first in a difference. A 2D object beside 3D ones is ignored with
@@ -421,7 +422,7 @@ def lower(calls: list[CSGCall], *, source: str | None = None, skip_unsupported: 
         On malformed arguments, or when nothing of the model is left.
     """
     lw = _Lowerer(source, skip_unsupported)
-    root = CSGCall("union", children=list(calls), line=1)
+    root = CSGCall("union", children=_root_modified(calls) or list(calls), line=1)
     # Frames: (call, the map accumulated from the root or None, results of the children so far).
     # Maps compose on the way down and are applied once per leaf, however deep they nest.
     stack: list[tuple[CSGCall, NDArray[np.float64] | None, list[Any]]] = [(root, None, [])]
@@ -446,6 +447,18 @@ def lower(calls: list[CSGCall], *, source: str | None = None, skip_unsupported: 
         what = f" (skipped: {_counts(lw.skipped)})" if lw.skipped else ""
         raise OpenSCADError(f"{source or 'model'}: the model is empty: nothing of it has a volume{what}")
     return LoweredModel(result, dict(lw.skipped), tuple(lw.left_out))
+
+
+def _root_modified(calls: list[CSGCall]) -> list[CSGCall] | None:
+    """The first ``!`` (root) node in file order, alone: OpenSCAD then renders only its subtree,
+    without its parents' maps (as its own ``.csg`` export shows)."""
+    todo = list(reversed(calls))
+    while todo:
+        call = todo.pop()
+        if "!" in call.modifiers:
+            return [CSGCall(call.name, call.args, call.kwargs, call.children, call.line, call.modifiers.replace("!", ""))]
+        todo.extend(reversed(call.children))
+    return None
 
 
 def _counts(skipped: Counter[str]) -> str:
