@@ -50,9 +50,9 @@ MAX_ABS_COORD = 1e12
 #: surface cannot be told apart from its position in float64.
 MIN_LENGTH = 1e-9
 
-#: Smallest extent of a primitive relative to its largest one (a box edge
-#: against the longest edge, a truncus height against its larger radius and
-#: back): thinner solids have hulls too flat to tessellate.
+#: Smallest extent of a primitive relative to its largest one (an ellipsoid's radii, a truncus height
+#: against its larger radius and back): thinner solids have hulls too flat to
+#: tessellate. Boxes have no such limit (their slabs are exact at any aspect).
 MIN_ASPECT = 1e-5
 
 #: Largest light intensity, radiance, exposure and material coefficient:

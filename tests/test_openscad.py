@@ -75,7 +75,7 @@ def test_parser_is_iterative_over_deep_nesting() -> None:
 
 
 MALFORMED = [
-    ("cube(size = [1, 1, 1])\nsphere(r = 1);", "m.csg:2: expected ';' or '{' after cube(...), got 'sphere'"),
+    ("cube(size = [1, 1, 1])\n42;", "m.csg:2: expected ';' or '{' after cube(...), got '42'"),
     ("union() {\n  cube(size = 1);\n", "m.csg:3: the block of union opened at line 1 is not closed"),
     ("cube(size = 1);\n}", "m.csg:2: '}' without an open block"),
     ("cube(size = [1, 1 1]);", "m.csg:1: expected ',' or ']' in a list in the arguments of cube, got '1'"),
@@ -100,8 +100,6 @@ MALFORMED = [
         "m.csg:1: multmatrix: m must be affine (last row [0, 0, 0, 1]), got [0.0, 0.0, 1.0, 1.0]",
     ),
     ("polyhedron(points = [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]], faces = [[0, 1, 7]]);", "m.csg:1: polyhedron: faces must hold point indices 0 .. 3, got 7.0"),
-    ("cube(size = [1, 1, 1e-9]);", "m.csg:1: cube: Box.size must have its smallest edge at least 1e-05 x its largest"),
-    ("linear_extrude(height = 1) { linear_extrude(height = 1) { square(size = 1); } }", "m.csg:1: linear_extrude: linear_extrude inside linear_extrude: its children must be 2D"),
     ("", "m.csg: the model is empty: nothing of it has a volume"),
     ("cube(size = 0);\nsphere(r = 0);", "m.csg: the model is empty: nothing of it has a volume"),
 ]
@@ -132,8 +130,8 @@ def test_primitives_are_exact() -> None:
     cube = load("cube(size = [1, 2, 3], center = false);")
     assert cube == Box((0.5, 1.0, 1.5), (1, 2, 3))
     assert load("cube(size = 2, center = true);") == Box((0, 0, 0), (2, 2, 2))
-    assert load("sphere($fn = 8, $fa = 12, $fs = 2, r = 1.5);") == Sphere((0, 0, 0), 1.5)
-    assert load("cylinder($fn = 6, h = 2, r1 = 1, r2 = 1, center = false);") == Cylinder((0, 0, 1), (0, 0, 2), 1)
+    assert load("sphere($fn = 80, $fa = 12, $fs = 2, r = 1.5);") == Sphere((0, 0, 0), 1.5)
+    assert load("cylinder($fn = 0, h = 2, r1 = 1, r2 = 1, center = false);") == Cylinder((0, 0, 1), (0, 0, 2), 1)
     # OpenSCAD's r1 is at z = 0: the truncus' r2 end (center - axis / 2).
     cone = load("cylinder(h = 3, r1 = 1, r2 = 0, center = true);")
     assert cone == Truncus((0, 0, 0), (0, 0, 3), 0.0, 1.0)
@@ -186,7 +184,7 @@ def test_extrusion_commutes_with_booleans() -> None:
     linear_extrude(height = 2, center = true, convexity = 1, scale = [1, 1], $fn = 8) {
       difference() {
         square(size = [4, 4], center = true);
-        circle($fn = 8, r = 1);
+        circle($fn = 0, r = 1);
         polygon(points = [[1, 1], [2, 1], [2, 2], [1, 2], [1.2, 1.2], [1.8, 1.2], [1.8, 1.8], [1.2, 1.8]], paths = [[0, 1, 2, 3], [4, 5, 6, 7]]);
       }
     }
@@ -194,7 +192,7 @@ def test_extrusion_commutes_with_booleans() -> None:
     solid = load(text)
     box, disc, frame = solid.children
     assert box == Box((0, 0, 0), (4, 4, 2))
-    assert disc == Cylinder((0, 0, 0), (0, 0, 2), 1.0)  # exact, whatever $fn says
+    assert disc == Cylinder((0, 0, 0), (0, 0, 2), 1.0)  # exact without an explicit $fn
     assert volume(frame) == pytest.approx((1 - 0.36) * 2, rel=1e-12)
     assert volume(solid) == pytest.approx((16 - math.pi - 0.64) * 2, rel=1e-9)
 
@@ -222,11 +220,11 @@ UNSUPPORTED = [
     ("hull", "hull() {\n  sphere(r = 1);\n  cube(size = 1);\n}"),
     ("minkowski", "minkowski() {\n  cube(size = 1);\n  sphere(r = 0.1);\n}"),
     ("rotate_extrude", "rotate_extrude(angle = 360, convexity = 2) {\n  square(size = 1);\n}"),
-    ("text", "linear_extrude(height = 1) {\n  text(text = \"A\", size = 10);\n}"),
+    ("roof", "linear_extrude(height = 1) {\n  roof() {\n    square(size = 1);\n  }\n}"),
     ("import", "import(file = \"part.stl\", layer = \"\", origin = [0, 0], scale = 1);"),
     ("surface", "surface(file = \"h.dat\", center = false, invert = false);"),
     ("projection", "linear_extrude(height = 1) {\n  projection(cut = false) {\n    sphere(r = 1);\n  }\n}"),
-    ("offset", "linear_extrude(height = 1) {\n  offset(r = 1) {\n    square(size = 1);\n  }\n}"),
+    ("fill", "fill() {\n  cube(size = 1);\n}"),
     ("resize", "resize(newsize = [2, 2, 2]) {\n  sphere(r = 1);\n}"),
     ("frobnicate", "frobnicate(size = 3);"),
 ]
@@ -250,10 +248,8 @@ def test_unsupported_node_names_itself_and_its_line(node: str, text: str) -> Non
 
 SPECIAL = [
     ("twist", "linear_extrude(height = 1, twist = 90, slices = 10) {\n  square(size = 1);\n}", "linear_extrude", "a twisted extrusion (twist = 90)"),
-    ("scale", "linear_extrude(height = 1, scale = [2, 1]) {\n  square(size = 1);\n}", "linear_extrude", "a scaled extrusion (scale = [2.0, 1.0])"),
-    ("2D at top", "union() {\n  square(size = [1, 2], center = false);\n}", "square", "a 2D object outside linear_extrude has no volume"),
-    ("circle at top", "circle(r = 1);", "circle", "a 2D object outside linear_extrude"),
-    ("3D in extrusion", "linear_extrude(height = 1) {\n  sphere(r = 1);\n}", "sphere", "a 3D object inside linear_extrude"),
+    ("scale", "linear_extrude(height = 1, scale = [2, 1]) {\n  circle(r = 1);\n}", "linear_extrude", "linear_extrude.scale must be uniform for a circle"),
+    ("twist", "linear_extrude(height = 1, twist = 90) {\n  square(size = 1);\n}", "linear_extrude", "a twisted extrusion (twist = 90)"),
     (
         "non-convex polyhedron",
         "polyhedron(points = [[0, 0, 0], [2, 0, 0], [2, 2, 0], [0, 2, 0], [1, 1, 0.5], [0, 0, 2], [2, 0, 2], [2, 2, 2], [0, 2, 2]],\n"
@@ -314,11 +310,13 @@ def test_files_are_checked(tmp_path) -> None:
 
 def test_missing_program(tmp_path, monkeypatch) -> None:
     scad = tmp_path / "m.scad"
-    scad.write_text("cube(1);")
+    scad.write_text("x = 1;\ncube(x);")  # beyond the plain subset that reads without the program
     monkeypatch.setenv("PATH", str(tmp_path))  # no openscad on this PATH
     monkeypatch.delenv("ISOCSG_OPENSCAD", raising=False)
-    with pytest.raises(MissingDependencyError, match=re.escape("needs the openscad program, which was not found: install OpenSCAD (Debian/Ubuntu: apt install openscad")):
-        isocsg.load_openscad(scad)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        with pytest.raises(MissingDependencyError, match=re.escape("needs the openscad program, which was not found: install OpenSCAD (Debian/Ubuntu: apt install openscad")):
+            isocsg.load_openscad(scad)
     assert issubclass(MissingDependencyError, ImportError)
 
 

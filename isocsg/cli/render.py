@@ -119,4 +119,6 @@ def _load(path: str, *, skip_unsupported: bool = False) -> Any:
     if model.skipped:
         counts = ", ".join(f"{n} {name}" for name, n in sorted(model.skipped.items()))
         print(f"isocsg render: skipped {sum(model.skipped.values())} unsupported OpenSCAD node(s): {counts}", file=sys.stderr)
+    for line in getattr(model, "left_out", ()):  # each node left out, with its line and why
+        print(f"isocsg render: left out {line}", file=sys.stderr)
     return framed_scene(model.solid)

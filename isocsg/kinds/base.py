@@ -496,10 +496,14 @@ def _unit(v: Vec3) -> NDArray[np.float64]:
 
 def _perpendicular_frame(axis: NDArray[np.float64]) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
     """Two unit vectors that complete ``axis`` (unit) to a right-handed frame."""
-    helper = np.array([1.0, 0.0, 0.0]) if abs(axis[0]) < 0.9 else np.array([0.0, 1.0, 0.0])
-    u = np.cross(axis, helper)
+    # np.cross's own products, written out: the same bits, without its overhead per call
+    # (a convex hull asks for one frame per face)
+    a0, a1, a2 = float(axis[0]), float(axis[1]), float(axis[2])
+    h0, h1, h2 = (1.0, 0.0, 0.0) if abs(a0) < 0.9 else (0.0, 1.0, 0.0)
+    u = np.array([a1 * h2 - a2 * h1, a2 * h0 - a0 * h2, a0 * h1 - a1 * h0])
     u /= np.linalg.norm(u)
-    return u, np.cross(axis, u)
+    u0, u1, u2 = float(u[0]), float(u[1]), float(u[2])
+    return u, np.array([a1 * u2 - a2 * u1, a2 * u0 - a0 * u2, a0 * u1 - a1 * u0])
 
 
 IDENTITY3: tuple[Vec3, Vec3, Vec3] = ((1.0, 0.0, 0.0), (0.0, 1.0, 0.0), (0.0, 0.0, 1.0))

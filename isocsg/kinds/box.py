@@ -8,7 +8,7 @@ from typing import TYPE_CHECKING, Any, ClassVar
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from .._validation import MIN_ASPECT, Vec3, length_floor, vector3
+from .._validation import Vec3, length_floor, vector3
 from ..errors import InvalidGeometryError
 from .base import (
     DEFAULT_RESOLUTION,
@@ -82,10 +82,8 @@ class Box(Primitive):
             raise InvalidGeometryError(
                 f"Box.size must be >= {floor:g} in every axis (the smallest length at this position), got {size}"
             )
-        if min(size) < MIN_ASPECT * max(size):
-            raise InvalidGeometryError(
-                f"Box.size must have its smallest edge at least {MIN_ASPECT:g} x its largest, got {size}"
-            )
+        # No aspect limit: a box's rays, sections and mesh are its slabs, exact at any aspect
+        # (a 0.001 x 5 x 128.4 plate is a real part); only the length floor above applies.
         object.__setattr__(self, "size", size)
         object.__setattr__(self, "orientation", rotation3("Box.orientation", self.orientation))
 

@@ -151,7 +151,7 @@ class ConvexPolyhedron(Primitive):
     @property
     def volume(self) -> float:
         """Exact volume of the hull."""
-        v = self.hull_vertices[self.triangles]
+        v = self.hull_vertices[self.triangles] - self.hull_vertices[0]  # about a vertex: no cancellation far out
         return float(abs(np.einsum("ij,ij->i", v[:, 0], np.cross(v[:, 1], v[:, 2])).sum()) / 6.0)
 
     def intersect_rays(self, origins: ArrayLike, directions: ArrayLike) -> RayHits:
@@ -165,7 +165,10 @@ class ConvexPolyhedron(Primitive):
 
     def _affine(self, A: NDArray[np.float64], t: NDArray[np.float64]) -> Primitive:
         # the hull of the mapped points is the image of the hull (affine maps keep convexity)
-        return ConvexPolyhedron(np.asarray(self.vertices, dtype=np.float64) @ A.T + t)
+        pts = np.asarray(self.vertices, dtype=np.float64) @ A.T + t
+        if np.linalg.cond(A) > 1e6:  # nearly flattening maps: the full hull build and its checks
+            return ConvexPolyhedron(pts)  # type: ignore[arg-type]  # any (n, 3) array-like
+        return _mapped(self, pts, A, t)
 
     # ------------------------------------------------------------ the kind interface
     def extent(self, n: ArrayLike) -> tuple[float, float]:
@@ -391,3 +394,32 @@ def _spikes(
             body = f"multmatrix({short_mat(m, d)}) {{ {body} }}"
         lines.append("  " + body)
     return lines
+
+
+def _mapped(
+    p: ConvexPolyhedron, pts: NDArray[np.float64], A: NDArray[np.float64], t: NDArray[np.float64]
+) -> ConvexPolyhedron:
+    """The image of ``p`` under a well-conditioned affine map without a new hull: its vertices
+    mapped, the same faces (reversed by a reflection), planes through the mapped normals
+    ``A^-T n`` (a map of thousands of prisms under nested transforms rebuilt every hull)."""
+    out = object.__new__(ConvexPolyhedron)
+    object.__setattr__(out, "vertices", tuple(tuple(map(float, q)) for q in pts))
+    hv = p.hull_vertices @ A.T + t
+    flip = np.linalg.det(A) < 0
+    faces = tuple((f[::-1] if flip else f).copy() for f in p.faces)
+    n = p.face_normals @ np.linalg.inv(A)  # rows: (A^-T n)^T
+    n /= np.linalg.norm(n, axis=1)[:, None]
+    offsets = np.array([float(n[k] @ hv[f].mean(axis=0)) for k, f in enumerate(faces)])
+    scale = float(np.max(np.ptp(hv, axis=0)))
+    flat = 1e-12 * max(scale, float(np.abs(hv).max()))
+    if scale < length_floor(hv.min(axis=0), hv.max(axis=0)) or any(
+        len(f) > 3 and float(np.ptp(hv[f] @ n[k])) > flat for k, f in enumerate(faces)
+    ):  # too small here, or a face merged from nearly coplanar facets: the full build decides
+        return ConvexPolyhedron(pts)  # type: ignore[arg-type]
+    tris = np.array([(f[0], f[i], f[i + 1]) for f in faces for i in range(1, len(f) - 1)], dtype=np.int64)
+    for arr in (hv, n, offsets, tris):
+        arr.setflags(write=False)
+    for name, value in (("hull_vertices", hv), ("faces", faces), ("face_normals", n), ("face_offsets", offsets),
+                        ("triangles", tris)):
+        object.__setattr__(out, name, value)
+    return out

@@ -14,11 +14,12 @@ import os
 import warnings
 from pathlib import Path
 
-from ..errors import OpenSCADError
+from ..errors import MissingDependencyError, OpenSCADError
 from ..geometry.primitives import Solid
+from .flat import FN_MAX, MixedDimensionsWarning
 from .lowering import UNSUPPORTED_NODES, LoweredModel, lower
 from .parser import MAX_CSG_TEXT, CSGCall, parse_csg
-from .program import export_mesh, find_openscad, scad_to_csg
+from .program import _INSTALL, export_mesh, find_openscad, scad_to_csg
 from .writer import dumps_openscad, save_openscad
 
 __all__ = [
@@ -36,6 +37,9 @@ __all__ = [
     "export_mesh",
     "find_openscad",
     "UNSUPPORTED_NODES",
+    "FN_MAX",
+    "PlainSubsetWarning",
+    "MixedDimensionsWarning",
 ]
 
 
@@ -49,6 +53,10 @@ class OpenSCADSkipWarning(UserWarning):
     def __init__(self, message: str, skipped: dict[str, int]) -> None:
         super().__init__(message)
         self.skipped = skipped
+
+
+class PlainSubsetWarning(UserWarning):
+    """A ``.scad`` file read without the ``openscad`` program, as the plain ``.csg`` subset."""
 
 
 def _read_text(p: Path) -> str:
@@ -73,25 +81,44 @@ def read_openscad(path: str | os.PathLike[str], *, skip_unsupported: bool = Fals
     """
     p = Path(path)
     suffix = p.suffix.lower()
+    plain = False
     if suffix == ".scad":
-        text = scad_to_csg(p)
+        try:
+            text = scad_to_csg(p)
+        except MissingDependencyError:
+            # without the program: the plain subset (constant arguments, no variables, loops or
+            # modules), which is the .csg syntax; said once, so the reader knows which
+            warnings.warn(PlainSubsetWarning(f"{p}: openscad is not installed: read as the plain .csg subset "
+                                             "(constant arguments, no variables, loops or modules)"), stacklevel=3)
+            text = _read_text(p)
+            plain = True
     elif suffix == ".csg":
         text = _read_text(p)
     else:
         raise OpenSCADError(f"{p}: expected a .scad or .csg file")
-    return lower(parse_csg(text, source=str(p)), source=str(p), skip_unsupported=skip_unsupported)
+    try:
+        calls = parse_csg(text, source=str(p))
+    except OpenSCADError as exc:
+        if suffix == ".scad" and plain:
+            raise MissingDependencyError(f"{exc}: beyond the plain subset, {p} needs the openscad program, "
+                                         f"which was not found: {_INSTALL}") from None
+        raise
+    return lower(calls, source=str(p), skip_unsupported=skip_unsupported)
 
 
 def load_openscad(path: str | os.PathLike[str], *, skip_unsupported: bool = False) -> Solid:
     """Read an OpenSCAD model (``.csg``, or ``.scad`` through ``openscad``) as an exact solid.
 
     ``cube``, ``sphere``, ``cylinder`` and convex ``polyhedron`` become exact
-    primitives (``$fn``, ``$fa`` and ``$fs`` are ignored: nothing is
-    tessellated), ``multmatrix`` a transform, ``union``/``group``/``difference``/
-    ``intersection`` the same Booleans, ``color`` and ``render`` pass their
-    children through, and ``linear_extrude`` (no twist, no scale) of ``square``,
-    ``circle``, ``polygon`` and 2D Booleans becomes boxes, cylinders and
-    convex prisms. See :mod:`isocsg.openscad.lowering` for the full table.
+    primitives (round without ``$fn``; an explicit ``$fn`` up to :data:`FN_MAX`
+    makes OpenSCAD's own polygonal solid), ``multmatrix``, ``translate``,
+    ``rotate``, ``scale`` and ``mirror`` a map applied once per leaf,
+    ``union``/``group``/``difference``/``intersection`` the same Booleans,
+    ``color`` and ``render`` pass their children through, ``%`` and ``*``
+    children are left out, and ``linear_extrude`` (``center``, ``scale``; no
+    twist) of any 2D subtree (polygons with holes, ``text``, ``offset``, 2D
+    Booleans) becomes the exact extrusion of :mod:`isocsg.shapes2d`. See
+    :mod:`isocsg.openscad.lowering` and ``docs/openscad.md`` for the full table.
 
     Parameters
     ----------

@@ -1,32 +1,37 @@
 """Lowering of parsed OpenSCAD statements to exact isocsg solids.
 
-What each node becomes:
+What each node becomes (``docs/openscad.md`` has the table and the reasons):
 
-- ``cube(size, center)`` -> :class:`~isocsg.Box`; ``sphere(r)`` -> :class:`~isocsg.Sphere`;
-  ``cylinder(h, r1, r2, center)`` -> :class:`~isocsg.Truncus` (a cylinder, cone or
-  frustum); a convex ``polyhedron(points, faces)`` -> :class:`~isocsg.ConvexPolyhedron`.
-  ``$fn``, ``$fa`` and ``$fs`` are ignored: the primitives are exact, not tessellated.
-- ``multmatrix(m)`` -> ``solid.transform(m)`` of the union of its children.
-- ``union``, ``group``, ``render``, ``color`` and the ``#`` and ``!`` modifiers -> a union;
-  ``difference`` and ``intersection`` -> the same Boolean.
-- ``hull`` of polyhedral children (cubes, polyhedra, under maps and groups) -> the
-  :class:`~isocsg.ConvexPolyhedron` of all their corners, exactly (what the writer's
-  exact form of a convex polyhedron is); a hull of a curved or cut child is refused. ``%`` (background) and
-  ``*`` (disabled) nodes are not part of the model and are left out.
-- ``linear_extrude(height, center)`` without twist or scale, of 2D children
-  (``square``, ``circle``, ``polygon``, 2D ``multmatrix`` and Booleans). A straight
-  extrusion commutes with union, difference, intersection and affine maps of the
-  plane, so each 2D leaf is extruded on its own: a ``circle`` becomes an exact
-  cylinder, a ``square`` a box (or a prism when rotated), a ``polygon`` the union
-  of convex prisms of :func:`~isocsg.geometry.extrude.extrude`.
+- ``cube(size, center)`` -> :class:`~isocsg.Box` (of any aspect); ``sphere(r)`` ->
+  :class:`~isocsg.Sphere`; ``cylinder(h, r1, r2, center)`` -> :class:`~isocsg.Truncus` (a
+  cylinder, cone or frustum); a convex ``polyhedron(points, faces)`` ->
+  :class:`~isocsg.ConvexPolyhedron`. Without ``$fn``, or with ``$fn`` above
+  :data:`~isocsg.openscad.flat.FN_MAX` (64), spheres, cylinders and circles are the exact round
+  solids; an explicit ``$fn`` from 1 to 64 makes OpenSCAD's own polygonal solid (a hexagonal
+  prism, a pyramid, OpenSCAD's polyhedral sphere) as a ``ConvexPolyhedron`` with OpenSCAD's
+  vertices.
+- ``multmatrix(m)``, and the hand-written ``translate``, ``rotate``, ``scale``, ``mirror``: maps
+  composed on the way down and applied once per leaf, however deep they nest.
+- ``union``, ``group``, ``render``, ``color`` and the ``#`` modifier -> a union; a ``!`` (root)
+  node makes its subtree alone the model, without its parents' maps, as OpenSCAD does;
+  ``difference`` and ``intersection`` -> the same Boolean. ``%`` (background) and ``*``
+  (disabled) children are left out as OpenSCAD leaves them out: they neither empty an
+  intersection nor stand first in a difference. A 2D object beside 3D ones is ignored with
+  OpenSCAD's warning (:class:`~isocsg.openscad.flat.MixedDimensionsWarning`).
+- ``hull`` of polyhedral children (cubes, polyhedra, polygonal spheres and cylinders, under maps
+  and groups) -> the :class:`~isocsg.ConvexPolyhedron` of all their corners, exactly; a hull of a
+  round or cut child is refused.
+- ``linear_extrude(height, center, scale)`` of any 2D subtree (:mod:`isocsg.openscad.flat`,
+  through :mod:`isocsg.shapes2d`): ``square``, ``circle``, ``polygon`` (non-convex, holes),
+  ``text``, ``offset``, 2D Booleans, transforms and hulls of polygons.
 
-Nodes without an exact equivalent (``hull`` of curved solids, ``minkowski``, ``rotate_extrude``,
-twisted or scaled extrusions, ``text``, ``import``, ``surface``, ``projection``,
-``offset``, ``resize``, 2D objects outside an extrusion, non-convex polyhedra and
-unknown modules) raise :class:`~isocsg.errors.UnsupportedOpenSCADError` naming the
-node and its line, or are skipped and counted when ``skip_unsupported=True``.
-Objects that OpenSCAD itself renders as nothing (a zero size, a zero radius, a
-singular matrix) are empty and are dropped like OpenSCAD drops them.
+Nodes without an exact equivalent (``hull`` of round solids, ``minkowski``, ``rotate_extrude``,
+twisted extrusions, ``import``, ``surface``, ``projection``, ``resize``, non-convex polyhedra and
+unknown modules) raise :class:`~isocsg.errors.UnsupportedOpenSCADError` naming the node and its
+line, or are skipped when ``skip_unsupported=True``: :attr:`LoweredModel.skipped` counts them
+and :attr:`LoweredModel.left_out` names each (line and reason). Objects that OpenSCAD itself
+renders as nothing (a zero size, a zero radius, a singular matrix) are empty and are dropped
+like OpenSCAD drops them.
 
 The walk is iterative (an explicit stack), so nesting depth is bounded by memory.
 """
@@ -34,6 +39,7 @@ The walk is iterative (an explicit stack), so nesting depth is bounded by memory
 from __future__ import annotations
 
 import math
+import warnings
 from collections import Counter
 from dataclasses import dataclass
 from typing import Any
@@ -44,6 +50,7 @@ from numpy.typing import NDArray
 from ..csg import Difference, Intersection, Union
 from ..errors import InvalidGeometryError, InvalidParameterError, OpenSCADError, UnsupportedOpenSCADError
 from ..kinds import Box, ConvexPolyhedron, Cylinder, Primitive, Solid, Sphere, Truncus
+from .flat import MixedDimensionsWarning, cylinder_points, extrude, polygonal_sides, sphere_points
 from .parser import CSGCall
 
 __all__ = ["lower", "LoweredModel", "UNSUPPORTED_NODES"]
@@ -52,11 +59,9 @@ __all__ = ["lower", "LoweredModel", "UNSUPPORTED_NODES"]
 UNSUPPORTED_NODES: dict[str, str] = {
     "minkowski": "Minkowski sums are not exact isocsg solids",
     "rotate_extrude": "surfaces of revolution other than spheres and cones are not isocsg primitives",
-    "text": "glyph outlines are not read",
     "import": "meshes and drawings from other files are not read",
     "surface": "height maps are not read",
     "projection": "projections to 2D are not solids",
-    "offset": "offset outlines have rounded corners that are not exact prisms",
     "resize": "resize depends on the tessellated bounds",
     "roof": "roofs are not supported",
     "fill": "fill is not supported",
@@ -87,19 +92,14 @@ class LoweredModel:
     skipped : dict of str to int
         How many nodes of each name were skipped (empty unless
         ``skip_unsupported=True`` met an unsupported node).
+    left_out : tuple of str
+        One line per node left out of the model, skipped or ignored as OpenSCAD ignores it (a 2D
+        object beside 3D ones): ``"model.csg:12: minkowski(): Minkowski sums are not ..."``.
     """
 
     solid: Solid
     skipped: dict[str, int]
-
-
-@dataclass(slots=True)
-class _Extrusion:
-    """The 2D context inside a ``linear_extrude``: the z range and the plane's accumulated affine map."""
-
-    z0: float
-    z1: float
-    affine: NDArray[np.float64]  # 3 x 3, acting on (x, y, 1)
+    left_out: tuple[str, ...] = ()
 
 
 class _Lowerer:
@@ -107,6 +107,7 @@ class _Lowerer:
         self.source = source
         self.skip = skip_unsupported
         self.skipped: Counter[str] = Counter()
+        self.left_out: list[str] = []
 
     # ------------------------------------------------------------------ errors
 
@@ -120,6 +121,7 @@ class _Lowerer:
         """Raise, or count the node as skipped."""
         if self.skip:
             self.skipped[call.name] += 1
+            self.note(call, reason)
             return
         raise UnsupportedOpenSCADError(
             f"{self.where(call)}{call.name}() is not supported ({reason}); "
@@ -127,6 +129,14 @@ class _Lowerer:
             line=call.line,
             node=call.name,
         )
+
+    def note(self, call: CSGCall, reason: str) -> None:
+        """Record a node left out of the model."""
+        self.left_out.append(f"{self.where(call)}{call.name}(): {reason}")
+
+    @staticmethod
+    def reason(name: str, dim: str = "3D") -> str:
+        return UNSUPPORTED_NODES.get(name, f"unknown or unsupported {dim} module")
 
     # ------------------------------------------------------------------ arguments
 
@@ -196,19 +206,33 @@ class _Lowerer:
         if r is None and "d" in call.kwargs:
             r = self.number(call, "d", call.kwargs["d"]) / 2
         r = self.number(call, "r", 1.0 if r is None else r)
-        return self.make(call, Sphere, (0.0, 0.0, 0.0), r) if r > 0 else None
+        if r <= 0:
+            return None
+        n = polygonal_sides(call)
+        if n is not None:  # OpenSCAD's polyhedral sphere
+            return self.make(call, ConvexPolyhedron, sphere_points(n, r))
+        return self.make(call, Sphere, (0.0, 0.0, 0.0), r)
 
     def cylinder(self, call: CSGCall) -> Solid | None:
         h = self.number(call, "h", self.arg(call, "h", 0, 1.0))
         r = call.kwargs.get("r")
+        if r is None and call.kwargs.get("d") is not None:
+            r = self.number(call, "d", call.kwargs["d"]) / 2
         r1 = self.number(call, "r1", call.kwargs.get("r1", 1.0 if r is None else r))
         r2 = self.number(call, "r2", call.kwargs.get("r2", 1.0 if r is None else r))
+        if call.kwargs.get("d1") is not None:
+            r1 = self.number(call, "d1", call.kwargs["d1"]) / 2
+        if call.kwargs.get("d2") is not None:
+            r2 = self.number(call, "d2", call.kwargs["d2"]) / 2
         center = self.boolean(call, "center", self.arg(call, "center", None, False))
         if h <= 0 or (r1 <= 0 and r2 <= 0):
             return None
         if r1 < 0 or r2 < 0:
             raise self.fail(call, f"r1 and r2 must be >= 0, got {r1:g} and {r2:g}")
         zc = 0.0 if center else h / 2
+        n = polygonal_sides(call)
+        if n is not None:  # OpenSCAD's prism, pyramid or frustum of n sides
+            return self.make(call, ConvexPolyhedron, cylinder_points(n, r1, r2, zc - h / 2, zc + h / 2))
         # OpenSCAD's r1 is at the bottom (z = 0); the truncus' r1 is at center + axis / 2 (the top).
         if r1 == r2:
             return self.make(call, Cylinder, (0.0, 0.0, zc), (0.0, 0.0, h), r1)
@@ -253,111 +277,6 @@ class _Lowerer:
             self.unsupported(call, "a non-convex polyhedron is not an isocsg primitive; split it into convex ones")
             return None
         return hull
-
-    # ------------------------------------------------------------------ 2D leaves
-
-    def square(self, call: CSGCall, ex: _Extrusion) -> Solid | None:
-        size = self.vector(call, "size", self.arg(call, "size", 0, 1.0), 2)
-        center = self.boolean(call, "center", self.arg(call, "center", 1, False))
-        if np.any(size <= 0):
-            return None
-        lo = -size / 2 if center else np.zeros(2)
-        corners = lo + np.array([[0, 0], [1, 0], [1, 1], [0, 1]]) * size
-        a = ex.affine
-        if abs(a[0, 1]) == 0 and abs(a[1, 0]) == 0:  # axis-aligned: an exact box
-            mapped = corners @ a[:2, :2].T + a[:2, 2]
-            lo2, hi2 = mapped.min(axis=0), mapped.max(axis=0)
-            if np.any(hi2 <= lo2):
-                return None
-            c = ((lo2 + hi2) / 2).tolist() + [(ex.z0 + ex.z1) / 2]
-            s = (hi2 - lo2).tolist() + [ex.z1 - ex.z0]
-            return self.make(call, Box, tuple(c), tuple(s))
-        return self.prism(call, corners, ex)
-
-    def circle(self, call: CSGCall, ex: _Extrusion) -> Solid | None:
-        r = self.arg(call, "r", 0, None)
-        if r is None and "d" in call.kwargs:
-            r = self.number(call, "d", call.kwargs["d"]) / 2
-        r = self.number(call, "r", 1.0 if r is None else r)
-        if r <= 0:
-            return None
-        a = ex.affine
-        lin = a[:2, :2]
-        h = ex.z1 - ex.z0
-        gram = lin.T @ lin
-        s2 = (gram[0, 0] + gram[1, 1]) / 2
-        if s2 <= 0:
-            return None
-        zc = (ex.z0 + ex.z1) / 2
-        if abs(gram[0, 1]) <= 1e-15 * s2 and abs(gram[0, 0] - gram[1, 1]) <= 1e-15 * s2:  # a similarity
-            c = a[:2, 2]
-            return self.make(call, Cylinder, (float(c[0]), float(c[1]), zc), (0.0, 0.0, h), r * math.sqrt(s2))
-        if abs(np.linalg.det(lin)) <= 1e-15 * s2:
-            return None
-        m = np.eye(4)
-        m[:2, :2] = lin
-        m[:2, 3] = a[:2, 2]
-        return _transform(self, call, self.make(call, Cylinder, (0.0, 0.0, zc), (0.0, 0.0, h), r), m)
-
-    def polygon(self, call: CSGCall, ex: _Extrusion) -> Solid | None:
-        import shapely
-        from shapely.geometry import Polygon
-
-        pts = self.points(call, "points", self.arg(call, "points", 0, []), 2)
-        paths_value = self.arg(call, "paths", 1, None)
-        paths = [list(range(len(pts)))] if paths_value is None else self.index_lists(call, "paths", paths_value, len(pts))
-        pts = pts @ ex.affine[:2, :2].T + ex.affine[:2, 2]
-        # OpenSCAD fills polygons by the even-odd rule: each path toggles inside and outside.
-        area: Any = None
-        for path in paths:
-            if len(path) < 3:
-                continue
-            ring = shapely.make_valid(Polygon(pts[path]))
-            area = ring if area is None else area.symmetric_difference(ring)
-        if area is None:
-            return None
-        area = shapely.make_valid(area)
-        polys = [g for g in shapely.get_parts(area) if g.geom_type in ("Polygon", "MultiPolygon") and g.area > 0]
-        if not polys:
-            return None
-        return self.prism(call, shapely.union_all(polys), ex, transformed=True)
-
-    def prism(self, call: CSGCall, shape: Any, ex: _Extrusion, *, transformed: bool = False) -> Solid | None:
-        from shapely.geometry import Polygon
-
-        from ..geometry.extrude import prisms
-
-        if not transformed:
-            shape = Polygon(np.asarray(shape) @ ex.affine[:2, :2].T + ex.affine[:2, 2])
-        if shape.area <= 0:
-            return None
-        try:
-            return prisms(shape, ex.z0, ex.z1)
-        except InvalidGeometryError as exc:
-            raise self.fail(call, str(exc)) from None
-
-    # ------------------------------------------------------------------ extrusion
-
-    def extrusion(self, call: CSGCall) -> _Extrusion | None:
-        """The 2D context of a ``linear_extrude``; None when it is unsupported or empty."""
-        if "file" in call.kwargs:
-            self.unsupported(call, "extruding an imported drawing is not supported")
-            return None
-        twist = self.number(call, "twist", call.kwargs.get("twist", 0.0))
-        scale = call.kwargs.get("scale", 1.0)
-        scale_v = self.vector(call, "scale", scale, 2)
-        if twist != 0.0:
-            self.unsupported(call, f"a twisted extrusion (twist = {twist:g}) is not a union of prisms")
-            return None
-        if np.any(scale_v != 1.0):
-            self.unsupported(call, f"a scaled extrusion (scale = {_show(scale)}) is not a union of prisms")
-            return None
-        h = self.number(call, "height", self.arg(call, "height", 0, 100.0))
-        center = self.boolean(call, "center", call.kwargs.get("center", False))
-        if h <= 0:
-            return None
-        z0, z1 = (-h / 2, h / 2) if center else (0.0, h)
-        return _Extrusion(z0, z1, np.eye(3))
 
 
 def _show(value: Any, limit: int = 60) -> str:
@@ -408,6 +327,9 @@ def _transform(lw: _Lowerer, call: CSGCall, solid: Solid, m: NDArray[np.float64]
 
 
 def _matrix(lw: _Lowerer, call: CSGCall) -> NDArray[np.float64]:
+    """The 4 x 4 matrix of a ``multmatrix``, ``translate``, ``rotate``, ``scale`` or ``mirror`` node."""
+    if call.name != "multmatrix":
+        return _hand_matrix(lw, call)
     value = lw.arg(call, "m", 0, None)
     if not isinstance(value, list) or len(value) not in (3, 4) or not all(isinstance(r, list) and len(r) == 4 for r in value):
         raise lw.fail(call, f"m must be a 4 x 4 (or 3 x 4) matrix, got {_show(value)}")
@@ -416,6 +338,45 @@ def _matrix(lw: _Lowerer, call: CSGCall) -> NDArray[np.float64]:
     if not np.array_equal(m[3], [0.0, 0.0, 0.0, 1.0]):
         raise lw.fail(call, f"m must be affine (last row [0, 0, 0, 1]), got {m[3].tolist()}")
     return m
+
+
+def _vec3(lw: _Lowerer, call: CSGCall, name: str, value: Any, pad: float) -> NDArray[np.float64]:
+    """A 2- or 3-vector (a number for all three), padded as OpenSCAD pads 2-vectors."""
+    if isinstance(value, list) and len(value) == 2:
+        value = [*value, pad]
+    return lw.vector(call, name, value, 3)
+
+
+def _hand_matrix(lw: _Lowerer, call: CSGCall) -> NDArray[np.float64]:
+    """The matrices of hand-written transforms, as OpenSCAD builds them."""
+    from ..geometry.transforms import axis_angle_matrix, mirror_matrix, rotation_matrix
+
+    name = call.name
+    m = np.eye(4)
+    if name == "translate":
+        m[:3, 3] = _vec3(lw, call, "v", lw.arg(call, "v", 0, [0, 0, 0]), 0.0)
+    elif name == "scale":
+        m[:3, :3] = np.diag(_vec3(lw, call, "v", lw.arg(call, "v", 0, [1, 1, 1]), 1.0))
+    elif name == "mirror":
+        v = _vec3(lw, call, "v", lw.arg(call, "v", 0, [1, 0, 0]), 0.0)
+        if np.any(v != 0):
+            m = mirror_matrix(v)
+    else:  # rotate(a) about z, rotate([ax, ay, az]), rotate(a, v) about the axis v
+        a = lw.arg(call, "a", 0, 0.0)
+        v = lw.arg(call, "v", 1, None)
+        if isinstance(a, list):
+            m = rotation_matrix(_vec3(lw, call, "a", a, 0.0))
+        elif v is not None:
+            axis = _vec3(lw, call, "v", v, 0.0)
+            m = axis_angle_matrix(lw.number(call, "a", a), axis if np.any(axis != 0) else [0.0, 0.0, 1.0])
+        else:
+            m = rotation_matrix([0.0, 0.0, lw.number(call, "a", a)])
+    return m
+
+
+def _singular(m: NDArray[np.float64]) -> bool:
+    """A map that flattens space to a plane or a line (no volume, as in OpenSCAD)."""
+    return bool(abs(np.linalg.det(m[:3, :3])) <= 1e-15 * max(1.0, float(np.abs(m[:3, :3]).max()) ** 3))
 
 
 def _combine(name: str, parts: list[Solid | None]) -> Solid | None:
@@ -461,105 +422,114 @@ def lower(calls: list[CSGCall], *, source: str | None = None, skip_unsupported: 
         On malformed arguments, or when nothing of the model is left.
     """
     lw = _Lowerer(source, skip_unsupported)
-    root = CSGCall("union", children=list(calls), line=1)
-    # Frames: (call, 2D context or None, results of the children so far).
-    stack: list[tuple[CSGCall, _Extrusion | None, list[Solid | None]]] = [(root, None, [])]
-    result: Solid | None = None
+    root = CSGCall("union", children=_root_modified(calls) or list(calls), line=1)
+    # Frames: (call, the map accumulated from the root or None, results of the children so far).
+    # Maps compose on the way down and are applied once per leaf, however deep they nest.
+    stack: list[tuple[CSGCall, NDArray[np.float64] | None, list[Any]]] = [(root, None, [])]
+    result: Any = None
     while stack:
-        call, ex, done = stack[-1]
+        call, m, done = stack[-1]
         if len(done) < len(call.children):
             child = call.children[len(done)]
-            value, child_ex, descend = _enter(lw, child, ex)
+            value, child_m, descend = _enter(lw, child, m)
             if descend:
-                stack.append((child, child_ex, []))
+                stack.append((child, child_m, []))
             else:
                 done.append(value)
             continue
         stack.pop()
-        value = _leave(lw, call, ex, done)
+        value = _leave(lw, call, m, done)
         if stack:
             stack[-1][2].append(value)
         else:
             result = value
-    if result is None:
+    if result is None or result is _DROP:
         what = f" (skipped: {_counts(lw.skipped)})" if lw.skipped else ""
         raise OpenSCADError(f"{source or 'model'}: the model is empty: nothing of it has a volume{what}")
-    return LoweredModel(result, dict(lw.skipped))
+    return LoweredModel(result, dict(lw.skipped), tuple(lw.left_out))
+
+
+def _root_modified(calls: list[CSGCall]) -> list[CSGCall] | None:
+    """The first ``!`` (root) node in file order, alone: OpenSCAD then renders only its subtree,
+    without its parents' maps (as its own ``.csg`` export shows)."""
+    todo = list(reversed(calls))
+    while todo:
+        call = todo.pop()
+        if "!" in call.modifiers:
+            return [CSGCall(call.name, call.args, call.kwargs, call.children, call.line, call.modifiers.replace("!", ""))]
+        todo.extend(reversed(call.children))
+    return None
 
 
 def _counts(skipped: Counter[str]) -> str:
     return ", ".join(f"{n} {name}" for name, n in sorted(skipped.items()))
 
 
-def _enter(lw: _Lowerer, call: CSGCall, ex: _Extrusion | None) -> tuple[Solid | None, _Extrusion | None, bool]:
-    """Start a node: ``(value, context, descend)``; a leaf's value is final at once."""
+#: A child left out as OpenSCAD leaves it out (``%``, ``*``, a 2D object beside 3D ones): unlike
+#: an empty child (None), it does not empty an intersection nor stand first in a difference.
+_DROP: Any = object()
+_TRANSFORMS = {"multmatrix", "translate", "rotate", "scale", "mirror"}
+_DIM2 = {"square", "circle", "polygon", "text", "offset"}
+
+
+def _placed(lw: _Lowerer, call: CSGCall, solid: Solid | None, m: NDArray[np.float64] | None) -> Solid | None:
+    """A leaf's solid under the accumulated map."""
+    if solid is None or m is None:
+        return solid
+    return _transform(lw, call, solid, m)
+
+
+def _enter(lw: _Lowerer, call: CSGCall, m: NDArray[np.float64] | None) -> tuple[Any, NDArray[np.float64] | None, bool]:
+    """Start a node: ``(value, map for its children, descend)``; a leaf's value is final at once."""
     if "%" in call.modifiers or "*" in call.modifiers:
-        return None, ex, False  # background and disabled objects are not part of the model
+        return _DROP, m, False  # background and disabled objects are not part of the model
     name = call.name
+    if name in _DIM2:
+        lw.note(call, "a 2D object beside 3D ones is ignored (as OpenSCAD does)")
+        warnings.warn(MixedDimensionsWarning(
+            f"{lw.where(call)}ignoring the 2D object {name}() beside 3D objects, as OpenSCAD does"), stacklevel=4)
+        return _DROP, m, False
     if name in UNSUPPORTED_NODES:
         lw.unsupported(call, UNSUPPORTED_NODES[name])
-        return None, ex, False
-    if name == "hull" and ex is not None:
-        lw.unsupported(call, "a 2D hull is not supported")
-        return None, ex, False
+        return None, m, False
     if name == "hull":
         pts = _hull_points(lw, call)
         if pts is not _NOT_POINTS:
+            if pts is not None and m is not None:
+                pts = pts @ m[:3, :3].T + m[:3, 3]  # type: ignore[operator]
             return _hull_of(pts), None, False  # type: ignore[arg-type]
     if name in _BOOLEANS:
-        return None, ex, True
-    if name == "multmatrix":
-        m = _matrix(lw, call)
-        if ex is None:
-            return None, None, True
-        # In the plane: OpenSCAD maps 2D points by the matrix' x and y rows.
-        a = np.array([[m[0, 0], m[0, 1], m[0, 3]], [m[1, 0], m[1, 1], m[1, 3]], [0.0, 0.0, 1.0]])
-        return None, _Extrusion(ex.z0, ex.z1, ex.affine @ a), True
+        return None, m, True
+    if name in _TRANSFORMS:
+        local = _matrix(lw, call)
+        if _singular(local):
+            return None, m, False  # flattened to a plane or a line: no volume, as in OpenSCAD
+        if np.array_equal(local, np.eye(4)):
+            return None, m, True
+        return None, local if m is None else m @ local, True
     if name == "linear_extrude":
-        if ex is not None:
-            raise lw.fail(call, "linear_extrude inside linear_extrude: its children must be 2D")
-        inner = lw.extrusion(call)
-        if inner is None:
-            return None, None, False
-        return None, inner, True
+        return _placed(lw, call, extrude(lw, call), m), m, False
     if name in _LEAVES_3D:
-        if ex is not None:
-            lw.unsupported(call, "a 3D object inside linear_extrude (OpenSCAD ignores it)")
-            return None, ex, False
-        return getattr(lw, name)(call), None, False
-    if name in _LEAVES_2D:
-        if ex is None:
-            lw.unsupported(call, "a 2D object outside linear_extrude has no volume")
-            return None, None, False
-        return getattr(lw, name)(call, ex), ex, False
-    if name == "rotate_extrude":  # pragma: no cover - listed in UNSUPPORTED_NODES
-        return None, ex, False
+        return _placed(lw, call, getattr(lw, name)(call), m), m, False
     lw.unsupported(call, "unknown module")
-    return None, ex, False
+    return None, m, False
 
 
-def _leave(lw: _Lowerer, call: CSGCall, ex: _Extrusion | None, parts: list[Solid | None]) -> Solid | None:
+def _leave(lw: _Lowerer, call: CSGCall, m: NDArray[np.float64] | None, parts: list[Any]) -> Any:
     """Finish a node from its children's solids."""
+    kept = [p for p in parts if p is not _DROP]
+    if parts and not kept:
+        return _DROP  # only left-out children (2D ones beside 3D, background): left out too
     name = call.name
-    if name == "multmatrix":
-        solid = _combine("union", parts)
-        if solid is None or ex is not None:
-            return solid  # in the plane the map went to the leaves
-        m = _matrix(lw, call)
-        if np.array_equal(m, np.eye(4)):
-            return solid
-        if abs(np.linalg.det(m[:3, :3])) <= 1e-15 * max(1.0, float(np.abs(m[:3, :3]).max()) ** 3):
-            return None  # flattened to a plane or a line: no volume, as in OpenSCAD
-        return _transform(lw, call, solid, m)
     if name in ("difference", "intersection"):
-        return _combine(name, parts)
+        return _combine(name, kept)
     if name == "hull":
-        return _hull(lw, call, parts)
-    return _combine("union", parts)
+        return _hull(lw, call, kept)
+    return _combine("union", kept)
 
 
 _NOT_POINTS = object()  # a hull's subtree that is not only maps, groups, cubes and polyhedra
-_HULL_GROUPS = _UNION_LIKE | {"multmatrix"}
+_HULL_GROUPS = _UNION_LIKE | {"multmatrix", "translate", "rotate", "scale", "mirror"}
 
 
 def _hull_points(lw: _Lowerer, call: CSGCall) -> NDArray[np.float64] | None | object:
@@ -577,7 +547,7 @@ def _hull_points(lw: _Lowerer, call: CSGCall) -> NDArray[np.float64] | None | ob
         if len(got) < len(kids):
             child = kids[len(got)]
             if child.name in _HULL_GROUPS:
-                if child.name == "multmatrix":
+                if child.name in _TRANSFORMS:
                     _matrix(lw, child)  # malformed matrices fail here, naming their line
                 stack.append((child, kept(child), []))
             elif child.name == "cube":
@@ -585,13 +555,16 @@ def _hull_points(lw: _Lowerer, call: CSGCall) -> NDArray[np.float64] | None | ob
                 got.append(None if box is None else np.asarray(box.corners, dtype=np.float64))  # type: ignore[union-attr]
             elif child.name == "polyhedron":
                 got.append(lw.polyhedron_points(child))
+            elif child.name in ("sphere", "cylinder") and polygonal_sides(child) is not None:
+                solid = getattr(lw, child.name)(child)  # OpenSCAD's polygonal solid: its corners
+                got.append(None if solid is None else np.asarray(solid.hull_vertices, dtype=np.float64))
             else:
                 return _NOT_POINTS
             continue
         stack.pop()
         present = [g for g in got if g is not None]
         pts = np.vstack(present) if present else None
-        if node.name == "multmatrix" and pts is not None:
+        if node.name in _TRANSFORMS and pts is not None:
             m = _matrix(lw, node)
             if abs(np.linalg.det(m[:3, :3])) <= 1e-15 * max(1.0, float(np.abs(m[:3, :3]).max()) ** 3):
                 pts = None  # flattened: no volume, as in OpenSCAD

@@ -249,20 +249,30 @@ def parse_csg(text: str, *, source: str | None = None) -> list[CSGCall]:
         raise OpenSCADError(f"{source or 'text'}: larger than {MAX_CSG_TEXT} characters")
     ts = _Tokens(text, source)
     top: list[CSGCall] = []
-    open_blocks: list[CSGCall] = []
+    # Open blocks, each with a flag: True for a single child without braces (``translate(v) cube();``),
+    # which closes when its one statement ends.
+    open_blocks: list[tuple[CSGCall, bool]] = []
+
+    def statement_done() -> None:
+        while open_blocks and open_blocks[-1][1]:
+            open_blocks.pop()
+
     while True:
         tok = ts.next()
         if tok.kind == "eof":
             if open_blocks:
-                b = open_blocks[-1]
+                b = open_blocks[-1][0]
                 raise ts.error(tok.line, f"the block of {b.name} opened at line {b.line} is not closed", b.name)
             return top
         if tok.kind == "punct" and tok.text == "}":
-            if not open_blocks:
+            if not open_blocks or open_blocks[-1][1]:
                 raise ts.error(tok.line, "'}' without an open block")
             open_blocks.pop()
+            statement_done()
             continue
         if tok.kind == "punct" and tok.text == ";":
+            if open_blocks and open_blocks[-1][1]:
+                statement_done()  # ``translate(v);``: an empty child
             continue  # an empty statement
         modifiers = ""
         while tok.kind == "punct" and tok.text in _MODIFIERS:
@@ -272,11 +282,16 @@ def parse_csg(text: str, *, source: str | None = None) -> list[CSGCall]:
             raise ts.error(tok.line, f"expected a module name such as cube or union, got {_show(tok)}")
         call = CSGCall(tok.text, line=tok.line, modifiers=modifiers)
         _arguments(ts, call)
-        (open_blocks[-1].children if open_blocks else top).append(call)
-        tok = ts.next()
-        if tok.kind == "punct" and tok.text == ";":
+        (open_blocks[-1][0].children if open_blocks else top).append(call)
+        tok = ts.peek()
+        if tok.kind == "punct" and tok.text in ";{":
+            ts.next()
+            if tok.text == ";":
+                statement_done()
+            else:
+                open_blocks.append((call, False))
             continue
-        if tok.kind == "punct" and tok.text == "{":
-            open_blocks.append(call)
+        if (tok.kind == "name" and tok.text not in _KEYWORDS) or (tok.kind == "punct" and tok.text in _MODIFIERS):
+            open_blocks.append((call, True))  # one child statement follows
             continue
         raise ts.error(tok.line, f"expected ';' or '{{' after {call.name}(...), got {_show(tok)}", call.name)

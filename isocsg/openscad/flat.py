@@ -1,0 +1,279 @@
+"""OpenSCAD's 2D subtrees (under ``linear_extrude``) as :mod:`isocsg.shapes2d` shapes, and
+OpenSCAD's own polygonal solids for an explicit small ``$fn``.
+
+- :func:`shape_of` converts the children of a node into one 2D shape with an explicit stack:
+  ``square``, ``circle``, ``polygon`` (non-convex, holes), ``text``, ``offset`` (``r``,
+  ``delta``, ``chamfer``), the 2D Booleans, ``multmatrix``/``translate``/``rotate``/``scale``/
+  ``mirror``, ``color``, ``render``, and ``hull`` of polygons (the convex hull of their
+  corners, exactly). ``%`` and ``*`` children are left out, 3D objects are ignored with
+  OpenSCAD's warning, other nodes are unsupported (named).
+- :func:`extrude` is ``linear_extrude`` with ``center`` and ``scale`` (uniform, or per axis for
+  polygons); ``twist`` is refused.
+- :func:`polygonal_sides` says when ``$fn`` asks for OpenSCAD's polygonal circle
+  (``0 < $fn <= FN_MAX``); :func:`cylinder_points` and :func:`sphere_points` are the vertices
+  of OpenSCAD's polygonal cylinder and sphere (2021.01's ``primitives.cc``: ``n`` points at
+  ``360 i / n`` degrees; a sphere has ``(n + 1) / 2`` rings at the polar angles
+  ``180 (i + 0.5) / rings``).
+"""
+
+from __future__ import annotations
+
+import math
+import warnings
+from typing import TYPE_CHECKING, Any
+
+import numpy as np
+from numpy.typing import NDArray
+
+from ..errors import InvalidGeometryError
+from .parser import CSGCall
+
+if TYPE_CHECKING:
+    from .lowering import _Lowerer
+
+__all__ = ["FN_MAX", "MixedDimensionsWarning", "shape_of", "extrude", "polygonal_sides", "cylinder_points",
+           "sphere_points"]
+
+#: The largest explicit ``$fn`` read as OpenSCAD's polygon (a hexagonal nut trap is ``$fn = 6``);
+#: above it, and without ``$fn``, circles, cylinders and spheres are the exact round solids. At
+#: ``$fn = 64`` the polygon's area is 0.16 % below the disc's.
+FN_MAX = 64
+
+
+class MixedDimensionsWarning(UserWarning):
+    """A 2D object beside 3D ones (or a 3D object in a 2D operation): OpenSCAD ignores it, and so does isocsg."""
+
+
+#: Positional parameters of the 2D nodes, as OpenSCAD declares them.
+_POSITIONAL: dict[str, tuple[str, ...]] = {
+    "square": ("size", "center"), "circle": ("r", "d"), "polygon": ("points", "paths", "convexity"),
+    "text": ("text", "size", "font", "halign", "valign", "spacing"), "offset": ("r", "delta", "chamfer"),
+    "multmatrix": ("m",), "translate": ("v",), "rotate": ("a", "v"), "scale": ("v",), "mirror": ("v",),
+}
+_DIM3 = {"cube", "sphere", "cylinder", "polyhedron", "linear_extrude", "rotate_extrude", "surface"}
+_PASS = {"union", "group", "color", "render", "hull"}
+
+
+def polygonal_sides(call: CSGCall) -> int | None:
+    """OpenSCAD's number of sides when ``$fn`` is explicit and at most :data:`FN_MAX`, else None."""
+    fn = call.kwargs.get("$fn", 0)
+    if isinstance(fn, bool) or not isinstance(fn, (int, float)) or not math.isfinite(fn) or not 0 < fn <= FN_MAX:
+        return None
+    return max(int(fn), 3)
+
+
+def _ring(n: int) -> NDArray[np.float64]:
+    phi = 2.0 * math.pi * np.arange(n) / n
+    return np.column_stack([np.cos(phi), np.sin(phi)])
+
+
+def cylinder_points(n: int, r1: float, r2: float, z0: float, z1: float) -> NDArray[np.float64]:
+    """Vertices of OpenSCAD's ``cylinder`` of ``n`` sides: radius r1 at z0, r2 at z1 (a zero radius: the apex)."""
+    ring = _ring(n)
+    rows = []
+    for r, z in ((r1, z0), (r2, z1)):
+        if r > 0:
+            rows.append(np.column_stack([ring * r, np.full(n, z)]))
+        else:
+            rows.append(np.array([[0.0, 0.0, z]]))
+    return np.vstack(rows)
+
+
+def sphere_points(n: int, r: float) -> NDArray[np.float64]:
+    """Vertices of OpenSCAD's ``sphere`` of ``n`` fragments: ``(n + 1) // 2`` rings of n points."""
+    rings = (n + 1) // 2
+    ring = _ring(n)
+    rows = []
+    for i in range(rings):
+        phi = math.pi * (i + 0.5) / rings
+        rows.append(np.column_stack([ring * (r * math.sin(phi)), np.full(n, r * math.cos(phi))]))
+    return np.vstack(rows)
+
+
+def _named(lw: _Lowerer, call: CSGCall) -> dict[str, Any]:
+    """The node's arguments by name (positional ones named as OpenSCAD declares them)."""
+    args = dict(call.kwargs)
+    for name, value in zip(_POSITIONAL.get(call.name, ()), call.args, strict=False):
+        args.setdefault(name, value)
+    return args
+
+
+def _empty_leaf(name: str, args: dict[str, Any]) -> bool:
+    """A leaf that OpenSCAD draws as nothing (zero size, zero radius, too few points)."""
+    def num(v: Any) -> float:
+        return float(v) if isinstance(v, (int, float)) and not isinstance(v, bool) else 1.0
+
+    if name == "square":
+        size = args.get("size", 1.0)
+        return any(num(s) <= 0 for s in (size if isinstance(size, list) else [size]))
+    if name == "circle":
+        r = args.get("r")
+        return (num(r) if r is not None else num(args.get("d", 2.0)) / 2) <= 0
+    if name == "polygon":
+        pts = args.get("points")
+        return not isinstance(pts, list) or len(pts) < 3
+    return False
+
+
+def _hull2d(lw: _Lowerer, call: CSGCall, body: Any) -> Any:
+    """``hull()`` of 2D polygons: the convex polygon of all their corners (circles are refused)."""
+    from ..shapes2d import EMPTY, ConvexPolygon, polygon
+    from ..shapes2d.shape import iter_leaves
+
+    if body is EMPTY:
+        return EMPTY
+    corners = []
+    for leaf in iter_leaves(body):
+        if not isinstance(leaf, ConvexPolygon):
+            lw.unsupported(call, "a 2D hull of circles or ellipses is not supported")
+            return None
+        corners.append(leaf.array)
+    import shapely
+
+    hull = shapely.convex_hull(shapely.multipoints(np.vstack(corners)))
+    if hull.geom_type != "Polygon" or hull.area <= 0:
+        return EMPTY
+    return polygon(np.asarray(hull.exterior.coords)[:-1].tolist())
+
+
+def _node(lw: _Lowerer, call: CSGCall, kids: list[Any]) -> Any:
+    """The shape of one 2D node from its children's shapes (None: skipped)."""
+    from ..shapes2d import EMPTY, from_openscad, union2d
+
+    name = call.name
+    if name == "hull":
+        return _hull2d(lw, call, union2d(*kids) if kids else EMPTY)
+    args = _named(lw, call)
+    if _empty_leaf(name, args):
+        return EMPTY
+    if name == "circle" and polygonal_sides(call) is None:
+        args["$fn"] = 0  # the exact disc (a large $fn too)
+    if name == "translate" and isinstance(args.get("v"), list):
+        args["v"] = list(args["v"])[:2]
+    if name == "rotate" and "v" in args:
+        v = args["v"]
+        if not (isinstance(v, list) and len(v) == 3 and v[0] == 0 and v[1] == 0 and v[2] != 0):
+            raise lw.fail(call, f"a rotation of 2D shapes must turn about the z axis, got v = {v!r}")
+        if v[2] < 0 and isinstance(args.get("a"), (int, float)):
+            args["a"] = -args["a"]
+    if name == "mirror" and isinstance(args.get("v"), list) and not any(args["v"][:2]):
+        return union2d(*kids) if kids else EMPTY  # mirror([0, 0, 0]) or about z: the shape itself
+    if name == "scale" and isinstance(args.get("v"), list) and any(s == 0 for s in args["v"][:2]):
+        return EMPTY  # flattened to a line: no area
+    if name in ("difference", "intersection") and not kids:
+        return EMPTY
+    try:
+        return from_openscad(name, args, kids)
+    except InvalidGeometryError as exc:
+        raise lw.fail(call, str(exc)) from None
+
+
+def _kept(lw: _Lowerer, call: CSGCall) -> list[CSGCall]:
+    """The children that count in 2D: ``%``/``*`` ones are left out, 3D ones ignored with a warning."""
+    from ..shapes2d.openscad import NODES_2D
+
+    out = []
+    for c in call.children:
+        if "%" in c.modifiers or "*" in c.modifiers:
+            continue
+        if c.name in _DIM3:
+            lw.note(c, "a 3D object in a 2D operation is ignored (as OpenSCAD does)")
+            warnings.warn(MixedDimensionsWarning(
+                f"{lw.where(c)}ignoring the 3D object {c.name}() in a 2D operation, as OpenSCAD does"), stacklevel=2)
+            continue
+        if c.name not in NODES_2D and c.name not in _PASS:
+            lw.unsupported(c, lw.reason(c.name, "2D"))
+            continue
+        out.append(c)
+    return out
+
+
+def shape_of(lw: _Lowerer, call: CSGCall) -> Any:
+    """The union of the 2D shapes of ``call``'s children (``EMPTY`` when there are none)."""
+    from ..shapes2d import EMPTY, union2d
+
+    stack: list[tuple[CSGCall, list[CSGCall], list[Any]]] = [(call, _kept(lw, call), [])]
+    while True:
+        node, kids, done = stack[-1]
+        if len(done) < len(kids):
+            child = kids[len(done)]
+            stack.append((child, _kept(lw, child), []))
+            continue
+        stack.pop()
+        shapes = [s for s in done if s is not None]  # skipped children are absent
+        if not stack:
+            real = [s for s in shapes if s is not EMPTY]
+            return union2d(*real) if real else EMPTY
+        if node.name == "intersection" and any(s is EMPTY for s in shapes):
+            value = EMPTY
+        elif node.name == "difference" and shapes and shapes[0] is EMPTY:
+            value = EMPTY
+        else:
+            value = _node(lw, node, [s for s in shapes if s is not EMPTY])
+        stack[-1][2].append(value)
+
+
+def _as_boxes(solid: Any) -> Any:
+    """The extruded tree with its axis-aligned rectangles' prisms as the exact boxes they are
+    (an explicit stack; nodes are rebuilt only where a leaf changed)."""
+    from ..csg import CSGNode
+
+    done: dict[int, Any] = {}
+    stack: list[tuple[Any, bool]] = [(solid, False)]
+    while stack:
+        s, expanded = stack.pop()
+        if id(s) in done:
+            continue
+        if not isinstance(s, CSGNode):
+            done[id(s)] = _as_box(s)
+        elif expanded:
+            kids = [done[id(c)] for c in s.children]
+            same = all(k is c for k, c in zip(kids, s.children, strict=True))
+            done[id(s)] = s if same else type(s)(tuple(kids))
+        else:
+            stack.append((s, True))
+            stack.extend((c, False) for c in s.children)
+    return done[id(solid)]
+
+
+def _as_box(solid: Any) -> Any:
+    """An extruded axis-aligned rectangle as the exact :class:`~isocsg.Box` it is."""
+    from ..kinds import Box, ConvexPolyhedron
+
+    if not isinstance(solid, ConvexPolyhedron) or len(solid.hull_vertices) != 8:
+        return solid
+    v = solid.hull_vertices
+    lo, hi = v.min(axis=0), v.max(axis=0)
+    if not np.all((v == lo) | (v == hi)) or len({tuple(p) for p in v.tolist()}) != 8:
+        return solid
+    return Box(tuple(((lo + hi) / 2).tolist()), tuple((hi - lo).tolist()))
+
+
+def extrude(lw: _Lowerer, call: CSGCall) -> Any:
+    """The solid of a ``linear_extrude`` node (None: empty or skipped)."""
+    from ..shapes2d import EMPTY, linear_extrude
+
+    if "file" in call.kwargs:
+        lw.unsupported(call, "extruding an imported drawing is not supported")
+        return None
+    twist = lw.number(call, "twist", call.kwargs.get("twist", 0.0) or 0.0)
+    if twist != 0.0:
+        lw.unsupported(call, f"a twisted extrusion (twist = {twist:g}) is not supported yet")
+        return None
+    h = lw.number(call, "height", lw.arg(call, "height", 0, 100.0))
+    center = lw.boolean(call, "center", call.kwargs.get("center", False))
+    scale = call.kwargs.get("scale", 1.0)
+    scale_v = lw.vector(call, "scale", 1.0 if scale is None else scale, 2)
+    if h <= 0:
+        return None
+    shape = shape_of(lw, call)
+    if shape is EMPTY:
+        return None
+    s: Any = float(scale_v[0]) if scale_v[0] == scale_v[1] else scale_v.tolist()
+    try:
+        return _as_boxes(linear_extrude(shape, h, center=center, scale=s))
+    except InvalidGeometryError as exc:
+        if "scale" in str(exc):
+            lw.unsupported(call, str(exc))
+            return None
+        raise lw.fail(call, str(exc)) from None

@@ -1,0 +1,1 @@
+difference() { %cube(10); sphere(6); }

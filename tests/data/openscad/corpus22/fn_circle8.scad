@@ -1,0 +1,1 @@
+linear_extrude(height = 3) circle(r = 5, $fn = 8);

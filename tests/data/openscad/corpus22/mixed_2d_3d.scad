@@ -1,0 +1,1 @@
+cube(5); translate([10, 0]) square(3);
