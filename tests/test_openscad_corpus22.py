@@ -179,7 +179,7 @@ def test_transforms_compose_once_per_leaf(monkeypatch: pytest.MonkeyPatch) -> No
 def test_thin_plate_loads_and_renders() -> None:
     """Issue 22: ``cube([0.001, 5, 128.4])`` was refused by an aspect limit (1e-5); a valid part
     of any aspect loads and renders (a thin fin on a base, seen from the side it faces)."""
-    from isocsg.render import render
+    from isocsg.rendering import render
     from isocsg.scene.framing import framed_scene
 
     solid = _load("thin_plate_union")
