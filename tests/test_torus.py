@@ -415,6 +415,26 @@ def test_render_csg_both_intervals(shape, eye, light):
     _render_compare(scene)
 
 
+@pytest.mark.parametrize(
+    "shape, eye",
+    [
+        (Torus(**FLAT) - _HALF_CUT, (-5.0, 0.3, 0.8)),
+        ((Torus(**FLAT) - _HALF_CUT) | isocsg.Sphere((0.0, 0.0, 0.0), 0.3), (-5.0, -1.0, 0.2)),
+        (Box((0.0, 0.0, 0.0), (4.0, 4.0, 0.6)) - Torus(**FLAT), (3.0, -4.0, 1.5)),
+    ],
+    ids=["minus-box", "with-a-union", "box-minus-torus"],
+)
+def test_render_csg_both_intervals_in_tiles(shape, eye, monkeypatch):
+    # the same through the tiled path (screen tiles, groups of equal leaves)
+    from isocsg.rendering import policy
+
+    monkeypatch.setattr(policy, "DENSE_MAX_LEAVES", 0)
+    scene = Scene(Camera(eye, (0, 0, 0), width=160, height=128, fov=45), [PointLight((-2.0, -3.0, 5.0))], [shape])
+    image = isocsg.Renderer(csg="pixel").render(scene, contours=64).image
+    result = compare(image, raycast_scene(scene))
+    assert result.iou >= MIN_IOU and result.fraction >= MIN_FRACTION, result.summary()
+
+
 def test_render_csg_layers_keep_the_bands():
     # the torus's inner surfaces take its band values (isoluminance), not smooth shading: the
     # image takes few distinct values on the torus

@@ -33,8 +33,9 @@ __all__ = ["layer_counts", "expand_program", "leaf_layers"]
 def layer_counts(leaves: Sequence[Any]) -> NDArray[np.int64] | None:
     """Each leaf's most intervals per ray (its kind's ``max_intervals``), or None if every leaf
     has one (the common case: nothing changes)."""
-    counts = np.fromiter((getattr(leaf, "max_intervals", 1) for leaf in leaves), np.int64, len(leaves))
-    return counts if len(counts) and int(counts.max()) > 1 else None
+    if not any(getattr(kind, "max_intervals", 1) > 1 for kind in set(map(type, leaves))):
+        return None
+    return np.fromiter((getattr(leaf, "max_intervals", 1) for leaf in leaves), np.int64, len(leaves))
 
 
 def expand_program(

@@ -111,7 +111,10 @@ class _TiledResolve:
             self.group_of[i] = g
         self.reps = np.array([m[0] for m in self.members], np.int64)
         # Groups of leaves a ray meets in several intervals (resolved by layers, see .layers).
-        self.layered = {g for g, i in enumerate(self.reps.tolist()) if getattr(obj.leaves[i], "max_intervals", 1) > 1}
+        # The kinds present first (one pass in C): trees of convex kinds pay nothing more.
+        several = any(getattr(kind, "max_intervals", 1) > 1 for kind in set(map(type, obj.leaves)))
+        self.layered = ({g for g, i in enumerate(self.reps.tolist()) if obj.leaves[i].max_intervals > 1}
+                        if several else set())
         self.layers: dict[int, dict[int, list[Any]]] = {}  # per tile, per slot of such a group: its layers
         first = (rects[self.reps, 1] - self.oy) // self.side
         self.order = np.argsort(first, kind="stable").tolist()
