@@ -416,6 +416,19 @@ def test_render_csg_both_intervals(shape, eye, light):
 
 
 @pytest.mark.parametrize(
+    "camera",
+    [
+        Camera((-5.0, 0.3, 0.8), (0, 0, 0), width=96, height=96, orthographic=True),
+        Camera((1.5, -0.1, 0.05), (0.0, 1.5, 0.0), width=96, height=96, fov=60),  # the eye inside the tube
+    ],
+    ids=["orthographic", "eye-inside"],
+)
+def test_render_csg_both_intervals_cameras(camera):
+    shape = Torus(**FLAT) - (_HALF_CUT if camera.orthographic else Box((0.0, 2.0, 0.0), (1.0, 1.0, 3.0)))
+    _render_compare(Scene(camera, [PointLight((0.5, 0.5, 3.0))], [shape]))
+
+
+@pytest.mark.parametrize(
     "shape, eye",
     [
         (Torus(**FLAT) - _HALF_CUT, (-5.0, 0.3, 0.8)),

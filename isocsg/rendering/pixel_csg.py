@@ -3,7 +3,9 @@
 Each leaf's front and back surfaces are filled into buffers (the ray's
 interval ``[front, back]`` through the convex leaf); the kernels here visit
 those surfaces nearest first and find the first depth where the program turns
-from outside to inside: the visible point.
+from outside to inside: the visible point. A leaf a ray meets in several
+intervals (a non-convex kind) comes as the union of its interval layers
+(:mod:`isocsg.rendering.layers`), each one such leaf to these kernels.
 """
 
 from __future__ import annotations
