@@ -234,7 +234,7 @@ class _TiledResolve:
                     self.fill_rays(task[1])
                 else:
                     self.fill(*task[1:])
-            except BaseException as exc:  # handed to the main thread
+            except BaseException as exc:  # noqa: BLE001  (handed to the main thread)
                 with cond:
                     self.error = self.error or exc
                     self.queue.clear()
@@ -262,7 +262,7 @@ class _TiledResolve:
             pos = 0
             for row in range(self.plan.rows):
                 # At most ROWS_AHEAD rows behind this one still open: bounds the tiles alive.
-                self.help_until(lambda: self.done >= row - policy.ROWS_AHEAD)
+                self.help_until(lambda row=row: self.done >= row - policy.ROWS_AHEAD)  # type: ignore[misc]
                 if self.error is not None:
                     break
                 pos = self._build_row(row, pos)
