@@ -24,6 +24,8 @@ and is cut along its exact level lines, near light or not.
 
 from __future__ import annotations
 
+from typing import NamedTuple
+
 import numpy as np
 from numpy.typing import NDArray
 
@@ -320,7 +322,6 @@ def truncus_surface(
     first = lights[0] if lights else None
     a = truncus.unit_axis
     ct = truncus.center_array
-    h = truncus.height
     ln = _to_light(first, ct) if first is not None else np.array([1.0, 0.0, 0.0])
     e1, e2 = light_frame(a, ln)
     e2 = -e2  # right-handed (e1, e2, a): angles grow counter-clockwise about a
@@ -329,70 +330,118 @@ def truncus_surface(
     else:
         n_gen = contours if isinstance(first, DirectionalLight) else min(contours, POINT_LIGHT_CONTOURS)
         levels = side_levels(truncus, first, n_gen)
-    floor = int(segments)
-    uniform = floor
-    if lights:
-        # The fields' bending around three rings (a point light close to the side turns the
-        # incidence within a few degrees): enough uniform generators to follow it.
-        k_ = truncus.slope
-        ang = 2.0 * np.pi * np.arange(RING_SAMPLES + 1) / RING_SAMPLES
-        circle = np.cos(ang)[:, None] * e1 - np.sin(ang)[:, None] * light_frame(a, ln)[1]
-        spacing = np.inf
-        for z in (0.5 * h, 0.0, -0.5 * h):
-            r = float(truncus.radius_at(z))
-            if r <= 0:
-                continue
-            ring_pts = (z * a + r * circle)[None]
-            ring_nrm = ((circle - k_ * a) / np.hypot(1.0, k_))[None]
-            gap = curvature_spacing(ring_pts, ring_nrm, lights, ct, contours, eye=eye, shininess=shininess, weights=weights,
-                                    step=2.0 * np.pi * r / RING_SAMPLES)
-            spacing = min(spacing, gap / r)  # as an angle
-        if np.isfinite(spacing) and spacing > 0:
-            uniform = int(np.clip(np.ceil(2.0 * np.pi / spacing), floor, MAX_GENERATORS))
+    fields = _Fields(lights, contours, eye, shininess, weights)
+    uniform = _uniform_generators(truncus, fields, e1, light_frame(a, ln)[1], int(segments))
     th = _generator_angles(truncus, first, levels, uniform)
-    m = len(th)
     radial = np.cos(th)[:, None] * e1 + np.sin(th)[:, None] * e2  # (m, 3)
     size = 0.5 * float(np.linalg.norm(truncus.bounds[1] - truncus.bounds[0]))
     dist = light_reference_distance(lights, ct, size)
     d_eye = eye_reference_distance(eye, np.zeros(3), size)
-    slant = float(np.hypot(h, truncus.r1 - truncus.r2))
-    n_ax = max(refinement(h, dist), specular_refinement(slant, d_eye, shininess, contours))
-    k = truncus.slope
-    side_normal = (radial - k * a) / np.hypot(1.0, k)
     # The fields' bending along 16 generators and 8 radii of each end (see curvature_spacing).
+    probe = radial[np.linspace(0, len(th) - 1, 16).astype(np.int64)]
+    n_ax = _axial_pieces(truncus, fields, probe, dist, d_eye)
+    verts: list[NDArray[np.float64]] = []
+    norms: list[NDArray[np.float64]] = []
+    tris: list[NDArray[np.int64]] = []
+    parts: list[NDArray[np.int64]] = []
+    _lateral_mesh(truncus, fields, radial, n_ax, (verts, norms, tris, parts))
+    _end_discs(truncus, fields, radial, probe, (dist, d_eye), hidden, (verts, norms, tris, parts))
+    vertices = np.vstack(verts)
+    normals = np.vstack(norms)
+    triangles = np.vstack(tris).astype(np.int64)
+    return Surface(vertices, normals, orient_outward(vertices, normals, triangles), ct.copy(), np.concatenate(parts))
+
+
+class _Fields(NamedTuple):
+    """The shading fields a truncus's band mesh must follow."""
+
+    lights: list[Light]
+    contours: int
+    eye: NDArray[np.float64] | None
+    shininess: float
+    weights: tuple[float, float]
+
+    def spacing(self, points: NDArray[np.float64], normals: NDArray[np.float64], origin: NDArray[np.float64],
+                **step: float) -> float:
+        return curvature_spacing(points, normals, self.lights, origin, self.contours, eye=self.eye,
+                                 shininess=self.shininess, weights=self.weights, **step)
+
+
+def _uniform_generators(truncus: Truncus, fields: _Fields, e1: NDArray[np.float64], f2: NDArray[np.float64],
+                        floor: int) -> int:
+    """The number of uniform generators: the fields' bending around three rings (a point light
+    close to the side turns the incidence within a few degrees), never fewer than ``floor``."""
+    if not fields.lights:
+        return floor
+    a, h, k_ = truncus.unit_axis, truncus.height, truncus.slope
+    ang = 2.0 * np.pi * np.arange(RING_SAMPLES + 1) / RING_SAMPLES
+    circle = np.cos(ang)[:, None] * e1 - np.sin(ang)[:, None] * f2
+    spacing = np.inf
+    for z in (0.5 * h, 0.0, -0.5 * h):
+        r = float(truncus.radius_at(z))
+        if r <= 0:
+            continue
+        ring_pts = (z * a + r * circle)[None]
+        ring_nrm = ((circle - k_ * a) / np.hypot(1.0, k_))[None]
+        gap = fields.spacing(ring_pts, ring_nrm, truncus.center_array, step=2.0 * np.pi * r / RING_SAMPLES)
+        spacing = min(spacing, gap / r)  # as an angle
+    if np.isfinite(spacing) and spacing > 0:
+        return int(np.clip(np.ceil(2.0 * np.pi / spacing), floor, MAX_GENERATORS))
+    return floor
+
+
+def _axial_pieces(truncus: Truncus, fields: _Fields, probe: NDArray[np.float64], dist: float, d_eye: float) -> int:
+    """The number of rings along the axis: light and eye distances, and the fields' bending
+    along the ``probe`` generators."""
+    a, h, k = truncus.unit_axis, truncus.height, truncus.slope
+    slant = float(np.hypot(h, truncus.r1 - truncus.r2))
+    n_ax = max(refinement(h, dist), specular_refinement(slant, d_eye, fields.shininess, fields.contours))
     t = np.linspace(0.0, 1.0, 17)[None, :, None]
-    probe = radial[np.linspace(0, m - 1, 16).astype(np.int64)]
     top, bottom = 0.5 * h * a + truncus.r1 * probe, -0.5 * h * a + truncus.r2 * probe
     lines = top[:, None, :] + t * (bottom - top)[:, None, :]
     nrm = np.broadcast_to(((probe - k * a) / np.hypot(1.0, k))[:, None, :], lines.shape)
-    origin = ct
-    if lights:
-        n_ax = max(n_ax, pieces(slant, curvature_spacing(lines, nrm, lights, origin, contours, eye=eye, shininess=shininess, weights=weights)))
+    if fields.lights:
+        n_ax = max(n_ax, pieces(slant, fields.spacing(lines, nrm, truncus.center_array)))
+    return n_ax
 
-    def ring(z: float, r: float) -> NDArray[np.float64]:
-        return z * a + r * radial
 
-    verts, norms, tris, parts = [], [], [], []
-    count = 0
-    # Lateral surface: rings from E1 (z = +h/2) to E2 (z = -h/2).
+def _lateral_mesh(truncus: Truncus, fields: _Fields, radial: NDArray[np.float64], n_ax: int, out: tuple) -> None:
+    """Lateral surface (part 0): rings from E1 (z = +h/2) to E2 (z = -h/2), appended to ``out``."""
+    verts, norms, tris, parts = out
+    a, h, k = truncus.unit_axis, truncus.height, truncus.slope
+    m = len(radial)
+    side_normal = (radial - k * a) / np.hypot(1.0, k)
     zs = [0.5 * h - j * h / n_ax for j in range(n_ax + 1)]
     zs[-1] = -0.5 * h
-    if eye is not None or len(lights) > 1 or any(isinstance(light, PointLight) for light in lights):
+    lights = fields.lights
+    if fields.eye is not None or len(lights) > 1 or any(isinstance(light, PointLight) for light in lights):
         zs = _graded_rings(zs, truncus)
         n_ax = len(zs) - 1
     jj = np.arange(m)
     jn = (jj + 1) % m
     for j, z in enumerate(zs):
         r = truncus.r1 if j == 0 else truncus.r2 if j == n_ax else float(truncus.radius_at(z))
-        verts.append(ring(z, r))
+        verts.append(z * a + r * radial)
         norms.append(side_normal)
     for j in range(n_ax):
-        p, q = count + j * m, count + (j + 1) * m
+        p, q = j * m, (j + 1) * m
         tris.append(np.stack([p + jj, q + jj, q + jn], axis=1))
         tris.append(np.stack([p + jj, q + jn, p + jn], axis=1))
-    count += (n_ax + 1) * m
-    parts.append(np.zeros(count, np.int64))
-    # Ends: centre and concentric rings; the outer ring repeats the rim positions exactly.
+    parts.append(np.zeros((n_ax + 1) * m, np.int64))
+
+
+def _end_discs(truncus: Truncus, fields: _Fields, radial: NDArray[np.float64], probe: NDArray[np.float64],
+               distances: tuple[float, float], hidden: tuple | None, out: tuple) -> None:
+    """Ends (parts 1 and 2): centre and concentric rings; the outer ring repeats the rim
+    positions exactly. Appended to ``out`` after the lateral surface."""
+    verts, norms, tris, parts = out
+    dist, d_eye = distances
+    a, h, ct = truncus.unit_axis, truncus.height, truncus.center_array
+    m = len(radial)
+    jj = np.arange(m)
+    jn = (jj + 1) % m
+    t = np.linspace(0.0, 1.0, 17)[None, :, None]
+    count = sum(len(p) for p in parts)
     for part, (z, r, n) in enumerate(((0.5 * h, truncus.r1, a), (-0.5 * h, truncus.r2, -a)), start=1):
         if r <= 0:
             continue
@@ -400,15 +449,12 @@ def truncus_surface(
         if hidden is not None and _disc_outside(ct + centre, r, a, hidden):
             n_rad = 1  # never seen: its geometry alone, a fan of the rim
         else:
-            n_rad = max(refinement(r, dist), specular_refinement(r, d_eye, shininess, contours))
-            if lights:
+            n_rad = max(refinement(r, dist), specular_refinement(r, d_eye, fields.shininess, fields.contours))
+            if fields.lights:
                 spokes = centre + t * (r * probe[::2])[:, None, :]
-                spacing = curvature_spacing(spokes, np.broadcast_to(n, spokes.shape), lights, origin, contours,
-                                            eye=eye, shininess=shininess, weights=weights)
-                n_rad = max(n_rad, pieces(r, spacing))
+                n_rad = max(n_rad, pieces(r, fields.spacing(spokes, np.broadcast_to(n, spokes.shape), ct)))
         verts.append(centre[None, :])
-        rings = [ring(z, r * i / n_rad) if i < n_rad else ring(z, r) for i in range(1, n_rad + 1)]
-        verts.extend(rings)
+        verts.extend(z * a + (r * i / n_rad if i < n_rad else r) * radial for i in range(1, n_rad + 1))
         norms.append(np.tile(n, (1 + n_rad * m, 1)))
         tris.append(np.stack([np.full(m, count), count + 1 + jj, count + 1 + jn], axis=1))
         for i in range(n_rad - 1):
@@ -417,7 +463,3 @@ def truncus_surface(
             tris.append(np.stack([p + jj, q + jn, p + jn], axis=1))
         count += 1 + n_rad * m
         parts.append(np.full(1 + n_rad * m, part, np.int64))
-    vertices = np.vstack(verts)
-    normals = np.vstack(norms)
-    triangles = np.vstack(tris).astype(np.int64)
-    return Surface(vertices, normals, orient_outward(vertices, normals, triangles), ct.copy(), np.concatenate(parts))

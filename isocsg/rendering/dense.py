@@ -19,6 +19,7 @@ from .. import _workers
 from ..geometry.primitives import Sphere
 from . import policy
 from .buffers import fill_pool
+from .layers import layer_counts, resolve_dense_layers
 from .meshes import PreparedMesh
 from .pixel_csg import resolve_packed, resolve_scratch, table_of
 from .polygons import fill_projected, fill_rect
@@ -50,8 +51,13 @@ def render_dense(rp: RenderPass, obj: CSGObject) -> tuple[float, bool | None]:
     # the next leaf's bands goes on meanwhile.
     concurrent = policy.STRIPES > 1 and w * h >= policy.STRIPE_MIN_PIXELS // 4
     # Buffers of the object's rectangle (not the image), lent for this object only.
+    counts = layer_counts(obj.leaves)  # None unless a leaf has several intervals per ray
     with SCRATCH.borrow([((n, h, w), np.float64)] * 2 + [((n, h, w), np.float32)] * 2) as (kf, kb, vf, vb):
-        seconds, view_dependent = _fill_leaves(rp, obj, concurrent, kf, vf, kb, vb)
+        meshes: dict[int, PreparedMesh] | None = None if counts is None else {}
+        seconds, view_dependent = _fill_leaves(rp, obj, concurrent, kf, vf, kb, vb, meshes)
+        if meshes is not None and counts is not None:
+            resolve_dense_layers(rp, obj, counts, meshes, (kf, vf, kb, vb))
+            return seconds, view_dependent
         flat = [x.reshape(-1) for x in (kf, vf, kb, vb)]
         lr0, lc0 = np.full(n, oy, np.int64), np.full(n, ox, np.int64)
         lh, lw = np.full(n, h, np.int64), np.full(n, w, np.int64)
@@ -74,10 +80,11 @@ def render_dense(rp: RenderPass, obj: CSGObject) -> tuple[float, bool | None]:
 
 def _fill_leaves(
     rp: RenderPass, obj: CSGObject, concurrent: bool, kf: NDArray[np.float64], vf: NDArray[np.float32],
-    kb: NDArray[np.float64], vb: NDArray[np.float32],
+    kb: NDArray[np.float64], vb: NDArray[np.float32], meshes: dict[int, PreparedMesh] | None = None,
 ) -> tuple[float, bool]:
     """Each leaf's front and back surfaces into its buffers ``(kf, vf)``, ``(kb, vb)``; returns
-    the seconds spent obtaining bands and whether any was view-dependent."""
+    the seconds spent obtaining bands and whether any was view-dependent. ``meshes``, if given,
+    keeps the band meshes of the leaves with several intervals per ray."""
     ox, oy = obj.rect[0], obj.rect[1]
     h, w = kf.shape[1], kf.shape[2]
     n = len(obj.leaves)
@@ -130,6 +137,8 @@ def _fill_leaves(
                                            None if built is None else built[i], hidden=obj.hidden)
             view_dependent |= vd
             seconds += time.perf_counter() - t
+            if meshes is not None and getattr(obj.leaves[i], "max_intervals", 1) > 1:
+                meshes[i] = prep
             if not concurrent:
                 leaf(i, prep)
             elif k == n - 1 and id(prep) not in seen and h >= policy.LAST_CHUNKS:

@@ -3,7 +3,9 @@
 Each leaf's front and back surfaces are filled into buffers (the ray's
 interval ``[front, back]`` through the convex leaf); the kernels here visit
 those surfaces nearest first and find the first depth where the program turns
-from outside to inside: the visible point.
+from outside to inside: the visible point. A leaf a ray meets in several
+intervals (a non-convex kind) comes as the union of its interval layers
+(:mod:`isocsg.rendering.layers`), each one such leaf to these kernels.
 """
 
 from __future__ import annotations
@@ -42,7 +44,8 @@ def _cached_table(op: bytes, arg: bytes, n: int) -> NDArray[np.bool_]:
 
 
 def table_of(op: NDArray[np.int8], arg: NDArray[np.int64], n: int) -> NDArray[np.bool_]:
-    """The truth table of a program of ``n`` leaves if ``n`` is at most :data:`~isocsg.rendering.policy.TABLE_LEAVES`, else empty."""
+    """The truth table of a program of ``n`` leaves if ``n`` is at most
+    :data:`~isocsg.rendering.policy.TABLE_LEAVES`, else empty."""
     if n > policy.TABLE_LEAVES:
         return np.zeros(0, np.bool_)
     return _cached_table(op.tobytes(), arg.tobytes(), n)
@@ -101,8 +104,9 @@ def resolve_csg(
 @njit(**RAW)
 def resolve_packed(
     kf: NDArray[np.float64], vf: NDArray[np.float32], kb: NDArray[np.float64], vb: NDArray[np.float32],
-    off: NDArray[np.int64], lr0: NDArray[np.int64], lc0: NDArray[np.int64], lh: NDArray[np.int64], lw: NDArray[np.int64],
-    ids: NDArray[np.int64], op: NDArray[np.int8], arg: NDArray[np.int64], table: NDArray[np.bool_], gid_base: int,
+    off: NDArray[np.int64], lr0: NDArray[np.int64], lc0: NDArray[np.int64], lh: NDArray[np.int64],
+    lw: NDArray[np.int64], ids: NDArray[np.int64], op: NDArray[np.int8], arg: NDArray[np.int64],
+    table: NDArray[np.bool_], gid_base: int,
     row0: int, row1: int, col0: int, col1: int,
     zkey: NDArray[np.float64], value: NDArray[np.float32], gid: NDArray[np.int32],
     nxt: NDArray[np.float64], phase: NDArray[np.int8], inside: NDArray[np.bool_], stack: NDArray[np.bool_],

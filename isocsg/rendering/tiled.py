@@ -34,6 +34,7 @@ from ..limits import check_memory, memory_budget
 from . import policy
 from .buffers import fill_pool
 from .detail import LeafDetail
+from .layers import expand_tile, leaf_layers
 from .meshes import PreparedMesh
 from .pixel_csg import fill_leaf, resolve_packed, resolve_scratch, table_of
 from .projection import project_kernel
@@ -109,6 +110,12 @@ class _TiledResolve:
             self.members[g].append(i)
             self.group_of[i] = g
         self.reps = np.array([m[0] for m in self.members], np.int64)
+        # Groups of leaves a ray meets in several intervals (resolved by layers, see .layers).
+        # The kinds present first (one pass in C): trees of convex kinds pay nothing more.
+        several = any(getattr(kind, "max_intervals", 1) > 1 for kind in set(map(type, obj.leaves)))
+        self.layered = ({g for g, i in enumerate(self.reps.tolist()) if obj.leaves[i].max_intervals > 1}
+                        if several else set())
+        self.layers: dict[int, dict[int, list[Any]]] = {}  # per tile, per slot of such a group: its layers
         first = (rects[self.reps, 1] - self.oy) // self.side
         self.order = np.argsort(first, kind="stable").tolist()
         self.first_l = first.tolist()
@@ -148,6 +155,12 @@ class _TiledResolve:
         done = []
         for t, j in self.slots[g]:
             (kf, vf, kb, vb), _, _, _, off, lr0, lc0, lh, lw = self.tiles[t]
+            if g in self.layered:
+                leaf = self.obj.leaves[self.members[g][0]]
+                self.layers.setdefault(t, {})[j] = leaf_layers(leaf, prep, self.rays, int(lr0[j]), int(lc0[j]),
+                                                               int(lh[j]), int(lw[j]), near)
+                done.append(t)
+                continue
             fill_leaf(kf, vf, kb, vb, int(off[j]), int(lr0[j]), int(lc0[j]), int(lh[j]), int(lw[j]),
                       proj, quads, vout, vin, near, rp.persp)
             done.append(t)
@@ -178,16 +191,26 @@ class _TiledResolve:
         """Tile ``t``'s program on its leaves' intervals, into the image; its buffers released."""
         rp = self.rp
         c0, r0, c1, r1 = self.plan.tile(t)
-        (kf, vf, kb, vb), op, arg, ids, off, lr0, lc0, lh, lw = self.tiles[t]
+        tile = self.tiles[t] if not self.layered else self._layered_tile(t)
+        (kf, vf, kb, vb), op, arg, ids, off, lr0, lc0, lh, lw = tile
         if len(ids):
             resolve_packed(kf, vf, kb, vb, off, lr0, lc0, lh, lw, ids, op, arg, table_of(op, arg, len(ids)),
                            self.obj.base, r0, r1, c0, c1, rp.zkey, rp.value, rp.gid,
                            *resolve_scratch(len(ids), len(op)))
         with self.cond:
             del self.tiles[t], self.pending[t]
+            self.layers.pop(t, None)
             self.left[t // self.plan.cols] -= 1
             self._advance()
             self.cond.notify_all()
+
+    def _layered_tile(self, t: int) -> tuple[Any, ...]:
+        """Tile ``t`` with its leaves of several intervals as unions of their layers."""
+        tile = self.tiles[t]
+        groups = self.group_of[tile[3]]
+        _, rep, inv = np.unique(groups, return_index=True, return_inverse=True)
+        layers_of = {k: self.layers[t][int(rep[inv[k]])] for k in range(len(groups)) if int(groups[k]) in self.layered}
+        return expand_tile(tile, layers_of) if layers_of else tile
 
     def _advance(self) -> None:
         # Under the lock: count the rows whose tiles are all resolved.
@@ -211,7 +234,7 @@ class _TiledResolve:
                     self.fill_rays(task[1])
                 else:
                     self.fill(*task[1:])
-            except BaseException as exc:  # handed to the main thread
+            except BaseException as exc:  # noqa: BLE001  (handed to the main thread)
                 with cond:
                     self.error = self.error or exc
                     self.queue.clear()
@@ -239,7 +262,7 @@ class _TiledResolve:
             pos = 0
             for row in range(self.plan.rows):
                 # At most ROWS_AHEAD rows behind this one still open: bounds the tiles alive.
-                self.help_until(lambda: self.done >= row - policy.ROWS_AHEAD)
+                self.help_until(lambda row=row: self.done >= row - policy.ROWS_AHEAD)  # type: ignore[misc]
                 if self.error is not None:
                     break
                 pos = self._build_row(row, pos)
@@ -278,7 +301,7 @@ class _TiledResolve:
                 for tc in range((c0 - self.ox) // side, (c1 - 1 - self.ox) // side + 1):
                     if tr * plan.cols + tc not in self.tiles:
                         self.open_tile(tr * plan.cols + tc)
-            if obj.by_rays is not None and obj.by_rays[i]:
+            if obj.by_rays is not None and obj.by_rays[i] and g not in self.layered:
                 self._queue(("rays", g), len(self.members[g]))  # a few pixels: no bands
                 if self.error is not None:
                     break
