@@ -29,7 +29,7 @@ import numpy as np
 
 from .._validation import MAX_RESOLUTION, integer, resolution, show
 from ..errors import InvalidLightError, InvalidParameterError, SceneFileError
-from ..geometry.primitives import Box
+from ..lighting.area import AreaLight, PolyhedronLight
 from ..scene.io import (
     decode_scene_text,
     read_scene_file,
@@ -37,7 +37,6 @@ from ..scene.io import (
     scene_from_dict,
 )
 from ..scene.model import Scene
-from ..shadows.lights import AreaLight, PolyhedronLight
 from ..shadows.luxmap import LuxGrid, illuminance_map, save_luxmap_png
 from ..shadows.luxstats import lux_statistics, save_luxmap_csv
 from . import COMMANDS
@@ -106,7 +105,8 @@ def floor_grid(scene: Scene, nx: int = 64, ny: int = 64) -> LuxGrid:
     >>> g.origin, g.u, g.v
     ((-2.0, -1.0, 0.0), (4.0, 0.0, 0.0), (0.0, 2.0, 0.0))
     """
-    boxes = [o.shape for o in scene.objects if isinstance(o.shape, Box)]
+    # boxes: the scene files' kind "box" (read by its registered name, whatever its class)
+    boxes: list[Any] = [o.shape for o in scene.objects if getattr(o.shape, "kind", None) == "box"]
     if boxes:
         b = max(boxes, key=lambda x: x.size[0] * x.size[1])
         lo, hi = b.bounds

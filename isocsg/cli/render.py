@@ -78,7 +78,7 @@ def run(args: argparse.Namespace) -> int:
     if gltf and scene.render.mode != "isoluminance":
         raise InvalidParameterError(f"{args.output}: glTF output needs render.mode = \"isoluminance\" (point or directional lights)")
     if args.svg is not None:
-        from ..geometry.primitives import (
+        from ..kinds import (
             Primitive,  # here: ``isocsg render --help`` loads no geometry
         )
 

@@ -47,7 +47,6 @@ import numpy as np
 from numpy.typing import NDArray
 
 from ..errors import InvalidParameterError
-
 from ..kinds.base import RELATIVE_TOLERANCE, LeafForm, Primitive, check_tolerance
 
 if TYPE_CHECKING:  # pragma: no cover

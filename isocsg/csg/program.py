@@ -39,7 +39,7 @@ from .._validation import points_array
 from ..errors import InvalidGeometryError
 
 if TYPE_CHECKING:  # pragma: no cover
-    from ..geometry.primitives import Primitive, Solid
+    from ..kinds import Primitive, Solid
 
 __all__ = [
     "OP_LEAF",
@@ -399,7 +399,7 @@ def compile_program(solid: Solid) -> Program:
     >>> prog.n_leaves, prog.op.tolist()[-1], prog.arg.tolist()[-1]
     (5, 1, 5)
     """
-    from ..geometry.primitives import Primitive
+    from ..kinds import Primitive
     from .tree import CSGNode
 
     if isinstance(solid, Primitive):

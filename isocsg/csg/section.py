@@ -58,7 +58,6 @@ __all__ = [
     "LeafTable",
 ]
 
-_circle_ring = circle_ring  # the name csg/volume.py imports
 
 
 @dataclass(frozen=True, slots=True, eq=False)
@@ -406,7 +405,7 @@ def leaf_sections(
     good = batch[rad[batch] > 0]
     if len(good):
         c2 = to2d(tab.center[idx[good]], F)
-        rings = _circle_ring(c2, rad[good], resolution, area_exact)
+        rings = circle_ring(c2, rad[good], resolution, area_exact)
         for j, g in zip(good.tolist(), shapely.polygons(rings)):
             out[j] = g
     # boxes cut across a coordinate axis: rectangles (faces in the plane count, see coplanar_sides)

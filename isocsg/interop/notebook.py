@@ -134,7 +134,7 @@ def scene_svg(scene: Any) -> str | None:
     import os
     import tempfile
 
-    from ..geometry.primitives import Primitive
+    from ..kinds import Primitive
 
     if scene.render.mode != "isoluminance" or not all(isinstance(o.shape, Primitive) for o in scene.objects):
         return None
@@ -161,7 +161,7 @@ def mimebundle(obj: Any, include: Any = None, exclude: Any = None) -> dict[str, 
     ``text/plain`` is the object's own repr; ``image/png`` its picture;
     ``image/svg+xml`` too for scenes that have a vector image.
     """
-    from ..geometry.primitives import Solid
+    from ..kinds import Solid
     from ..scene.model import Scene
 
     out: dict[str, Any] = {"text/plain": repr(obj)}

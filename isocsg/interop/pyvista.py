@@ -196,7 +196,7 @@ def to_pyvista(
     True
     """
     from ..csg.surface import CSGSurface
-    from ..geometry.primitives import Solid
+    from ..kinds import Solid
     from ..laminae.model import BandMesh, LaminaSet
     from ..scene.model import Scene
     from ..shadows.luxmap import LuxGrid, LuxMap

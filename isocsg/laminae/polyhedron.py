@@ -8,14 +8,20 @@ lights) so that the face is cut along its exact level lines.
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 from numpy.typing import NDArray
 
 from ..lighting.lights import DirectionalLight, PointLight
 from .surface import (
-    Surface, curvature_spacing, eye_reference_distance, light_reference_distance, orient_outward, pieces, refinement,
+    Surface,
+    curvature_spacing,
+    eye_reference_distance,
+    light_reference_distance,
+    orient_outward,
+    pieces,
+    refinement,
     specular_refinement,
 )
 
@@ -58,8 +64,8 @@ def face_laminae(poly: Box | ConvexPolyhedron, light: Light) -> list[tuple[NDArr
 
 def _subdivided_triangle(a: NDArray[np.float64], b: NDArray[np.float64], c: NDArray[np.float64], s: int) -> tuple[NDArray[np.float64], NDArray[np.int64]]:
     """Barycentric grid of ``s * s`` triangles; points on an edge depend on that edge's ends only."""
-    idx = {}
-    pts = []
+    idx: dict[tuple[int, int], int] = {}
+    pts: list[Any] = []
     for i in range(s + 1):
         for j in range(s + 1 - i):
             k = s - i - j

@@ -15,7 +15,7 @@ import warnings
 from pathlib import Path
 
 from ..errors import OpenSCADError
-from ..geometry.primitives import Solid
+from ..kinds import Solid
 from .lowering import UNSUPPORTED_NODES, LoweredModel, lower
 from .parser import MAX_CSG_TEXT, CSGCall, parse_csg
 from .program import export_mesh, find_openscad, scad_to_csg

@@ -18,7 +18,7 @@ What each node becomes:
   extrusion commutes with union, difference, intersection and affine maps of the
   plane, so each 2D leaf is extruded on its own: a ``circle`` becomes an exact
   cylinder, a ``square`` a box (or a prism when rotated), a ``polygon`` the union
-  of convex prisms of :func:`~isocsg.geometry.extrude.extrude`.
+  of convex prisms of :func:`~isocsg.csg.extrude.extrude`.
 
 Nodes without an exact equivalent (``hull`` of curved solids, ``minkowski``, ``rotate_extrude``,
 twisted or scaled extrusions, ``text``, ``import``, ``surface``, ``projection``,
@@ -325,7 +325,7 @@ class _Lowerer:
     def prism(self, call: CSGCall, shape: Any, ex: _Extrusion, *, transformed: bool = False) -> Solid | None:
         from shapely.geometry import Polygon
 
-        from ..geometry.extrude import prisms
+        from ..csg.extrude import prisms
 
         if not transformed:
             shape = Polygon(np.asarray(shape) @ ex.affine[:2, :2].T + ex.affine[:2, 2])

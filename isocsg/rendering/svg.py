@@ -40,7 +40,7 @@ from numpy.typing import NDArray
 
 from ..camera import Camera
 from ..errors import InvalidParameterError
-from ..geometry.primitives import Primitive
+from ..kinds import Primitive
 from ..scene.model import Scene
 from .image import save_svg
 from .painter import Renderer, default_renderer
