@@ -19,17 +19,25 @@ Examples
 
 from __future__ import annotations
 
+import sys
 from collections.abc import Callable
 from typing import Any
 
 __all__ = ["bind", "late"]
 
-_BOUND: dict[str, Callable[..., Any]] = {}
+#: The root package, whose namespace holds the table (``_LATE_BOUND``): a second copy of this
+#: module (a test runner importing the file again) then reads the same bindings.
+_ROOT = __name__.rpartition(".")[0]
+
+
+def _table() -> dict[str, Callable[..., Any]]:
+    table: dict[str, Callable[..., Any]] = vars(sys.modules[_ROOT]).setdefault("_LATE_BOUND", {})
+    return table
 
 
 def bind(name: str, fn: Callable[..., Any]) -> None:
     """Bind the operation ``name`` to ``fn`` (the root package does, at import)."""
-    _BOUND[name] = fn
+    _table()[name] = fn
 
 
 def late(name: str) -> Callable[..., Any]:
@@ -41,6 +49,6 @@ def late(name: str) -> Callable[..., Any]:
         When nothing is bound to it (the root package binds every name it lists).
     """
     try:
-        return _BOUND[name]
+        return _table()[name]
     except KeyError:
         raise LookupError(f"no operation bound to {name!r} (isocsg/__init__.py binds them)") from None

@@ -148,7 +148,10 @@ def load_scene_and_grid(path: str | Path) -> tuple[Scene, dict[str, Any] | None]
             raise SceneFileError(f"{p}: illuminance: must be a table, got {type(table).__name__}")
         unknown = sorted(set(table) - _TABLE_FIELDS)
         if unknown:
-            raise SceneFileError(f"{p}: illuminance.{unknown[0]}: unknown field (expected {', '.join(sorted(_TABLE_FIELDS))})")
+            raise SceneFileError(
+                f"{p}: illuminance.{unknown[0]}: unknown field "
+                f"(expected {', '.join(sorted(_TABLE_FIELDS))})"
+            )
         missing = [k for k in ("origin", "u", "v") if k not in table]
         if missing:
             raise SceneFileError(f"{p}: illuminance.{missing[0]}: missing")

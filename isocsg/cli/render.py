@@ -86,7 +86,10 @@ def run(args: argparse.Namespace) -> int:
             raise InvalidParameterError("--svg needs render.mode = \"isoluminance\"")
         for k, obj in enumerate(scene.objects):
             if not isinstance(obj.shape, Primitive):
-                raise InvalidParameterError(f"--svg: objects[{k}] is a CSG tree; SVG output takes single primitives only")
+                raise InvalidParameterError(
+                    f"--svg: objects[{k}] is a CSG tree; SVG "
+                    "output takes single primitives only"
+                )
     if gltf:
         from ..interop.gltf import save_gltf
 

@@ -461,7 +461,9 @@ def _spliced(children: Sequence[Solid], kind: type) -> list[Solid]:
 
 # ----------------------------------------------------------------- compiled form
 @njit(cache=True, nogil=True, inline="always")
-def evaluate_mask(op: NDArray[np.int8], arg: NDArray[np.int64], inside: NDArray[np.bool_], stack: NDArray[np.bool_]) -> bool:
+def evaluate_mask(
+    op: NDArray[np.int8], arg: NDArray[np.int64], inside: NDArray[np.bool_], stack: NDArray[np.bool_],
+) -> bool:
     """The program's value for one inside mask (``inside[i]``: inside leaf i), compiled.
 
     ``stack`` is scratch of at least :attr:`Program.stack_size` entries.

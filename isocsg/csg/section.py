@@ -210,7 +210,9 @@ def polygonal(geom: BaseGeometry, min_width: float = 0.0) -> Polygon | MultiPoly
 # ----------------------------------------------------------------------------- leaves
 
 
-def primitive_section(prim: Primitive, frame: NDArray[np.float64], resolution: int = 256, *, area_exact: bool = False) -> Polygon:
+def primitive_section(
+    prim: Primitive, frame: NDArray[np.float64], resolution: int = 256, *, area_exact: bool = False,
+) -> Polygon:
     """The section of one primitive in the plane of ``frame`` (see :func:`plane_frame`).
 
     Parameters

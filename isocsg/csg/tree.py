@@ -51,7 +51,10 @@ def _check_children(name: str, children: Iterable[Any]) -> tuple[Solid, ...]:
         raise InvalidGeometryError(f"{name} needs at least one operand, got none")
     for i, k in enumerate(kids):
         if not isinstance(k, Solid):
-            raise InvalidGeometryError(f"{name} operand {i} must be a solid (primitive or CSG node), got {type(k).__name__}")
+            raise InvalidGeometryError(
+                f"{name} operand {i} must be a solid (primitive "
+                f"or CSG node), got {type(k).__name__}"
+            )
     return kids
 
 

@@ -131,7 +131,9 @@ def _radii(tab, ids: NDArray[np.int64], z: NDArray[np.float64], w: NDArray[np.fl
     return np.where(sph, out, tab.r2[ids] + (tab.r1[ids] - tab.r2[ids]) * t)
 
 
-def _crossing_events(prog: Program, w: NDArray[np.float64], lo: NDArray[np.float64], hi: NDArray[np.float64]) -> NDArray[np.float64]:
+def _crossing_events(
+    prog: Program, w: NDArray[np.float64], lo: NDArray[np.float64], hi: NDArray[np.float64],
+) -> NDArray[np.float64]:
     """Heights where a varying circle section (sphere, cone or frustum along ``w``) starts or stops
     crossing another leaf's section: tangent to another circle (outside or inside it, concentric
     circles where their radii are equal), to an edge line of a prism's

@@ -47,7 +47,9 @@ def _box(bounds: ArrayLike) -> tuple[np.ndarray, float]:
     return centre, radius
 
 
-def framing_camera(bounds: ArrayLike, *, width: int = DISPLAY_SIZE[0], height: int = DISPLAY_SIZE[1], fov: float = 30.0) -> Camera:
+def framing_camera(
+    bounds: ArrayLike, *, width: int = DISPLAY_SIZE[0], height: int = DISPLAY_SIZE[1], fov: float = 30.0,
+) -> Camera:
     """A camera that sees the whole box ``bounds`` from the front right, above.
 
     The box's bounding sphere fits in the narrower of the two fields of view.

@@ -34,7 +34,9 @@ __all__ = ["face_laminae", "polyhedron_surface"]
 Light = PointLight | DirectionalLight
 
 
-def _faces(poly: Box | ConvexPolyhedron) -> tuple[NDArray[np.float64], list[tuple[NDArray[np.float64], NDArray[np.float64]]]]:
+def _faces(
+    poly: Box | ConvexPolyhedron,
+) -> tuple[NDArray[np.float64], list[tuple[NDArray[np.float64], NDArray[np.float64]]]]:
     """The kind's local origin and its faces relative to it (counter-clockwise from outside) with
     their unit outward normals (``local_faces`` of a polyhedral kind)."""
     origin, polys = poly.local_faces()
@@ -47,7 +49,9 @@ def _faces(poly: Box | ConvexPolyhedron) -> tuple[NDArray[np.float64], list[tupl
     return origin, out
 
 
-def face_laminae(poly: Box | ConvexPolyhedron, light: Light) -> list[tuple[NDArray[np.float64], NDArray[np.float64], float]]:
+def face_laminae(
+    poly: Box | ConvexPolyhedron, light: Light,
+) -> list[tuple[NDArray[np.float64], NDArray[np.float64], float]]:
     """One lamina per face: (vertices, outward normal, incidence cosine at the face centroid)."""
     out = []
     origin, faces = _faces(poly)
@@ -62,7 +66,9 @@ def face_laminae(poly: Box | ConvexPolyhedron, light: Light) -> list[tuple[NDArr
     return out
 
 
-def _subdivided_triangle(a: NDArray[np.float64], b: NDArray[np.float64], c: NDArray[np.float64], s: int) -> tuple[NDArray[np.float64], NDArray[np.int64]]:
+def _subdivided_triangle(
+    a: NDArray[np.float64], b: NDArray[np.float64], c: NDArray[np.float64], s: int,
+) -> tuple[NDArray[np.float64], NDArray[np.int64]]:
     """Barycentric grid of ``s * s`` triangles; points on an edge depend on that edge's ends only."""
     idx: dict[tuple[int, int], int] = {}
     pts: list[Any] = []

@@ -581,10 +581,14 @@ def _decode(data: bytes, source: object) -> str:
         text = data.decode("utf-8")
     except UnicodeDecodeError as exc:
         raise SceneFileError(
-            f"{source}: not a UTF-8 text file (byte 0x{data[exc.start]:02x} at offset {exc.start}); scene files are UTF-8 TOML or JSON"
+            f"{source}: not a UTF-8 text file (byte 0x{data[exc.start]:02x} "
+            f"at offset {exc.start}); scene files are UTF-8 TOML or JSON"
         ) from None
     if "\x00" in text:
-        raise SceneFileError(f"{source}: not a text file (NUL byte at offset {text.index(chr(0))}); scene files are UTF-8 TOML or JSON")
+        raise SceneFileError(
+            f"{source}: not a text file (NUL byte at offset "
+            f"{text.index(chr(0))}); scene files are UTF-8 TOML or JSON"
+        )
     return text
 
 

@@ -158,7 +158,9 @@ def illuminance_and_state(
     return E, state
 
 
-def receiver_tiles(points: NDArray[np.float64], *, per_tile: int = TILE_POINTS, max_tiles: int = MAX_TILES) -> list[NDArray[np.int64]]:
+def receiver_tiles(
+    points: NDArray[np.float64], *, per_tile: int = TILE_POINTS, max_tiles: int = MAX_TILES,
+) -> list[NDArray[np.int64]]:
     """Groups of nearby receivers (index arrays): the cells of a grid over their bounding box.
 
     About ``len(points) / per_tile`` cells (at most ``max_tiles``), more along

@@ -86,7 +86,9 @@ class FirstHits:
 
 
 
-def _object_hits(shape: Any, o: NDArray[np.float64], d: NDArray[np.float64], t_min: float) -> tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.int64]]:
+def _object_hits(
+    shape: Any, o: NDArray[np.float64], d: NDArray[np.float64], t_min: float,
+) -> tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.int64]]:
     """First hit of rays with one object: t, normal, part id (leaf * 2 + side) * 1024 + face."""
     n = len(o)
     if isinstance(shape, (Primitive, CSGNode)):
@@ -291,7 +293,9 @@ def _plan(lights: list[Any], pieces: list[Any], bounds: NDArray[np.float64]) -> 
     return plans
 
 
-def shadow_codes(plan: _LightPlan, points: NDArray[np.float64], normals: NDArray[np.float64]) -> tuple[NDArray[np.int8], NDArray[np.bool_], NDArray[np.int8]]:
+def shadow_codes(
+    plan: _LightPlan, points: NDArray[np.float64], normals: NDArray[np.float64],
+) -> tuple[NDArray[np.int8], NDArray[np.bool_], NDArray[np.int8]]:
     """Per point: state (0 lit / 1 penumbra / 2 umbra), penumbra membership (n, pieces), face type."""
     n = len(points)
     k = len(plan.pieces)
@@ -448,7 +452,9 @@ def _zero_end_runs(
     return extra
 
 
-def _interpolate_runs(Eimg: NDArray[np.float64], cols: NDArray[np.int64], seg_ok: NDArray[np.bool_], extra: NDArray[np.bool_]) -> None:
+def _interpolate_runs(
+    Eimg: NDArray[np.float64], cols: NDArray[np.int64], seg_ok: NDArray[np.bool_], extra: NDArray[np.bool_],
+) -> None:
     """Linear interpolation, in place, inside the runs left to it."""
     for s in range(len(cols) - 1):
         a, b = cols[s], cols[s + 1]
