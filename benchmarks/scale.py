@@ -267,6 +267,7 @@ def child_tiny_isocsg(n: int, contours: int) -> None:
     """A plate with ``n`` holes built by a loop of ``part = part - Cylinder(...)``, its first
     256 x 256 render: the holes of 10 000 are about a pixel across, of 100 000 a third of one."""
     import numpy as np
+
     from isocsg import Camera, Cylinder, PointLight, RenderSettings, Scene, Sphere
     from isocsg.rendering import Renderer
 

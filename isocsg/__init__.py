@@ -7,8 +7,9 @@ loads only the modules (numba kernels, shapely, scipy, pyvista) of what it calls
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
+from . import _late
 from ._lazy import lazy_exports
 
 __version__ = "0.1.0"
@@ -22,9 +23,9 @@ _EXPORTS: dict[str, str] = {
         "ResourceLimitError",
     ], ".errors"),
     **dict.fromkeys(["Solid", "Primitive", "RayHits", "Sphere", "Truncus", "Cylinder", "Cone", "Box", "ConvexPolyhedron",
-                     "Ellipsoid", "EllipticTruncus"], ".geometry"),
+                     "Ellipsoid", "EllipticTruncus"], ".kinds"),
     "Torus": ".kinds",
-    "extrude": ".geometry.extrude",
+    "extrude": ".csg.extrude",
     **dict.fromkeys(["PointLight", "DirectionalLight", "Material", "shade"], ".lighting"),
     **dict.fromkeys(["Scene", "SceneObject", "RenderSettings", "load_scene", "loads_scene", "save_scene", "dumps_scene",
                      "builtin_scene", "builtin_scene_path"], ".scene"),
@@ -42,7 +43,7 @@ _EXPORTS: dict[str, str] = {
     **dict.fromkeys(["ShadedSurface", "object_surface", "scene_surfaces"], ".interop.bands"),
     **dict.fromkeys(["export_glb", "save_gltf"], ".interop.gltf"),
     "to_pyvista": ".interop.pyvista",
-    **dict.fromkeys(["AreaLight", "PolyhedronLight"], ".shadows.lights"),
+    **dict.fromkeys(["AreaLight", "PolyhedronLight"], ".lighting.area"),
     **dict.fromkeys(["illuminance", "shadow_state", "illuminance_and_state"], ".shadows.direct"),
     **dict.fromkeys(["render_halftone", "HalftoneResult"], ".shadows.halftone"),
     "shadow_volumes": ".shadows.volumes",
@@ -176,25 +177,41 @@ __all__ = [
 __getattr__, __dir__ = lazy_exports(globals(), _EXPORTS)
 
 
+# The operations lower layers offer and upper ones implement (isocsg/_late.py): Solid's Boolean
+# operators (csg/tree.py) and the notebook display of solids, scenes, renders and half-tone
+# images (interop/notebook.py). Bound here, before any submodule runs; each imports its module
+# on first call.
+def _union(*solids: Any) -> Any:
+    from .csg.tree import union
+
+    return union(*solids)
+
+
+def _intersection(*solids: Any) -> Any:
+    from .csg.tree import intersection
+
+    return intersection(*solids)
+
+
+def _difference(first: Any, *others: Any) -> Any:
+    from .csg.tree import difference
+
+    return difference(first, *others)
+
+
+def _mimebundle(obj: Any, include: Any = None, exclude: Any = None) -> dict[str, Any]:
+    from .interop.notebook import mimebundle
+
+    return mimebundle(obj, include, exclude)
+
+
+for _name, _fn in (("union", _union), ("intersection", _intersection), ("difference", _difference),
+                   ("mimebundle", _mimebundle)):
+    _late.bind(_name, _fn)
+del _name, _fn
+
+
 if TYPE_CHECKING:  # what the names are, for type checkers and editors
-    from .kinds import Torus
-    from .shapes2d import (
-        Circle,
-        ConvexPolygon,
-        Difference2D,
-        Ellipse,
-        Intersection2D,
-        Shape2D,
-        Union2D,
-        circle,
-        linear_extrude,
-        offset,
-        polygon,
-        square,
-        text,
-        to_shapely,
-        union_all2d,
-    )
     from .batch import illuminance_grid, render_views, turntable
     from .camera import Camera
     from .csg import (
@@ -208,6 +225,7 @@ if TYPE_CHECKING:  # what the names are, for type checkers and editors
         union_all,
     )
     from .csg.clip import clip_laminae
+    from .csg.extrude import extrude
     from .csg.mesh import to_manifold, to_trimesh
     from .csg.section import section
     from .csg.volume import volume
@@ -222,7 +240,11 @@ if TYPE_CHECKING:  # what the names are, for type checkers and editors
         SceneFileError,
         UnsupportedOpenSCADError,
     )
-    from .geometry import (
+    from .interop.bands import ShadedSurface, object_surface, scene_surfaces
+    from .interop.gltf import export_glb, save_gltf
+    from .interop.pyvista import to_pyvista
+    from .kernels import compile_kernels
+    from .kinds import (
         Box,
         Cone,
         ConvexPolyhedron,
@@ -233,15 +255,12 @@ if TYPE_CHECKING:  # what the names are, for type checkers and editors
         RayHits,
         Solid,
         Sphere,
+        Torus,
         Truncus,
     )
-    from .geometry.extrude import extrude
-    from .interop.bands import ShadedSurface, object_surface, scene_surfaces
-    from .interop.gltf import export_glb, save_gltf
-    from .interop.pyvista import to_pyvista
-    from .kernels import compile_kernels
     from .laminae import BandMesh, Lamina, LaminaSet, build_laminae
     from .lighting import DirectionalLight, Material, PointLight, shade
+    from .lighting.area import AreaLight, PolyhedronLight
     from .limits import memory_budget, set_memory_budget
     from .openscad import (
         OpenSCADSkipWarning,
@@ -266,8 +285,24 @@ if TYPE_CHECKING:  # what the names are, for type checkers and editors
     )
     from .shadows.direct import illuminance, illuminance_and_state, shadow_state
     from .shadows.halftone import HalftoneResult, render_halftone
-    from .shadows.lights import AreaLight, PolyhedronLight
     from .shadows.luxmap import LuxGrid, LuxMap, illuminance_map, save_luxmap_png
     from .shadows.luxplot import save_luxmap_figure
     from .shadows.luxstats import LuxStats, lux_statistics, save_luxmap_csv
     from .shadows.volumes import shadow_volumes
+    from .shapes2d import (
+        Circle,
+        ConvexPolygon,
+        Difference2D,
+        Ellipse,
+        Intersection2D,
+        Shape2D,
+        Union2D,
+        circle,
+        linear_extrude,
+        offset,
+        polygon,
+        square,
+        text,
+        to_shapely,
+        union_all2d,
+    )

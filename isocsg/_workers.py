@@ -78,7 +78,7 @@ def background(name: str, fn: Callable[..., Any], *args: Any) -> Future[Any]:
                 return
             try:
                 fut.set_result(fn(*args))
-            except BaseException as exc:  # handed to whoever waits
+            except BaseException as exc:  # noqa: BLE001  # handed to whoever waits (as concurrent.futures does)
                 fut.set_exception(exc)
         finally:
             with _lock:

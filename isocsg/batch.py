@@ -233,7 +233,7 @@ def illuminance_grid(
         If ``grid`` is not a LuxGrid or ``rows_per_task`` is not positive.
     """
     from ._validation import integer
-    from .geometry.primitives import DEFAULT_RESOLUTION
+    from .kinds import DEFAULT_RESOLUTION
     from .shadows.luxmap import LuxGrid, LuxMap, occluded_nodes
 
     if not isinstance(grid, LuxGrid):

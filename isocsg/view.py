@@ -15,7 +15,7 @@ import numpy as np
 from .camera import Camera
 from .csg.tree import CSGNode
 from .errors import InvalidParameterError
-from .geometry.primitives import Solid
+from .kinds import Solid
 from .lighting.lights import Material
 from .scene.model import SceneObject
 

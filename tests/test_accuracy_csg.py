@@ -17,7 +17,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from isocsg import Box, Cone, Cylinder, Material, PointLight, Sphere, Truncus
+from isocsg import Box, Cylinder, PointLight, Sphere, Truncus
 
 # the shared helpers live next to the tests (pytest runs with --import-mode=importlib)
 sys.path.insert(0, str(Path(__file__).resolve().parent))

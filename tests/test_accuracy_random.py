@@ -41,13 +41,17 @@ import sys
 from pathlib import Path
 
 import numpy as np
-
-from isocsg._validation import MIN_LENGTH
-import pytest
 from hypothesis import HealthCheck, assume, given, note, settings
 from hypothesis import strategies as st
 
+from isocsg._validation import MIN_LENGTH
+
 sys.path.insert(0, str(Path(__file__).resolve().parent))
+
+from reference import compare, comparison_mask, fraction_within, raycast_scene  # noqa: E402
+from reference.raycaster import ReferenceImage, first_hit, shade_points  # noqa: E402
+from reference.ties import silhouette_ties as reference_ties  # noqa: E402
+from scenes import render_image  # noqa: E402
 
 from isocsg import (  # noqa: E402
     Box,
@@ -62,10 +66,6 @@ from isocsg import (  # noqa: E402
     Sphere,
     Truncus,
 )
-from reference import compare, comparison_mask, fraction_within, raycast_scene  # noqa: E402
-from reference.raycaster import ReferenceImage, first_hit, shade_points  # noqa: E402
-from reference.ties import silhouette_ties as reference_ties  # noqa: E402
-from scenes import render_image  # noqa: E402
 
 MIN_IOU = 0.99
 MIN_FRACTION = 0.98

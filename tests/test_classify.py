@@ -13,6 +13,7 @@ import numpy as np
 import pytest
 
 from isocsg import Box, ConvexPolyhedron, InvalidGeometryError, InvalidLightError
+from isocsg.lighting.area import AreaLight, PolyhedronLight
 from isocsg.shadows import illuminance
 from isocsg.shadows.classify import (
     F,
@@ -26,7 +27,6 @@ from isocsg.shadows.classify import (
     face_type_polyhedron,
     solid_faces,
 )
-from isocsg.shadows.lights import AreaLight, PolyhedronLight
 
 
 def _lambert_unclipped(p, n, poly, L=1.0):

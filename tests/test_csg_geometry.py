@@ -95,7 +95,7 @@ def M_batch(kids, op):
     return kids[0] if len(kids) == 1 else m3.Manifold.batch_boolean(kids, op)
 
 
-@functools.lru_cache(maxsize=None)
+@functools.cache
 def reference(name: str) -> m3.Manifold:
     return _ref(SCENES[name])
 

@@ -16,8 +16,8 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from isocsg import Box, Cylinder, Difference, Intersection, Sphere, Union, difference, union_all
-from isocsg.csg.tree import REPR_LEAVES
 from isocsg.csg.program import OP_DIFFERENCE, OP_INTERSECTION, OP_LEAF, OP_UNION, compile_program
+from isocsg.csg.tree import REPR_LEAVES
 
 A = Sphere((0, 0, 0), 1.0)
 B = Box((0.5, 0, 0), (1, 1, 1))

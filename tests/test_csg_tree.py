@@ -22,8 +22,8 @@ from isocsg import (
     union_all,
 )
 from isocsg.csg.mesh import to_manifold, to_trimesh
-from isocsg.csg.section import section
 from isocsg.csg.program import OP_DIFFERENCE, OP_INTERSECTION, OP_LEAF, OP_UNION
+from isocsg.csg.section import section
 from isocsg.csg.tree import leaves
 from isocsg.csg.volume import volume
 

@@ -23,7 +23,7 @@ from isocsg import (
     extrude,
     volume,
 )
-from isocsg.geometry.extrude import convex_partition
+from isocsg.csg.extrude import convex_partition
 from isocsg.scene import loads_scene
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))

@@ -17,14 +17,14 @@ import numpy as np
 import pytest
 
 from isocsg import Box, Camera, ConvexPolyhedron, InvalidLightError, InvalidParameterError, PointLight, Scene, Sphere
+from isocsg.lighting.area import AreaLight, PolyhedronLight
 from isocsg.scene.model import RenderSettings
 from isocsg.shadows.halftone import first_hits, render_halftone
-from isocsg.shadows.lights import AreaLight, PolyhedronLight
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
-from reference.raycaster import first_hit as reference_first_hit  # noqa: E402
 from reference.raycaster import camera_rays  # noqa: E402
+from reference.raycaster import first_hit as reference_first_hit  # noqa: E402
 
 S, A, HS, HO, T = 1.0, 0.8, 2.0, 1.0, 0.02
 

@@ -21,7 +21,6 @@ import sys
 from pathlib import Path
 
 import numpy as np
-import pytest
 from scipy.optimize import linprog
 from scipy.spatial import ConvexHull
 

@@ -25,6 +25,9 @@ import pytest
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
+from reference import compare, comparison_mask, raycast_scene  # noqa: E402
+from scenes import render_image, with_contours  # noqa: E402
+
 from isocsg import (  # noqa: E402
     Box,
     Camera,
@@ -42,8 +45,6 @@ from isocsg import (  # noqa: E402
     Truncus,
     build_laminae,
 )
-from reference import compare, comparison_mask, raycast_scene  # noqa: E402
-from scenes import render_image, with_contours  # noqa: E402
 
 
 def _fixed_contours(scene):

@@ -13,7 +13,7 @@ import pytest
 from PIL import Image
 
 from isocsg import Box, InvalidParameterError
-from isocsg.shadows.lights import AreaLight
+from isocsg.lighting.area import AreaLight
 from isocsg.shadows.luxmap import LuxGrid, illuminance_map, isolux_lines, nice_levels, save_luxmap_png
 
 SQUARE = [(-0.5, -0.5, 2.0), (-0.5, 0.5, 2.0), (0.5, 0.5, 2.0), (0.5, -0.5, 2.0)]

@@ -14,8 +14,8 @@ import subprocess
 import warnings
 
 import numpy as np
-import shapely
 import pytest
+import shapely
 
 import isocsg
 from isocsg import (
@@ -31,7 +31,6 @@ from isocsg import (
     volume,
 )
 from isocsg.openscad import OpenSCADSkipWarning, dumps_openscad, loads_openscad, parse_csg, read_openscad
-
 
 
 def load(text: str, **kw):

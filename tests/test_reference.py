@@ -32,6 +32,7 @@ from isocsg import (
     intersection,
     union,
 )
+
 # the shared helpers live next to the tests (pytest runs with --import-mode=importlib)
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 

@@ -12,9 +12,9 @@ import pytest
 import shapely
 
 from isocsg import Box, ConvexPolyhedron, InvalidGeometryError, Sphere
+from isocsg.lighting.area import AreaLight, PolyhedronLight
 from isocsg.shadows import shadow_state
 from isocsg.shadows.classify import FaceType
-from isocsg.shadows.lights import AreaLight, PolyhedronLight
 from isocsg.shadows.regions import face_frame, face_shadow_regions, solid_shadow_regions
 
 

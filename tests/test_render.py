@@ -8,10 +8,9 @@ against analytic ray-sphere intervals computed independently below.
 
 from __future__ import annotations
 
-import re
-
 import functools
 import itertools
+import re
 
 import numpy as np
 import pytest
@@ -30,10 +29,10 @@ from isocsg import (
     Union,
     shade,
 )
+from isocsg.csg.program import compile_program
 from isocsg.laminae.model import BandMesh
 from isocsg.rendering import Renderer
 from isocsg.rendering import image as imagemod
-from isocsg.csg.program import compile_program
 from isocsg.rendering.pixel_csg import resolve_csg, truth_table
 
 RES = 48  # segments of the inscribed test meshes
@@ -289,7 +288,7 @@ def test_bands_are_reused_from_a_new_viewpoint():
     """The builder caches view-independent bands; a new camera only fills again."""
     built = []
 
-    @functools.lru_cache(maxsize=None)
+    @functools.cache
     def cached(primitive, lights, material, contours):
         built.append(primitive)
         return mesh_bands(primitive, lights, material, contours, eye=(0.0, 0.0, 0.0))

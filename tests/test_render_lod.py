@@ -20,8 +20,8 @@ import pytest
 import isocsg.laminae as laminae
 from isocsg import Camera, PointLight, RenderSettings, Scene, SceneObject, Sphere, union_all
 from isocsg.csg.program import compile_program
-from isocsg.rendering import Renderer, detail, policy, tiles
 from isocsg.laminae.builder import DEFAULT_SEGMENTS
+from isocsg.rendering import Renderer, detail, policy, tiles
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 

@@ -201,7 +201,7 @@ def test_save_scene_then_load(tmp_path: Path, suffix: str) -> None:
 
 
 def test_area_and_polyhedron_lights_round_trip() -> None:
-    lights = pytest.importorskip("isocsg.shadows.lights")
+    lights = pytest.importorskip("isocsg.lighting.area")
     square = [[-1, -1, 3], [-1, 1, 3], [1, 1, 3], [1, -1, 3]]
     doc = copy.deepcopy(DOC)
     doc["render"]["mode"] = "halftone"
@@ -218,7 +218,7 @@ def test_area_and_polyhedron_lights_round_trip() -> None:
 @pytest.mark.parametrize("name", BUILTIN_SCENES)
 def test_builtin_scenes_load_and_round_trip(name: str) -> None:
     if name == "halftone":
-        pytest.importorskip("isocsg.shadows.lights")
+        pytest.importorskip("isocsg.lighting.area")
     scene = builtin_scene(name)
     assert len(scene.objects) >= 1
     assert loads_scene(dumps_scene(scene)) == scene
@@ -450,7 +450,7 @@ def test_errors_have_no_chained_traceback() -> None:
     ids=["area-collinear", "area-radiance", "area-two-vertices", "area-unknown-key", "polyhedron-flat"],
 )
 def test_area_and_polyhedron_light_errors(tmp_path: Path, monkeypatch: pytest.MonkeyPatch, light: dict[str, Any], message: str) -> None:
-    pytest.importorskip("isocsg.shadows.lights")
+    pytest.importorskip("isocsg.lighting.area")
     monkeypatch.chdir(tmp_path)
     doc = _doc(lights=[light])
     doc["render"]["mode"] = "halftone"

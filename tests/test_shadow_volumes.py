@@ -13,8 +13,8 @@ import numpy as np
 import pytest
 
 from isocsg import Box, ConvexPolyhedron, InvalidGeometryError, InvalidParameterError
+from isocsg.lighting.area import AreaLight, PolyhedronLight
 from isocsg.shadows import shadow_state
-from isocsg.shadows.lights import AreaLight, PolyhedronLight
 from isocsg.shadows.volumes import (
     ConvexVolume,
     may_cast_shadow,

@@ -181,7 +181,7 @@ def test_too_many_pieces_is_refused(monkeypatch):
 
 @pytest.mark.parametrize("seed", [0, 1, 2])
 def test_sorted_half_edges_match_a_stable_lexicographic_sort(seed):
-    from isocsg.geometry.halfedges import sorted_half_edges
+    from isocsg.laminae.halfedges import sorted_half_edges
 
     rng = np.random.default_rng(seed)
     t = rng.integers(0, 40, (300, 3)).astype(np.int64)

@@ -22,7 +22,8 @@ import pytest
 
 from isocsg import Box, Cylinder, PointLight
 from isocsg.csg.surface import surface_from_bands
-from isocsg.laminae import build_bands, builder as lamina_builder
+from isocsg.laminae import build_bands
+from isocsg.laminae import builder as lamina_builder
 from isocsg.lighting.lights import Material
 from isocsg.rendering import Renderer
 from isocsg.rendering.tiles import leaf_geometry

@@ -315,11 +315,11 @@ def test_extreme_frames_first_and_later_views_match_the_ray_caster(name, offset,
     """Far from the origin and tiny: the first view (per pixel), the second (through the
     clipped surface, which must build there) and ``csg="surface"`` are each judged by the
     ray caster with the catalogue's bars (IoU >= 0.99, 98 % of pixels within 0.05)."""
-    from isocsg.rendering import surfaces
     from reference import compare, raycast_scene
     from test_csg_random_views import MIN_FRACTION, MIN_IOU, _placed_light, placed
 
-    from isocsg.rendering import painter
+    from isocsg.rendering import surfaces
+
 
     built = []
     real = surfaces.surface_from_bands

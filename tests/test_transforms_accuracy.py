@@ -25,6 +25,10 @@ from hypothesis import strategies as st
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
+from reference import compare, comparison_mask, fraction_within, raycast_scene  # noqa: E402
+from reference.ties import silhouette_ties  # noqa: E402
+from scenes import render_image  # noqa: E402
+
 from isocsg import (  # noqa: E402
     Box,
     Camera,
@@ -45,9 +49,6 @@ from isocsg import (  # noqa: E402
 from isocsg.csg.mesh import to_manifold  # noqa: E402
 from isocsg.csg.section import section  # noqa: E402
 from isocsg.csg.volume import volume  # noqa: E402
-from reference import compare, comparison_mask, fraction_within, raycast_scene  # noqa: E402
-from reference.ties import silhouette_ties  # noqa: E402
-from scenes import render_image  # noqa: E402
 
 MIN_IOU = 0.99
 MIN_FRACTION = 0.98
@@ -193,7 +194,7 @@ directions = st.tuples(*[st.floats(-1, 1)] * 3).filter(lambda v: np.linalg.norm(
 def linear_maps(draw):
     """Turn, uneven scale and shear: a matrix with a condition number up to about 6."""
     ang = draw(st.tuples(*[st.floats(-180, 180)] * 3))
-    from isocsg.geometry.transforms import rotation_array
+    from isocsg.kinds.affine import rotation_array
 
     scale = np.diag(draw(st.tuples(*[st.floats(0.5, 2.0)] * 3)))
     shear = np.eye(3)

@@ -157,7 +157,7 @@ def test_bad_input_raises_documented_error(make: Callable[[], Any], error: type[
 
 @pytest.mark.parametrize("make, message", [c[1:] for c in AREA_CASES], ids=[c[0] for c in AREA_CASES])
 def test_bad_area_and_polyhedron_sources(make: Callable[[Any], Any], message: str) -> None:
-    lights = pytest.importorskip("isocsg.shadows.lights")
+    lights = pytest.importorskip("isocsg.lighting.area")
     with pytest.raises(InvalidLightError, match=f"^{re.escape(message)}$") as info:
         make(lights)
     assert isinstance(info.value, ValueError)

@@ -16,11 +16,9 @@ import numpy as np
 import pytest
 
 from isocsg import Box, Sphere
-from isocsg.shadows import AreaLight, PolyhedronLight
-from isocsg.shadows import visibility
-from isocsg.shadows.occluders import shadow_pieces
-
+from isocsg.shadows import AreaLight, PolyhedronLight, visibility
 from isocsg.shadows import direct as illuminance_module
+from isocsg.shadows.occluders import shadow_pieces
 
 
 @pytest.mark.parametrize("n", [0, 1, 2, 3, 7, 64, 257])

@@ -56,7 +56,9 @@ def add_common_render_options(parser: argparse.ArgumentParser) -> None:
 
 
 @contextmanager
-def progress_bar(desc: str, *, enabled: bool = True, file: IO[str] | None = None, delay: float = 0.5) -> Iterator[ProgressCallback]:
+def progress_bar(
+    desc: str, *, enabled: bool = True, file: IO[str] | None = None, delay: float = 0.5,
+) -> Iterator[ProgressCallback]:
     """A ``progress(done, total)`` callable that drives a tqdm bar on stderr.
 
     The bar appears only when the work lasts longer than ``delay`` seconds,
@@ -167,7 +169,8 @@ def compile_notice(kind: str, *, file: IO[str] | None = None) -> bool:
         on = f"on {processes} processes" if processes > 1 else "on one process"
         idle = "on idle cores" if processes > 1 else "on an idle core"
         print(
-            f"isocsg: compiling {kernels} {_COMPILE_NAMES[kind]} kernel{'s' if kernels != 1 else ''} {on}, once for this install "
+            f"isocsg: compiling {kernels} {_COMPILE_NAMES[kind]} "
+            f"kernel{'s' if kernels != 1 else ''} {on}, once for this install "
             f"(about {max(1, round(seconds))} s {idle}); later runs read them from numba's disk cache "
             "(`isocsg warmup` compiles every kind ahead of time)",
             file=stream,

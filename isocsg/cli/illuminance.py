@@ -29,7 +29,7 @@ import numpy as np
 
 from .._validation import MAX_RESOLUTION, integer, resolution, show
 from ..errors import InvalidLightError, InvalidParameterError, SceneFileError
-from ..geometry.primitives import Box
+from ..lighting.area import AreaLight, PolyhedronLight
 from ..scene.io import (
     decode_scene_text,
     read_scene_file,
@@ -37,7 +37,6 @@ from ..scene.io import (
     scene_from_dict,
 )
 from ..scene.model import Scene
-from ..shadows.lights import AreaLight, PolyhedronLight
 from ..shadows.luxmap import LuxGrid, illuminance_map, save_luxmap_png
 from ..shadows.luxstats import lux_statistics, save_luxmap_csv
 from . import COMMANDS
@@ -106,7 +105,8 @@ def floor_grid(scene: Scene, nx: int = 64, ny: int = 64) -> LuxGrid:
     >>> g.origin, g.u, g.v
     ((-2.0, -1.0, 0.0), (4.0, 0.0, 0.0), (0.0, 2.0, 0.0))
     """
-    boxes = [o.shape for o in scene.objects if isinstance(o.shape, Box)]
+    # boxes: the scene files' kind "box" (read by its registered name, whatever its class)
+    boxes: list[Any] = [o.shape for o in scene.objects if getattr(o.shape, "kind", None) == "box"]
     if boxes:
         b = max(boxes, key=lambda x: x.size[0] * x.size[1])
         lo, hi = b.bounds
@@ -148,7 +148,10 @@ def load_scene_and_grid(path: str | Path) -> tuple[Scene, dict[str, Any] | None]
             raise SceneFileError(f"{p}: illuminance: must be a table, got {type(table).__name__}")
         unknown = sorted(set(table) - _TABLE_FIELDS)
         if unknown:
-            raise SceneFileError(f"{p}: illuminance.{unknown[0]}: unknown field (expected {', '.join(sorted(_TABLE_FIELDS))})")
+            raise SceneFileError(
+                f"{p}: illuminance.{unknown[0]}: unknown field "
+                f"(expected {', '.join(sorted(_TABLE_FIELDS))})"
+            )
         missing = [k for k in ("origin", "u", "v") if k not in table]
         if missing:
             raise SceneFileError(f"{p}: illuminance.{missing[0]}: missing")

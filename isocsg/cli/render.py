@@ -78,7 +78,7 @@ def run(args: argparse.Namespace) -> int:
     if gltf and scene.render.mode != "isoluminance":
         raise InvalidParameterError(f"{args.output}: glTF output needs render.mode = \"isoluminance\" (point or directional lights)")
     if args.svg is not None:
-        from ..geometry.primitives import (
+        from ..kinds import (
             Primitive,  # here: ``isocsg render --help`` loads no geometry
         )
 
@@ -86,7 +86,10 @@ def run(args: argparse.Namespace) -> int:
             raise InvalidParameterError("--svg needs render.mode = \"isoluminance\"")
         for k, obj in enumerate(scene.objects):
             if not isinstance(obj.shape, Primitive):
-                raise InvalidParameterError(f"--svg: objects[{k}] is a CSG tree; SVG output takes single primitives only")
+                raise InvalidParameterError(
+                    f"--svg: objects[{k}] is a CSG tree; SVG "
+                    "output takes single primitives only"
+                )
     if gltf:
         from ..interop.gltf import save_gltf
 

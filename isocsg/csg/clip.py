@@ -40,9 +40,9 @@ from shapely.geometry import MultiPolygon, Polygon
 
 from .._validation import integer
 from ..errors import InvalidParameterError
-from ..geometry.primitives import Primitive, Solid
-from .section import Section, combine_sections, plane_frame, polygonal, primitive_section, solid_program
+from ..kinds import Primitive, Solid
 from .program import OP_DIFFERENCE, Program
+from .section import Section, combine_sections, plane_frame, polygonal, primitive_section, solid_program
 
 __all__ = ["ClippedLamina", "leaf_polarities", "clip_lamina_set", "clip_laminae"]
 

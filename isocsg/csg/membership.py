@@ -47,7 +47,6 @@ import numpy as np
 from numpy.typing import NDArray
 
 from ..errors import InvalidParameterError
-
 from ..kinds.base import RELATIVE_TOLERANCE, LeafForm, Primitive, check_tolerance
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -219,7 +218,9 @@ class _PointGrid:
         self.sorted_pts = pts[self.order]
         self.start = np.searchsorted(lin[self.order], np.arange(int(np.prod(dims)) + 1))
 
-    def _cell_ranges(self, lo: NDArray[np.float64], hi: NDArray[np.float64]) -> tuple[NDArray[np.int64], NDArray[np.int64], NDArray[np.bool_]]:
+    def _cell_ranges(
+        self, lo: NDArray[np.float64], hi: NDArray[np.float64],
+    ) -> tuple[NDArray[np.int64], NDArray[np.int64], NDArray[np.bool_]]:
         d = self.dims
         c0 = np.floor((lo - self.lo) * self.scale).astype(np.int64)
         c1 = np.floor((hi - self.lo) * self.scale).astype(np.int64)

@@ -27,14 +27,14 @@ if TYPE_CHECKING:  # pragma: no cover
 __all__ = ["to_manifold", "to_trimesh", "rotation_to_axis"]
 
 
-def _leaf(prim: Primitive, resolution: int, shapes: dict[tuple[Any, ...], Any]) -> "manifold3d.Manifold":
+def _leaf(prim: Primitive, resolution: int, shapes: dict[tuple[Any, ...], Any]) -> manifold3d.Manifold:
     """A leaf as a manifold3d solid, through its kind's :meth:`~isocsg.kinds.base.Primitive.manifold`;
     ``shapes`` keeps the solids at the origin by their dimensions, so that many equal spheres or
     cylinders are built once and moved."""
     return prim.manifold(resolution, shapes)
 
 
-def _build(solid: Solid, resolution: int, path: str) -> "manifold3d.Manifold":
+def _build(solid: Solid, resolution: int, path: str) -> manifold3d.Manifold:
     if not isinstance(solid, Solid):
         raise InvalidGeometryError(f"{path} must be a solid (primitive or CSG node), got {type(solid).__name__}")
     m3 = _manifold3d()
@@ -56,7 +56,7 @@ def _build(solid: Solid, resolution: int, path: str) -> "manifold3d.Manifold":
     return compile_program(solid).evaluate(lambda _, p: _leaf(p, resolution, shapes), combine)
 
 
-def to_manifold(solid: Solid, resolution: int = 64) -> "manifold3d.Manifold":
+def to_manifold(solid: Solid, resolution: int = 64) -> manifold3d.Manifold:
     """Convert a primitive or CSG tree to a :class:`manifold3d.Manifold`.
 
     Parameters
@@ -89,7 +89,7 @@ def to_manifold(solid: Solid, resolution: int = 64) -> "manifold3d.Manifold":
     return _build(solid, res, "solid")
 
 
-def to_trimesh(solid: Solid, resolution: int = 64) -> "trimesh.Trimesh":
+def to_trimesh(solid: Solid, resolution: int = 64) -> trimesh.Trimesh:
     """Convert a primitive or CSG tree to a closed :class:`trimesh.Trimesh`.
 
     Parameters

@@ -39,7 +39,7 @@ from .._validation import points_array
 from ..errors import InvalidGeometryError
 
 if TYPE_CHECKING:  # pragma: no cover
-    from ..geometry.primitives import Primitive, Solid
+    from ..kinds import Primitive, Solid
 
 __all__ = [
     "OP_LEAF",
@@ -399,7 +399,7 @@ def compile_program(solid: Solid) -> Program:
     >>> prog.n_leaves, prog.op.tolist()[-1], prog.arg.tolist()[-1]
     (5, 1, 5)
     """
-    from ..geometry.primitives import Primitive
+    from ..kinds import Primitive
     from .tree import CSGNode
 
     if isinstance(solid, Primitive):
@@ -461,7 +461,9 @@ def _spliced(children: Sequence[Solid], kind: type) -> list[Solid]:
 
 # ----------------------------------------------------------------- compiled form
 @njit(cache=True, nogil=True, inline="always")
-def evaluate_mask(op: NDArray[np.int8], arg: NDArray[np.int64], inside: NDArray[np.bool_], stack: NDArray[np.bool_]) -> bool:
+def evaluate_mask(
+    op: NDArray[np.int8], arg: NDArray[np.int64], inside: NDArray[np.bool_], stack: NDArray[np.bool_],
+) -> bool:
     """The program's value for one inside mask (``inside[i]``: inside leaf i), compiled.
 
     ``stack`` is scratch of at least :attr:`Program.stack_size` entries.

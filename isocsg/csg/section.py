@@ -58,7 +58,6 @@ __all__ = [
     "LeafTable",
 ]
 
-_circle_ring = circle_ring  # the name csg/volume.py imports
 
 
 @dataclass(frozen=True, slots=True, eq=False)
@@ -211,7 +210,9 @@ def polygonal(geom: BaseGeometry, min_width: float = 0.0) -> Polygon | MultiPoly
 # ----------------------------------------------------------------------------- leaves
 
 
-def primitive_section(prim: Primitive, frame: NDArray[np.float64], resolution: int = 256, *, area_exact: bool = False) -> Polygon:
+def primitive_section(
+    prim: Primitive, frame: NDArray[np.float64], resolution: int = 256, *, area_exact: bool = False,
+) -> Polygon:
     """The section of one primitive in the plane of ``frame`` (see :func:`plane_frame`).
 
     Parameters
@@ -406,7 +407,7 @@ def leaf_sections(
     good = batch[rad[batch] > 0]
     if len(good):
         c2 = to2d(tab.center[idx[good]], F)
-        rings = _circle_ring(c2, rad[good], resolution, area_exact)
+        rings = circle_ring(c2, rad[good], resolution, area_exact)
         for j, g in zip(good.tolist(), shapely.polygons(rings)):
             out[j] = g
     # boxes cut across a coordinate axis: rectangles (faces in the plane count, see coplanar_sides)

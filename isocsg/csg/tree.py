@@ -22,7 +22,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from ..errors import InvalidGeometryError
-from ..geometry.primitives import Primitive, Solid
+from ..kinds import Primitive, Solid
 from .program import OP_DIFFERENCE, OP_INTERSECTION, OP_LEAF, OP_NAMES, OP_UNION, Program, compile_program
 
 __all__ = [
@@ -51,7 +51,10 @@ def _check_children(name: str, children: Iterable[Any]) -> tuple[Solid, ...]:
         raise InvalidGeometryError(f"{name} needs at least one operand, got none")
     for i, k in enumerate(kids):
         if not isinstance(k, Solid):
-            raise InvalidGeometryError(f"{name} operand {i} must be a solid (primitive or CSG node), got {type(k).__name__}")
+            raise InvalidGeometryError(
+                f"{name} operand {i} must be a solid (primitive "
+                f"or CSG node), got {type(k).__name__}"
+            )
     return kids
 
 
@@ -111,9 +114,9 @@ class CSGNode(Solid):
             if a is b:
                 continue
             if isinstance(a, CSGNode) or isinstance(b, CSGNode):
-                if type(a) is not type(b) or len(a.children) != len(b.children) or hash(a) != hash(b):  # type: ignore[union-attr]
+                if type(a) is not type(b) or len(a.children) != len(b.children) or hash(a) != hash(b):  # type: ignore[attr-defined]
                     return False
-                pairs.extend(zip(a.children, b.children))  # type: ignore[union-attr]
+                pairs.extend(zip(a.children, b.children))  # type: ignore[attr-defined]
             elif a != b:
                 return False
         return True
@@ -181,7 +184,7 @@ class CSGNode(Solid):
         """The primitives of the tree, depth first, left to right (repeats kept)."""
         return leaves(self)
 
-    def to_manifold(self, resolution: int = 64) -> "manifold3d.Manifold":  # type: ignore[name-defined]  # noqa: F821
+    def to_manifold(self, resolution: int = 64) -> manifold3d.Manifold:  # type: ignore[name-defined]  # noqa: F821
         """The solid as a manifold3d ``Manifold`` (leaves tessellated with ``resolution`` segments).
 
         See :func:`isocsg.csg.mesh.to_manifold`.
@@ -190,7 +193,7 @@ class CSGNode(Solid):
 
         return to_manifold(self, resolution)
 
-    def to_trimesh(self, resolution: int = 64) -> "trimesh.Trimesh":  # type: ignore[name-defined]  # noqa: F821
+    def to_trimesh(self, resolution: int = 64) -> trimesh.Trimesh:  # type: ignore[name-defined]  # noqa: F821
         """The solid as a watertight ``trimesh.Trimesh`` through manifold3d's Booleans.
 
         See :func:`isocsg.csg.mesh.to_trimesh`.
@@ -198,6 +201,20 @@ class CSGNode(Solid):
         from .mesh import to_trimesh
 
         return to_trimesh(self, resolution)
+
+    def _affine(self, A: NDArray[np.float64], t: NDArray[np.float64]) -> Solid:
+        """The image under ``x -> A x + t``: the tree mapped leaf by leaf into a tree of the same
+        shape, without recursion (see :meth:`~isocsg.kinds.base.Solid.transform`)."""
+        done: dict[int, Any] = {}
+        for s in _postorder(self):
+            key = id(s)
+            if key in done:
+                continue  # a leaf or subtree shared in several places is mapped once
+            if isinstance(s, CSGNode):
+                done[key] = NODE_TYPES[s.kind](*[done[id(c)] for c in s.children])
+            else:
+                done[key] = s._affine(A, t)
+        return done[id(self)]
 
     def to_dict(self) -> dict[str, Any]:
         """``{"union": [child, ...]}`` etc. for scene files (built without recursion)."""

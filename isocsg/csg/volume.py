@@ -60,7 +60,8 @@ from numpy.typing import ArrayLike, NDArray
 
 from .._validation import integer, nonzero_vector3, scalar
 from ..errors import InvalidParameterError
-from ..geometry.primitives import Box, ConvexPolyhedron, Solid, Sphere
+from ..kinds.base import LeafForm, Solid
+from ..kinds.planar import circle_ring
 from .program import OP_DIFFERENCE, OP_LEAF, OP_UNION, Program
 from .section import (
     combine_sections,
@@ -122,7 +123,7 @@ def _radii(tab, ids: NDArray[np.int64], z: NDArray[np.float64], w: NDArray[np.fl
     """Section radii at heights ``z`` of round leaves ``ids`` (spheres, trunci along ``w``)."""
     cz = np.einsum("...j,j->...", tab.center[ids], w)
     rel = z - cz
-    sph = tab.kind[ids] == 0
+    sph = tab.kind[ids] == LeafForm.BALL
     out = np.sqrt(np.maximum(tab.radius[ids] ** 2 - rel**2, 0.0))
     h = np.maximum(tab.height[ids], 1e-300)
     sgn = np.sign(np.einsum("...j,j->...", tab.axis[ids], w))
@@ -130,7 +131,9 @@ def _radii(tab, ids: NDArray[np.int64], z: NDArray[np.float64], w: NDArray[np.fl
     return np.where(sph, out, tab.r2[ids] + (tab.r1[ids] - tab.r2[ids]) * t)
 
 
-def _crossing_events(prog: Program, w: NDArray[np.float64], lo: NDArray[np.float64], hi: NDArray[np.float64]) -> NDArray[np.float64]:
+def _crossing_events(
+    prog: Program, w: NDArray[np.float64], lo: NDArray[np.float64], hi: NDArray[np.float64],
+) -> NDArray[np.float64]:
     """Heights where a varying circle section (sphere, cone or frustum along ``w``) starts or stops
     crossing another leaf's section: tangent to another circle (outside or inside it, concentric
     circles where their radii are equal), to an edge line of a prism's
@@ -138,8 +141,8 @@ def _crossing_events(prog: Program, w: NDArray[np.float64], lo: NDArray[np.float
     tab = leaf_table(prog)
     k = tab.kind
     along = np.abs(tab.axis @ w) >= 1.0 - 1e-13
-    round_ = (k == 0) | ((k == 1) & along)
-    varying = (k == 0) | ((k == 1) & along & (tab.r1 != tab.r2))
+    round_ = (k == LeafForm.BALL) | ((k == LeafForm.FRUSTUM) & along)
+    varying = (k == LeafForm.BALL) | ((k == LeafForm.FRUSTUM) & along & (tab.r1 != tab.r2))
     if not varying.any():
         return np.zeros(0)
     prism = _prismatic(prog, w) & ~round_
@@ -224,12 +227,12 @@ def _prismatic(prog: Program, w: NDArray[np.float64]) -> NDArray[np.bool_]:
     k = tab.kind
     out = np.zeros(len(k), dtype=bool)
     aligned = float(np.max(np.abs(w))) >= 1.0 - 1e-13
-    out[k == 2] = aligned
-    out[(k == 1) & (tab.r1 == tab.r2) & (np.abs(tab.axis @ w) >= 1.0 - 1e-13)] = True
-    for i in np.nonzero(k == 3)[0].tolist():
-        p = prog.leaves[i]
-        if isinstance(p, (ConvexPolyhedron, Box)):
-            d = np.abs(p.face_normals @ w)
+    out[k == LeafForm.AXIS_BOX] = aligned
+    out[(k == LeafForm.FRUSTUM) & (tab.r1 == tab.r2) & (np.abs(tab.axis @ w) >= 1.0 - 1e-13)] = True
+    for i in np.nonzero(k == LeafForm.HULL)[0].tolist():
+        faces = prog.leaves[i].planar_faces()
+        if faces is not None:
+            d = np.abs(faces[0] @ w)
             out[i] = bool(np.all((d <= 1e-13) | (d >= 1.0 - 1e-13)))
     return out
 
@@ -329,10 +332,10 @@ def _closed_form(prog: Program) -> float | None:
             return (vol, first[1], first[2], -1, k)
         box_lo, box_hi = lo.max(axis=0), np.maximum(hi.min(axis=0), lo.max(axis=0))
         if len(xs) == 2 and xs[0][3] >= 0 and xs[1][3] >= 0:
-            p, q = leaves[xs[0][3]], leaves[xs[1][3]]
-            if isinstance(p, Sphere) and isinstance(q, Sphere):  # a lens
-                d = math.dist(p.center, q.center)
-                lens = lens_volume(np.array(p.radius), np.array(q.radius), np.array(d))
+            a, b = leaves[xs[0][3]].leaf_row(), leaves[xs[1][3]].leaf_row()
+            if a.form == LeafForm.BALL and b.form == LeafForm.BALL:  # a lens
+                d = math.dist(a.center, b.center)  # type: ignore[arg-type]
+                lens = lens_volume(np.array(a.radius), np.array(b.radius), np.array(d))
                 return (float(lens), box_lo, box_hi, -1, k)
         # an operand whose box lies inside every other operand, each a (convex) primitive, is the result
         small = int(np.argmin(np.prod(hi - lo, axis=1)))
@@ -518,8 +521,8 @@ def _prism_minus_disjoint_prisms(prog: Program, w: NDArray[np.float64], res: int
     tab = leaf_table(prog)
     prism = _prismatic(prog, w)
     kind = tab.kind
-    cyl = (kind == 1) & prism
-    if not prism[0] or not np.all(cyl[1:] | (kind[1:] == 2) & prism[1:]):
+    cyl = (kind == LeafForm.FRUSTUM) & prism
+    if not prism[0] or not np.all(cyl[1:] | (kind[1:] == LeafForm.AXIS_BOX) & prism[1:]):
         return None
     boxes = leaf_boxes(prog)
     order = np.asarray(prog.arg[:-1])  # leaf index of each operand, first operand first
@@ -538,10 +541,8 @@ def _prism_minus_disjoint_prisms(prog: Program, w: NDArray[np.float64], res: int
     area = np.zeros(len(rest))
     rc = cyl[rest]
     if rc.any():
-        from .section import _circle_ring
-
         r = tab.r1[rest][rc]
-        circles = shapely.polygons(_circle_ring(c2[rc], r, res, True))
+        circles = shapely.polygons(circle_ring(c2[rc], r, res, True))
         shapely.prepare(base)
         inner = shapely.contains_properly(base, circles)
         cut = np.where(inner, math.pi * r * r, 0.0)

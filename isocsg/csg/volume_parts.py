@@ -15,6 +15,7 @@ import numpy as np
 import shapely
 from numpy.typing import NDArray
 
+from ..kinds.base import LeafForm
 from .program import (
     OP_DIFFERENCE,
     OP_INTERSECTION,
@@ -135,7 +136,7 @@ def pairwise_union(prog: Program) -> float | None:
         return None
     tab = leaf_table(prog)
     kind = tab.kind
-    if not (np.all(kind == 0) or np.all(kind == 2)):
+    if not (np.all(kind == LeafForm.BALL) or np.all(kind == LeafForm.AXIS_BOX)):
         return None
     distinct = list(dict.fromkeys(prog.leaves))  # A | A = A
     if len(distinct) < n:
@@ -146,7 +147,7 @@ def pairwise_union(prog: Program) -> float | None:
         tab = leaf_table(prog)
     boxes = leaf_boxes(prog)
     i, j = _overlap_pairs(boxes[:, 0], boxes[:, 1])
-    if np.all(kind == 0):
+    if np.all(kind == LeafForm.BALL):
         d = np.linalg.norm(tab.center[i] - tab.center[j], axis=1)
         r1, r2 = tab.radius[i], tab.radius[j]
         keep = d < r1 + r2

@@ -17,7 +17,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from ..errors import InvalidLightError, InvalidParameterError
-from ..geometry.primitives import Solid
+from ..kinds import Solid
 from ..lighting.lights import DirectionalLight, Material, PointLight
 
 __all__ = ["ShadedSurface", "object_surface", "scene_surfaces"]

@@ -47,7 +47,9 @@ def _box(bounds: ArrayLike) -> tuple[np.ndarray, float]:
     return centre, radius
 
 
-def framing_camera(bounds: ArrayLike, *, width: int = DISPLAY_SIZE[0], height: int = DISPLAY_SIZE[1], fov: float = 30.0) -> Camera:
+def framing_camera(
+    bounds: ArrayLike, *, width: int = DISPLAY_SIZE[0], height: int = DISPLAY_SIZE[1], fov: float = 30.0,
+) -> Camera:
     """A camera that sees the whole box ``bounds`` from the front right, above.
 
     The box's bounding sphere fits in the narrower of the two fields of view.
@@ -134,7 +136,7 @@ def scene_svg(scene: Any) -> str | None:
     import os
     import tempfile
 
-    from ..geometry.primitives import Primitive
+    from ..kinds import Primitive
 
     if scene.render.mode != "isoluminance" or not all(isinstance(o.shape, Primitive) for o in scene.objects):
         return None
@@ -161,7 +163,7 @@ def mimebundle(obj: Any, include: Any = None, exclude: Any = None) -> dict[str, 
     ``text/plain`` is the object's own repr; ``image/png`` its picture;
     ``image/svg+xml`` too for scenes that have a vector image.
     """
-    from ..geometry.primitives import Solid
+    from ..kinds import Solid
     from ..scene.model import Scene
 
     out: dict[str, Any] = {"text/plain": repr(obj)}

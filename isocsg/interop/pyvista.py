@@ -93,14 +93,22 @@ def _face_shadows(pv: Any, fs: Any) -> Any:
 
 def _bounds(bounds: ArrayLike | None, what: str) -> NDArray[np.float64]:
     if bounds is None:
-        raise InvalidParameterError(f"bounds must be given for a {what} (it may be unbounded), e.g. [[-5, -5, 0], [5, 5, 5]]")
+        raise InvalidParameterError(
+            f"bounds must be given for a {what} (it may be "
+            "unbounded), e.g. [[-5, -5, 0], [5, 5, 5]]"
+        )
     b = np.asarray(bounds, dtype=np.float64)
     if b.shape != (2, 3) or not np.all(np.isfinite(b)) or np.any(b[1] <= b[0]):
-        raise InvalidParameterError(f"bounds must be a finite [[lo], [hi]] box of shape (2, 3) with lo < hi, got {b.tolist()}")
+        raise InvalidParameterError(
+            "bounds must be a finite [[lo], [hi]] box of "
+            f"shape (2, 3) with lo < hi, got {b.tolist()}"
+        )
     return b
 
 
-def _intensity_mesh(pv: Any, vertices: ArrayLike, triangles: ArrayLike, intensity: ArrayLike, **cells: NDArray[Any]) -> Any:
+def _intensity_mesh(
+    pv: Any, vertices: ArrayLike, triangles: ArrayLike, intensity: ArrayLike, **cells: NDArray[Any],
+) -> Any:
     """Triangles with cell data ``intensity`` (active) and further cell arrays."""
     mesh = _triangles(pv, vertices, triangles)
     mesh.cell_data["intensity"] = np.asarray(intensity, dtype=np.float64)
@@ -196,7 +204,7 @@ def to_pyvista(
     True
     """
     from ..csg.surface import CSGSurface
-    from ..geometry.primitives import Solid
+    from ..kinds import Solid
     from ..laminae.model import BandMesh, LaminaSet
     from ..scene.model import Scene
     from ..shadows.luxmap import LuxGrid, LuxMap

@@ -35,12 +35,14 @@ from __future__ import annotations
 import enum
 import functools
 import math
+from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any, ClassVar
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from .._late import late
 from .._validation import Vec3, length_floor, points_array
 from ..errors import InvalidGeometryError, InvalidParameterError
 
@@ -101,31 +103,21 @@ class Solid:
     __slots__ = ()
 
     def __or__(self, other: Solid) -> Solid:
-        from ..csg import union
-
-        return union(self, other)
+        return late("union")(self, other)
 
     def __and__(self, other: Solid) -> Solid:
-        from ..csg import intersection
-
-        return intersection(self, other)
+        return late("intersection")(self, other)
 
     def __sub__(self, other: Solid) -> Solid:
-        from ..csg import difference
-
-        return difference(self, other)
+        return late("difference")(self, other)
 
     def _repr_mimebundle_(self, include: Any = None, exclude: Any = None) -> dict[str, Any]:
         """Rich display in Jupyter: a small PNG image (see :mod:`isocsg.interop.notebook`)."""
-        from ..interop.notebook import mimebundle
-
-        return mimebundle(self, include, exclude)
+        return late("mimebundle")(self, include, exclude)
 
     def _repr_png_(self) -> bytes | None:
         """A small PNG image of the object (see :mod:`isocsg.interop.notebook`)."""
-        from ..interop.notebook import mimebundle
-
-        return mimebundle(self, ("image/png",)).get("image/png")
+        return late("mimebundle")(self, ("image/png",)).get("image/png")
 
     # ------------------------------------------------------------ transforms
     def transform(self, matrix: ArrayLike) -> Solid:
@@ -135,7 +127,7 @@ class Solid:
         ----------
         matrix : array_like, shape (4, 4) or (3, 4)
             Finite, invertible, with a condition number at most
-            :data:`isocsg.geometry.transforms.MAX_CONDITION`.
+            :data:`isocsg.kinds.affine.MAX_CONDITION`.
 
         Returns
         -------
@@ -155,9 +147,15 @@ class Solid:
         >>> Sphere((0, 0, 0), 1).transform([[2, 0, 0, 1], [0, 2, 0, 0], [0, 0, 2, 0]])
         Sphere(center=(1.0, 0.0, 0.0), radius=2.0)
         """
-        from ..geometry.transforms import transform_solid
+        from .affine import affine_matrix
 
-        return transform_solid(self, matrix)
+        m = affine_matrix(matrix)
+        return self._affine(m[:3, :3], m[:3, 3])
+
+    def _affine(self, A: NDArray[np.float64], t: NDArray[np.float64]) -> Solid:
+        """The image under ``x -> A x + t`` (``A`` validated by :func:`~isocsg.kinds.affine.affine_matrix`):
+        each kind maps itself (:meth:`Primitive._affine`), a CSG node maps its leaves."""
+        raise InvalidGeometryError(f"transform needs a solid (primitive or CSG node), got {type(self).__name__}")
 
     def translate(self, v: ArrayLike) -> Solid:
         """The solid moved by ``v`` (metres).
@@ -168,7 +166,7 @@ class Solid:
         >>> Sphere((0, 0, 0), 1).translate((1, 2, 3)).center
         (1.0, 2.0, 3.0)
         """
-        from ..geometry.transforms import translation_matrix
+        from .affine import translation_matrix
 
         return self.transform(translation_matrix(v))
 
@@ -189,7 +187,7 @@ class Solid:
         >>> Box((1, 0, 0), (2, 1, 1)).rotate((0, 0, 90))
         Box(center=(0.0, 1.0, 0.0), size=(1.0, 2.0, 1.0))
         """
-        from ..geometry.transforms import axis_angle_matrix, rotation_matrix
+        from .affine import axis_angle_matrix, rotation_matrix
 
         if axis is not None or np.ndim(v) == 0:
             return self.transform(axis_angle_matrix(v, (0.0, 0.0, 1.0) if axis is None else axis))  # type: ignore[arg-type]
@@ -197,13 +195,13 @@ class Solid:
 
     def scale(self, s: ArrayLike) -> Solid:
         """The solid scaled about the origin by a number or per axis ``[sx, sy, sz]``."""
-        from ..geometry.transforms import scale_matrix
+        from .affine import scale_matrix
 
         return self.transform(scale_matrix(s))
 
     def mirror(self, normal: ArrayLike) -> Solid:
         """The solid reflected in the plane through the origin with ``normal`` (OpenSCAD's ``mirror``)."""
-        from ..geometry.transforms import mirror_matrix
+        from .affine import mirror_matrix
 
         return self.transform(mirror_matrix(normal))
 
@@ -264,6 +262,8 @@ def check_tolerance(name: str, tol: float | None, default: float) -> float:
 
 
 TangentCone = tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.bool_]]
+#: :meth:`Primitive.leaf_boxes`: lo, hi (n, 3), ball (n,), center (n, 3), radius (n,).
+LeafBoxes = tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.bool_], NDArray[np.float64], NDArray[np.float64]]
 
 
 class Primitive(Solid):
@@ -332,7 +332,7 @@ class Primitive(Solid):
         metres (>= 0; default :meth:`tolerance`)."""
         p = self._points(points)
         limit = check_tolerance(f"{type(self).__name__}.contains(tol)", tol, self.tolerance())
-        return self.signed_distance(p) <= limit  # type: ignore[no-any-return]
+        return self.signed_distance(p) <= limit
 
     def normals_at(self, points: ArrayLike) -> NDArray[np.float64]:  # pragma: no cover
         """Outward unit normals at surface points."""
@@ -361,18 +361,23 @@ class Primitive(Solid):
     # ------------------------------------------------------------ bands
     def band_surface(
         self, lights: list[Any], contours: int, eye: NDArray[np.float64] | None, shininess: float,
-        weights: tuple[float, float] = (1.0, 1.0), segments: int | None = None, *, hidden: tuple[Any, Any] | None = None,
+        weights: tuple[float, float] = (1.0, 1.0), segments: int | None = None, *,
+        hidden: tuple[Any, Any] | None = None,
     ) -> Surface:  # pragma: no cover
         """The base mesh its isoluminance bands are cut from (:mod:`isocsg.laminae`): exact vertices
         and normals, fine enough for every light's field. ``segments`` is a tessellation hint for a
         leaf small on screen; ``hidden`` a box outside which nothing shows (may be ignored)."""
         raise NotImplementedError
 
-    def contour_laminae(self, light: Any, contours: int) -> list[tuple[NDArray[np.float64], NDArray[np.float64], float, str]]:
+    def contour_laminae(
+        self, light: Any, contours: int,
+    ) -> list[tuple[NDArray[np.float64], NDArray[np.float64], float, str]]:
         """The seed's planar contour laminae of one light (none by default: the bands carry the image)."""
         return []
 
-    def contour_family(self, light: Any, contours: int) -> tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.float64]] | None:
+    def contour_family(
+        self, light: Any, contours: int,
+    ) -> tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.float64]] | None:
         """The planes of :meth:`contour_laminae`: ``(normal, offsets, levels)``, or None."""
         return None
 
@@ -412,6 +417,19 @@ class Primitive(Solid):
     def leaf_row(self) -> LeafRow:
         """The kind's row of the batched leaf tables (default: :attr:`LeafForm.GENERIC`)."""
         return LeafRow(LeafForm.GENERIC, center=0.5 * (self.bounds[0] + self.bounds[1]))
+
+    @classmethod
+    def leaf_boxes(cls, leaves: Sequence[Primitive]) -> LeafBoxes:
+        """Batched over ``leaves`` (all of this class): their bounds, whether each is a ball, and a
+        centre and radius (a ball's own; an axial kind's axis centre and largest radius; else zero).
+        What the renderer plans with before any band is built (:func:`isocsg.rendering.tiles.leaf_geometry`);
+        a kind with many leaves reads its parameters in one vectorised pass. Default: each ``bounds``."""
+        n = len(leaves)
+        lo = np.empty((n, 3))
+        hi = np.empty((n, 3))
+        for k, p in enumerate(leaves):
+            lo[k], hi[k] = np.asarray(p.bounds, dtype=np.float64)
+        return lo, hi, np.zeros(n, np.bool_), np.zeros((n, 3)), np.zeros(n)
 
     # ------------------------------------------------------------ meshes and shadows
     def to_polyhedron(self, resolution: int = DEFAULT_RESOLUTION) -> ConvexPolyhedron:  # pragma: no cover
@@ -461,7 +479,7 @@ class Primitive(Solid):
         raise InvalidGeometryError(f"save_openscad cannot write a {type(self).__name__}: its kind has no OpenSCAD form")
 
     def _affine(self, A: NDArray[np.float64], t: NDArray[np.float64]) -> Primitive:  # pragma: no cover
-        """The image under ``x -> A x + t`` (``A`` validated by :func:`~isocsg.geometry.transforms.affine_matrix`)."""
+        """The image under ``x -> A x + t`` (``A`` validated by :func:`~isocsg.kinds.affine.affine_matrix`)."""
         raise NotImplementedError
 
 
@@ -486,7 +504,10 @@ def _check_length(name: str, value: float, *positions: Any, what: str = "") -> N
     floor = length_floor(*positions)
     if value < floor:
         verb = f"have {what}" if what else "be"
-        raise InvalidGeometryError(f"{name} must {verb} >= {floor:g} (the smallest length at this position), got {value:g}")
+        raise InvalidGeometryError(
+            f"{name} must {verb} >= {floor:g} (the smallest "
+            f"length at this position), got {value:g}"
+        )
 
 
 def _unit(v: Vec3) -> NDArray[np.float64]:

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any, ClassVar
 
@@ -13,6 +14,7 @@ from ..errors import InvalidGeometryError
 from .base import (
     DEFAULT_RESOLUTION,
     IDENTITY3,
+    LeafBoxes,
     LeafForm,
     LeafRow,
     Primitive,
@@ -70,6 +72,9 @@ class Box(Primitive):
     size: Vec3
     orientation: tuple[Vec3, Vec3, Vec3] = IDENTITY3
     kind: ClassVar[str] = "box"
+
+    if TYPE_CHECKING:  # the constructor as callers call it: array-likes, checked in __post_init__
+        def __init__(self, center: ArrayLike, size: ArrayLike, orientation: ArrayLike = IDENTITY3) -> None: ...
 
     def __post_init__(self) -> None:
         center = vector3("Box.center", self.center)
@@ -237,6 +242,25 @@ class Box(Primitive):
         """Its 8 corners."""
         return np.asarray(self.corners, dtype=np.float64)
 
+    @classmethod
+    def leaf_boxes(cls, leaves: Sequence[Primitive]) -> LeafBoxes:
+        """Axis-aligned boxes read from their parameters in one pass; turned boxes give ``bounds``."""
+        n = len(leaves)
+        lo, hi = np.empty((n, 3)), np.empty((n, 3))
+        b_idx: list[int] = []
+        b_par: list[tuple[float, ...]] = []
+        for i, p in enumerate(leaves):
+            if p.axis_aligned:  # type: ignore[attr-defined]
+                b_idx.append(i)
+                b_par.append((*p.center, *p.size))  # type: ignore[attr-defined]
+            else:
+                lo[i], hi[i] = np.asarray(p.bounds, dtype=np.float64)
+        if b_idx:
+            a = np.asarray(b_par, dtype=np.float64)
+            lo[b_idx] = a[:, :3] - a[:, 3:] / 2
+            hi[b_idx] = a[:, :3] + a[:, 3:] / 2
+        return lo, hi, np.zeros(n, np.bool_), np.zeros((n, 3)), np.zeros(n)
+
     def leaf_row(self) -> LeafRow:
         """An :attr:`LeafForm.AXIS_BOX` row, or a :attr:`LeafForm.HULL` row when turned."""
         if self.axis_aligned:
@@ -252,14 +276,17 @@ class Box(Primitive):
 
     def band_surface(
         self, lights: list[Any], contours: int, eye: NDArray[np.float64] | None, shininess: float,
-        weights: tuple[float, float] = (1.0, 1.0), segments: int | None = None, *, hidden: tuple[Any, Any] | None = None,
+        weights: tuple[float, float] = (1.0, 1.0), segments: int | None = None, *,
+        hidden: tuple[Any, Any] | None = None,
     ) -> Surface:
         """Its faces, subdivided where a point light or a highlight varies across them."""
         from ..laminae.polyhedron import polyhedron_surface
 
         return polyhedron_surface(self, lights, contours, eye=eye, shininess=shininess, weights=weights)
 
-    def contour_laminae(self, light: Any, contours: int) -> list[tuple[NDArray[np.float64], NDArray[np.float64], float, str]]:
+    def contour_laminae(
+        self, light: Any, contours: int,
+    ) -> list[tuple[NDArray[np.float64], NDArray[np.float64], float, str]]:
         """One lamina per face."""
         from ..laminae.polyhedron import face_laminae
 
@@ -269,7 +296,8 @@ class Box(Primitive):
         """A centred ``cube(size)``, turned by the orientation and moved."""
         if digits is not None:
             R = np.eye(3) if self.axis_aligned else np.asarray(self.orientation, dtype=np.float64)
-            return encoded("cube(size = [1, 1, 1], center = true);", R * np.asarray(self.size), self.center_array, digits)
+            return encoded("cube(size = [1, 1, 1], center = true);", R * np.asarray(self.size), self.center_array,
+                           digits)
         body = f"cube(size = {vec(self.size)}, center = true);"
         if self.axis_aligned:
             return translated(np.asarray(self.center), body)

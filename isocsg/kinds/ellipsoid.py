@@ -81,6 +81,9 @@ class Ellipsoid(Primitive):
     orientation: tuple[Vec3, Vec3, Vec3] = IDENTITY3
     kind: ClassVar[str] = "ellipsoid"
 
+    if TYPE_CHECKING:  # the constructor as callers call it: array-likes, checked in __post_init__
+        def __init__(self, center: ArrayLike, radii: ArrayLike, orientation: ArrayLike = IDENTITY3) -> None: ...
+
     def __post_init__(self) -> None:
         center = vector3("Ellipsoid.center", self.center)
         radii = vector3("Ellipsoid.radii", self.radii)
@@ -91,7 +94,8 @@ class Ellipsoid(Primitive):
         floor = length_floor(center)
         if min(radii) < floor:
             raise InvalidGeometryError(
-                f"Ellipsoid.radii must be >= {floor:g} in every axis (the smallest length at this position), got {radii}"
+                f"Ellipsoid.radii must be >= {floor:g} in every axis "
+                f"(the smallest length at this position), got {radii}"
             )
         if min(radii) < MIN_ASPECT * max(radii):
             raise InvalidGeometryError(
@@ -279,7 +283,8 @@ class Ellipsoid(Primitive):
 
     def band_surface(
         self, lights: list[Any], contours: int, eye: NDArray[np.float64] | None, shininess: float,
-        weights: tuple[float, float] = (1.0, 1.0), segments: int | None = None, *, hidden: tuple[Any, Any] | None = None,
+        weights: tuple[float, float] = (1.0, 1.0), segments: int | None = None, *,
+        hidden: tuple[Any, Any] | None = None,
     ) -> Surface:
         """Latitude-longitude mesh fine enough for every field (:mod:`isocsg.laminae.ellipsoid`)."""
         from ..laminae.ellipsoid import ellipsoid_surface

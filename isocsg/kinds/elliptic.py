@@ -83,6 +83,9 @@ class EllipticTruncus(Primitive):
     r2: float
     kind: ClassVar[str] = "elliptic_truncus"
 
+    if TYPE_CHECKING:  # the constructor as callers call it: array-likes, checked in __post_init__
+        def __init__(self, center: ArrayLike, matrix: ArrayLike, r1: float, r2: float) -> None: ...
+
     def __post_init__(self) -> None:
         center = vector3("EllipticTruncus.center", self.center)
         try:
@@ -92,11 +95,15 @@ class EllipticTruncus(Primitive):
         if m.shape != (3, 3):
             raise InvalidGeometryError(f"EllipticTruncus.matrix must have shape (3, 3), got {m.shape}")
         if not np.all(np.isfinite(m)) or np.any(np.abs(m) > MAX_ABS_COORD):
-            raise InvalidGeometryError(f"EllipticTruncus.matrix must be finite and within +-{MAX_ABS_COORD:g}, got {m.tolist()}")
+            raise InvalidGeometryError(
+                "EllipticTruncus.matrix must be finite and "
+                f"within +-{MAX_ABS_COORD:g}, got {m.tolist()}"
+            )
         sv = np.linalg.svd(m, compute_uv=False)
         if not sv[-1] > 0 or sv[0] / sv[-1] > _MAX_CONDITION:
             raise InvalidGeometryError(
-                f"EllipticTruncus.matrix must be invertible with a condition number <= {_MAX_CONDITION:g}, got {m.tolist()}"
+                "EllipticTruncus.matrix must be invertible with a "
+                f"condition number <= {_MAX_CONDITION:g}, got {m.tolist()}"
             )
         r1 = scalar("EllipticTruncus.r1", self.r1, low=0.0, low_inclusive=True, high=MAX_ABS_COORD)
         r2 = scalar("EllipticTruncus.r2", self.r2, low=0.0, low_inclusive=True, high=MAX_ABS_COORD)
@@ -132,7 +139,7 @@ class EllipticTruncus(Primitive):
     def to_canonical(self, points: ArrayLike) -> NDArray[np.float64]:
         """Points in the canonical frame: ``matrix^-1 (p - center)``."""
         p = np.asarray(points, dtype=np.float64).reshape(-1, 3) - self.center_array
-        return np.linalg.solve(self.linear, p.T).T
+        return np.asarray(np.linalg.solve(self.linear, p.T).T, dtype=np.float64)
 
     def _normals_to_world(self, m: NDArray[np.float64]) -> NDArray[np.float64]:
         n = np.linalg.solve(self.linear.T, m.T).T  # M^-T m, row-wise
@@ -246,7 +253,8 @@ class EllipticTruncus(Primitive):
 
     def band_surface(
         self, lights: list[Any], contours: int, eye: NDArray[np.float64] | None, shininess: float,
-        weights: tuple[float, float] = (1.0, 1.0), segments: int | None = None, *, hidden: tuple[Any, Any] | None = None,
+        weights: tuple[float, float] = (1.0, 1.0), segments: int | None = None, *,
+        hidden: tuple[Any, Any] | None = None,
     ) -> Surface:
         """Side and end meshes fine enough for every field (:mod:`isocsg.laminae.elliptic`)."""
         from ..laminae.elliptic import elliptic_surface
@@ -267,7 +275,8 @@ class EllipticTruncus(Primitive):
 
     def to_dict(self) -> dict[str, Any]:
         """``{"elliptic_truncus": {"center", "matrix", "r1", "r2"}}``."""
-        return {"elliptic_truncus": {"center": list(self.center), "matrix": [list(r) for r in self.matrix], "r1": self.r1, "r2": self.r2}}
+        return {"elliptic_truncus": {"center": list(self.center), "matrix": [list(r) for r in self.matrix],
+                                     "r1": self.r1, "r2": self.r2}}
 
 
 def _keeps_circles(M: NDArray[np.float64]) -> bool:
@@ -275,7 +284,7 @@ def _keeps_circles(M: NDArray[np.float64]) -> bool:
     u, v, a = M[:, 0], M[:, 1], M[:, 2]
     nu, nv, na = (float(np.linalg.norm(x)) for x in (u, v, a))
     tol = 1e-9
-    return (
+    return bool(
         abs(nu - nv) <= tol * max(nu, nv)
         and abs(u @ v) <= tol * nu * nv
         and abs(u @ a) <= tol * nu * na

@@ -29,7 +29,9 @@ def hull_polygon(pts2: NDArray[np.float64]) -> Polygon:
     return hull if isinstance(hull, Polygon) and hull.area > 0 else EMPTY
 
 
-def circle_ring(centers: NDArray[np.float64], radii: NDArray[np.float64], resolution: int, area_exact: bool) -> NDArray[np.float64]:
+def circle_ring(
+    centers: NDArray[np.float64], radii: NDArray[np.float64], resolution: int, area_exact: bool,
+) -> NDArray[np.float64]:
     """Rings ``(k, resolution, 2)`` of regular polygons for circles: inscribed, or of the circles' exact areas."""
     ang = np.linspace(0.0, 2.0 * math.pi, resolution, endpoint=False)
     a = 2.0 * math.pi / resolution

@@ -41,7 +41,9 @@ __all__ = ["ConvexPolyhedron"]
 
 
 
-def _hull(points: NDArray[np.float64], name: str) -> tuple[NDArray[np.float64], list[NDArray[np.int64]], NDArray[np.float64], NDArray[np.float64], NDArray[np.int64]]:
+def _hull(
+    points: NDArray[np.float64], name: str,
+) -> tuple[NDArray[np.float64], list[NDArray[np.int64]], NDArray[np.float64], NDArray[np.float64], NDArray[np.int64]]:
     """Convex hull as merged planar faces.
 
     Returns hull vertices, faces (vertex indices counter-clockwise seen from
@@ -118,6 +120,9 @@ class ConvexPolyhedron(Primitive):
     face_offsets: NDArray[np.float64] = field(init=False, repr=False, compare=False, hash=False)
     triangles: NDArray[np.int64] = field(init=False, repr=False, compare=False, hash=False)
     kind: ClassVar[str] = "polyhedron"
+
+    if TYPE_CHECKING:  # the constructor as callers call it: array-likes, checked in __post_init__
+        def __init__(self, vertices: ArrayLike) -> None: ...
 
     def __post_init__(self) -> None:
         name = f"{type(self).__name__}.vertices"
@@ -223,7 +228,8 @@ class ConvexPolyhedron(Primitive):
 
     def band_surface(
         self, lights: list[Any], contours: int, eye: NDArray[np.float64] | None, shininess: float,
-        weights: tuple[float, float] = (1.0, 1.0), segments: int | None = None, *, hidden: tuple[Any, Any] | None = None,
+        weights: tuple[float, float] = (1.0, 1.0), segments: int | None = None, *,
+        hidden: tuple[Any, Any] | None = None,
     ) -> Surface:
         """Its faces (flat: ``segments`` does not apply), subdivided where a point light or a
         highlight varies across them (:func:`isocsg.laminae.polyhedron.polyhedron_surface`)."""
@@ -231,7 +237,9 @@ class ConvexPolyhedron(Primitive):
 
         return polyhedron_surface(self, lights, contours, eye=eye, shininess=shininess, weights=weights)
 
-    def contour_laminae(self, light: Any, contours: int) -> list[tuple[NDArray[np.float64], NDArray[np.float64], float, str]]:
+    def contour_laminae(
+        self, light: Any, contours: int,
+    ) -> list[tuple[NDArray[np.float64], NDArray[np.float64], float, str]]:
         """One lamina per face."""
         from ..laminae.polyhedron import face_laminae
 

@@ -8,6 +8,7 @@ shadow pieces are inscribed UV spheres.
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any, ClassVar
 
@@ -17,6 +18,7 @@ from numpy.typing import ArrayLike, NDArray
 from .._validation import MAX_ABS_COORD, Vec3, scalar, vector3
 from .base import (
     DEFAULT_RESOLUTION,
+    LeafBoxes,
     LeafForm,
     LeafRow,
     Primitive,
@@ -66,6 +68,9 @@ class Sphere(Primitive):
     center: Vec3
     radius: float
     kind: ClassVar[str] = "sphere"
+
+    if TYPE_CHECKING:  # the constructor as callers call it: array-likes, checked in __post_init__
+        def __init__(self, center: ArrayLike, radius: float) -> None: ...
 
     def __post_init__(self) -> None:
         center = vector3("Sphere.center", self.center)
@@ -130,7 +135,7 @@ class Sphere(Primitive):
         return ConvexPolyhedron(pts)
 
     def _affine(self, A: NDArray[np.float64], t: NDArray[np.float64]) -> Primitive:
-        from ..geometry.transforms import similarity_factor
+        from .affine import similarity_factor
 
         c = A @ self.center_array + t
         k = similarity_factor(A)
@@ -177,6 +182,12 @@ class Sphere(Primitive):
         """A :attr:`LeafForm.BALL` row."""
         return LeafRow(LeafForm.BALL, center=self.center_array, radius=self.radius)
 
+    @classmethod
+    def leaf_boxes(cls, leaves: Sequence[Primitive]) -> LeafBoxes:
+        """Balls, read from their parameters in one pass."""
+        a = np.asarray([(*p.center, p.radius) for p in leaves], dtype=np.float64).reshape(-1, 4)  # type: ignore[attr-defined]
+        return a[:, :3] - a[:, 3:], a[:, :3] + a[:, 3:], np.ones(len(a), np.bool_), a[:, :3], a[:, 3]
+
     def manifold(self, resolution: int, shapes: dict[tuple[Any, ...], Any] | None = None) -> Any:
         """manifold3d's sphere (it rounds the segment count up to a multiple of 4), moved."""
         shapes = {} if shapes is None else shapes
@@ -187,7 +198,8 @@ class Sphere(Primitive):
 
     def band_surface(
         self, lights: list[Any], contours: int, eye: NDArray[np.float64] | None, shininess: float,
-        weights: tuple[float, float] = (1.0, 1.0), segments: int | None = None, *, hidden: tuple[Any, Any] | None = None,
+        weights: tuple[float, float] = (1.0, 1.0), segments: int | None = None, *,
+        hidden: tuple[Any, Any] | None = None,
     ) -> Surface:
         """Latitude-longitude mesh about the first light's axis, its contour circles as mesh edges
         (``segments`` longitudes, by default :data:`isocsg.laminae.sphere.LONGITUDES`)."""
@@ -197,13 +209,17 @@ class Sphere(Primitive):
         levels = diffuse_levels(np.array([-1.0, 1.0]), contours)
         return sphere_surface(self, lights[0] if lights else None, levels, LONGITUDES if segments is None else segments)
 
-    def contour_laminae(self, light: Any, contours: int) -> list[tuple[NDArray[np.float64], NDArray[np.float64], float, str]]:
+    def contour_laminae(
+        self, light: Any, contours: int,
+    ) -> list[tuple[NDArray[np.float64], NDArray[np.float64], float, str]]:
         """The seed's contour discs."""
         from ..laminae.sphere import sphere_laminae
 
         return [(v, nrm, c, "contour") for v, nrm, c in sphere_laminae(self, light, contours)]
 
-    def contour_family(self, light: Any, contours: int) -> tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.float64]]:
+    def contour_family(
+        self, light: Any, contours: int,
+    ) -> tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.float64]]:
         """Contour planes across the centre-light axis at the heights of cosines ``k / N``."""
         from ..laminae.sphere import contour_heights, light_axis
 

@@ -127,6 +127,9 @@ class Torus(Primitive):
     convex: ClassVar[bool] = False
     max_intervals: ClassVar[int] = 2
 
+    if TYPE_CHECKING:  # the constructor as callers call it: array-likes, checked in __post_init__
+        def __init__(self, center: ArrayLike, axis: ArrayLike, major: float, minor: float) -> None: ...
+
     def __post_init__(self) -> None:
         center = vector3("Torus.center", self.center)
         axis = vector3("Torus.axis", self.axis)
@@ -455,7 +458,7 @@ class Torus(Primitive):
 
     def _affine(self, A: NDArray[np.float64], t: NDArray[np.float64]) -> Primitive:
         """Rigid maps and uniform scales (with reflections) keep a torus; other maps are refused."""
-        from ..geometry.transforms import similarity_factor
+        from .affine import similarity_factor
 
         k = similarity_factor(A)
         if k is None:

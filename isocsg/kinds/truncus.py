@@ -9,6 +9,7 @@ bands are the seed's appendix construction (:mod:`isocsg.laminae.truncus`).
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any, ClassVar
 
@@ -28,6 +29,7 @@ from .._validation import (
 from ..errors import InvalidGeometryError
 from .base import (
     DEFAULT_RESOLUTION,
+    LeafBoxes,
     LeafForm,
     LeafRow,
     Primitive,
@@ -88,6 +90,9 @@ class Truncus(Primitive):
     r1: float
     r2: float
     kind: ClassVar[str] = "truncus"
+
+    if TYPE_CHECKING:  # the constructor as callers call it: array-likes, checked in __post_init__
+        def __init__(self, center: ArrayLike, axis: ArrayLike, r1: float, r2: float) -> None: ...
 
     def __post_init__(self) -> None:
         name = type(self).__name__
@@ -410,8 +415,23 @@ class Truncus(Primitive):
 
     def leaf_row(self) -> LeafRow:
         """A :attr:`LeafForm.FRUSTUM` row."""
-        return LeafRow(LeafForm.FRUSTUM, center=self.center_array, axis=self.unit_axis, height=self.height, r1=self.r1, r2=self.r2,
+        return LeafRow(LeafForm.FRUSTUM, center=self.center_array, axis=self.unit_axis, height=self.height,
+                       r1=self.r1, r2=self.r2,
                        axis_vector=np.asarray(self.axis, dtype=np.float64))
+
+    @classmethod
+    def leaf_boxes(cls, leaves: Sequence[Primitive]) -> LeafBoxes:
+        """Trunci, read from their parameters in one pass: bounds of the end circles, the centre and
+        the larger end radius."""
+        a = np.asarray([(*p.center, *p.axis, p.r1, p.r2) for p in leaves],  # type: ignore[attr-defined]
+                       dtype=np.float64).reshape(-1, 8)
+        c, ax, r1, r2 = a[:, :3], a[:, 3:6], a[:, 6:7], a[:, 7:8]
+        u = ax / np.linalg.norm(ax, axis=1, keepdims=True)
+        ext = np.sqrt(np.clip(1 - u**2, 0, 1))  # half-extent of a unit circle normal to the axis
+        e1, e2 = c + ax / 2, c - ax / 2
+        lo = np.minimum(e1 - r1 * ext, e2 - r2 * ext)
+        hi = np.maximum(e1 + r1 * ext, e2 + r2 * ext)
+        return lo, hi, np.zeros(len(a), np.bool_), c, np.maximum(r1, r2)[:, 0]
 
     def clipped_to_box(self, lo: NDArray[np.float64], hi: NDArray[np.float64]) -> Primitive:
         """The part of the axis within the box's extent along it (and within the box grown by the
@@ -455,7 +475,8 @@ class Truncus(Primitive):
 
     def band_surface(
         self, lights: list[Any], contours: int, eye: NDArray[np.float64] | None, shininess: float,
-        weights: tuple[float, float] = (1.0, 1.0), segments: int | None = None, *, hidden: tuple[Any, Any] | None = None,
+        weights: tuple[float, float] = (1.0, 1.0), segments: int | None = None, *,
+        hidden: tuple[Any, Any] | None = None,
     ) -> Surface:
         """Side and end meshes (:func:`isocsg.laminae.truncus.truncus_surface`), with at least
         ``segments`` generators (by default ``truncus.GENERATORS``); ends outside the box ``hidden``
@@ -463,22 +484,26 @@ class Truncus(Primitive):
         from ..laminae.truncus import GENERATORS, truncus_surface
 
         seg = GENERATORS if segments is None else segments
-        return truncus_surface(self, lights, contours, eye=eye, shininess=shininess, weights=weights, segments=seg, hidden=hidden)
+        return truncus_surface(self, lights, contours, eye=eye, shininess=shininess, weights=weights, segments=seg,
+                               hidden=hidden)
 
-    def contour_laminae(self, light: Any, contours: int) -> list[tuple[NDArray[np.float64], NDArray[np.float64], float, str]]:
+    def contour_laminae(
+        self, light: Any, contours: int,
+    ) -> list[tuple[NDArray[np.float64], NDArray[np.float64], float, str]]:
         """The appendix's quads and end laminae."""
         from ..laminae.truncus import truncus_laminae
 
         return truncus_laminae(self, light, contours)
 
-    def contour_family(self, light: Any, contours: int) -> tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.float64]]:
+    def contour_family(
+        self, light: Any, contours: int,
+    ) -> tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.float64]]:
         """The quads' planes: cosine-spaced offsets across the axis, the seed's levels."""
         from ..laminae.sphere import light_axis
         from ..laminae.truncus import light_frame, paper_levels
-        from ..lighting.lights import DirectionalLight
 
         ct = self.center_array
-        ln = light.unit_direction if isinstance(light, DirectionalLight) else light_axis(ct, light)
+        ln = light_axis(ct, light)  # a directional light's unit direction, else towards the light
         w, _ = light_frame(self.unit_axis, ln)
         r = max(self.r1, self.r2)
         offsets = float(w @ ct) + np.cos(np.pi * np.arange(contours + 1) / contours) * r
@@ -564,7 +589,9 @@ class Cone(Truncus):
         return {"cone": {"center": list(self.center), "axis": list(self.axis), "radius": self.radius}}
 
 
-def _truncus_meridian(prim: Truncus, p: NDArray[np.float64]) -> tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.float64]]:
+def _truncus_meridian(
+    prim: Truncus, p: NDArray[np.float64],
+) -> tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.float64]]:
     """Axial coordinate s, radial distance rho, unit radial direction of points (truncus frame)."""
     a = prim.unit_axis
     rel = p - prim.center_array
@@ -575,7 +602,9 @@ def _truncus_meridian(prim: Truncus, p: NDArray[np.float64]) -> tuple[NDArray[np
     return s, rho, er
 
 
-def _segment_distance(px: NDArray[np.float64], py: NDArray[np.float64], ax: float, ay: float, bx: float, by: float) -> NDArray[np.float64]:
+def _segment_distance(
+    px: NDArray[np.float64], py: NDArray[np.float64], ax: float, ay: float, bx: float, by: float,
+) -> NDArray[np.float64]:
     """Distance of 2D points to one segment."""
     dx, dy = bx - ax, by - ay
     ll = dx * dx + dy * dy
@@ -658,7 +687,8 @@ def truncus_section(t: Truncus, F: NDArray[np.float64], resolution: int, area_ex
             if not ok_all.all():
                 continue
         m = max(int(math.ceil(resolution * (hi - lo) / two_pi / 2)), 2)
-        ph = refined_parameters(lambda x: surface(np.clip(sigma(x)[0], -h2, h2), x), lo, hi, m, 4 * math.pi / resolution)
+        ph = refined_parameters(lambda x: surface(np.clip(sigma(x)[0], -h2, h2), x), lo, hi, m,
+                                4 * math.pi / resolution)
         P = surface(np.clip(sigma(ph)[0], -h2, h2), ph)
         pts.append(simpson_points(P, closed=False) if area_exact else P)
     if not pts:

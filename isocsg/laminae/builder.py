@@ -264,7 +264,10 @@ def _hidden_box(hidden: ArrayLike) -> tuple[tuple[float, float, float], tuple[fl
     try:
         box = np.asarray(hidden, dtype=np.float64)
     except (TypeError, ValueError):
-        raise InvalidParameterError(f"hidden must be a (2, 3) array of numbers (lo, hi), got {type(hidden).__name__}") from None
+        raise InvalidParameterError(
+            "hidden must be a (2, 3) array of numbers "
+            f"(lo, hi), got {type(hidden).__name__}"
+        ) from None
     if box.shape != (2, 3):
         raise InvalidParameterError(f"hidden must have shape (2, 3) (lo, hi), got {box.shape}")
     if not np.all(np.isfinite(box)) or np.any(box[0] > box[1]):
@@ -279,7 +282,8 @@ def _cached(
 ) -> LaminaSet:
     if not isinstance(primitive, Primitive) or not provides(primitive, "band_surface"):
         raise InvalidParameterError(
-            f"primitive must be a Sphere, Truncus, Box, ConvexPolyhedron or another registered kind with a band surface, "
+            "primitive must be a Sphere, Truncus, Box, ConvexPolyhedron "
+            "or another registered kind with a band surface, "
             f"got {type(primitive).__name__}"
         )
     lights_t = _check_lights(lights)
@@ -366,7 +370,9 @@ def _surface(
     return primitive.band_surface(list(lights), n, eye, shininess, weights, segments, hidden=hidden)
 
 
-def _paper_laminae(primitive: Primitive, light: Light, n: int) -> list[tuple[NDArray[np.float64], NDArray[np.float64], float, str]]:
+def _paper_laminae(
+    primitive: Primitive, light: Light, n: int,
+) -> list[tuple[NDArray[np.float64], NDArray[np.float64], float, str]]:
     # curved kinds without planar contours (an ellipsoid): none, the bands carry the image
     return primitive.contour_laminae(light, n)
 
@@ -438,7 +444,9 @@ def _build(
     return LaminaSet(primitive, tuple(laminae), families, bands, view_dependent=eye is not None)
 
 
-def _cut(surf: Surface, fams: list[FieldFamily], mat: Material, n: int, hidden: tuple[Any, Any] | None = None) -> BandMesh:
+def _cut(
+    surf: Surface, fams: list[FieldFamily], mat: Material, n: int, hidden: tuple[Any, Any] | None = None,
+) -> BandMesh:
     """Cut the surface along every family's levels and give each piece its value.
 
     Each smooth part (sphere, truncus side or end, polyhedron face) is cut at

@@ -27,7 +27,9 @@ MAX_RINGS = 256
 _SAMPLES = 129
 
 
-def _world(e: EllipticTruncus, y: NDArray[np.float64], m: NDArray[np.float64]) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+def _world(
+    e: EllipticTruncus, y: NDArray[np.float64], m: NDArray[np.float64],
+) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
     """Canonical points and normals -> points relative to the centre and unit world normals."""
     M = e.linear
     pts = y @ M.T
@@ -36,7 +38,9 @@ def _world(e: EllipticTruncus, y: NDArray[np.float64], m: NDArray[np.float64]) -
     return pts, n
 
 
-def _side(e: EllipticTruncus, z: NDArray[np.float64], phi: NDArray[np.float64]) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+def _side(
+    e: EllipticTruncus, z: NDArray[np.float64], phi: NDArray[np.float64],
+) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
     k = e.r1 - e.r2  # canonical height 1
     r = e.r2 + k * (z + 0.5)
     c, s = np.cos(phi), np.sin(phi)

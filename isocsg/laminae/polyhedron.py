@@ -8,14 +8,20 @@ lights) so that the face is cut along its exact level lines.
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 from numpy.typing import NDArray
 
 from ..lighting.lights import DirectionalLight, PointLight
 from .surface import (
-    Surface, curvature_spacing, eye_reference_distance, light_reference_distance, orient_outward, pieces, refinement,
+    Surface,
+    curvature_spacing,
+    eye_reference_distance,
+    light_reference_distance,
+    orient_outward,
+    pieces,
+    refinement,
     specular_refinement,
 )
 
@@ -28,7 +34,9 @@ __all__ = ["face_laminae", "polyhedron_surface"]
 Light = PointLight | DirectionalLight
 
 
-def _faces(poly: Box | ConvexPolyhedron) -> tuple[NDArray[np.float64], list[tuple[NDArray[np.float64], NDArray[np.float64]]]]:
+def _faces(
+    poly: Box | ConvexPolyhedron,
+) -> tuple[NDArray[np.float64], list[tuple[NDArray[np.float64], NDArray[np.float64]]]]:
     """The kind's local origin and its faces relative to it (counter-clockwise from outside) with
     their unit outward normals (``local_faces`` of a polyhedral kind)."""
     origin, polys = poly.local_faces()
@@ -41,7 +49,9 @@ def _faces(poly: Box | ConvexPolyhedron) -> tuple[NDArray[np.float64], list[tupl
     return origin, out
 
 
-def face_laminae(poly: Box | ConvexPolyhedron, light: Light) -> list[tuple[NDArray[np.float64], NDArray[np.float64], float]]:
+def face_laminae(
+    poly: Box | ConvexPolyhedron, light: Light,
+) -> list[tuple[NDArray[np.float64], NDArray[np.float64], float]]:
     """One lamina per face: (vertices, outward normal, incidence cosine at the face centroid)."""
     out = []
     origin, faces = _faces(poly)
@@ -56,10 +66,12 @@ def face_laminae(poly: Box | ConvexPolyhedron, light: Light) -> list[tuple[NDArr
     return out
 
 
-def _subdivided_triangle(a: NDArray[np.float64], b: NDArray[np.float64], c: NDArray[np.float64], s: int) -> tuple[NDArray[np.float64], NDArray[np.int64]]:
+def _subdivided_triangle(
+    a: NDArray[np.float64], b: NDArray[np.float64], c: NDArray[np.float64], s: int,
+) -> tuple[NDArray[np.float64], NDArray[np.int64]]:
     """Barycentric grid of ``s * s`` triangles; points on an edge depend on that edge's ends only."""
-    idx = {}
-    pts = []
+    idx: dict[tuple[int, int], int] = {}
+    pts: list[Any] = []
     for i in range(s + 1):
         for j in range(s + 1 - i):
             k = s - i - j

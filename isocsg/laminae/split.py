@@ -21,7 +21,7 @@ from numba import njit
 from numpy.typing import NDArray
 
 from ..errors import InvalidParameterError
-from ..geometry.halfedges import sorted_half_edges
+from .halfedges import sorted_half_edges
 
 __all__ = ["SplitMesh", "split_by_levels", "mesh_edges", "MAX_PIECES"]
 

@@ -34,7 +34,13 @@ from ..kinds.truncus import Truncus
 from ..lighting.lights import DirectionalLight, PointLight
 from .families import diffuse_levels
 from .surface import (
-    Surface, curvature_spacing, eye_reference_distance, light_reference_distance, orient_outward, pieces, refinement,
+    Surface,
+    curvature_spacing,
+    eye_reference_distance,
+    light_reference_distance,
+    orient_outward,
+    pieces,
+    refinement,
     specular_refinement,
 )
 

@@ -15,7 +15,7 @@ import warnings
 from pathlib import Path
 
 from ..errors import MissingDependencyError, OpenSCADError
-from ..geometry.primitives import Solid
+from ..kinds import Solid
 from .flat import FN_MAX, MixedDimensionsWarning
 from .lowering import UNSUPPORTED_NODES, LoweredModel, lower
 from .parser import MAX_CSG_TEXT, CSGCall, parse_csg

@@ -20,7 +20,7 @@ from __future__ import annotations
 
 import math
 import warnings
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
 import numpy as np
 from numpy.typing import NDArray
@@ -28,8 +28,9 @@ from numpy.typing import NDArray
 from ..errors import InvalidGeometryError
 from .parser import CSGCall
 
-if TYPE_CHECKING:
-    from .lowering import _Lowerer
+# The lowering context (lowering._Lowerer) that calls these functions; typed loosely so that this
+# module, which lowering imports, does not import it back.
+_Lowerer = Any
 
 __all__ = ["FN_MAX", "MixedDimensionsWarning", "shape_of", "extrude", "polygonal_sides", "cylinder_points",
            "sphere_points"]

@@ -349,7 +349,7 @@ def _vec3(lw: _Lowerer, call: CSGCall, name: str, value: Any, pad: float) -> NDA
 
 def _hand_matrix(lw: _Lowerer, call: CSGCall) -> NDArray[np.float64]:
     """The matrices of hand-written transforms, as OpenSCAD builds them."""
-    from ..geometry.transforms import axis_angle_matrix, mirror_matrix, rotation_matrix
+    from ..kinds.affine import axis_angle_matrix, mirror_matrix, rotation_matrix
 
     name = call.name
     m = np.eye(4)

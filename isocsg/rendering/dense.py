@@ -16,7 +16,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from .. import _workers
-from ..geometry.primitives import Sphere
+from ..kinds.base import LeafForm
 from . import policy
 from .buffers import fill_pool
 from .layers import layer_counts, resolve_dense_layers
@@ -128,7 +128,8 @@ def _fill_leaves(
     built = obj.built
     # Spheres last: their bands take longer to build than to fill, other
     # leaves' the other way round (Johnson's rule for a two-stage line).
-    order = sorted(range(n), key=lambda i: isinstance(obj.leaves[i], Sphere)) if built is None else range(n)
+    balls = [p.leaf_row().form == LeafForm.BALL for p in obj.leaves] if built is None else []
+    order = sorted(range(n), key=lambda i: balls[i]) if built is None else range(n)
     seen: set[int] = set()
     try:
         for k, i in enumerate(order):

@@ -19,7 +19,7 @@ from numpy.typing import NDArray
 
 from ..camera import Camera
 from ..csg.program import Program
-from ..geometry.primitives import Primitive
+from ..kinds import Primitive
 from ..laminae.builder import DEFAULT_SEGMENTS
 from . import policy
 from .tiles import LeafGeometry, leaf_screen_sizes
@@ -120,7 +120,8 @@ def screen_contours(extent: NDArray[np.float64], contours: int) -> NDArray[np.in
 
 
 def screen_segments(extent: NDArray[np.float64]) -> NDArray[np.int64]:
-    """Tessellation segments of each leaf from its screen size in pixels (see :data:`~isocsg.rendering.policy.CHORD_PIXELS`).
+    """Tessellation segments of each leaf from its screen size in pixels
+    (see :data:`~isocsg.rendering.policy.CHORD_PIXELS`).
 
     Examples
     --------

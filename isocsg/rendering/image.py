@@ -25,7 +25,10 @@ def _image(name: str, image: ArrayLike) -> NDArray[np.float32]:
     try:
         a = np.asarray(image, dtype=np.float32)
     except (TypeError, ValueError):
-        raise InvalidParameterError(f"{name} must be a numeric array of shape (H, W), got {type(image).__name__}") from None
+        raise InvalidParameterError(
+            f"{name} must be a numeric array of shape "
+            f"(H, W), got {type(image).__name__}"
+        ) from None
     if a.ndim != 2 or a.shape[0] < 1 or a.shape[1] < 1:
         raise InvalidParameterError(f"{name} must have shape (H, W), got {a.shape}")
     return a

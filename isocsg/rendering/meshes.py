@@ -106,7 +106,8 @@ class SurfaceRuns(Projected):
                        np.zeros(1, np.int64), np.zeros(0, np.int64))
         nv = np.cumsum([0] + [len(p.vertices) for _, p in parts])
         quads = [p.quads() for _, p in parts]
-        polys = np.vstack([np.where(q[0] >= 0, q[0] + np.int32(o), -1) for q, o in zip(quads, nv[:-1])]).astype(np.int32)
+        polys = np.vstack([np.where(q[0] >= 0, q[0] + np.int32(o), -1)
+                           for q, o in zip(quads, nv[:-1])]).astype(np.int32)
         values = np.concatenate([q[1] for q in quads]).astype(np.float32)
         starts = np.cumsum([0] + [len(q[0]) for q in quads]).astype(np.int64)
         vertices = np.vstack([p.vertices for _, p in parts])

@@ -37,7 +37,7 @@ from ..camera import Camera
 from ..csg.program import Program
 from ..csg.tree import CSGNode
 from ..errors import InvalidParameterError
-from ..geometry.primitives import Primitive
+from ..kinds import Primitive
 from ..laminae.model import BandMesh
 from ..lighting.lights import DirectionalLight, PointLight
 from ..limits import check_memory, memory_budget

@@ -215,8 +215,8 @@ def fill_projected(
     the quads' triangles.
     """
     # No labels and no written rectangle for leaves (both discarded).
-    _fill_polys(proj, polys, vout, vin, near, perspective, np.bool_(True), np.int64(-1), ox, oy, zf, vf, np.empty((1, 1), np.int32),
-                zb, vb, np.empty(4, np.int64), np.empty((3, 4)))
+    _fill_polys(proj, polys, vout, vin, near, perspective, np.bool_(True), np.int64(-1), ox, oy, zf, vf,
+                np.empty((1, 1), np.int32), zb, vb, np.empty(4, np.int64), np.empty((3, 4)))
 
 
 @njit(cache=True, nogil=True)

@@ -9,7 +9,7 @@ from numba import njit
 from numpy.typing import ArrayLike, NDArray
 
 from ..errors import InvalidGeometryError, InvalidParameterError
-from ..geometry.halfedges import sorted_half_edges
+from ..laminae.halfedges import sorted_half_edges
 
 __all__ = ["pair_quads", "COPLANAR_RELATIVE"]
 

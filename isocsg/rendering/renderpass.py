@@ -19,7 +19,7 @@ from numpy.typing import NDArray
 
 from ..camera import Camera
 from ..csg.program import OP_LEAF, OP_UNION, Program
-from ..geometry.primitives import Primitive
+from ..kinds import Primitive
 from ..laminae.model import BandMesh
 from .buffers import Rows, reset_rects
 from .detail import LeafDetail, TreeDetail

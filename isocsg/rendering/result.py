@@ -8,6 +8,7 @@ from typing import Any
 import numpy as np
 from numpy.typing import NDArray
 
+from .._late import late
 from ..camera import Camera
 from .projection import key_to_depth
 
@@ -80,15 +81,11 @@ class RenderResult:
 
     def _repr_mimebundle_(self, include: Any = None, exclude: Any = None) -> dict[str, Any]:
         """Rich display in Jupyter: a small PNG image (see :mod:`isocsg.interop.notebook`)."""
-        from ..interop.notebook import mimebundle
-
-        return mimebundle(self, include, exclude)
+        return late("mimebundle")(self, include, exclude)
 
     def _repr_png_(self) -> bytes | None:
         """A small PNG image of the object (see :mod:`isocsg.interop.notebook`)."""
-        from ..interop.notebook import mimebundle
-
-        return mimebundle(self, ("image/png",)).get("image/png")
+        return late("mimebundle")(self, ("image/png",)).get("image/png")
 
     @property
     def depth(self) -> NDArray[np.float64]:

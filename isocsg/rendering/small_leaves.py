@@ -4,7 +4,7 @@ A leaf at most :data:`~isocsg.rendering.policy.RAY_LEAF_SIZE` pixels across
 (the holes of a plate drilled by a long modelling loop, seen from afar) costs
 more to cut into bands than its few pixels are worth. Its front and back surfaces per pixel are
 instead where the pixel's ray (through its centre, where the fills sample)
-enters and leaves it (:meth:`~isocsg.geometry.primitives.Primitive.intersect_rays`,
+enters and leaves it (:meth:`~isocsg.kinds.base.Primitive.intersect_rays`,
 convex leaves), with the depth keys of the fills and the exact intensity
 there (:func:`~isocsg.lighting.shading.shade`; inside, the reversed normal).
 So the cost of such a leaf falls with its size on screen.
@@ -19,7 +19,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from ..camera import Camera
-from ..geometry.primitives import Primitive
+from ..kinds import Primitive
 from ..lighting.shading import shade
 
 __all__ = ["PixelRays", "ray_intervals"]

@@ -32,7 +32,7 @@ from ..csg.surface import (
     untrimmed_groups,
 )
 from ..errors import InvalidGeometryError, ResourceLimitError
-from ..geometry.primitives import Primitive
+from ..kinds import Primitive
 from ..laminae.model import BandMesh
 from ..limits import memory_budget
 from . import policy
@@ -92,7 +92,9 @@ class SurfaceBuilds:
         """
         bands = tuple(b for b, _ in built)
         view_dependent = any(v for _, v in built)
-        if self.csg == "auto" and (view_dependent or sum(len(b.triangles) for b in bands) > policy.SURFACE_MAX_TRIANGLES):
+        if self.csg == "auto" and (
+            view_dependent or sum(len(b.triangles) for b in bands) > policy.SURFACE_MAX_TRIANGLES
+        ):
             return None
         key = (tuple(id(b) for b in bands), program.op.tobytes(), program.arg.tobytes())
         with self.lock:

@@ -40,7 +40,7 @@ from numpy.typing import NDArray
 
 from ..camera import Camera
 from ..errors import InvalidParameterError
-from ..geometry.primitives import Primitive
+from ..kinds import Primitive
 from ..scene.model import Scene
 from .image import save_svg
 from .painter import Renderer, default_renderer
@@ -174,12 +174,16 @@ def scene_polygons(
     for k, obj in enumerate(scene.objects):
         if not isinstance(obj.shape, Primitive):
             raise InvalidParameterError(
-                f"objects[{k}] is a CSG tree; SVG output takes objects that are single primitives (render CSG as an image)"
+                f"objects[{k}] is a CSG tree; SVG output takes objects "
+                "that are single primitives (render CSG as an image)"
             )
         bands = r.bands(obj.shape, scene.lights, obj.material, n_contours, cam.eye)
         h = homogeneous(cam, bands.vertices)
         if not cam.orthographic and np.any(h[2] <= 0):
-            raise InvalidParameterError(f"objects[{k}] reaches behind the eye; SVG output needs it in front of the camera")
+            raise InvalidParameterError(
+                f"objects[{k}] reaches behind the eye; SVG "
+                "output needs it in front of the camera"
+            )
         xy = np.stack([h[0] / h[2], h[1] / h[2]], axis=1)
         t = np.asarray(bands.triangles, dtype=np.intp)
         tri = xy[t]

@@ -31,7 +31,7 @@ from numpy.typing import NDArray
 from ..camera import Camera
 from ..csg.program import prune_arrays
 from ..errors import InvalidGeometryError
-from ..geometry.primitives import Box, Cone, Cylinder, Primitive, Sphere, Truncus
+from ..kinds.base import Primitive
 from .projection import NEAR_RELATIVE
 
 __all__ = [
@@ -78,10 +78,11 @@ class LeafGeometry:
 def leaf_geometry(leaves: Sequence[Primitive]) -> LeafGeometry:
     """The :class:`LeafGeometry` of ``leaves``.
 
-    Spheres, trunci and axis-aligned boxes are read from their parameters in
-    one vectorised pass (a primitive's ``bounds`` property costs tens of
-    microseconds, which adds up over 10 000 leaves); other primitives give
-    their ``bounds``. The boxes are those of the primitives' ``bounds``.
+    The leaves of each class are read in one pass by their kind
+    (:meth:`~isocsg.kinds.base.Primitive.leaf_boxes`: spheres, trunci and
+    axis-aligned boxes from their parameters, vectorised, since a primitive's
+    ``bounds`` property costs tens of microseconds, which adds up over 10 000
+    leaves). The boxes are those of the primitives' ``bounds``.
 
     Examples
     --------
@@ -96,49 +97,11 @@ def leaf_geometry(leaves: Sequence[Primitive]) -> LeafGeometry:
     sphere = np.zeros(n, np.bool_)
     center = np.zeros((n, 3))
     radius = np.zeros(n)
-    s_idx: list[int] = []
-    s_par: list[tuple[float, float, float, float]] = []
-    t_idx: list[int] = []
-    t_par: list[tuple[float, ...]] = []
-    b_idx: list[int] = []
-    b_par: list[tuple[float, ...]] = []
+    by_class: dict[type[Primitive], list[int]] = {}
     for i, p in enumerate(leaves):
-        if type(p) is Sphere:
-            s_idx.append(i)
-            s_par.append((*p.center, p.radius))
-        elif isinstance(p, Truncus):
-            t_idx.append(i)
-            t_par.append((*p.center, *p.axis, p.r1, p.r2))
-        elif type(p) is Box and p.axis_aligned:
-            b_idx.append(i)
-            b_par.append((*p.center, *p.size))
-        else:
-            lo[i], hi[i] = np.asarray(p.bounds, dtype=np.float64)
-            if isinstance(p, Sphere):
-                sphere[i] = True
-                center[i] = p.center
-                radius[i] = p.radius
-    if s_idx:
-        a = np.asarray(s_par, dtype=np.float64)
-        lo[s_idx] = a[:, :3] - a[:, 3:]
-        hi[s_idx] = a[:, :3] + a[:, 3:]
-        sphere[s_idx] = True
-        center[s_idx] = a[:, :3]
-        radius[s_idx] = a[:, 3]
-    if t_idx:
-        a = np.asarray(t_par, dtype=np.float64)
-        c, ax, r1, r2 = a[:, :3], a[:, 3:6], a[:, 6:7], a[:, 7:8]
-        u = ax / np.linalg.norm(ax, axis=1, keepdims=True)
-        ext = np.sqrt(np.clip(1 - u**2, 0, 1))  # half-extent of a unit circle normal to the axis
-        e1, e2 = c + ax / 2, c - ax / 2
-        lo[t_idx] = np.minimum(e1 - r1 * ext, e2 - r2 * ext)
-        hi[t_idx] = np.maximum(e1 + r1 * ext, e2 + r2 * ext)
-        center[t_idx] = c
-        radius[t_idx] = np.maximum(r1, r2)[:, 0]
-    if b_idx:
-        a = np.asarray(b_par, dtype=np.float64)
-        lo[b_idx] = a[:, :3] - a[:, 3:] / 2
-        hi[b_idx] = a[:, :3] + a[:, 3:] / 2
+        by_class.setdefault(type(p), []).append(i)
+    for cls, idx in by_class.items():
+        lo[idx], hi[idx], sphere[idx], center[idx], radius[idx] = cls.leaf_boxes([leaves[i] for i in idx])
     return LeafGeometry(lo, hi, sphere, center, radius)
 
 
@@ -408,51 +371,13 @@ def clip_leaves(
     glo, ghi = lo - margin, hi + margin
     # Leaves whose box reaches beyond the grown box: only those can be cut.
     beyond = np.flatnonzero(np.any(geom.lo < glo, axis=1) | np.any(geom.hi > ghi, axis=1)).tolist()
-    corners = np.array([[x, y, z] for x in (glo[0], ghi[0]) for y in (glo[1], ghi[1]) for z in (glo[2], ghi[2])])
     for i in beyond:
         p = leaves[i]
         try:
-            if type(p) in (Truncus, Cylinder, Cone):
-                u = p.unit_axis
-                c = p.center_array
-                s = (corners - c) @ u  # the box's extent along the axis
-                half = 0.5 * p.height
-                t0, t1 = _line_in_box(c, u, glo - max(p.r1, p.r2), ghi + max(p.r1, p.r2))
-                s1, s0 = min(half, float(s.max()), t1), max(-half, float(s.min()), t0)
-                if s0 >= s1 or (s1 == half and s0 == -half):
-                    continue  # off the box altogether (pruned elsewhere), or within the slab
-                centre = p.center_array + 0.5 * (s0 + s1) * u
-                axis = (s1 - s0) * u
-                if type(p) is Cylinder:
-                    out[i] = Cylinder(tuple(centre.tolist()), tuple(axis.tolist()), p.r1)
-                else:
-                    r1, r0 = (max(float(r), 0.0) for r in p.radius_at(np.array([s1, s0])))
-                    r1 = p.r1 if s1 == half else r1
-                    r0 = p.r2 if s0 == -half else r0
-                    out[i] = Truncus(tuple(centre.tolist()), tuple(axis.tolist()), r1, r0)
-            elif type(p) is Box and p.axis_aligned:
-                blo = np.maximum(geom.lo[i], glo)
-                bhi = np.minimum(geom.hi[i], ghi)
-                if np.all(blo < bhi):
-                    out[i] = Box(tuple((0.5 * (blo + bhi)).tolist()), tuple((bhi - blo).tolist()))
+            out[i] = p.clipped_to_box(glo, ghi)
         except InvalidGeometryError:
             out[i] = p  # too thin or too flat once cut: built whole
     return out
-
-
-def _line_in_box(
-    c: NDArray[np.float64], u: NDArray[np.float64], lo: NDArray[np.float64], hi: NDArray[np.float64],
-) -> tuple[float, float]:
-    """The parameters ``[t0, t1]`` where the line ``c + t u`` lies in the box ``[lo, hi]`` (slabs;
-    an empty range, ``t0 > t1``, when it misses the box)."""
-    t0, t1 = -np.inf, np.inf
-    for k in range(3):
-        if u[k] != 0.0:
-            a, b = (lo[k] - c[k]) / u[k], (hi[k] - c[k]) / u[k]
-            t0, t1 = max(t0, min(a, b)), min(t1, max(a, b))
-        elif not lo[k] <= c[k] <= hi[k]:
-            return np.inf, -np.inf
-    return float(t0), float(t1)
 
 
 @njit(cache=True, nogil=True)

@@ -153,8 +153,8 @@ def fill_kernel(
     front buffers are written (nothing with a negative ``tag``).
     """
     sx, sy, sk = project_vertices(hx, hy, hw, hd, near, perspective)
-    _fill_all(hx, hy, hw, hd, sx, sy, sk, tris, vout, vin, near, perspective, cull, do_back, tag, ox, oy, zf, vf, tf, zb, vb,
-              np.empty((3, 4)))
+    _fill_all(hx, hy, hw, hd, sx, sy, sk, tris, vout, vin, near, perspective, cull, do_back, tag, ox, oy, zf, vf, tf,
+              zb, vb, np.empty((3, 4)))
 
 
 @njit(**RAW)

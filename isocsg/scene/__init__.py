@@ -1,8 +1,8 @@
 """Scenes: immutable values and the TOML/JSON scene files (:mod:`.io` reads, :mod:`.writer` writes)."""
 
 from .io import BUILTIN_SCENES, builtin_scene, builtin_scene_path, load_scene, loads_scene, scene_from_dict
-from .writer import dumps_scene, save_scene, scene_to_dict
 from .model import MAX_CONTOURS, RENDER_MODES, RenderSettings, Scene, SceneObject
+from .writer import dumps_scene, save_scene, scene_to_dict
 
 __all__ = [
     "Scene",

@@ -14,7 +14,7 @@ from collections.abc import Sequence
 import numpy as np
 
 from ..camera import Camera
-from ..geometry.primitives import Solid
+from ..kinds import Solid
 from ..lighting.lights import DirectionalLight
 from .model import RenderSettings, Scene, SceneObject
 

@@ -61,6 +61,7 @@ from typing import Any, BinaryIO
 
 from .._validation import MAX_LIGHTS, MAX_SCENE_FILE_BYTES, show
 from ..camera import Camera
+from ..csg.extrude import extrude_rings
 from ..csg.tree import NODE_TYPES, CSGNode
 from ..errors import (
     InvalidGeometryError,
@@ -68,8 +69,7 @@ from ..errors import (
     InvalidParameterError,
     SceneFileError,
 )
-from ..geometry import transforms as _tf
-from ..geometry.extrude import extrude_rings
+from ..kinds import affine as _tf
 from ..kinds.base import Solid
 from ..kinds.registry import kind_named, registered_kinds
 from ..lighting.lights import DirectionalLight, Material, PointLight
@@ -93,7 +93,7 @@ __all__ = [
 #: Names of the scenes shipped in ``isocsg/data`` (``<name>.toml``).
 BUILTIN_SCENES = ("demo", "halftone")
 
-# The straight extrusion of a polygon: a union of convex prisms (isocsg.geometry.extrude); a node
+# The straight extrusion of a polygon: a union of convex prisms (isocsg.csg.extrude); a node
 # of scene files, not a primitive kind.
 _EXTRUDE_FIELDS = (("polygon", "height"), ("holes", "center"))
 
@@ -262,7 +262,7 @@ def _light(r: _Reader, path: str, value: Any) -> Any:
     if kind == "directional":
         return r.construct(path, "DirectionalLight", DirectionalLight, **t)
     # Area and polyhedron sources live with the shadow code; import them only when used.
-    from ..shadows import lights as shadow_lights
+    from ..lighting import area as shadow_lights
 
     cls = shadow_lights.AreaLight if kind == "area" else shadow_lights.PolyhedronLight
     if "flux" in t:  # luminous flux in lumens instead of radiance in cd/m^2
@@ -581,10 +581,14 @@ def _decode(data: bytes, source: object) -> str:
         text = data.decode("utf-8")
     except UnicodeDecodeError as exc:
         raise SceneFileError(
-            f"{source}: not a UTF-8 text file (byte 0x{data[exc.start]:02x} at offset {exc.start}); scene files are UTF-8 TOML or JSON"
+            f"{source}: not a UTF-8 text file (byte 0x{data[exc.start]:02x} "
+            f"at offset {exc.start}); scene files are UTF-8 TOML or JSON"
         ) from None
     if "\x00" in text:
-        raise SceneFileError(f"{source}: not a text file (NUL byte at offset {text.index(chr(0))}); scene files are UTF-8 TOML or JSON")
+        raise SceneFileError(
+            f"{source}: not a text file (NUL byte at offset "
+            f"{text.index(chr(0))}); scene files are UTF-8 TOML or JSON"
+        )
     return text
 
 

@@ -6,12 +6,13 @@ from collections.abc import Sequence
 from dataclasses import dataclass, field
 from typing import Any
 
+from .._late import late
 from .._validation import MAX_INTENSITY, integer, light_budget, scalar, show
 from ..camera import Camera
 from ..errors import InvalidGeometryError, InvalidLightError, InvalidParameterError
-from ..geometry.primitives import Solid
+from ..kinds import Solid
+from ..lighting.area import AreaLight, PolyhedronLight
 from ..lighting.lights import DirectionalLight, Material, PointLight
-from ..shadows.lights import AreaLight, PolyhedronLight
 
 __all__ = ["SceneObject", "RenderSettings", "Scene", "SceneLight", "MAX_CONTOURS", "RENDER_MODES"]
 
@@ -129,15 +130,11 @@ class Scene:
 
     def _repr_mimebundle_(self, include: Any = None, exclude: Any = None) -> dict[str, Any]:
         """Rich display in Jupyter: a small PNG image (see :mod:`isocsg.interop.notebook`)."""
-        from ..interop.notebook import mimebundle
-
-        return mimebundle(self, include, exclude)
+        return late("mimebundle")(self, include, exclude)
 
     def _repr_png_(self) -> bytes | None:
         """A small PNG image of the object (see :mod:`isocsg.interop.notebook`)."""
-        from ..interop.notebook import mimebundle
-
-        return mimebundle(self, ("image/png",)).get("image/png")
+        return late("mimebundle")(self, ("image/png",)).get("image/png")
 
     def __post_init__(self) -> None:
         if not isinstance(self.camera, Camera):

@@ -1,6 +1,6 @@
 """Soft shadows from area and polyhedron light sources (Nishita and Nakamae 1983).
 
-Light sources live in :mod:`isocsg.shadows.lights`; Lambert's contour
+Light sources live in :mod:`isocsg.lighting.area`; Lambert's contour
 integral in :mod:`isocsg.shadows.lambert`; occluder decomposition in
 :mod:`isocsg.shadows.occluders`; the exact illuminance and shadow states in
 :mod:`isocsg.shadows.direct`; half-tone images in :mod:`isocsg.shadows.halftone`;
@@ -18,7 +18,7 @@ from typing import TYPE_CHECKING
 from .._lazy import lazy_exports
 
 _EXPORTS: dict[str, str] = {
-    **dict.fromkeys(["AreaLight", "PolyhedronLight"], ".lights"),
+    **dict.fromkeys(["AreaLight", "PolyhedronLight"], "..lighting.area"),
     **dict.fromkeys(["illuminance", "shadow_state", "illuminance_and_state", "LIT", "PENUMBRA", "UMBRA"], ".direct"),
     **dict.fromkeys(["edge_terms", "polygon_illuminance", "rings_illuminance"], ".lambert"),
     **dict.fromkeys(["ConvexPiece", "convex_pieces", "shadow_pieces"], ".occluders"),
@@ -64,6 +64,7 @@ __all__ = [
 __getattr__, __dir__ = lazy_exports(globals(), _EXPORTS)
 
 if TYPE_CHECKING:
+    from ..lighting.area import AreaLight, PolyhedronLight
     from .direct import (
         LIT,
         PENUMBRA,
@@ -74,7 +75,6 @@ if TYPE_CHECKING:
     )
     from .halftone import HalftoneResult, render_halftone
     from .lambert import edge_terms, polygon_illuminance, rings_illuminance
-    from .lights import AreaLight, PolyhedronLight
     from .luxmap import IsoluxLine, LuxGrid, LuxMap, illuminance_map, save_luxmap_png
     from .luxplot import plot_luxmap, save_luxmap_figure
     from .luxstats import LuxStats, lux_statistics, save_luxmap_csv

@@ -311,7 +311,7 @@ def face_type_polyhedron(face: Any, source_vertices: ArrayLike, *, tol: float | 
 
 
 def _light_kind(light: Any) -> str:
-    from .lights import AreaLight, PolyhedronLight
+    from ..lighting.area import AreaLight, PolyhedronLight
 
     if isinstance(light, AreaLight):
         return "area"
@@ -346,7 +346,7 @@ def classify_face(face: ArrayLike, light: Any, *, tol: float | None = None) -> F
 
     Examples
     --------
-    >>> from isocsg.shadows.lights import AreaLight
+    >>> from isocsg.lighting.area import AreaLight
     >>> lamp = AreaLight([(0, 0, 2), (0, 1, 2), (1, 1, 2), (1, 0, 2)])
     >>> classify_face([(-1, -1, 0), (1, -1, 0), (1, 1, 0), (-1, 1, 0)], lamp).name
     'A'
@@ -398,7 +398,7 @@ def classify_faces(solid: Any, light: Any, *, tol: float | None = None) -> list[
     Examples
     --------
     >>> from isocsg import Box
-    >>> from isocsg.shadows.lights import AreaLight
+    >>> from isocsg.lighting.area import AreaLight
     >>> lamp = AreaLight([(-1, -1, 3), (-1, 1, 3), (1, 1, 3), (1, -1, 3)])
     >>> sorted(t.name for t in classify_faces(Box((0, 0, 0), (1, 1, 1)), lamp))
     ['A', 'B', 'B', 'B', 'B', 'C']

@@ -114,8 +114,8 @@ class _Convex:
 
     def __init__(self, A=None, b=None, verts=None, *, prim=None, res=0, index=0) -> None:
         self._A, self._b, self._verts = A, b, verts
-        self._poly = None
-        self._piece = None
+        self._poly: ConvexPolyhedron | None = None
+        self._piece: ConvexPiece | bool | None = None
         self._prim, self._res, self._index = prim, res, index
         if verts is not None:
             self.lo, self.hi = verts.min(axis=0), verts.max(axis=0)
@@ -161,7 +161,7 @@ class _Convex:
                 self._piece = ConvexPiece.from_polyhedron(self.poly)
             except InvalidGeometryError:  # flat: it casts no shadow
                 self._piece = False
-        return self._piece or None
+        return self._piece if isinstance(self._piece, ConvexPiece) else None
 
 
 @functools.lru_cache(maxsize=1024)
@@ -276,7 +276,8 @@ def _make_small(A: NDArray[np.float64], b: NDArray[np.float64], tol: float) -> _
 
     A region is kept when its width along every facet normal exceeds ``2 tol``.
     """
-    V, facet, edges = _enumerate(np.ascontiguousarray(A, dtype=np.float64), np.ascontiguousarray(b, dtype=np.float64), tol)
+    V, facet, edges = _enumerate(np.ascontiguousarray(A, dtype=np.float64), np.ascontiguousarray(b, dtype=np.float64),
+                                 tol)
     if len(V) == 0:
         return None
     region = _Convex(np.ascontiguousarray(A[facet]), b[facet].copy(), V)

@@ -3,9 +3,9 @@
 The illuminance at p (unit normal n) is Lambert's contour integral over the
 part of each source visible from p (:mod:`isocsg.shadows.visibility`):
 
-- an :class:`~isocsg.shadows.lights.AreaLight` lights only its lit side;
+- an :class:`~isocsg.lighting.area.AreaLight` lights only its lit side;
   the part behind p's receiving plane is cut away first (type-B receivers);
-- a :class:`~isocsg.shadows.lights.PolyhedronLight` is the sum of its faces
+- a :class:`~isocsg.lighting.area.PolyhedronLight` is the sum of its faces
   that face p (each a one-sided polygon): their shared edges cancel, which is
   the seed's contour-line integral; occluders are handled face by face;
 - several lights add up.
@@ -29,9 +29,9 @@ from collections.abc import Sequence
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from ..geometry.primitives import DEFAULT_RESOLUTION, Solid
+from ..kinds import DEFAULT_RESOLUTION, Solid
+from ..lighting.area import AreaLight, PolyhedronLight, as_light_list
 from .lambert import _prepare, edge_terms
-from .lights import AreaLight, PolyhedronLight, as_light_list
 from .occluders import ConvexPiece, occluder_list, shadow_pieces
 from .visibility import UMBRA_TOL, PieceArrays, SourceArrays, blockers_single, visible_illuminance
 
@@ -158,7 +158,9 @@ def illuminance_and_state(
     return E, state
 
 
-def receiver_tiles(points: NDArray[np.float64], *, per_tile: int = TILE_POINTS, max_tiles: int = MAX_TILES) -> list[NDArray[np.int64]]:
+def receiver_tiles(
+    points: NDArray[np.float64], *, per_tile: int = TILE_POINTS, max_tiles: int = MAX_TILES,
+) -> list[NDArray[np.int64]]:
     """Groups of nearby receivers (index arrays): the cells of a grid over their bounding box.
 
     About ``len(points) / per_tile`` cells (at most ``max_tiles``), more along

@@ -41,19 +41,15 @@ from typing import Any
 import numpy as np
 from numpy.typing import NDArray
 
+from .._late import late
 from .._validation import integer
 from ..camera import Camera
 from ..csg.program import combine_masks, compile_program
 from ..csg.tree import CSGNode
 from ..errors import InvalidGeometryError, InvalidLightError, InvalidParameterError
-from ..geometry.primitives import (
-    DEFAULT_RESOLUTION,
-    Box,
-    ConvexPolyhedron,
-    Primitive,
-    Truncus,
-)
-from .lights import AreaLight, PolyhedronLight
+from ..kinds.base import DEFAULT_RESOLUTION, Primitive
+from ..kinds.polyhedron import ConvexPolyhedron
+from ..lighting.area import AreaLight, PolyhedronLight
 
 __all__ = ["FirstHits", "HalftoneResult", "first_hits", "render_halftone", "shadow_codes"]
 
@@ -88,19 +84,11 @@ class FirstHits:
     surface_id: NDArray[np.int64]
 
 
-def _part_index(prim: Primitive, points: NDArray[np.float64], normals: NDArray[np.float64]) -> NDArray[np.int64]:
-    """Which face (polyhedra) or cap/side (truncus) of a primitive the points lie on."""
-    if isinstance(prim, (Box, ConvexPolyhedron)):
-        return np.argmax(normals @ np.asarray(prim.face_normals).T, axis=1).astype(np.int64)
-    if isinstance(prim, Truncus):
-        s = (points - prim.center_array) @ prim.unit_axis
-        h2 = prim.height / 2
-        tol = 1e-9 * max(prim.height, prim.r1, prim.r2)
-        return np.where(s >= h2 - tol, 1, np.where(s <= -h2 + tol, 2, 0)).astype(np.int64)
-    return np.zeros(len(points), dtype=np.int64)
 
 
-def _object_hits(shape: Any, o: NDArray[np.float64], d: NDArray[np.float64], t_min: float) -> tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.int64]]:
+def _object_hits(
+    shape: Any, o: NDArray[np.float64], d: NDArray[np.float64], t_min: float,
+) -> tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.int64]]:
     """First hit of rays with one object: t, normal, part id (leaf * 2 + side) * 1024 + face."""
     n = len(o)
     if isinstance(shape, (Primitive, CSGNode)):
@@ -151,7 +139,7 @@ def _object_hits(shape: Any, o: NDArray[np.float64], d: NDArray[np.float64], t_m
         nn = np.where(enter_hit[sel, None], h.n_in[sel], -h.n_out[sel])
         normal[sel] = nn
         pts = o[sel] + t_hit[sel, None] * d[sel]
-        face = _part_index(leaf, pts, np.where(enter_hit[sel, None], nn, -nn))
+        face = leaf.part_index(pts, np.where(enter_hit[sel, None], nn, -nn))
         part[sel] = (i * 2 + (~enter_hit[sel]).astype(np.int64)) * 1024 + np.minimum(face, 1023)
     return t_hit, normal, part
 
@@ -242,15 +230,11 @@ class HalftoneResult:
 
     def _repr_mimebundle_(self, include: Any = None, exclude: Any = None) -> dict[str, Any]:
         """Rich display in Jupyter: a small PNG image (see :mod:`isocsg.interop.notebook`)."""
-        from ..interop.notebook import mimebundle
-
-        return mimebundle(self, include, exclude)
+        return late("mimebundle")(self, include, exclude)
 
     def _repr_png_(self) -> bytes | None:
         """A small PNG image of the object (see :mod:`isocsg.interop.notebook`)."""
-        from ..interop.notebook import mimebundle
-
-        return mimebundle(self, ("image/png",)).get("image/png")
+        return late("mimebundle")(self, ("image/png",)).get("image/png")
 
     @property
     def exact_fraction(self) -> float:
@@ -309,7 +293,9 @@ def _plan(lights: list[Any], pieces: list[Any], bounds: NDArray[np.float64]) -> 
     return plans
 
 
-def shadow_codes(plan: _LightPlan, points: NDArray[np.float64], normals: NDArray[np.float64]) -> tuple[NDArray[np.int8], NDArray[np.bool_], NDArray[np.int8]]:
+def shadow_codes(
+    plan: _LightPlan, points: NDArray[np.float64], normals: NDArray[np.float64],
+) -> tuple[NDArray[np.int8], NDArray[np.bool_], NDArray[np.int8]]:
     """Per point: state (0 lit / 1 penumbra / 2 umbra), penumbra membership (n, pieces), face type."""
     n = len(points)
     k = len(plan.pieces)
@@ -466,7 +452,9 @@ def _zero_end_runs(
     return extra
 
 
-def _interpolate_runs(Eimg: NDArray[np.float64], cols: NDArray[np.int64], seg_ok: NDArray[np.bool_], extra: NDArray[np.bool_]) -> None:
+def _interpolate_runs(
+    Eimg: NDArray[np.float64], cols: NDArray[np.int64], seg_ok: NDArray[np.bool_], extra: NDArray[np.bool_],
+) -> None:
     """Linear interpolation, in place, inside the runs left to it."""
     for s in range(len(cols) - 1):
         a, b = cols[s], cols[s + 1]

@@ -21,7 +21,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from .._validation import Vec3, integer, nonzero_vector3, vector3
 from ..errors import InvalidParameterError
-from ..geometry.primitives import DEFAULT_RESOLUTION
+from ..kinds import DEFAULT_RESOLUTION
 
 __all__ = [
     "LuxGrid", "LuxMap", "IsoluxLine", "illuminance_map", "isolux_lines", "nice_levels", "occluded_nodes",
@@ -212,7 +212,7 @@ def illuminance_map(
 
     Examples
     --------
-    >>> from isocsg.shadows.lights import AreaLight
+    >>> from isocsg.lighting.area import AreaLight
     >>> lamp = AreaLight([(-.5, -.5, 2), (-.5, .5, 2), (.5, .5, 2), (.5, -.5, 2)])
     >>> m = illuminance_map(LuxGrid.from_bounds(-2, -2, 2, 2, 0, 5, 5), lamp)
     >>> m.E.shape, bool(m.E[2, 2] == m.E.max())
@@ -259,7 +259,7 @@ def occluded_nodes(grid: LuxGrid, occluders: Sequence[Any] | Any = ()) -> NDArra
 
 def _probe(grid: LuxGrid, occluders: Any) -> tuple[list[Any], float]:
     """The solid occluders and the height above the plane at which nodes are tested."""
-    from ..geometry.primitives import Solid
+    from ..kinds import Solid
 
     solids = [occluders] if isinstance(occluders, Solid) else [o for o in occluders if isinstance(o, Solid)]
     return solids, 1e-7 * max(float(np.linalg.norm(grid.u)), float(np.linalg.norm(grid.v)))
@@ -485,7 +485,7 @@ def save_luxmap_png(
     Examples
     --------
     >>> import os, tempfile
-    >>> from isocsg.shadows.lights import AreaLight
+    >>> from isocsg.lighting.area import AreaLight
     >>> lamp = AreaLight([(-.5, -.5, 2), (-.5, .5, 2), (.5, .5, 2), (.5, -.5, 2)])
     >>> m = illuminance_map(LuxGrid.from_bounds(-2, -2, 2, 2, 0, 9, 9), lamp)
     >>> p = save_luxmap_png(os.path.join(tempfile.mkdtemp(), "lux.png"), m, levels=3)

@@ -36,7 +36,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from .._validation import points_array
 from ..errors import InvalidGeometryError
-from ..geometry.primitives import DEFAULT_RESOLUTION, ConvexPolyhedron, Solid
+from ..kinds import DEFAULT_RESOLUTION, ConvexPolyhedron, Solid
 from .classify import FaceType, classify_face, face_plane, solid_faces
 from .volumes import ConvexVolume, SourceGeometry, as_piece, may_cast_shadow, shadow_volumes
 
@@ -249,7 +249,7 @@ def face_shadow_regions(
     Examples
     --------
     >>> from isocsg import Box
-    >>> from isocsg.shadows.lights import AreaLight
+    >>> from isocsg.lighting.area import AreaLight
     >>> lamp = AreaLight([(-.5, -.5, 2), (-.5, .5, 2), (.5, .5, 2), (.5, -.5, 2)])
     >>> floor = [(-3, -3, 0), (3, -3, 0), (3, 3, 0), (-3, 3, 0)]
     >>> fs = face_shadow_regions(floor, lamp, [Box((0, 0, 1), (1, 1, 0.01))])
@@ -312,7 +312,7 @@ def solid_shadow_regions(
     Examples
     --------
     >>> from isocsg import Box
-    >>> from isocsg.shadows.lights import AreaLight
+    >>> from isocsg.lighting.area import AreaLight
     >>> lamp = AreaLight([(-.5, -.5, 3), (-.5, .5, 3), (.5, .5, 3), (.5, -.5, 3)])
     >>> slab = Box((0, 0, -0.5), (6, 6, 1))
     >>> regions = solid_shadow_regions(slab, lamp, [slab, Box((0, 0, 1), (1, 1, 0.2))])

@@ -219,7 +219,8 @@ def as_piece(occluder: Any) -> Any:
     Parameters
     ----------
     occluder : ConvexPiece, Box, ConvexPolyhedron or array_like of shape (n, 3)
-        A convex polyhedron (points: their convex hull).
+        A convex polyhedron: a piece, a polyhedral primitive (one whose ``hull_points()`` is not
+        None), or points (their convex hull).
 
     Raises
     ------
@@ -232,15 +233,14 @@ def as_piece(occluder: Any) -> Any:
     >>> as_piece(Box((0, 0, 0), (1, 1, 1))).edges.shape
     (12, 2)
     """
-    from ..geometry.primitives import Box, ConvexPolyhedron
+    from ..kinds.base import Primitive
+    from ..kinds.polyhedron import ConvexPolyhedron
     from .occluders import ConvexPiece
 
     if isinstance(occluder, (ConvexPiece, _Piece)):
         return occluder
-    if isinstance(occluder, Box):
+    if isinstance(occluder, Primitive) and occluder.hull_points() is not None:  # a polyhedral kind
         return _piece_from_polyhedron(occluder.to_polyhedron())
-    if isinstance(occluder, ConvexPolyhedron):
-        return _piece_from_polyhedron(occluder)
     if isinstance(occluder, (list, tuple, np.ndarray)):
         return _piece_from_polyhedron(ConvexPolyhedron(points_array("occluder", occluder, min_rows=4)))  # type: ignore[arg-type]  # array_like accepted; the field's annotation says tuples
     raise InvalidGeometryError(
@@ -250,7 +250,7 @@ def as_piece(occluder: Any) -> Any:
 
 def _clip_piece(piece: Any, normal: NDArray[np.float64], offset: float, tol: float) -> _Piece | None:
     """``piece`` intersected with ``normal . x >= offset`` (None if nothing of volume is left)."""
-    from ..geometry.primitives import ConvexPolyhedron
+    from ..kinds.polyhedron import ConvexPolyhedron
 
     n = np.vstack([piece.normals, -normal[None, :]])
     d = np.concatenate([piece.offsets, [-offset]])
@@ -280,7 +280,7 @@ class SourceGeometry:
 
     Examples
     --------
-    >>> from isocsg.shadows.lights import AreaLight
+    >>> from isocsg.lighting.area import AreaLight
     >>> g = SourceGeometry.from_light(AreaLight([(0, 0, 2), (0, 1, 2), (1, 1, 2), (1, 0, 2)]))
     >>> g.kind, g.edges.shape, g.plane.normal.tolist()
     ('area', (4, 2), [0.0, 0.0, -1.0])
@@ -336,7 +336,7 @@ class SourceGeometry:
             m = len(poly)
             edges = np.column_stack([np.arange(m), (np.arange(m) + 1) % m]).astype(np.int64)
             return SourceGeometry("area", poly, edges, self.plane if self.plane is not None else pl)
-        from ..geometry.primitives import ConvexPolyhedron
+        from ..kinds.polyhedron import ConvexPolyhedron
 
         piece = _clip_piece(_piece_from_polyhedron(ConvexPolyhedron(self.vertices)), -n, -d, tol)  # type: ignore[arg-type]  # array_like accepted; the field's annotation says tuples
         if piece is None:
@@ -557,7 +557,7 @@ def shadow_volumes(light: Any, occluder: Any, *, tol: float | None = None,
     penumbra 1.5 (similar triangles).
 
     >>> from isocsg import Box
-    >>> from isocsg.shadows.lights import AreaLight
+    >>> from isocsg.lighting.area import AreaLight
     >>> lamp = AreaLight([(-.5, -.5, 2), (-.5, .5, 2), (.5, .5, 2), (.5, -.5, 2)])
     >>> sv = shadow_volumes(lamp, Box((0, 0, 1), (1, 1, 0.01)))
     >>> sv.classify([[0.0, 0, 0], [1.4, 0, 0], [1.6, 0, 0]]).tolist()
@@ -630,7 +630,7 @@ def penumbra_volume(light: Any, occluder: Any, *, tol: float | None = None) -> C
     Examples
     --------
     >>> from isocsg import Box
-    >>> from isocsg.shadows.lights import AreaLight
+    >>> from isocsg.lighting.area import AreaLight
     >>> lamp = AreaLight([(-.5, -.5, 2), (-.5, .5, 2), (.5, .5, 2), (.5, -.5, 2)])
     >>> penumbra_volume(lamp, Box((0, 0, 1), (1, 1, 0.01))).contains([[1.4, 0, 0]]).tolist()
     [True]
@@ -645,7 +645,7 @@ def umbra_volume(light: Any, occluder: Any, *, tol: float | None = None) -> Conv
     Examples
     --------
     >>> from isocsg import Box
-    >>> from isocsg.shadows.lights import AreaLight
+    >>> from isocsg.lighting.area import AreaLight
     >>> lamp = AreaLight([(-.5, -.5, 2), (-.5, .5, 2), (.5, .5, 2), (.5, -.5, 2)])
     >>> umbra_volume(lamp, Box((0, 0, 1), (1, 1, 0.01))).contains([[0.1, 0, 0.5]]).tolist()
     [True]
@@ -685,7 +685,7 @@ def may_cast_shadow(face: ArrayLike, occluder: Any, light: Any, *, volumes: Shad
     Examples
     --------
     >>> from isocsg import Box
-    >>> from isocsg.shadows.lights import AreaLight
+    >>> from isocsg.lighting.area import AreaLight
     >>> lamp = AreaLight([(-.5, -.5, 2), (-.5, .5, 2), (.5, .5, 2), (.5, -.5, 2)])
     >>> table = Box((0, 0, 1), (1, 1, 0.01))
     >>> near = [(-1, -1, 0), (1, -1, 0), (1, 1, 0), (-1, 1, 0)]

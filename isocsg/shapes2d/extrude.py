@@ -44,7 +44,7 @@ def _scale(value: Any) -> tuple[float, float]:
 
 
 def _prism(leaf: ConvexPolygon, z0: float, z1: float, s: tuple[float, float]) -> Any:
-    from isocsg import ConvexPolyhedron
+    from ..kinds.polyhedron import ConvexPolyhedron
 
     p = leaf.array
     k = len(p)
@@ -58,7 +58,7 @@ def _prism(leaf: ConvexPolygon, z0: float, z1: float, s: tuple[float, float]) ->
 
 
 def _round(leaf: Circle | Ellipse, z0: float, z1: float, s: tuple[float, float]) -> Any:
-    from isocsg import Cylinder, Truncus
+    from ..kinds.truncus import Cylinder, Truncus
 
     if s[0] != s[1]:
         raise InvalidGeometryError(
@@ -125,7 +125,7 @@ def linear_extrude(shape: Shape2D, height: Any, *, center: bool = False, scale: 
     >>> abs(volume(solid) - (16 - 3.141592653589793) * 2) < 1e-6
     True
     """
-    from isocsg import Difference, Intersection, Union
+    from ..csg.tree import Difference, Intersection, Union
 
     h = number("linear_extrude.height", height, low=0.0, high=MAX_ABS_COORD)
     z0, z1 = (-h / 2, h / 2) if flag("linear_extrude.center", center) else (0.0, h)

@@ -14,7 +14,19 @@ from typing import Any
 
 import numpy as np
 
-from isocsg import Box, Cone, ConvexPolyhedron, Cylinder, Difference, Intersection, Sphere, Truncus, Union, difference, union_all
+from isocsg import (
+    Box,
+    Cone,
+    ConvexPolyhedron,
+    Cylinder,
+    Difference,
+    Intersection,
+    Sphere,
+    Truncus,
+    Union,
+    difference,
+    union_all,
+)
 
 __all__ = ["Plate", "plate_with_holes", "sphere_lattice", "nested_model", "random_tree", "loop_tree"]
 

@@ -53,18 +53,18 @@ from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
-from numpy.typing import NDArray
 from numba import njit
+from numpy.typing import NDArray
 from scipy.spatial import ConvexHull
 
 from isocsg import (
     Box,
-    Ellipsoid,
-    EllipticTruncus,
     Camera,
     ConvexPolyhedron,
     Difference,
     DirectionalLight,
+    Ellipsoid,
+    EllipticTruncus,
     Intersection,
     Material,
     PointLight,
@@ -406,7 +406,7 @@ class _Leaf:
     hi: F64
 
     @staticmethod
-    def of(p: Any) -> "_Leaf":
+    def of(p: Any) -> _Leaf:
         if isinstance(p, Sphere):
             c = np.asarray(p.center, dtype=np.float64)
             r = float(p.radius)

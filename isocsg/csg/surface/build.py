@@ -116,7 +116,7 @@ def surface_from_bands(
         key = id(bm)  # a repeated leaf shares its band mesh: weld it once
         if key in closed:
             return closed[key] if keep else closed.pop(key)
-        out = close_soup(bm.vertices, bm.triangles)
+        out = close_soup(bm.vertices, bm.triangles)  # type: ignore[arg-type]  # int32 triangles: indexing only
         if keep:
             closed[key] = out
         return out
@@ -136,7 +136,8 @@ def surface_from_bands(
         pieces.append((v, t, np.full(len(t), c.ref, np.int32), src, np.zeros(len(t), bool), vout[src]))
     needed = plan.needed([c.ref for c in final])
     if needed.any():
-        pieces.extend(run_booleans(plan, needed, final, members, bands, weld, centre, half, trimmed, one_at_a_time=trim))
+        pieces.extend(run_booleans(plan, needed, final, members, bands, weld, centre, half, trimmed,
+                                   one_at_a_time=trim))
     return assemble(pieces)
 
 

@@ -123,7 +123,9 @@ def close_soup(
     else:
         closed = not len(_open_half_edges(t))
     return v, t, src, closed
-def _merge_near(v: NDArray[np.float64], t: NDArray[np.int64], tol: float) -> tuple[NDArray[np.float64], NDArray[np.int64]]:
+def _merge_near(
+    v: NDArray[np.float64], t: NDArray[np.int64], tol: float,
+) -> tuple[NDArray[np.float64], NDArray[np.int64]]:
     """Merge vertices closer than ``tol`` (clusters linked by such pairs) into their first member."""
     from scipy.sparse import coo_matrix
     from scipy.sparse.csgraph import connected_components

@@ -211,7 +211,8 @@ def _on_opposite_face(
                 ex, ey, ez = vb[0] - va[0], vb[1] - va[1], vb[2] - va[2]
                 rx, ry, rz = p[0] - va[0], p[1] - va[1], p[2] - va[2]
                 # (edge x (p - a)) . n: how far p is inside the edge, times its length
-                side = (ey * rz - ez * ry) * nrm[q, 0] + (ez * rx - ex * rz) * nrm[q, 1] + (ex * ry - ey * rx) * nrm[q, 2]
+                side = ((ey * rz - ez * ry) * nrm[q, 0] + (ez * rx - ex * rz) * nrm[q, 1]
+                        + (ex * ry - ey * rx) * nrm[q, 2])
                 outside = side < -tol * np.sqrt(ex * ex + ey * ey + ez * ez) if cos < 0 else side <= 0.0
                 if outside:
                     inside = False

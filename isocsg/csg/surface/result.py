@@ -65,8 +65,10 @@ class CSGSurface:
         lo, hi = np.searchsorted(self.leaf, np.array([i, i + 1], dtype=self.leaf.dtype))
         tri = self.triangles[lo:hi]
         if not len(tri):
-            return BandMesh(np.zeros((0, 3)), np.zeros((0, 3), np.int32), np.zeros(0), np.zeros(0), np.zeros(0, np.int32))
+            return BandMesh(np.zeros((0, 3)), np.zeros((0, 3), np.int32), np.zeros(0), np.zeros(0),
+                            np.zeros(0, np.int32))
         first, last = int(tri.min()), int(tri.max())
+        local: NDArray[np.signedinteger[Any]]
         if last - first < 8 * len(tri):
             # A leaf's vertices are mostly contiguous: renumber through a mask of the range.
             mark = np.zeros(last - first + 1, bool)

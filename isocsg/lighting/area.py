@@ -28,7 +28,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from .._validation import MAX_INTENSITY, MAX_VERTICES, Vec3, length_floor, points_array, scalar
 from ..errors import InvalidGeometryError, InvalidLightError
-from ..geometry.primitives import ConvexPolyhedron
+from ..kinds import ConvexPolyhedron
 
 __all__ = ["AreaLight", "PolyhedronLight", "ShadowLight", "as_light_list"]
 
@@ -101,6 +101,9 @@ class AreaLight:
     if TYPE_CHECKING:  # what callers pass; the generated __init__ stores the checked tuples
         def __init__(self, vertices: ArrayLike, radiance: float = 1.0) -> None: ...
 
+    if TYPE_CHECKING:  # the constructor as callers call it: array-likes, checked in __post_init__
+        def __init__(self, vertices: ArrayLike, radiance: float = 1.0) -> None: ...
+
     def __post_init__(self) -> None:
         name = "AreaLight.vertices"
         pts = points_array(name, self.vertices, min_rows=3, max_rows=MAX_VERTICES, error=InvalidLightError)
@@ -109,7 +112,10 @@ class AreaLight:
             raise InvalidLightError(f"{name} are all the same point")
         floor = length_floor(pts.min(axis=0), pts.max(axis=0))
         if scale < floor:
-            raise InvalidLightError(f"{name} must span at least {floor:g} (the smallest length at this position), got {scale:g}")
+            raise InvalidLightError(
+                f"{name} must span at least {floor:g} (the "
+                f"smallest length at this position), got {scale:g}"
+            )
         m = len(pts)
         edges = np.roll(pts, -1, axis=0) - pts
         elen = np.linalg.norm(edges, axis=1)
@@ -126,7 +132,8 @@ class AreaLight:
             if sv[1] <= 1e-9 * sv[0]:
                 raise InvalidLightError(f"{name} are collinear: the polygon has zero area")
             raise InvalidLightError(
-                f"{name} must form a convex polygon, the outline is self-intersecting (not convex): its signed area is zero"
+                f"{name} must form a convex polygon, the outline is "
+                "self-intersecting (not convex): its signed area is zero"
             )
         n = nn / area
         dev = np.abs((pts - pts.mean(axis=0)) @ n)
@@ -148,7 +155,10 @@ class AreaLight:
         cosang = np.einsum("ij,ij->i", edges, np.roll(edges, -1, axis=0)) / (elen * elen_next)
         total = float(np.sum(np.arctan2(turns / (elen * elen_next), cosang)))
         if abs(total - 2 * math.pi) > 1e-6:
-            raise InvalidLightError(f"{name} must form a simple convex polygon, it winds {total / (2 * math.pi):.3g} times")
+            raise InvalidLightError(
+                f"{name} must form a simple convex polygon, "
+                f"it winds {total / (2 * math.pi):.3g} times"
+            )
         object.__setattr__(self, "vertices", tuple(tuple(map(float, p)) for p in pts))
         object.__setattr__(self, "radiance", _radiance("AreaLight.radiance", self.radiance))
         object.__setattr__(self, "normal", (float(n[0]), float(n[1]), float(n[2])))
@@ -179,7 +189,7 @@ class AreaLight:
         return math.pi * self.radiance * self.area
 
     @classmethod
-    def from_flux(cls, vertices: ArrayLike, flux: float) -> "AreaLight":
+    def from_flux(cls, vertices: ArrayLike, flux: float) -> AreaLight:
         """A source of luminous flux ``flux`` (lumens): radiance L = F / (pi A) in cd/m^2.
 
         Parameters
@@ -201,7 +211,8 @@ class AreaLight:
         >>> round(panel.radiance, 3), round(panel.flux, 9)
         (3183.099, 3600.0)
         """
-        f = scalar("AreaLight.flux", flux, low=0.0, low_inclusive=True, high=MAX_INTENSITY * 1e6, error=InvalidLightError)
+        f = scalar("AreaLight.flux", flux, low=0.0, low_inclusive=True, high=MAX_INTENSITY * 1e6,
+                   error=InvalidLightError)
         shape = cls(vertices)
         return cls(shape.vertices, f / (math.pi * shape.area))
 
@@ -250,6 +261,9 @@ class PolyhedronLight:
     if TYPE_CHECKING:  # what callers pass; the generated __init__ stores the checked tuples
         def __init__(self, vertices: ArrayLike, radiance: float = 1.0) -> None: ...
 
+    if TYPE_CHECKING:  # the constructor as callers call it: array-likes, checked in __post_init__
+        def __init__(self, vertices: ArrayLike, radiance: float = 1.0) -> None: ...
+
     def __post_init__(self) -> None:
         name = "PolyhedronLight.vertices"
         pts = points_array(name, self.vertices, min_rows=4, max_rows=MAX_VERTICES, error=InvalidLightError)
@@ -286,7 +300,7 @@ class PolyhedronLight:
         return math.pi * self.radiance * self.area
 
     @classmethod
-    def from_flux(cls, vertices: ArrayLike, flux: float) -> "PolyhedronLight":
+    def from_flux(cls, vertices: ArrayLike, flux: float) -> PolyhedronLight:
         """A source of luminous flux ``flux`` (lumens) spread over its faces: L = F / (pi A).
 
         Raises
@@ -300,7 +314,8 @@ class PolyhedronLight:
         >>> cube.area, round(cube.radiance * math.pi, 9)
         (6.0, 100.0)
         """
-        f = scalar("PolyhedronLight.flux", flux, low=0.0, low_inclusive=True, high=MAX_INTENSITY * 1e6, error=InvalidLightError)
+        f = scalar("PolyhedronLight.flux", flux, low=0.0, low_inclusive=True, high=MAX_INTENSITY * 1e6,
+                   error=InvalidLightError)
         shape = cls(vertices)
         return cls(shape.vertices, f / (math.pi * shape.area))
 
@@ -320,7 +335,10 @@ def as_light_list(lights: Any) -> list[AreaLight | PolyhedronLight]:
     try:
         seq = list(lights)
     except TypeError:
-        raise InvalidLightError(f"lights must be an AreaLight, a PolyhedronLight or a sequence of them, got {type(lights).__name__}") from None
+        raise InvalidLightError(
+            "lights must be an AreaLight, a PolyhedronLight or "
+            f"a sequence of them, got {type(lights).__name__}"
+        ) from None
     for i, li in enumerate(seq):
         if not isinstance(li, (AreaLight, PolyhedronLight)):
             raise InvalidLightError(f"lights[{i}] must be an AreaLight or a PolyhedronLight, got {type(li).__name__}")

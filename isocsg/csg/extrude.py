@@ -189,7 +189,7 @@ def extrude(polygon: Any, height: float, *, center: bool = False) -> Solid:
 
 def prisms(polygon: Any, z0: float, z1: float) -> Solid:
     """The extrusion of ``polygon`` between the planes ``z = z0`` and ``z = z1 > z0`` (see :func:`extrude`)."""
-    from ..csg import union_all
+    from .tree import union_all
 
     if not (math.isfinite(z0) and math.isfinite(z1)) or z1 <= z0:
         raise InvalidGeometryError(f"extrude.height must be > 0, got {z1 - z0:g}")

@@ -13,25 +13,22 @@ The names are manifold3d's and the semantics OpenSCAD's:
 Multiples of 90 degrees give exact matrices (cosines and sines of 0 and +-1), as
 in OpenSCAD, so that a box turned by 90 degrees stays axis-aligned exactly.
 
-A transform of a primitive is again an exact, analytic primitive
-(see :func:`transform_primitive` for which kind each map produces); a transform
-of a CSG tree applies to its leaves, walked without recursion.
+A transform of a primitive is again an exact, analytic primitive (each kind's
+``_affine``); a transform of a CSG tree applies to its leaves, walked without
+recursion (:meth:`isocsg.csg.tree.CSGNode._affine`).
 """
 
 from __future__ import annotations
 
 import functools
 import math
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from .._validation import MAX_ABS_COORD, _float_array, show, vector3
-from ..errors import InvalidGeometryError, InvalidParameterError
-
-if TYPE_CHECKING:  # pragma: no cover
-    from ..kinds.base import Solid
+from ..errors import InvalidParameterError
 
 __all__ = [
     "MAX_CONDITION",
@@ -42,7 +39,6 @@ __all__ = [
     "scale_matrix",
     "mirror_matrix",
     "rotation_array",
-    "transform_solid",
     "similarity_factor",
 ]
 
@@ -120,7 +116,8 @@ def affine_matrix(matrix: ArrayLike, *, name: str = "matrix") -> NDArray[np.floa
     cond = float(sv[0] / sv[-1])
     if cond > MAX_CONDITION:
         raise InvalidParameterError(
-            f"{name} must have a condition number <= {MAX_CONDITION:g} (largest over smallest singular value), got {cond:g}"
+            f"{name} must have a condition number <= {MAX_CONDITION:g} "
+            f"(largest over smallest singular value), got {cond:g}"
         )
     if sv[0] > MAX_ABS_COORD or sv[-1] < 1.0 / MAX_ABS_COORD:
         raise InvalidParameterError(f"{name} scales by {sv[-1]:g} to {sv[0]:g}, outside the limits 1e-12 to 1e12")
@@ -205,37 +202,3 @@ def _similarity(key: bytes) -> float | None:
     if np.max(np.abs(g - s2 * np.eye(3))) <= SIMILARITY_TOL * s2:
         return math.sqrt(s2)
     return None
-
-
-def transform_solid(solid: "Solid", matrix: ArrayLike) -> "Solid":
-    """The image of ``solid`` under an affine matrix (validated by :func:`affine_matrix`).
-
-    Primitives map to primitives (see :meth:`~isocsg.kinds.base.Solid.transform`);
-    a CSG tree maps leaf by leaf into a tree of the same shape, without recursion.
-
-    Raises
-    ------
-    InvalidParameterError
-        On a malformed matrix.
-    InvalidGeometryError
-        If an image is not a valid primitive (e.g. it leaves the coordinate range).
-    """
-    from ..csg.tree import NODE_TYPES, CSGNode, _postorder
-    from ..kinds.base import Primitive
-
-    m = affine_matrix(matrix)
-    A, t = m[:3, :3], m[:3, 3]
-    if isinstance(solid, Primitive):
-        return solid._affine(A, t)
-    if not isinstance(solid, CSGNode):
-        raise InvalidGeometryError(f"transform needs a solid (primitive or CSG node), got {type(solid).__name__}")
-    done: dict[int, Any] = {}
-    for s in _postorder(solid):
-        key = id(s)
-        if key in done:
-            continue  # a leaf or subtree shared in several places is mapped once
-        if isinstance(s, CSGNode):
-            done[key] = NODE_TYPES[s.kind](*[done[id(c)] for c in s.children])
-        else:
-            done[key] = s._affine(A, t)  # type: ignore[attr-defined]
-    return done[id(solid)]
