@@ -25,7 +25,7 @@ from ..errors import InvalidGeometryError
 from ..kinds.base import Solid
 from ..kinds.polyhedron import ConvexPolyhedron
 
-__all__ = ["extrude", "extrude_rings", "convex_partition", "prisms"]
+__all__ = ["extrude", "extrude_rings", "convex_partition", "merged_triangulation", "prisms"]
 
 
 def _polygons(polygon: Any, name: str) -> list[Any]:
@@ -98,20 +98,29 @@ def convex_partition(polygon: Any, *, name: str = "polygon") -> list[NDArray[np.
     for part in parts:
         part = shapely.normalize(part)
         scale = float(max(part.bounds[2] - part.bounds[0], part.bounds[3] - part.bounds[1]))
-        tris = shapely.get_parts(shapely.constrained_delaunay_triangles(part))
-        # Shared vertex indices: constrained triangles reuse the polygon's own coordinates exactly.
-        index: dict[tuple[float, float], int] = {}
-        faces: list[list[int]] = []
-        for t in tris:
-            ring = np.asarray(t.exterior.coords)[:3]
-            if _cross(ring[0], ring[1], ring[2]) < 0:
-                ring = ring[::-1]
-            if abs(_cross(ring[0], ring[1], ring[2])) <= 1e-14 * scale * scale:
-                continue  # a sliver of zero area covers nothing
-            faces.append([index.setdefault((float(x), float(y)), len(index)) for x, y in ring])
-        pts = np.array(list(index), dtype=np.float64).reshape(-1, 2)
-        pieces.extend(pts[f] for f in _merge_convex(faces, pts, scale))
+        pieces.extend(merged_triangulation(part, scale))
     return pieces
+
+
+def merged_triangulation(part: Any, scale: float) -> list[NDArray[np.float64]]:
+    """The convex pieces of one valid shapely Polygon (holes allowed): its constrained Delaunay
+    triangles, merged across shared diagonals while the merged piece stays convex
+    (Hertel-Mehlhorn). ``scale`` is the polygon's size, for the zero-area and convexity tests."""
+    import shapely
+
+    tris = shapely.get_parts(shapely.constrained_delaunay_triangles(part))
+    # Shared vertex indices: constrained triangles reuse the polygon's own coordinates exactly.
+    index: dict[tuple[float, float], int] = {}
+    faces: list[list[int]] = []
+    for t in tris:
+        ring = np.asarray(t.exterior.coords)[:3]
+        if _cross(ring[0], ring[1], ring[2]) < 0:
+            ring = ring[::-1]
+        if abs(_cross(ring[0], ring[1], ring[2])) <= 1e-14 * scale * scale:
+            continue  # a sliver of zero area covers nothing
+        faces.append([index.setdefault((float(x), float(y)), len(index)) for x, y in ring])
+    pts = np.array(list(index), dtype=np.float64).reshape(-1, 2)
+    return [pts[f] for f in _merge_convex(faces, pts, scale)]
 
 
 def _merge_convex(faces: list[list[int]], pts: NDArray[np.float64], scale: float) -> list[list[int]]:

@@ -22,6 +22,7 @@ from typing import Any
 import numpy as np
 from numpy.typing import NDArray
 
+from ..csg.extrude import merged_triangulation
 from ..errors import InvalidGeometryError
 from .leaves import ConvexPolygon
 from .shape import EMPTY, Shape2D, Union2D
@@ -87,10 +88,6 @@ def fill(rings: Sequence[Any], rule: str = "evenodd", *, name: str = "polygon") 
     return shapely.normalize(region)
 
 
-def _cross(o: NDArray[np.float64], a: NDArray[np.float64], b: NDArray[np.float64]) -> float:
-    return float((a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0]))
-
-
 def convex_pieces(region: Any) -> list[NDArray[np.float64]]:
     """Convex pieces (counter-clockwise vertex arrays) that tile a shapely Polygon or MultiPolygon.
 
@@ -113,18 +110,7 @@ def convex_pieces(region: Any) -> list[NDArray[np.float64]]:
             ring = np.asarray(shapely.orient_polygons(part).exterior.coords)[:-1]
             pieces.append(ring)
             continue
-        index: dict[tuple[float, float], int] = {}
-        faces: list[list[int]] = []
-        for t in shapely.get_parts(shapely.constrained_delaunay_triangles(part)):
-            ring = np.asarray(t.exterior.coords)[:3]
-            area2 = _cross(ring[0], ring[1], ring[2])
-            if area2 < 0:
-                ring = ring[::-1]
-            if abs(area2) <= 1e-14 * scale * scale:
-                continue  # a sliver of zero area covers nothing
-            faces.append([index.setdefault((float(x), float(y)), len(index)) for x, y in ring])
-        pts = np.array(list(index), dtype=np.float64).reshape(-1, 2)
-        pieces.extend(pts[f] for f in _merge_convex(faces, pts, scale))
+        pieces.extend(merged_triangulation(part, scale))
     return pieces
 
 
@@ -134,41 +120,6 @@ def _is_convex(ring: NDArray[np.float64], scale: float) -> bool:
     ) * (np.roll(ring, -2, 0)[:, 0] - ring[:, 0])
     tol = 1e-12 * scale * scale
     return bool(np.all(turns >= -tol) or np.all(turns <= tol))
-
-
-def _convex_at(pts: NDArray[np.float64], prev: int, here: int, nxt: int, scale: float) -> bool:
-    return _cross(pts[prev], pts[here], pts[nxt]) >= -1e-12 * scale * scale
-
-
-def _merge_convex(faces: list[list[int]], pts: NDArray[np.float64], scale: float) -> list[list[int]]:
-    """Hertel-Mehlhorn: drop each shared diagonal whose two pieces merge into a convex one."""
-    alive: dict[int, list[int]] = dict(enumerate(faces))
-    owner: dict[tuple[int, int], int] = {}
-    for k, f in alive.items():
-        for i in range(len(f)):
-            owner[(f[i], f[(i + 1) % len(f)])] = k
-    for a, b in [e for e in owner if (e[1], e[0]) in owner and e[0] < e[1]]:
-        p, q = owner.get((a, b)), owner.get((b, a))
-        if p is None or q is None or p == q:
-            continue
-        fp, fq = alive[p], alive[q]
-        ip, iq = fp.index(a), fq.index(b)
-        ring = [fp[(ip + 1 + j) % len(fp)] for j in range(len(fp))]  # b ... a
-        ring += [fq[(iq + 2 + j) % len(fq)] for j in range(len(fq) - 2)]  # after a ... before b
-        n = len(ring)
-        ia, ib = ring.index(a), ring.index(b)
-        if not (
-            _convex_at(pts, ring[ia - 1], a, ring[(ia + 1) % n], scale)
-            and _convex_at(pts, ring[ib - 1], b, ring[(ib + 1) % n], scale)
-        ):
-            continue
-        del alive[q]
-        alive[p] = ring
-        for i in range(n):
-            owner[(ring[i], ring[(i + 1) % n])] = p
-        owner.pop((a, b), None)
-        owner.pop((b, a), None)
-    return list(alive.values())
 
 
 def shape_from_region(region: Any) -> Shape2D:
