@@ -25,7 +25,7 @@ from numpy.typing import NDArray
 
 from ..csg.program import OP_LEAF, OP_UNION
 from .meshes import PreparedMesh
-from .small_leaves import PixelRays
+from .small_leaves import PixelRays, depth_keys
 
 __all__ = ["layer_counts", "expand_program", "leaf_layers"]
 
@@ -96,18 +96,9 @@ def leaf_layers(
         hit = np.isfinite(t_in) & np.isfinite(t_out)
         d_in = np.where(hit, t_in, 0.0) / norm
         d_out = np.where(hit, t_out, 0.0) / norm
-        front = hit & (d_in >= near)
-        back = hit & (d_out >= near)
-        kf = np.full(len(norm), np.inf)
-        kb = np.full(len(norm), -np.inf)
+        front, back, kf, kb = depth_keys(d_in, d_out, hit, near, rays.perspective)
         vf = np.zeros(len(norm), np.float32)
         vb = np.zeros(len(norm), np.float32)
-        if rays.perspective:
-            kf[front] = -1.0 / d_in[front]
-            kb[back] = -1.0 / d_out[back]
-        else:
-            kf[front] = d_in[front]
-            kb[back] = d_out[back]
         vf[front] = values.at(origins[front] + directions[front] * d_in[front, None], True)
         vb[back] = values.at(origins[back] + directions[back] * d_out[back, None], False)
         layers.append((kf, vf, kb, vb))

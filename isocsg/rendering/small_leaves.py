@@ -22,7 +22,7 @@ from ..camera import Camera
 from ..kinds import Primitive
 from ..lighting.shading import shade
 
-__all__ = ["PixelRays", "ray_intervals"]
+__all__ = ["PixelRays", "depth_keys", "ray_intervals"]
 
 
 class PixelRays:
@@ -47,6 +47,25 @@ class PixelRays:
         return o, np.broadcast_to(self.f, o.shape)
 
 
+def depth_keys(
+    d_in: NDArray[np.float64], d_out: NDArray[np.float64], hit: NDArray[np.bool_], near: float, perspective: bool
+) -> tuple[NDArray[np.bool_], NDArray[np.bool_], NDArray[np.float64], NDArray[np.float64]]:
+    """Which ray intervals show a front and a back surface in front of the near plane, and their
+    depth keys as the fills write them (``-1/depth`` in perspective, the depth otherwise; ``+inf``
+    and ``-inf`` where none)."""
+    front = hit & (d_in >= near)
+    back = hit & (d_out >= near)
+    kf = np.full(len(hit), np.inf)
+    kb = np.full(len(hit), -np.inf)
+    if perspective:
+        kf[front] = -1.0 / d_in[front]
+        kb[back] = -1.0 / d_out[back]
+    else:
+        kf[front] = d_in[front]
+        kb[back] = d_out[back]
+    return front, back, kf, kb
+
+
 def ray_intervals(
     leaf: Primitive, rays: PixelRays, r0: int, c0: int, h: int, w: int, near: float, lights: Sequence[Any],
     material: Any,
@@ -60,18 +79,9 @@ def ray_intervals(
     # Parameters along unit directions; the camera depth is t times the direction's view component.
     d_in, d_out = hits.t_in / norm, hits.t_out / norm
     hit = hits.hit
-    front = hit & (d_in >= near)
-    back = hit & (d_out >= near)
-    kf = np.full(len(norm), np.inf)
-    kb = np.full(len(norm), -np.inf)
+    front, back, kf, kb = depth_keys(d_in, d_out, hit, near, rays.perspective)
     vf = np.zeros(len(norm), np.float32)
     vb = np.zeros(len(norm), np.float32)
-    if rays.perspective:
-        kf[front] = -1.0 / d_in[front]
-        kb[back] = -1.0 / d_out[back]
-    else:
-        kf[front] = d_in[front]
-        kb[back] = d_out[back]
     nf = int(front.sum())
     if nf or back.any():  # both surfaces in one call (its fixed cost is most of a small leaf's)
         points = np.concatenate([origins[front] + directions[front] * d_in[front, None],
