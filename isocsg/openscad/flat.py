@@ -20,12 +20,13 @@ from __future__ import annotations
 
 import math
 import warnings
+from pathlib import Path
 from typing import Any
 
 import numpy as np
 from numpy.typing import NDArray
 
-from ..errors import InvalidGeometryError
+from ..errors import InvalidGeometryError, InvalidParameterError
 from .parser import CSGCall
 
 # The lowering context (lowering._Lowerer) that calls these functions; typed loosely so that this
@@ -137,11 +138,45 @@ def _hull2d(lw: _Lowerer, call: CSGCall, body: Any) -> Any:
     return polygon(np.asarray(hull.exterior.coords)[:-1].tolist())
 
 
+def drawing_path(lw: _Lowerer, call: CSGCall) -> Path:
+    """The file an ``import`` names, relative to the model's own folder (as OpenSCAD resolves it)."""
+    args = _named(lw, call)
+    name = args.get("file")
+    if not isinstance(name, str) or not name:
+        raise lw.fail(call, f"import needs a file name, got {name!r}")
+    path = Path(name)
+    if not path.is_absolute() and lw.source:
+        path = Path(lw.source).parent / path
+    return path
+
+
+def _import2d(lw: _Lowerer, call: CSGCall) -> Any:
+    """``import("drawing.dxf", layer, origin, scale)`` in 2D: the drawing's region as OpenSCAD reads
+    it (:func:`isocsg.shapes2d.drawings.import_dxf`); other 2D formats are refused by name."""
+    from ..shapes2d.drawings import import_dxf
+
+    path = drawing_path(lw, call)
+    if path.suffix.lower() != ".dxf":
+        lw.unsupported(call, f"2D drawings in {path.suffix or 'unnamed'} files are not read (DXF is)")
+        return None
+    args = _named(lw, call)
+    origin = args.get("origin", [0, 0])
+    try:
+        return import_dxf(
+            path, layer=args.get("layer") or None, origin=(float(origin[0]), float(origin[1])),
+            scale=float(args.get("scale", 1.0)), fn=float(args.get("$fn", 0) or 0), fs=float(args.get("$fs", 2)),
+            fa=float(args.get("$fa", 12)))
+    except (InvalidGeometryError, InvalidParameterError, TypeError, ValueError, IndexError) as exc:
+        raise lw.fail(call, f"import: {exc}") from None
+
+
 def _node(lw: _Lowerer, call: CSGCall, kids: list[Any]) -> Any:
     """The shape of one 2D node from its children's shapes (None: skipped)."""
     from ..shapes2d import EMPTY, from_openscad, union2d
 
     name = call.name
+    if name == "import":
+        return _import2d(lw, call)
     if name == "hull":
         return _hull2d(lw, call, union2d(*kids) if kids else EMPTY)
     args = _named(lw, call)
@@ -182,7 +217,7 @@ def _kept(lw: _Lowerer, call: CSGCall) -> list[CSGCall]:
             warnings.warn(MixedDimensionsWarning(
                 f"{lw.where(c)}ignoring the 3D object {c.name}() in a 2D operation, as OpenSCAD does"), stacklevel=2)
             continue
-        if c.name not in NODES_2D and c.name not in _PASS:
+        if c.name not in NODES_2D and c.name not in _PASS and c.name != "import":
             lw.unsupported(c, lw.reason(c.name, "2D"))
             continue
         out.append(c)
