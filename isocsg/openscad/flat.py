@@ -161,13 +161,16 @@ def _import2d(lw: _Lowerer, call: CSGCall) -> Any:
         return None
     args = _named(lw, call)
     origin = args.get("origin", [0, 0])
+    scale = args.get("scale", 1.0)
+    if isinstance(scale, list) and scale:
+        scale = scale[0]  # linear_extrude(file = ...) reads its drawing at its own scale's x (OpenSCAD 2021.01)
     try:
         return import_dxf(
             path, layer=args.get("layer") or None, origin=(float(origin[0]), float(origin[1])),
-            scale=float(args.get("scale", 1.0)), fn=float(args.get("$fn", 0) or 0), fs=float(args.get("$fs", 2)),
+            scale=float(scale), fn=float(args.get("$fn", 0) or 0), fs=float(args.get("$fs", 2)),
             fa=float(args.get("$fa", 12)))
     except (InvalidGeometryError, InvalidParameterError, TypeError, ValueError, IndexError) as exc:
-        raise lw.fail(call, f"import: {exc}") from None
+        raise lw.fail(call, str(exc)) from None
 
 
 def _node(lw: _Lowerer, call: CSGCall, kids: list[Any]) -> Any:
@@ -289,9 +292,6 @@ def extrude(lw: _Lowerer, call: CSGCall) -> Any:
     """The solid of a ``linear_extrude`` node (None: empty or skipped)."""
     from ..shapes2d import EMPTY, linear_extrude
 
-    if "file" in call.kwargs:
-        lw.unsupported(call, "extruding an imported drawing is not supported")
-        return None
     twist = lw.number(call, "twist", call.kwargs.get("twist", 0.0) or 0.0)
     if twist != 0.0:
         lw.unsupported(call, f"a twisted extrusion (twist = {twist:g}) is not supported yet")
@@ -302,8 +302,9 @@ def extrude(lw: _Lowerer, call: CSGCall) -> Any:
     scale_v = lw.vector(call, "scale", 1.0 if scale is None else scale, 2)
     if h <= 0:
         return None
-    shape = shape_of(lw, call)
-    if shape is EMPTY:
+    # The old form names its drawing itself: linear_extrude(file = "x.dxf", layer = ...).
+    shape = _import2d(lw, call) if "file" in call.kwargs else shape_of(lw, call)
+    if shape is None or shape is EMPTY:
         return None
     s: Any = float(scale_v[0]) if scale_v[0] == scale_v[1] else scale_v.tolist()
     try:

@@ -42,7 +42,8 @@ def _run(args: list[str], source: str, timeout: float) -> None:
     exe = find_openscad()
     try:
         done = subprocess.run(
-            [exe, *args], capture_output=True, text=True, timeout=timeout, stdin=subprocess.DEVNULL, check=False
+            [exe, *args], capture_output=True, text=True, encoding="utf-8", errors="replace",  # any bytes in messages
+            timeout=timeout, stdin=subprocess.DEVNULL, check=False,
         )
     except subprocess.TimeoutExpired:
         raise OpenSCADError(f"{source}: openscad did not finish within {timeout:g} s") from None
