@@ -199,8 +199,8 @@ def _node(lw: _Lowerer, call: CSGCall, kids: list[Any]) -> Any:
         return union2d(*kids) if kids else EMPTY  # mirror([0, 0, 0]) or about z: the shape itself
     if name == "scale" and isinstance(args.get("v"), list) and any(s == 0 for s in args["v"][:2]):
         return EMPTY  # flattened to a line: no area
-    if name in ("difference", "intersection") and not kids:
-        return EMPTY
+    if name in ("difference", "intersection", "multmatrix", "translate", "rotate", "scale", "mirror") and not kids:
+        return EMPTY  # nothing to combine or to move (a 3D child ignored in 2D, a background one)
     try:
         return from_openscad(name, args, kids)
     except InvalidGeometryError as exc:
