@@ -296,3 +296,39 @@ def normalize_rows(v: NDArray[np.float64]) -> NDArray[np.float64]:
     """Unit vectors along the rows of ``v`` (rows of zero length stay zero)."""
     n = np.linalg.norm(v, axis=-1, keepdims=True)
     return np.divide(v, n, out=np.zeros_like(v), where=n > 0)
+
+
+RGB = tuple[float, float, float]
+
+
+def parse_color(value: Any, *, name: str = "color") -> RGB:
+    """An sRGB triple in [0, 1] from a vector of 3 or 4 numbers in [0, 1] (alpha is dropped), an
+    SVG/CSS colour name or a ``"#rgb"``/``"#rrggbb"`` string.
+
+    Raises
+    ------
+    InvalidParameterError
+        Naming ``name`` and the value, for anything else (an unknown name, a number out of [0, 1],
+        NaN).
+
+    Examples
+    --------
+    >>> parse_color("red"), parse_color([0, 0.5, 1, 0.3])
+    ((1.0, 0.0, 0.0), (0.0, 0.5, 1.0))
+    """
+    if isinstance(value, str):
+        from PIL import ImageColor
+
+        try:
+            r, g, b = ImageColor.getrgb(value.strip())[:3]
+        except ValueError:
+            raise InvalidParameterError(f"{name} must be a colour name or #rrggbb, got {value!r}") from None
+        return (r / 255.0, g / 255.0, b / 255.0)
+    wrong = f"{name} must be 3 or 4 numbers in [0, 1] or a colour name, got {show(value)}"
+    try:
+        v = np.asarray(value, dtype=np.float64).ravel()
+    except (TypeError, ValueError):
+        raise InvalidParameterError(wrong) from None
+    if v.size not in (3, 4) or not np.all(np.isfinite(v)) or v.min() < 0.0 or v.max() > 1.0:
+        raise InvalidParameterError(wrong)
+    return (float(v[0]), float(v[1]), float(v[2]))

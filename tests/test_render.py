@@ -389,7 +389,7 @@ def test_svg_keeps_order_colour_and_fixed_decimals(tmp_path):
 @pytest.mark.parametrize(
     ("call", "message"),
     [
-        (lambda p: imagemod.save_png(p, np.zeros(3)), "image must have shape (H, W), got (3,)"),
+        (lambda p: imagemod.save_png(p, np.zeros(3)), "image must have shape (H, W) or (H, W, 3), got (3,)"),
         (lambda p: imagemod.save_svg(p, [[(0, 0), (1, 1)]], [0.5], width=2, height=2),
          "polygons[0] must have shape (k, 2) with k >= 3, got (2, 2)"),
         (lambda p: imagemod.save_svg(p, [], [0.5], width=2, height=2),

@@ -300,7 +300,7 @@ DOC_ERRORS = [
      "got an array"),
     ("missing-shape", {"objects__0__shape": _DELETE}, "objects[0].shape: missing required field"),
     ("object-unknown-key", {"objects__0__colour": "red"},
-     "objects[0]: unknown key 'colour' (expected shape, material)"),
+     "objects[0]: unknown key 'colour' (expected shape, material, color, leaf_colors)"),
     ("no-objects", {"objects": []}, "objects: needs at least one object, got none"),
     ("objects-not-array", {"objects": {"shape": {}}}, "objects: must be an array, got a table"),
     ("material-negative", {"objects__0__material__kd": -0.5}, "objects[0].material.kd: must be >= 0, got -0.5"),

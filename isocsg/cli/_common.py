@@ -204,18 +204,25 @@ def check_outputs(png: str | Path | None, npy: str | Path | None = None) -> None
             raise InvalidParameterError(f"output file {str(path)!r} is a directory")
 
 
-def write_outputs(result: Any, png: str | Path | None, npy: str | Path | None = None) -> list[Path]:
+def write_outputs(result: Any, png: str | Path | None, npy: str | Path | None = None, *,
+                  objects: Any = ()) -> list[Path]:
     """Write the PNG (and NPY) files of a render result, creating missing parent folders.
 
     The NPY file holds ``result.image`` (for a half-tone render: the illuminance E);
     the PNG shows ``result.display`` where the result has one (E times the scene's
-    ``render.exposure``, clipped), else the image.
+    ``render.exposure``, clipped), else the image, in colour when one of ``objects`` (the scene's)
+    is coloured (:mod:`isocsg.rendering.colors`).
     """
     from ..rendering.image import save_npy, save_png
 
     check_outputs(png, npy)
     written = []
     shown = getattr(result, "display", result.image)
+    if not hasattr(result, "display") and objects:
+        from ..rendering.colors import colored_image, is_colored
+
+        if is_colored(objects):
+            shown = colored_image(result, objects)
     for path, writer, image in ((png, save_png, shown), (npy, save_npy, result.image)):
         if path is None:
             continue

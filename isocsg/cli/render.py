@@ -100,7 +100,7 @@ def run(args: argparse.Namespace) -> int:
     if not gltf or args.npy is not None:
         with progress_bar(f"render {scene.render.mode}", enabled=not args.no_progress) as progress:
             result = render_scene(scene, progress=progress)
-        for path in write_outputs(result, None if gltf else args.output, args.npy):
+        for path in write_outputs(result, None if gltf else args.output, args.npy, objects=scene.objects):
             print(f"wrote {path}")
     if args.svg is not None:
         from ..rendering.svg import save_scene_svg
@@ -124,4 +124,6 @@ def _load(path: str, *, skip_unsupported: bool = False) -> Any:
         print(f"isocsg render: skipped {sum(model.skipped.values())} unsupported OpenSCAD node(s): {counts}", file=sys.stderr)
     for line in getattr(model, "left_out", ()):  # each node left out, with its line and why
         print(f"isocsg render: left out {line}", file=sys.stderr)
-    return framed_scene(model.solid)
+    from ..scene.model import SceneObject
+
+    return framed_scene(SceneObject(model.solid, leaf_colors=model.leaf_colors))

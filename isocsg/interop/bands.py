@@ -37,12 +37,16 @@ class ShadedSurface:
         Intensity each triangle shows (the conventions' shading, 0 black, 1 white).
     name : str
         A label for viewers, e.g. ``"object0"``.
+    color : ndarray, shape (T, 3), float64, or None
+        The sRGB colour each triangle's intensity tints (its object's or leaf's colour,
+        :mod:`isocsg.rendering.colors`); None: grey.
     """
 
     vertices: NDArray[np.float64]
     triangles: NDArray[np.int32]
     value: NDArray[np.float64]
     name: str = "object"
+    color: NDArray[np.float64] | None = None
 
     @property
     def n_triangles(self) -> int:
@@ -73,6 +77,8 @@ def object_surface(
     *,
     eye: ArrayLike | None = None,
     name: str = "object",
+    color: Any = None,
+    leaf_colors: Any = (),
 ) -> ShadedSurface:
     """The shaded band surface of one solid.
 
@@ -89,6 +95,9 @@ def object_surface(
     eye : array_like, shape (3,), optional
         Needed only by specular materials (view-dependent bands).
     name : str, keyword-only, default "object"
+    color, leaf_colors : keyword-only, optional
+        The object's colour and its leaves' (as :class:`~isocsg.SceneObject` takes them): each
+        triangle gets its leaf's colour, else the object's (:attr:`ShadedSurface.color`).
 
     Returns
     -------
@@ -128,11 +137,22 @@ def object_surface(
         return ShadedSurface(
             np.asarray(surf.vertices, np.float64), np.asarray(surf.triangles, np.int32),
             np.asarray(surf.value, np.float64), name,
+            _triangle_colors(shape, color, leaf_colors, np.asarray(surf.leaf)),
         )
     b = build_laminae(shape, lights_t, mat, contours, eye=eye).bands
     return ShadedSurface(
-        np.asarray(b.vertices, np.float64), np.asarray(b.triangles, np.int32), np.asarray(b.value_out, np.float64), name
+        np.asarray(b.vertices, np.float64), np.asarray(b.triangles, np.int32), np.asarray(b.value_out, np.float64),
+        name, _triangle_colors(shape, color, leaf_colors, np.zeros(len(b.triangles), np.int64)),
     )
+
+
+def _triangle_colors(shape: Solid, color: Any, leaf_colors: Any, leaf: NDArray[Any]) -> NDArray[np.float64] | None:
+    """Each triangle's colour from its leaf's (or the object's), or None when nothing is coloured."""
+    from ..rendering.colors import leaf_color_table
+    from ..scene.model import SceneObject
+
+    table = leaf_color_table([SceneObject(shape, color=color, leaf_colors=tuple(leaf_colors))])
+    return None if table is None else np.asarray(table[0], np.float64)[leaf]
 
 
 def scene_surfaces(scene: Any, *, contours: int | None = None) -> list[ShadedSurface]:
@@ -163,7 +183,8 @@ def scene_surfaces(scene: Any, *, contours: int | None = None) -> list[ShadedSur
     n = scene.render.contours if contours is None else contours
     lights = _band_lights(scene.lights)
     return [
-        object_surface(o.shape, lights, o.material, n, eye=scene.camera.eye, name=f"object{k}")
+        object_surface(o.shape, lights, o.material, n, eye=scene.camera.eye, name=f"object{k}", color=o.color,
+                       leaf_colors=o.leaf_colors)
         for k, o in enumerate(scene.objects)
     ]
 

@@ -139,8 +139,12 @@ def gltf_document(item: Any, *, contours: int | None = None) -> tuple[dict[str, 
         # One vertex per triangle corner: colours cannot blend across triangles.
         pos = np.asarray(s.vertices, dtype=np.float64)[t.reshape(-1)].astype(np.float32)
         value = np.repeat(np.asarray(s.value, dtype=np.float64), 3)
-        grey = srgb_to_linear(value).astype(np.float32)
-        rgba = np.column_stack([grey, grey, grey, np.ones_like(grey)])
+        if s.color is None:
+            grey = srgb_to_linear(value).astype(np.float32)
+            rgba = np.column_stack([grey, grey, grey, np.ones_like(grey)])
+        else:  # the intensity tints the triangle's colour (the colour of isocsg's own PNG, in linear light)
+            tinted = srgb_to_linear(value[:, None] * np.repeat(np.asarray(s.color, np.float64), 3, axis=0))
+            rgba = np.column_stack([tinted, np.ones(len(tinted))]).astype(np.float32)
         attributes = {
             "POSITION": buf.add(pos, "VEC3", _FLOAT, _ARRAY_BUFFER, bounds=True),
             "COLOR_0": buf.add(rgba, "VEC4", _FLOAT, _ARRAY_BUFFER),

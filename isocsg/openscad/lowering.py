@@ -47,6 +47,7 @@ from typing import Any
 import numpy as np
 from numpy.typing import NDArray
 
+from .._validation import parse_color
 from ..csg import Difference, Intersection, Union
 from ..errors import InvalidGeometryError, InvalidParameterError, OpenSCADError, UnsupportedOpenSCADError
 from ..kinds import Box, ConvexPolyhedron, Cylinder, Primitive, Solid, Sphere, Truncus
@@ -95,11 +96,16 @@ class LoweredModel:
     left_out : tuple of str
         One line per node left out of the model, skipped or ignored as OpenSCAD ignores it (a 2D
         object beside 3D ones): ``"model.csg:12: minkowski(): Minkowski sums are not ..."``.
+    leaf_colors : tuple of (r, g, b) or None
+        The colour ``color()`` gives each leaf of :attr:`solid` (in ``leaves()`` order; the
+        innermost ``color`` wins, as in OpenSCAD), or None; empty when nothing is coloured. Pass
+        it to :class:`~isocsg.SceneObject` to draw the model in its colours.
     """
 
     solid: Solid
     skipped: dict[str, int]
     left_out: tuple[str, ...] = ()
+    leaf_colors: tuple[tuple[float, float, float] | None, ...] = ()
 
 
 class _Lowerer:
@@ -108,6 +114,7 @@ class _Lowerer:
         self.skip = skip_unsupported
         self.skipped: Counter[str] = Counter()
         self.left_out: list[str] = []
+        self.colors: dict[int, tuple[float, float, float]] = {}  # by id() of a leaf
 
     # ------------------------------------------------------------------ errors
 
@@ -446,7 +453,32 @@ def lower(calls: list[CSGCall], *, source: str | None = None, skip_unsupported: 
     if result is None or result is _DROP:
         what = f" (skipped: {_counts(lw.skipped)})" if lw.skipped else ""
         raise OpenSCADError(f"{source or 'model'}: the model is empty: nothing of it has a volume{what}")
-    return LoweredModel(result, dict(lw.skipped), tuple(lw.left_out))
+    return LoweredModel(result, dict(lw.skipped), tuple(lw.left_out), _leaf_colors(lw, result))
+
+
+def _color(lw: _Lowerer, call: CSGCall, solid: Any) -> None:
+    """Give the leaves of a ``color()`` node's solid its colour, unless an inner one gave them theirs."""
+    if not isinstance(solid, Solid):
+        return
+    value = lw.arg(call, "c", 0, None)
+    if value is None:
+        return
+    try:
+        rgb = parse_color(value, name="color")
+    except InvalidParameterError as exc:
+        raise lw.fail(call, str(exc)) from None
+    from ..csg.tree import leaves
+
+    for leaf in leaves(solid):
+        lw.colors.setdefault(id(leaf), rgb)
+
+
+def _leaf_colors(lw: _Lowerer, solid: Solid) -> tuple[tuple[float, float, float] | None, ...]:
+    if not lw.colors:
+        return ()
+    from ..csg.tree import leaves
+
+    return tuple(lw.colors.get(id(leaf)) for leaf in leaves(solid))
 
 
 def _root_modified(calls: list[CSGCall]) -> list[CSGCall] | None:
@@ -525,7 +557,10 @@ def _leave(lw: _Lowerer, call: CSGCall, m: NDArray[np.float64] | None, parts: li
         return _combine(name, kept)
     if name == "hull":
         return _hull(lw, call, kept)
-    return _combine("union", kept)
+    combined = _combine("union", kept)
+    if name == "color":
+        _color(lw, call, combined)
+    return combined
 
 
 _NOT_POINTS = object()  # a hull's subtree that is not only maps, groups, cubes and polyhedra

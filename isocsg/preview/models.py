@@ -71,7 +71,8 @@ def load_model(path: str | Path, *, skip_unsupported: bool = True) -> LoadedMode
         from ..openscad import read_openscad
 
         lowered = read_openscad(p, skip_unsupported=skip_unsupported)
-        return LoadedModel(framed_scene(lowered.solid), tuple(f"left out {line}" for line in lowered.left_out))
+        scene = framed_scene(SceneObject(lowered.solid, leaf_colors=lowered.leaf_colors))
+        return LoadedModel(scene, tuple(f"left out {line}" for line in lowered.left_out))
     if suffix in (".toml", ".json"):
         from ..scene.io import load_scene
 
@@ -93,8 +94,7 @@ def _script_scene(path: Path) -> Scene:
         if isinstance(value, (Solid, SceneObject)):
             value = [value]
         if isinstance(value, Sequence) and value and all(isinstance(v, (Solid, SceneObject)) for v in value):
-            solids = [v.shape if isinstance(v, SceneObject) else v for v in value]
-            return framed_scene(solids)
+            return framed_scene(list(value))
         raise InvalidParameterError(
             f"{path}: {name} must be a Scene, a solid or a list of solids, got {type(value).__name__}")
     raise InvalidParameterError(f"{path}: the script must bind one of {', '.join(SCRIPT_NAMES)} to a Scene or solids")

@@ -42,12 +42,14 @@ class ViewImage:
 
 
 def _png(image: np.ndarray) -> bytes:
-    """An RGB PNG of a grey image in [0, 1] with NaN (nothing there) in :data:`BACKGROUND_RGB`."""
+    """An RGB PNG of a grey (H, W) or colour (H, W, 3) image in [0, 1] with NaN (nothing there) in
+    :data:`BACKGROUND_RGB`."""
     from PIL import Image
 
-    grey = np.rint(np.clip(np.nan_to_num(image, nan=0.0), 0.0, 1.0) * 255.0).astype(np.uint8)
-    rgb = np.repeat(grey[:, :, None], 3, axis=2)
-    rgb[np.isnan(image)] = BACKGROUND_RGB
+    if image.ndim == 2:
+        image = np.repeat(image[:, :, None], 3, axis=2)
+    rgb = np.rint(np.clip(np.nan_to_num(image, nan=0.0), 0.0, 1.0) * 255.0).astype(np.uint8)
+    rgb[np.isnan(image).any(axis=2)] = BACKGROUND_RGB
     out = io.BytesIO()
     Image.fromarray(rgb, mode="RGB").save(out, format="PNG", compress_level=1)
     return out.getvalue()
@@ -122,7 +124,9 @@ class PreviewSession:
 
                 image = render_halftone(scene).display
             else:
-                image = self._renderer.render(scene).image
+                from ..rendering.colors import colored_image
+
+                image = colored_image(self._renderer.render(scene), scene.objects)
             seconds = time.perf_counter() - start
         return ViewImage(_png(np.asarray(image, dtype=np.float64)), version, seconds)
 

@@ -21,16 +21,18 @@ from ..errors import InvalidParameterError
 __all__ = ["to_uint8", "save_png", "save_npy", "save_svg"]
 
 
-def _image(name: str, image: ArrayLike) -> NDArray[np.float32]:
+def _image(name: str, image: ArrayLike, *, rgb: bool = False) -> NDArray[np.float32]:
+    shapes = "(H, W) or (H, W, 3)" if rgb else "(H, W)"
     try:
         a = np.asarray(image, dtype=np.float32)
     except (TypeError, ValueError):
         raise InvalidParameterError(
             f"{name} must be a numeric array of shape "
-            f"(H, W), got {type(image).__name__}"
+            f"{shapes}, got {type(image).__name__}"
         ) from None
-    if a.ndim != 2 or a.shape[0] < 1 or a.shape[1] < 1:
-        raise InvalidParameterError(f"{name} must have shape (H, W), got {a.shape}")
+    colour = rgb and a.ndim == 3 and a.shape[2] == 3
+    if (a.ndim != 2 and not colour) or a.shape[0] < 1 or a.shape[1] < 1:
+        raise InvalidParameterError(f"{name} must have shape {shapes}, got {a.shape}")
     return a
 
 
@@ -39,11 +41,11 @@ def to_uint8(image: ArrayLike) -> NDArray[np.uint8]:
 
     Parameters
     ----------
-    image : array_like, shape (H, W)
+    image : array_like, shape (H, W) or (H, W, 3)
 
     Returns
     -------
-    ndarray, shape (H, W), uint8
+    ndarray, uint8, the shape of ``image``
 
     Raises
     ------
@@ -55,20 +57,20 @@ def to_uint8(image: ArrayLike) -> NDArray[np.uint8]:
     >>> to_uint8([[0.0, 0.5, 1.2], [np.nan, -1.0, 1.0]]).tolist()
     [[0, 128, 255], [0, 0, 255]]
     """
-    a = _image("image", image)
+    a = _image("image", image, rgb=True)
     out = np.rint(np.clip(np.nan_to_num(a, nan=0.0), 0.0, 1.0) * 255.0)
     return out.astype(np.uint8)
 
 
 def save_png(path: str | os.PathLike[str] | BinaryIO, image: ArrayLike) -> None:
-    """Write an 8-bit grey PNG (see :func:`to_uint8`) with Pillow.
+    """Write an 8-bit grey (or RGB) PNG (see :func:`to_uint8`) with Pillow.
 
     Parameters
     ----------
     path : str, path-like or binary file object
         A file name, or an object with a ``write(bytes)`` method (an open
         file, ``io.BytesIO``, ``sys.stdout.buffer``).
-    image : array_like, shape (H, W)
+    image : array_like, shape (H, W), or (H, W, 3) for colour
 
     Raises
     ------
@@ -91,7 +93,8 @@ def save_png(path: str | os.PathLike[str] | BinaryIO, image: ArrayLike) -> None:
     """
     from PIL import Image
 
-    pixels = Image.fromarray(to_uint8(image), mode="L")
+    eight = to_uint8(image)
+    pixels = Image.fromarray(eight, mode="RGB" if eight.ndim == 3 else "L")
     if hasattr(path, "write"):
         if isinstance(path, io.TextIOBase):
             raise InvalidParameterError(f"path must be a path or a binary file object, got the text stream {path!r}")

@@ -49,8 +49,10 @@ def frame_camera(bounds: np.ndarray, *, width: int = 512, height: int = 512, fov
     return Camera(eye=tuple(center + distance * d), target=tuple(center), fov=fov, width=width, height=height)
 
 
-def framed_scene(solids: Solid | Sequence[Solid], *, width: int = 512, height: int = 512, contours: int = 64) -> Scene:
-    """A scene of the solids with :func:`frame_camera` and one directional light.
+def framed_scene(solids: Solid | SceneObject | Sequence[Solid | SceneObject], *, width: int = 512, height: int = 512,
+                 contours: int = 64) -> Scene:
+    """A scene of the solids (or scene objects, with their materials and colours) with
+    :func:`frame_camera` and one directional light.
 
     Examples
     --------
@@ -59,9 +61,9 @@ def framed_scene(solids: Solid | Sequence[Solid], *, width: int = 512, height: i
     >>> len(scene.lights), scene.camera.target
     (1, (0.0, 0.0, 0.0))
     """
-    items = [solids] if isinstance(solids, Solid) else list(solids)
-    bounds = np.stack([s.bounds for s in items])
+    items = [solids] if isinstance(solids, (Solid, SceneObject)) else list(solids)
+    objects = [s if isinstance(s, SceneObject) else SceneObject(s) for s in items]
+    bounds = np.stack([o.shape.bounds for o in objects])
     box = np.stack([bounds[:, 0].min(axis=0), bounds[:, 1].max(axis=0)])
     camera = frame_camera(box, width=width, height=height)
-    return Scene(camera, [DirectionalLight(LIGHT_DIRECTION)], [SceneObject(s) for s in items],
-                 RenderSettings(contours=contours))
+    return Scene(camera, [DirectionalLight(LIGHT_DIRECTION)], objects, RenderSettings(contours=contours))

@@ -149,7 +149,7 @@ LIGHT_KINDS = tuple(_LIGHT_FIELDS)
 _CAMERA_FIELDS = (("eye", "target"), ("up", "fov", "width", "height", "orthographic", "height_m"))
 _RENDER_FIELDS = ((), ("contours", "mode", "exposure", "interval"))
 _MATERIAL_FIELDS = ((), ("ambient", "kd", "ks", "shininess"))
-_OBJECT_FIELDS = (("shape",), ("material",))
+_OBJECT_FIELDS = (("shape",), ("material", "color", "leaf_colors"))
 _TOP_FIELDS = (("camera", "objects"), ("render", "lights"))
 
 _VALUE_ERRORS = (InvalidGeometryError, InvalidLightError, InvalidParameterError)
@@ -376,7 +376,23 @@ def _object(r: _Reader, path: str, value: Any) -> SceneObject:
     t = r.table(path, value, _OBJECT_FIELDS)
     shape = _shape(r, _join(path, "shape"), t["shape"])
     material = _material(r, _join(path, "material"), t["material"]) if "material" in t else Material()
-    return SceneObject(shape, material)
+    color = t.get("color")
+    leaf_colors: list[Any] = []
+    if "leaf_colors" in t:
+        # A table from leaf index (as text: TOML keys are strings) to colour; leaves not named keep the object's.
+        table = t["leaf_colors"]
+        if not isinstance(table, Mapping):
+            raise r.fail(_join(path, "leaf_colors"), "must be a table from leaf index to colour")
+        for key, c in table.items():
+            if not (isinstance(key, str) and key.isdigit()):
+                raise r.fail(_join(path, "leaf_colors"), f"keys must be leaf indices 0, 1, ..., got {key!r}")
+            k = int(key)
+            leaf_colors.extend([None] * (k + 1 - len(leaf_colors)))
+            leaf_colors[k] = c
+    try:
+        return SceneObject(shape, material, color, tuple(leaf_colors))
+    except _VALUE_ERRORS as exc:
+        raise r.fail(path, str(exc)) from None
 
 
 def scene_from_dict(data: Mapping[str, Any], *, source: str | os.PathLike[str] | None = None) -> Scene:

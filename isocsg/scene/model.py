@@ -7,7 +7,7 @@ from dataclasses import dataclass, field
 from typing import Any
 
 from .._late import late
-from .._validation import MAX_INTENSITY, integer, light_budget, scalar, show
+from .._validation import MAX_INTENSITY, integer, light_budget, parse_color, scalar, show
 from ..camera import Camera
 from ..errors import InvalidGeometryError, InvalidLightError, InvalidParameterError
 from ..kinds import Solid
@@ -29,16 +29,40 @@ RENDER_MODES = ("isoluminance", "halftone")
 
 @dataclass(frozen=True, slots=True)
 class SceneObject:
-    """A solid (primitive or CSG tree) with its material."""
+    """A solid (primitive or CSG tree) with its material and, optionally, its colour.
+
+    Parameters
+    ----------
+    shape : Solid
+    material : Material, optional
+    color : color, optional
+        An sRGB colour (3 or 4 numbers in [0, 1], alpha dropped; or an SVG colour name, or
+        ``"#rrggbb"``): the object's bands are drawn in it, each band one flat shade
+        (:mod:`isocsg.rendering.colors`). None: grey.
+    leaf_colors : sequence of colour or None, optional
+        One colour (or None: the object's) per leaf of the object's tree, in the order of
+        ``CSGNode.leaves()``, as OpenSCAD's ``color()`` colours subtrees; at most one per leaf
+        (more is an error when the object is drawn).
+    """
 
     shape: Solid
     material: Material = field(default_factory=Material)
+    color: tuple[float, float, float] | None = None
+    leaf_colors: tuple[tuple[float, float, float] | None, ...] = ()
 
     def __post_init__(self) -> None:
         if not isinstance(self.shape, Solid):
             raise InvalidGeometryError(f"SceneObject.shape must be a solid, got {type(self.shape).__name__}")
         if not isinstance(self.material, Material):
             raise InvalidParameterError(f"SceneObject.material must be a Material, got {type(self.material).__name__}")
+        if self.color is not None:
+            object.__setattr__(self, "color", parse_color(self.color, name="SceneObject.color"))
+        if self.leaf_colors:
+            colors = tuple(None if c is None else parse_color(c, name=f"SceneObject.leaf_colors[{i}]")
+                           for i, c in enumerate(self.leaf_colors))
+            object.__setattr__(self, "leaf_colors", colors)
+        else:
+            object.__setattr__(self, "leaf_colors", ())
 
 
 @dataclass(frozen=True, slots=True)

@@ -98,11 +98,17 @@ def scene_to_dict(scene: Scene) -> dict[str, Any]:
         "camera": camera,
         "render": {"contours": rs.contours, "mode": rs.mode, "exposure": rs.exposure, "interval": rs.interval},
         "lights": [_light_to_dict(light) for light in scene.lights],
-        "objects": [
-            {"material": o.material.to_dict(), "shape": _file_shape(o.shape, f"objects[{k}].shape")}
-            for k, o in enumerate(scene.objects)
-        ],
+        "objects": [_object_to_dict(k, o) for k, o in enumerate(scene.objects)],
     }
+
+
+def _object_to_dict(k: int, o: Any) -> dict[str, Any]:
+    out: dict[str, Any] = {"material": o.material.to_dict(), "shape": _file_shape(o.shape, f"objects[{k}].shape")}
+    if o.color is not None:
+        out["color"] = list(o.color)
+    if o.leaf_colors:
+        out["leaf_colors"] = {str(i): list(c) for i, c in enumerate(o.leaf_colors) if c is not None}
+    return out
 
 
 def _toml_value(v: Any) -> str:
