@@ -26,6 +26,7 @@ COMMANDS = {
     "demo": "render a built-in demo scene",
     "warmup": "compile the kernels once after installing",
     "illuminance": "illuminance map with isolux lines",
+    "report": "lighting study report (HTML or PDF)",
 }
 
 
