@@ -237,3 +237,29 @@ def test_opening_light_carries_the_flux(tmp_path):
 def test_malformed_files_name_the_field(tmp_path, name, text, match):
     with pytest.raises(PhotometryFileError, match=match):
         read_photometry(write(tmp_path, name, text))
+
+
+def rodrigues(axis, deg):
+    k = np.asarray(axis, float) / np.linalg.norm(axis)
+    K = np.array([[0, -k[2], k[1]], [k[2], 0, -k[0]], [-k[1], k[0], 0]])
+    a = math.radians(deg)
+    return np.eye(3) + math.sin(a) * K + (1 - math.cos(a)) * K @ K
+
+
+@settings(max_examples=30, deadline=None)
+@given(st.floats(0, 360), st.floats(0, 180), st.floats(-180, 180), st.floats(0, 180))
+def test_luminaire_frame_follows_the_type_c_convention(c, g, rot, tilt):
+    """C0 along local +x, C90 along +y, gamma from the nadir; rotation about world z, tilt about the C90 axis
+    swinging the nadir towards C0 (rotations written here by Rodrigues' formula)."""
+    G = np.linspace(0, 180, 19)
+    Cs = np.arange(0, 361, 30.0)
+    cc, gg = np.radians(Cs)[:, None], np.radians(G)[None, :]
+    # one value at each pole (C is undefined there), as a measured table has
+    ph = Photometry(Cs, G, (300 + 200 * np.cos(gg)) * (1 + np.sin(gg) * (0.3 * np.sin(cc) + 0.2 * np.cos(2 * cc))))
+    lamp = PhotometricLight((0, 0, 0), ph, rotation=rot, tilt=tilt)
+    cr, gr = math.radians(c), math.radians(g)
+    local = np.array([math.sin(gr) * math.cos(cr), math.sin(gr) * math.sin(cr), -math.cos(gr)])
+    # tilt: about the C90 axis (+y) taking the nadir (-z) towards C0 (+x); then the turn about world z
+    world = rodrigues((0, 0, 1), rot) @ rodrigues((0, 1, 0), -tilt) @ local
+    assert rodrigues((0, 1, 0), -90) @ np.array([0, 0, -1.0]) == pytest.approx([1, 0, 0], abs=1e-12)
+    assert lamp.intensity_towards(world[None])[0] == pytest.approx(float(ph.intensity(c, g)), rel=1e-9, abs=1e-9)
