@@ -18,6 +18,7 @@ from hypothesis import strategies as st
 
 from isocsg import Box
 from isocsg.errors import InvalidLightError
+from isocsg.lighting.area import AreaLight
 from isocsg.lighting.luminaire import PhotometricLight
 from isocsg.lighting.photometry import Photometry, PhotometryFileError, read_photometry
 from isocsg.shadows.direct import illuminance, illuminance_and_state
@@ -263,3 +264,14 @@ def test_luminaire_frame_follows_the_type_c_convention(c, g, rot, tilt):
     world = rodrigues((0, 0, 1), rot) @ rodrigues((0, 1, 0), -tilt) @ local
     assert rodrigues((0, 1, 0), -90) @ np.array([0, 0, -1.0]) == pytest.approx([1, 0, 0], abs=1e-12)
     assert lamp.intensity_towards(world[None])[0] == pytest.approx(float(ph.intensity(c, g)), rel=1e-9, abs=1e-9)
+
+
+def test_luminaires_and_area_sources_add_up_from_any_iterable():
+    lamp = PhotometricLight((0, 0, 2), Photometry.isotropic(50.0))
+    area = AreaLight([(-1, -1, 3), (-1, 1, 3), (1, 1, 3), (1, -1, 3)], 100.0)
+    p = [[0.3, 0.2, 0.0]]
+    both = illuminance(p, [0, 0, 1], (li for li in (lamp, area)))[0]
+    assert both == pytest.approx(illuminance(p, [0, 0, 1], lamp)[0] + illuminance(p, [0, 0, 1], [area])[0], rel=1e-12)
+    assert illuminance(p, [0, 0, 1], (li for li in [area]))[0] == illuminance(p, [0, 0, 1], area)[0]
+    with pytest.raises(InvalidLightError):
+        illuminance(p, [0, 0, 1], [lamp, "lamp"])

@@ -63,11 +63,18 @@ def _sources(lights: list[AreaLight | PolyhedronLight]) -> SourceArrays:
 
 def _split_lights(lights: Any) -> tuple[list[AreaLight | PolyhedronLight], list[PhotometricLight]]:
     """Area and polyhedron sources apart from point luminaires (a luminaire's type is checked here)."""
-    seq = [lights] if isinstance(lights, PhotometricLight) else lights
-    if isinstance(seq, (list, tuple)) and any(isinstance(li, PhotometricLight) for li in seq):
+    if isinstance(lights, PhotometricLight):
+        return [], [lights]
+    seq = lights if isinstance(lights, (list, tuple)) else None
+    if seq is None and not isinstance(lights, (AreaLight, PolyhedronLight)):
+        try:
+            seq = list(lights)
+        except TypeError:
+            seq = None
+    if seq is not None and any(isinstance(li, PhotometricLight) for li in seq):
         return (as_light_list([li for li in seq if not isinstance(li, PhotometricLight)]),
                 [li for li in seq if isinstance(li, PhotometricLight)])
-    return as_light_list(lights), []
+    return as_light_list(lights if seq is None else seq), []
 
 
 def _fallback_point(

@@ -157,13 +157,13 @@ class Requirement:
     source: str = ""
 
 
-#: Rows of the standard's tables that docs/lighting_studies.md cites (EN 12464-1:2021, offices;
-#: the rules for areas whose tasks are unknown, walls, ceilings and backgrounds).
+#: Rows of the standard's tables that docs/lighting_studies.md cites with their published sources
+#: (EN 12464-1:2021's offices row and unknown-task rule; the walls' and ceilings' values for offices).
 REQUIREMENTS: dict[str, Requirement] = {
     "filing_copying": Requirement(300.0, 0.40, "EN 12464-1:2021 offices, filing, copying, etc. (Em 300 lx, U0 0.40)"),
     "unknown_task": Requirement(math.nan, 0.40, "EN 12464-1:2021: task area unknown, the whole area U0 >= 0.40"),
-    "walls": Requirement(75.0, 0.10, "EN 12464-1:2021: walls Em >= 75 lx, U0 >= 0.10"),
-    "ceiling": Requirement(50.0, 0.10, "EN 12464-1:2021: ceiling Em >= 50 lx, U0 >= 0.10"),
+    "walls": Requirement(75.0, 0.10, "EN 12464-1, offices: walls Em >= 75 lx, U0 >= 0.10 (as quoted by Trilux)"),
+    "ceiling": Requirement(50.0, 0.10, "EN 12464-1, offices: ceiling Em >= 50 lx, U0 >= 0.10 (as quoted by Trilux)"),
 }
 
 
