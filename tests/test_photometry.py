@@ -40,13 +40,13 @@ def ies_text(gammas, cs, table, *, version="IES:LM-63-2002", lumens=1000.0, mult
     return "\r\n".join(head) + "\r\n"
 
 
-def ldt_text(isym, mc, ng, table_cdklm, *, flux=1000.0, lor=80.0, conv=1.0, lum=(600.0, 600.0)) -> str:
-    dc, dg = 360.0 / mc, 180.0 / (ng - 1)
+def ldt_text(isym, mc, ng, table_cdklm, *, flux=1000.0, lor=80.0, conv=1.0, lum=(600.0, 600.0), c_list=None) -> str:
+    dc, dg = (360.0 / mc if c_list is None else 0.0), 180.0 / (ng - 1)
     lines = ["isocsg tests", "1", str(isym), str(mc), f"{dc:g}", str(ng), f"{dg:g}", "R-1", "analytic", "N-1",
              "t.ldt", "2026", "600", "600", "50", f"{lum[0]:g}", f"{lum[1]:g}", "0", "0", "0", "0", "100",
              f"{lor:g}", f"{conv:g}", "0", "1", "1", "LED", f"{flux:g}", "3000", "80", "40"]
     lines += ["0.5"] * 10
-    lines += [f"{k * dc:g}" for k in range(mc)]
+    lines += [f"{k * dc:g}" for k in range(mc)] if c_list is None else [f"{c:g}" for c in c_list]
     lines += [f"{k * dg:g}" for k in range(ng)]
     lines += [f"{v:.12g}" for row in table_cdklm for v in row]
     return "\r\n".join(lines) + "\r\n"
@@ -162,6 +162,33 @@ def test_eulumdat_symmetries_against_the_full_table(tmp_path, isym):
     assert ph.lor == pytest.approx(0.8)
     lamp = PhotometricLight((0, 0, 0), ph)
     assert sphere_flux(lamp.intensity_towards, 72, 960) == pytest.approx(ph.flux(), rel=1e-5)
+
+
+def test_eulumdat_isym_3_with_unequal_c_planes(tmp_path):
+    """Dc = 0: the C angles are listed, not spaced; Isym 3 stores C270, C330, C0, C30, C90 (from index 3 Mc / 4)."""
+    C = np.array([0, 30, 90, 150, 180, 210, 270, 330.0])
+    G = np.linspace(0, 180, 19)
+
+    def f(c, g):  # symmetric about the C90-C270 plane: sin(180 - C) = sin(C)
+        return (300 + 200 * np.cos(np.radians(g))) * (1 + 0.4 * np.sin(np.radians(c)) * np.sin(np.radians(g)))
+
+    full = f(C[:, None], G[None, :])
+    stored = full[[6, 7, 0, 1, 2]]
+    ph = read_photometry(write(tmp_path, "u3.ldt", ldt_text(3, 8, 19, stored, c_list=C)))
+    ref = read_photometry(write(tmp_path, "u0.ldt", ldt_text(0, 8, 19, full, c_list=C)))
+    assert ph.c_angles.tolist() == [90, 150, 180, 210, 270]
+    cc, gg = np.meshgrid(np.linspace(0, 360, 121), np.linspace(0, 180, 37), indexing="ij")
+    np.testing.assert_allclose(ph.intensity(cc, gg), ref.intensity(cc, gg), rtol=1e-12, atol=1e-9)
+    bad = ldt_text(3, 8, 19, stored, c_list=[0, 30, 90, 150, 180, 210, 260, 330])
+    with pytest.raises(PhotometryFileError, match="angle number 7 must be 270"):
+        read_photometry(write(tmp_path, "b3.ldt", bad))
+
+
+def test_ies_in_latin_1_is_read(tmp_path):
+    text = ies_text([0, 90], [0], [[10, 10]]).replace("[MANUFAC] isocsg tests", "[MANUFAC] Lumi\xe8re")
+    p = tmp_path / "l1.ies"
+    p.write_bytes(text.encode("latin-1"))  # byte 0xe8 alone: not UTF-8
+    assert float(read_photometry(p).intensity(0, 45)) == pytest.approx(10.0)
 
 
 def test_ies_bilateral_and_quadrant_files_match_the_full_file(tmp_path):

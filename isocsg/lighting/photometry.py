@@ -387,8 +387,9 @@ def _read_ies(p: Path) -> Photometry:
     raw = p.read_bytes()
     try:
         text = raw.decode("utf-8")
-    except UnicodeDecodeError:
-        raise _fail(p, "not UTF-8 text (IES LM-63 files are ASCII)") from None
+    except UnicodeDecodeError:  # keywords in Latin-1 (accented names): its bytes are all text
+        text = raw.decode("latin-1")
+        raw = text.encode("utf-8")
     nv, nh = _ies_layout(p, text)
     try:
         from photompy import IESFile  # type: ignore[import-untyped]
@@ -470,8 +471,10 @@ def _read_ldt(p: Path) -> Photometry:
     elif h.isym == 4:
         c = ca[:stored]
     else:  # Isym 3: planes C270 .. C90 through C0; by the symmetry C -> 180 - C they are C270 down to C90
-        step = 360.0 / h.mc
-        c = 90.0 + step * np.arange(stored)
+        k0 = 3 * h.mc // 4
+        if abs(ca[k0] - 270.0) > 1e-6:
+            raise _fail(p, f"C angles: with Isym 3 the angle number {k0 + 1} must be 270, got {ca[k0]:g}")
+        c = np.mod(180.0 - ca[(k0 + np.arange(stored)) % h.mc], 360.0)[::-1]
         v = v[::-1]
     lor = float(h.lorl) / 100.0 if h.lorl and h.lorl > 0 else math.nan
     opening = (float(h.length_lum_area) / 1000.0, float(h.width_lum_area) / 1000.0, 0.0)
