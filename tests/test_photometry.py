@@ -302,3 +302,15 @@ def test_luminaires_and_area_sources_add_up_from_any_iterable():
     assert illuminance(p, [0, 0, 1], (li for li in [area]))[0] == illuminance(p, [0, 0, 1], area)[0]
     with pytest.raises(InvalidLightError):
         illuminance(p, [0, 0, 1], [lamp, "lamp"])
+
+
+def test_round_openings_keep_their_area(tmp_path):
+    # LM-63: an elliptical opening is marked by negative width and length (metres here)
+    ph = read_photometry(write(tmp_path, "e.ies", ies_text([0, 90], [0], [[100, 100]], width=-0.2, length=-0.5)))
+    assert ph.opening[:2] == pytest.approx((0.5, -0.2))
+    area = PhotometricLight((0, 0, 3), ph, rotation=30).opening_light()
+    assert area.area == pytest.approx(math.pi * 0.25 * 0.1, rel=1e-12)
+    # EULUMDAT: a width of 0 marks a circle of diameter the length
+    ph = read_photometry(write(tmp_path, "c.ldt", ldt_text(1, 4, 19, [analytic(0, np.linspace(0, 180, 19))],
+                                                           lum=(300.0, 0.0))))
+    assert PhotometricLight((0, 0, 3), ph).opening_light().area == pytest.approx(math.pi * 0.15**2, rel=1e-12)

@@ -159,8 +159,9 @@ class PhotometricLight:
         """The luminous opening as a world polygon (m, 3), counter-clockwise seen from below it.
 
         A rectangle ``length`` (along C0) x ``width`` centred at the position
-        in the luminaire's horizontal plane; a circular opening becomes a
-        regular polygon of :data:`CIRCLE_SIDES` sides with the circle's area.
+        in the luminaire's horizontal plane; a round opening (negative width)
+        becomes a polygon of :data:`CIRCLE_SIDES` sides inscribed in a scaled
+        ellipse of the same area. The opening's height (luminous sides) is not modelled.
 
         Raises
         ------
@@ -168,11 +169,15 @@ class PhotometricLight:
             If the file gives no luminous opening (length or width 0).
         """
         length, width, _ = self.photometry.opening
-        if width < 0:
+        if width < 0:  # a round opening: axes length (along C0) and -width
+            if not length > 0:
+                raise InvalidLightError(
+                    f"PhotometricLight.photometry.opening has no luminous area (length {length} m, width {width} m)"
+                )
             n = CIRCLE_SIDES
-            r = 0.5 * length * math.sqrt((2 * math.pi / n) / math.sin(2 * math.pi / n))  # polygon area = circle area
+            k = math.sqrt((2 * math.pi / n) / math.sin(2 * math.pi / n))  # polygon area = ellipse area
             ang = -2 * np.pi * np.arange(n) / n
-            local = np.c_[r * np.cos(ang), r * np.sin(ang), np.zeros(n)]
+            local = np.c_[0.5 * k * length * np.cos(ang), -0.5 * k * width * np.sin(ang), np.zeros(n)]
         else:
             if not (length > 0 and width > 0):
                 raise InvalidLightError(

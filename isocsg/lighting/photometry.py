@@ -93,7 +93,8 @@ class Photometry:
         nan when the file has none (IES: :meth:`flux` / ``lamp_flux``).
     opening : tuple of 3 floats, default (0, 0, 0)
         Luminous opening ``(length, width, height)`` in metres, length along
-        C0; a negative width means a circular opening of diameter ``length``.
+        C0; a negative width marks a round (elliptical) opening of axes
+        ``length`` x ``-width`` (a circle when they are equal).
     label : str
         The luminaire's name from the file.
     source : str
@@ -411,9 +412,9 @@ def _read_ies(p: Path) -> Photometry:
         raise _fail(p, f"IES LM-63: candela table of shape {v.shape}, expected ({nh}, {nv})")
     unit = _FEET if int(hdr.units) == 1 else 1.0
     lamps = float(hdr.lumens_per_lamp) * int(hdr.num_lamps)
-    opening = (abs(float(hdr.length)) * unit, float(hdr.width) * unit, abs(float(hdr.height)) * unit)
-    if float(hdr.width) < 0:  # circular: LM-63 gives the diameter as a negative width (and length)
-        opening = (abs(float(hdr.width)) * unit, -abs(float(hdr.width)) * unit, opening[2])
+    w, ln, ht = float(hdr.width) * unit, float(hdr.length) * unit, abs(float(hdr.height)) * unit
+    # LM-63: negative dimensions mark round shapes (circle: -d, -d; ellipse: -w, -l): kept as a negative width
+    opening = (abs(ln), -abs(w), ht) if (w < 0 or ln < 0) else (ln, w, ht)
     label = str(hdr.keywords.get("LUMINAIRE", "") or hdr.keywords.get("LUMCAT", "") or "")
     try:
         return Photometry(c, g, v, lamps if lamps > 0 else math.nan, math.nan, opening, label.strip(),
