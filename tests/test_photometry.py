@@ -314,3 +314,41 @@ def test_round_openings_keep_their_area(tmp_path):
     ph = read_photometry(write(tmp_path, "c.ldt", ldt_text(1, 4, 19, [analytic(0, np.linspace(0, 180, 19))],
                                                            lum=(300.0, 0.0))))
     assert PhotometricLight((0, 0, 3), ph).opening_light().area == pytest.approx(math.pi * 0.15**2, rel=1e-12)
+
+
+def _slab(p, d, lo, hi):
+    """t-interval of p + t d (t in [0, 1]) inside the box [lo, hi] (slab method), or None."""
+    t0, t1 = 0.0, 1.0
+    for k in range(3):
+        if abs(d[k]) < 1e-300:
+            if not lo[k] < p[k] < hi[k]:
+                return None
+            continue
+        a, b = sorted(((lo[k] - p[k]) / d[k], (hi[k] - p[k]) / d[k]))
+        t0, t1 = max(t0, a), min(t1, b)
+    return (t0, t1) if t1 > t0 else None
+
+
+@settings(max_examples=20, deadline=None)
+@given(st.lists(st.tuples(st.floats(-3, 3), st.floats(-3, 3)), min_size=20, max_size=60))
+def test_hard_shadows_of_a_csg_frame_against_a_slab_ray_test(xy):
+    """A slab with a square hole (box minus box): lit exactly where the segment to the lamp misses the slab
+    or passes through the hole (reference: the slab method on the two boxes, written here)."""
+    lamp = PhotometricLight((0.3, 0.2, 3.0), Photometry.isotropic(100.0))
+    outer_lo, outer_hi = np.array([-1.0, -1.0, 1.4]), np.array([1.0, 1.0, 1.6])
+    hole_lo, hole_hi = np.array([-0.1, -0.3, 1.2]), np.array([0.5, 0.3, 1.8])
+    frame = Box((0, 0, 1.5), (2, 2, 0.2)) - Box((0.2, 0, 1.5), (0.6, 0.6, 0.6))
+    p = np.array([[x, y, 0.0] for x, y in xy])
+    E, s = illuminance_and_state(p, [0, 0, 1], [lamp], [frame])
+    for i, q in enumerate(p):
+        d = np.array([0.3, 0.2, 3.0]) - q
+        a = _slab(q, d, outer_lo, outer_hi)
+        h = _slab(q, d, hole_lo, hole_hi)
+        # ties (a segment through an edge of the hole, to 1e-6 of its parameter) are not judged
+        if a is not None and h is not None and min(abs(a[0] - h[0]), abs(a[1] - h[1])) < 1e-6:
+            continue
+        blocked = a is not None and not (h is not None and h[0] <= a[0] and h[1] >= a[1])
+        assert s[i] == (2 if blocked else 0)
+        if not blocked:
+            r = np.linalg.norm(d)
+            assert E[i] == pytest.approx(100.0 * d[2] / r**3, rel=1e-12)

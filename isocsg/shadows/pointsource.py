@@ -21,6 +21,7 @@ it: state 2 for that light, as for area sources behind the receiving plane.
 
 from __future__ import annotations
 
+import numba
 import numpy as np
 from numpy.typing import NDArray
 
@@ -32,8 +33,42 @@ __all__ = ["point_illuminance_and_state", "segment_blocked", "GRAZE_TOL"]
 
 #: Shrink of each occluder piece, relative to the scene's size (grazing segments are not blocked).
 GRAZE_TOL = 1e-9
-#: Receivers per block of the vectorised segment tests (bounds the (block, planes) arrays).
-BLOCK = 65536
+
+
+@numba.njit(cache=True, nogil=True)
+def _blocked_kernel(P, light, normals, offsets, off, box_lo, box_hi, tol, out):  # pragma: no cover - compiled
+    """out[i]: the segment P[i] -> light meets a (shrunk) piece; pieces' bounding boxes reject first."""
+    lx, ly, lz = light[0], light[1], light[2]
+    for i in range(P.shape[0]):
+        px, py, pz = P[i, 0], P[i, 1], P[i, 2]
+        dx, dy, dz = lx - px, ly - py, lz - pz
+        slo0, shi0 = min(px, lx), max(px, lx)
+        slo1, shi1 = min(py, ly), max(py, ly)
+        slo2, shi2 = min(pz, lz), max(pz, lz)
+        for k in range(off.shape[0] - 1):
+            if (shi0 < box_lo[k, 0] or slo0 > box_hi[k, 0] or shi1 < box_lo[k, 1] or slo1 > box_hi[k, 1]
+                    or shi2 < box_lo[k, 2] or slo2 > box_hi[k, 2]):
+                continue
+            t0, t1 = 0.0, 1.0
+            hit = True
+            for j in range(off[k], off[k + 1]):
+                nx, ny, nz = normals[j, 0], normals[j, 1], normals[j, 2]
+                a = nx * px + ny * py + nz * pz - offsets[j] + tol
+                b = nx * dx + ny * dy + nz * dz
+                if b == 0.0:
+                    if a > 0.0:
+                        hit = False
+                        break
+                elif b > 0.0:
+                    t1 = min(t1, -a / b)
+                else:
+                    t0 = max(t0, -a / b)
+                if t1 <= t0:
+                    hit = False
+                    break
+            if hit:
+                out[i] = True
+                break
 
 
 def segment_blocked(
@@ -49,27 +84,18 @@ def segment_blocked(
     >>> segment_blocked(np.array([[0.0, 0, 0], [3, 0, 0]]), np.array([0.0, 0, 2]), pcs, 3.0).tolist()
     [True, False]
     """
-    blocked = np.zeros(len(p), dtype=bool)
-    tol = GRAZE_TOL * scale
-    for k0 in range(0, len(p), BLOCK):
-        q = p[k0 : k0 + BLOCK]
-        seg = light[None, :] - q
-        out = blocked[k0 : k0 + BLOCK]
-        for pc in pieces:
-            todo = ~out
-            if not todo.any():
-                break
-            a = q[todo] @ pc.normals.T - pc.offsets[None, :] + tol  # <= 0 inside the shrunk piece
-            b = seg[todo] @ pc.normals.T
-            with np.errstate(divide="ignore", invalid="ignore"):
-                r = -a / b
-            lo = np.max(np.where(b < 0, r, -np.inf), axis=1, initial=0.0)
-            hi = np.min(np.where(b > 0, r, np.inf), axis=1, initial=1.0)
-            parallel_out = np.any((b == 0) & (a > 0), axis=1)
-            hit = (hi > lo) & ~parallel_out
-            idx = np.nonzero(todo)[0]
-            out[idx[hit]] = True
-    return blocked
+    out = np.zeros(len(p), dtype=np.bool_)
+    if not pieces or len(p) == 0:
+        return out
+    normals = np.ascontiguousarray(np.vstack([pc.normals for pc in pieces]), dtype=np.float64)
+    offsets = np.ascontiguousarray(np.concatenate([pc.offsets for pc in pieces]), dtype=np.float64)
+    off = np.zeros(len(pieces) + 1, dtype=np.int64)
+    off[1:] = np.cumsum([len(pc.offsets) for pc in pieces])
+    box_lo = np.array([pc.vertices.min(axis=0) for pc in pieces], dtype=np.float64)
+    box_hi = np.array([pc.vertices.max(axis=0) for pc in pieces], dtype=np.float64)
+    _blocked_kernel(np.ascontiguousarray(p, dtype=np.float64), np.ascontiguousarray(light, dtype=np.float64),
+                    normals, offsets, off, box_lo, box_hi, GRAZE_TOL * scale, out)
+    return out
 
 
 def point_illuminance_and_state(
