@@ -352,3 +352,13 @@ def test_hard_shadows_of_a_csg_frame_against_a_slab_ray_test(xy):
         if not blocked:
             r = np.linalg.norm(d)
             assert E[i] == pytest.approx(100.0 * d[2] / r**3, rel=1e-12)
+
+
+@pytest.mark.parametrize(("first", "version"), [("IESNA91\r\n", "LM-63-1991"), ("", "LM-63-1986")])
+def test_older_ies_layouts(tmp_path, first, version):
+    text = first + "[TEST] x\r\nTILT=NONE\r\n1 1000 1 3 1 1 2 0 0 0\r\n1 1 10\r\n0 45 90\r\n0\r\n100 80 0\r\n"
+    ph = read_photometry(write(tmp_path, "old.ies", text))
+    assert version in ph.source and float(ph.intensity(0, 22.5)) == pytest.approx(90.0)
+    with pytest.raises(PhotometryFileError, match="line 1: unknown IES version"):
+        read_photometry(write(tmp_path, "new.ies", text.replace(first, "IESNA:LM-63-2031\r\n") if first else
+                              "IESNA:LM-63-2031\r\n" + text))

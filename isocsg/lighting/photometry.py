@@ -12,7 +12,8 @@ intensity is 0.
 
 Reading (:func:`read_photometry`):
 
-- IES LM-63 (1995, 2002, 2019) through ``photompy`` (its ``IESFile``), the
+- IES LM-63 (1995, 2002, 2019; 1986 and 1991 files, whose layout from
+  ``TILT=`` on is the same, are read as 1995 ones) through ``photompy`` (its ``IESFile``), the
   ``.ies`` table times the file's candela multiplier and ballast factor;
   only type C photometry (the one of interior luminaires) is accepted.
 - EULUMDAT (``.ldt``) through ``eulumdat-py`` (``pyldt.LdtReader``), its
@@ -400,6 +401,16 @@ def _read_ies(p: Path) -> Photometry:
     if first_c != 0.0:  # LM-63 allows 90 .. 270; photompy 0.3 refuses any table not starting at C = 0
         raise _fail(p, f"horizontal angles {first_c:g} .. : tables over horizontal angles 90 .. 270 (bilateral "
                     "about the 90-270 plane) are not read by photompy; mirror them to 0 .. 180")
+    first = text.lstrip("\ufeff").split("\n", 1)[0].strip().upper()
+    version = first.split(":", 1)[1].strip() if ":" in first else ""
+    if version not in ("LM-63-1995", "LM-63-2002", "LM-63-2019"):
+        # LM-63-1986 (no version line) and -1991 ("IESNA91"): the layout from TILT= on is the same;
+        # photompy reads only the versions with an "IESNA:" / "IES:" line, so it is given one
+        if ":" in first:
+            raise _fail(p, f"line 1: unknown IES version {first[:40]!r} (LM-63-1986 to -2019 are read)")
+        body = text.split("\n", 1)[1] if first.startswith("IESNA") else text
+        raw = ("IESNA:LM-63-1995\n" + body).encode("utf-8")
+        version = "LM-63-1991" if first.startswith("IESNA") else "LM-63-1986"
     try:
         ies = IESFile.read(raw, strict=False)
     except Exception as exc:  # noqa: BLE001 - the reader's own errors, re-worded with the file name
@@ -418,7 +429,7 @@ def _read_ies(p: Path) -> Photometry:
     label = str(hdr.keywords.get("LUMINAIRE", "") or hdr.keywords.get("LUMCAT", "") or "")
     try:
         return Photometry(c, g, v, lamps if lamps > 0 else math.nan, math.nan, opening, label.strip(),
-                          f"{p.name} ({hdr.version})")
+                          f"{p.name} ({version})")
     except InvalidLightError as exc:
         raise _fail(p, str(exc).replace("Photometry.", "")) from None
 
