@@ -37,6 +37,7 @@ height = 0.75
 maintenance_factor = 0.8
 wall_band = 0.5
 cylindrical_height = 1.2
+vertical = { height = 1.5, azimuths = [0, 90] }
 
 [[study.tasks]]
 name = "desk"
@@ -86,6 +87,15 @@ def test_study_figures_against_the_inverse_square_law(scene_file):
     d, hz = np.hypot(X - 1.2, Y - 1.0), 2.75 - 1.2
     ez = 0.8 * 500 * d / (math.pi * (d * d + hz * hz) ** 1.5)
     assert r.cylindrical.e_mean == pytest.approx(ez.mean(), rel=1e-12)
+    # vertical: I max(0, n . l) / r^2 with n horizontal, at 1.5 m
+    hv = 2.75 - 1.5
+    for az, f in zip((0, 90), r.vertical):
+        n = (math.cos(math.radians(az)), math.sin(math.radians(az)))
+        dx, dy = 1.2 - X, 1.0 - Y
+        rr = np.sqrt(dx * dx + dy * dy + hv * hv)
+        ev = 0.8 * 500 * np.maximum(0, n[0] * dx + n[1] * dy) / rr**3
+        assert f.e_mean == pytest.approx(ev.mean(), rel=1e-12, abs=1e-12)
+        assert f.e_max == pytest.approx(ev.max(), rel=1e-12)
     # the plan map: maintained values at its nodes
     node = r.plan.grid.points()[5, 7]
     e = 0.8 * 500 * h / np.sum((node - [1.2, 1.0, 2.75]) ** 2) ** 1.5

@@ -51,8 +51,11 @@ def run(args: argparse.Namespace) -> int:
               f"U0 {f.u0:.3f}  Emin/Emax {f.min_max:.3f}  {f.points} points{req}")
     if result.cylindrical is not None:
         c = result.cylindrical
-        print(f"{c.name} at {spec.cylindrical_height:g} m: Ebar {c.e_mean:.4g} lx  Emin {c.e_min:.4g} lx  "
+        print(f"{c.name}: Ebar {c.e_mean:.4g} lx  Emin {c.e_min:.4g} lx  "
               f"Emax {c.e_max:.4g} lx  U0 {c.u0:.3f}  {c.points} points")
+    for v in result.vertical:
+        print(f"{v.name}: Ebar {v.e_mean:.4g} lx  Emin {v.e_min:.4g} lx  "
+              f"Emax {v.e_max:.4g} lx  {v.points} points")
     print(f"wrote {write_report(out, result, plan_png=args.plan)}")
     if args.plan:
         print(f"wrote {args.plan}")

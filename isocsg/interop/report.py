@@ -40,10 +40,11 @@ def figures_rows(result: StudyResult) -> list[list[str]]:
     """The figures table, one row of strings per area (columns :data:`FIGURE_COLUMNS`)."""
     rows = []
     figs: list[AreaFigures] = list(result.figures) + ([result.cylindrical] if result.cylindrical else [])
+    figs += list(result.vertical)
     for f in figs:
         req = f.required
         ok = f.passes
-        # the cylindrical figures use the room's grid (at their own height)
+        # the cylindrical and vertical figures use the room's grid (at their own height)
         grid = next((a.grid for a in result.areas if a.name == f.name), result.areas[0].grid)
         pmax = grid_spacing(max(grid.rect[2] - grid.rect[0], grid.rect[3] - grid.rect[1]))
         rows.append([
@@ -109,7 +110,8 @@ def _table_page(plt: Any, result: StudyResult) -> Any:
     t.auto_set_font_size(False)
     t.set_fontsize(7)
     t.scale(1.0, 1.3)
-    top = 0.9 - 0.45 * min(1.0, (len(result.figures) + 3) / 14)  # below the first table
+    rows1 = len(figures_rows(result))
+    top = 0.9 - 0.45 * min(1.0, (rows1 + 2) / 14)  # below the first table
     ax2 = fig.add_axes((0.03, top - 0.35, 0.94, 0.3))
     ax2.axis("off")
     ax2.set_title("Luminaire schedule", fontsize=9, loc="left")

@@ -13,6 +13,7 @@ ignored here)::
     maintenance_factor = 0.8           # 0 < MF <= 1
     wall_band = 0.5                    # left out along the walls (m)
     cylindrical_height = 1.2           # optional: Ez over the room's grid at this height
+    vertical = { height = 1.2, azimuths = [0, 90, 180, 270] }   # optional: Ev facing these azimuths
     map_spacing = 0.05                 # optional: node spacing of the plan-view map (m)
 
     [[study.tasks]]
@@ -60,15 +61,17 @@ from ..shadows.en12464 import (
     StudyArea,
     area_figures,
     cylindrical_illuminance,
+    inside_occluders,
     room_area,
     task_areas,
+    vertical_illuminance,
 )
 from ..shadows.luxmap import LuxGrid, LuxMap, illuminance_map
 
 __all__ = ["Task", "Luminaire", "StudySpec", "StudyResult", "load_study", "study_from_table", "run_study"]
 
 _STUDY_FIELDS = {"title", "room", "height", "maintenance_factor", "wall_band", "cylindrical_height", "map_spacing",
-                 "tasks", "luminaires"}
+                 "tasks", "luminaires", "vertical"}
 _TASK_FIELDS = {"name", "rect", "requirement", "em", "u0", "source"}
 _LUM_FIELDS = {"name", "file", "position", "rotation", "tilt", "aim", "multiplier", "model"}
 #: Largest number of luminaires and task areas in a study.
@@ -109,6 +112,8 @@ class StudySpec:
     tasks: tuple[Task, ...] = ()
     luminaires: tuple[Luminaire, ...] = ()
     cylindrical_height: float | None = None
+    vertical_height: float | None = None
+    vertical_azimuths: tuple[float, ...] = ()
     map_spacing: float | None = None
     title: str = "Lighting study"
 
@@ -124,6 +129,7 @@ class StudyResult:
     plan: LuxMap = field(repr=False)
     cylindrical: AreaFigures | None = None
     scene_lights: int = 0
+    vertical: tuple[AreaFigures, ...] = ()
 
 
 def _fail(source: str, path: str, message: str) -> SceneFileError:
@@ -231,6 +237,14 @@ def study_from_table(table: Any, *, base: str | os.PathLike[str] = ".", source: 
                                                                                   "cylindrical_height")))
     if "title" in t:
         kw["title"] = str(t["title"])
+    if "vertical" in t:
+        v = _check_keys(source, "study.vertical", t["vertical"], {"height", "azimuths"}, ("height", "azimuths"))
+        kw["vertical_height"] = _number(source, "study.vertical.height", v["height"], -1e6, 1e6)
+        az = v["azimuths"]
+        if not isinstance(az, list) or not 1 <= len(az) <= 36:
+            raise _fail(source, "study.vertical.azimuths", f"must be an array of 1 to 36 angles, got {az!r}")
+        kw["vertical_azimuths"] = tuple(_number(source, f"study.vertical.azimuths[{k}]", a, -360, 360, lo_incl=True)
+                                        for k, a in enumerate(az))
     tasks = t.get("tasks", [])
     lums = t.get("luminaires", [])
     for name, seq, most in (("tasks", tasks, MAX_TASKS), ("luminaires", lums, MAX_LUMINAIRES)):
@@ -297,12 +311,15 @@ def run_study(
     cyl = None
     if spec.cylindrical_height is not None:
         ca = room_area(spec.room, spec.cylindrical_height, band=spec.wall_band)
-        pts = ca.grid.kept_points()
-        ez = mf * cylindrical_illuminance(pts, lights, occ, resolution=resolution)
-        m = float(ez.mean())
-        cyl = AreaFigures("room, cylindrical Ez", "cylindrical", len(ez), ca.grid.spacing, m, float(ez.min()),
-                          float(ez.max()), float(ez.min()) / m if m > 0 else math.nan,
-                          float(ez.min() / ez.max()) if ez.max() > 0 else math.nan)
+        cyl = _point_figures(f"room, cylindrical Ez at {spec.cylindrical_height:g} m", "cylindrical", ca, occ, mf,
+                             lambda q: cylindrical_illuminance(q, lights, occ, resolution=resolution))
+    vert = []
+    if spec.vertical_height is not None:
+        va = room_area(spec.room, spec.vertical_height, band=spec.wall_band)
+        for az in spec.vertical_azimuths:
+            vert.append(_point_figures(f"room, vertical Ev {az:g} deg at {spec.vertical_height:g} m", "vertical", va,
+                                       occ, mf,
+                                       lambda q, a=az: vertical_illuminance(q, a, lights, occ, resolution=resolution)))
     x0, y0, x1, y1 = spec.room
     if spec.map_spacing is not None:
         nx = int(min(4096, max(2, round((x1 - x0) / spec.map_spacing) + 1)))
@@ -313,4 +330,16 @@ def run_study(
     grid = LuxGrid.from_bounds(x0, y0, x1, y1, spec.height, nx, ny)
     m0 = illuminance_map(grid, lights, occ, resolution=resolution)
     plan = LuxMap(grid, mf * m0.E, m0.occluded)
-    return StudyResult(spec, tuple(areas), tuple(figs), tuple(grids), plan, cyl, len(scene_lights))
+    return StudyResult(spec, tuple(areas), tuple(figs), tuple(grids), plan, cyl, len(scene_lights), tuple(vert))
+
+
+def _point_figures(name: str, kind: str, area: StudyArea, occ: list[Any], mf: float, fn: Any) -> AreaFigures:
+    """Figures of ``fn`` (maintained by ``mf``) at an area's points outside the occluders."""
+    pts = area.grid.kept_points()
+    pts = pts[~inside_occluders(pts, occ)]
+    if len(pts) == 0:
+        raise InvalidParameterError(f"{name}: every grid point lies inside an occluder")
+    e = mf * fn(pts)
+    m, lo, hi = float(e.mean()), float(e.min()), float(e.max())
+    return AreaFigures(name, kind, len(e), area.grid.spacing, m, lo, hi, lo / m if m > 0 else math.nan,
+                       lo / hi if hi > 0 else math.nan)

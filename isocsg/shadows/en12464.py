@@ -49,7 +49,7 @@ from ..kinds import DEFAULT_RESOLUTION, Solid
 __all__ = [
     "grid_spacing", "grid_counts", "CellGrid", "StudyArea", "AreaFigures", "Requirement", "REQUIREMENTS",
     "surrounding_em", "room_area", "task_areas", "area_figures", "vertical_illuminance",
-    "cylindrical_illuminance", "WALL_BAND", "SURROUNDING_BAND", "BACKGROUND_BAND", "MAX_SPACING",
+    "cylindrical_illuminance", "inside_occluders", "WALL_BAND", "SURROUNDING_BAND", "BACKGROUND_BAND", "MAX_SPACING",
 ]
 
 #: Band along the walls left out of the room's calculation area (m).
@@ -300,7 +300,8 @@ class AreaFigures:
         return bool(ok_em and self.u0 >= self.required.u0)
 
 
-def _inside_any(points: NDArray[np.float64], solids: list[Any]) -> NDArray[np.bool_]:
+def inside_occluders(points: NDArray[np.float64], solids: Sequence[Any]) -> NDArray[np.bool_]:
+    """Points (n, 3) inside a solid, each tested 1e-7 m above itself (a point on a floor slab's top is outside)."""
     out = np.zeros(len(points), dtype=bool)
     for s in solids:
         out |= s.contains(points + [0.0, 0.0, 1e-7], tol=0.0)
@@ -336,7 +337,7 @@ def area_figures(
     solids = [occluders] if isinstance(occluders, Solid) else list(occluders)
     g = area.grid
     pts = g.kept_points()
-    use = ~_inside_any(pts, solids)
+    use = ~inside_occluders(pts, solids)
     if not use.any():
         raise InvalidParameterError(f"area {area.name!r}: every grid point lies inside an occluder")
     e = np.full(len(pts), np.nan)
