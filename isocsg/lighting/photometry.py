@@ -99,7 +99,9 @@ class Photometry:
     label : str
         The luminaire's name from the file.
     source : str
-        File name and format.
+        The file's name ("analytic" for the constructors here).
+    file_format : str
+        ``"LM-63-2002"`` (the IES version), ``"EULUMDAT"``, or empty.
 
     Raises
     ------
@@ -122,12 +124,13 @@ class Photometry:
     opening: tuple[float, float, float] = (0.0, 0.0, 0.0)
     label: str = ""
     source: str = ""
+    file_format: str = ""
 
     if TYPE_CHECKING:  # the constructor as callers call it: array-likes, checked in __post_init__
         def __init__(self, c_angles: ArrayLike, gamma_angles: ArrayLike, candela: ArrayLike,
                      lamp_flux: float = math.nan, lor: float = math.nan,
                      opening: tuple[float, float, float] = (0.0, 0.0, 0.0), label: str = "",
-                     source: str = "") -> None: ...
+                     source: str = "", file_format: str = "") -> None: ...
 
     def __post_init__(self) -> None:
         err = InvalidLightError
@@ -256,7 +259,7 @@ class Photometry:
     def scaled(self, factor: float) -> Photometry:
         """The same table times ``factor`` (a multiplier, a maintenance or ballast factor)."""
         return Photometry(self.c_angles, self.gamma_angles, self.candela * float(factor), self.lamp_flux, self.lor,
-                          self.opening, self.label, self.source)
+                          self.opening, self.label, self.source, self.file_format)
 
 
 def _symmetry_of(c: NDArray[np.float64]) -> str:
@@ -429,7 +432,7 @@ def _read_ies(p: Path) -> Photometry:
     label = str(hdr.keywords.get("LUMINAIRE", "") or hdr.keywords.get("LUMCAT", "") or "")
     try:
         return Photometry(c, g, v, lamps if lamps > 0 else math.nan, math.nan, opening, label.strip(),
-                          f"{p.name} ({version})")
+                          p.name, version)
     except InvalidLightError as exc:
         raise _fail(p, str(exc).replace("Photometry.", "")) from None
 
@@ -494,6 +497,6 @@ def _read_ldt(p: Path) -> Photometry:
         opening = (opening[0], -opening[0], 0.0)
     try:
         return Photometry(c, np.asarray(h.g_angles, dtype=np.float64), v, flux, lor, opening,
-                          str(h.luminaire_name).strip(), f"{p.name} (EULUMDAT)")
+                          str(h.luminaire_name).strip(), p.name, "EULUMDAT")
     except InvalidLightError as exc:
         raise _fail(p, str(exc).replace("Photometry.", "")) from None
