@@ -61,8 +61,10 @@ def schedule_rows(result: StudyResult) -> list[list[str]]:
     rows = []
     for lu in result.spec.luminaires:
         li, ph = lu.light, lu.light.photometry
+        file = f"{ph.source} ({ph.file_format})" if ph.file_format else ph.source
+        position = "(" + ", ".join(f"{v:.3g}" for v in li.position) + ")"
         rows.append([
-            lu.name, f"{ph.source} ({ph.file_format})" if ph.file_format else ph.source, ph.label or "-", "(" + ", ".join(f"{v:.3g}" for v in li.position) + ")",
+            lu.name, file, ph.label or "-", position,
             f"{li.rotation:.4g} / {li.tilt:.4g}", f"{li.multiplier:.4g}", _fmt(li.flux, 5), _fmt(ph.lamp_flux, 5),
             _fmt(ph.lor, 3) if math.isfinite(ph.lor) else f"{_fmt(ph.computed_lor, 3)} (computed)", lu.model,
         ])
