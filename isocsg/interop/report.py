@@ -93,6 +93,9 @@ def plan_figure(result: StudyResult, *, levels: int = 8) -> Any:
     ax.plot(pts[:, 0], pts[:, 1], ".", color="black", ms=1.5, alpha=0.6)
     for lu in result.spec.luminaires:
         px, py = lu.light.position[0], lu.light.position[1]
+        if lu.model == "opening":  # the luminous opening that stands for the luminaire
+            q = lu.light.opening_polygon()
+            ax.fill(q[:, 0], q[:, 1], facecolor="none", edgecolor="white", lw=0.8)
         ax.plot([px], [py], marker="X", color="white", mec="black", ms=8)
         ax.text(px, py, f"  {lu.name}", color="white", fontsize=7, va="center")
     ax.set_xlim(x0, x1)
