@@ -72,7 +72,7 @@ def _readonly(a: ArrayLike) -> NDArray[np.float64]:
     return out
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True, slots=True, eq=False)  # equal only to itself: its tables are arrays
 class Photometry:
     """A luminaire's candela table over type C angles (see the module docstring).
 
