@@ -44,6 +44,8 @@ _EXPORTS: dict[str, str] = {
     **dict.fromkeys(["export_glb", "save_gltf"], ".interop.gltf"),
     "to_pyvista": ".interop.pyvista",
     **dict.fromkeys(["AreaLight", "PolyhedronLight"], ".lighting.area"),
+    **dict.fromkeys(["Photometry", "PhotometryFileError", "read_photometry"], ".lighting.photometry"),
+    "PhotometricLight": ".lighting.luminaire",
     **dict.fromkeys(["illuminance", "shadow_state", "illuminance_and_state"], ".shadows.direct"),
     **dict.fromkeys(["render_halftone", "HalftoneResult"], ".shadows.halftone"),
     "shadow_volumes": ".shadows.volumes",
@@ -94,6 +96,9 @@ __all__ = [
     "MissingDependencyError",
     "OpenSCADError",
     "OpenSCADSkipWarning",
+    "PhotometricLight",
+    "Photometry",
+    "PhotometryFileError",
     "PointLight",
     "PolyhedronLight",
     "Primitive",
@@ -142,6 +147,7 @@ __all__ = [
     "offset",
     "polygon",
     "read_openscad",
+    "read_photometry",
     "render",
     "render_halftone",
     "render_views",
@@ -261,6 +267,8 @@ if TYPE_CHECKING:  # what the names are, for type checkers and editors
     from .laminae import BandMesh, Lamina, LaminaSet, build_laminae
     from .lighting import DirectionalLight, Material, PointLight, shade
     from .lighting.area import AreaLight, PolyhedronLight
+    from .lighting.luminaire import PhotometricLight
+    from .lighting.photometry import Photometry, PhotometryFileError, read_photometry
     from .limits import memory_budget, set_memory_budget
     from .openscad import (
         OpenSCADSkipWarning,

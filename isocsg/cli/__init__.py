@@ -27,6 +27,7 @@ COMMANDS = {
     "warmup": "compile the kernels once after installing",
     "illuminance": "illuminance map with isolux lines",
     "view": "live preview of a model in the browser, re-rendered on save",
+    "report": "lighting study report (HTML or PDF)",
 }
 
 

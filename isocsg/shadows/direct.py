@@ -8,6 +8,9 @@ part of each source visible from p (:mod:`isocsg.shadows.visibility`):
 - a :class:`~isocsg.lighting.area.PolyhedronLight` is the sum of its faces
   that face p (each a one-sided polygon): their shared edges cancel, which is
   the seed's contour-line integral; occluders are handled face by face;
+- a :class:`~isocsg.lighting.luminaire.PhotometricLight` (a point luminaire
+  with a measured intensity distribution) gives the inverse-square and cosine
+  law with hard shadows (:mod:`isocsg.shadows.pointsource`): state 0 or 2;
 - several lights add up.
 
 Shadow state of a point, per light (the conventions: 0 lit when the source is
@@ -25,12 +28,14 @@ the plane.
 from __future__ import annotations
 
 from collections.abc import Sequence
+from typing import Any
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from ..kinds import DEFAULT_RESOLUTION, Solid
 from ..lighting.area import AreaLight, PolyhedronLight, as_light_list
+from ..lighting.luminaire import PhotometricLight
 from .lambert import _prepare, edge_terms
 from .occluders import ConvexPiece, occluder_list, shadow_pieces
 from .visibility import UMBRA_TOL, PieceArrays, SourceArrays, blockers_single, visible_illuminance
@@ -54,6 +59,22 @@ def _sources(lights: list[AreaLight | PolyhedronLight]) -> SourceArrays:
             rads.append(light.radiance)
             groups.append(g)
     return SourceArrays(polys, rads, groups)
+
+
+def _split_lights(lights: Any) -> tuple[list[AreaLight | PolyhedronLight], list[PhotometricLight]]:
+    """Area and polyhedron sources apart from point luminaires (a luminaire's type is checked here)."""
+    if isinstance(lights, PhotometricLight):
+        return [], [lights]
+    seq = lights if isinstance(lights, (list, tuple)) else None
+    if seq is None and not isinstance(lights, (AreaLight, PolyhedronLight)):
+        try:
+            seq = list(lights)
+        except TypeError:
+            seq = None
+    if seq is not None and any(isinstance(li, PhotometricLight) for li in seq):
+        return (as_light_list([li for li in seq if not isinstance(li, PhotometricLight)]),
+                [li for li in seq if isinstance(li, PhotometricLight)])
+    return as_light_list(lights if seq is None else seq), []
 
 
 def _fallback_point(
@@ -111,7 +132,7 @@ def _fallback_point(
 def illuminance_and_state(
     points: ArrayLike,
     normals: ArrayLike,
-    lights: Sequence[AreaLight | PolyhedronLight] | AreaLight | PolyhedronLight,
+    lights: Sequence[AreaLight | PolyhedronLight | PhotometricLight] | AreaLight | PolyhedronLight | PhotometricLight,
     occluders: Sequence[Solid] | Solid = (),
     *,
     resolution: int = DEFAULT_RESOLUTION,
@@ -127,8 +148,21 @@ def illuminance_and_state(
     ([0.0, 0.0326], [2, 0])
     """
     p, n = _prepare(points, normals)
-    light_list = as_light_list(lights)
+    light_list, luminaires = _split_lights(lights)
     solids = occluder_list(occluders, resolution)
+    if luminaires:  # point luminaires: hard shadows (shadows/pointsource.py), added to the area sources
+        from .pointsource import point_illuminance_and_state
+
+        ext0 = [p, *(np.asarray(lu.position)[None, :] for lu in luminaires)]
+        ext0 += [np.asarray(o.bounds, dtype=np.float64) for o in solids]
+        ext0 += [np.asarray(q) for li in light_list for q in li.emitting_polygons()]
+        all0 = np.vstack(ext0)
+        scale0 = float(max(np.max(np.ptp(all0, axis=0)), np.max(np.abs(all0)), 1e-300))
+        E_pt, s_pt = point_illuminance_and_state(p, n, luminaires, solids, resolution=resolution, scale=scale0)
+        if not light_list:
+            return E_pt, s_pt
+        E_ar, s_ar = illuminance_and_state(p, n, light_list, solids, resolution=resolution)
+        return E_pt + E_ar, np.maximum(s_pt, s_ar)
     sources = _sources(light_list)
     ext = [p, sources.verts] + [np.asarray(o.bounds, dtype=np.float64) for o in solids]
     allpts = np.vstack(ext)
@@ -197,7 +231,7 @@ def receiver_tiles(
 def illuminance(
     points: ArrayLike,
     normals: ArrayLike,
-    lights: Sequence[AreaLight | PolyhedronLight] | AreaLight | PolyhedronLight,
+    lights: Sequence[AreaLight | PolyhedronLight | PhotometricLight] | AreaLight | PolyhedronLight | PhotometricLight,
     occluders: Sequence[Solid] | Solid = (),
     *,
     resolution: int = DEFAULT_RESOLUTION,
@@ -210,8 +244,8 @@ def illuminance(
         Receiving points.
     normals : array_like, shape (n, 3) or (3,)
         Their normals (normalised here; one normal may serve every point).
-    lights : AreaLight, PolyhedronLight or a sequence of them
-        The sources; their contributions add up.
+    lights : AreaLight, PolyhedronLight, PhotometricLight or a sequence of them
+        The sources; their contributions add up (point luminaires with hard shadows).
     occluders : Solid or sequence of Solid, optional
         Primitives and CSG trees casting shadows. Curved primitives are
         tessellated with ``resolution`` (the shadows are exact for that
@@ -250,7 +284,7 @@ def illuminance(
 def shadow_state(
     points: ArrayLike,
     normals: ArrayLike,
-    lights: Sequence[AreaLight | PolyhedronLight] | AreaLight | PolyhedronLight,
+    lights: Sequence[AreaLight | PolyhedronLight | PhotometricLight] | AreaLight | PolyhedronLight | PhotometricLight,
     occluders: Sequence[Solid] | Solid = (),
     *,
     resolution: int = DEFAULT_RESOLUTION,

@@ -192,7 +192,8 @@ def illuminance_map(
     Parameters
     ----------
     grid : LuxGrid
-    lights : AreaLight, PolyhedronLight or a sequence of them
+    lights : AreaLight, PolyhedronLight, PhotometricLight or a sequence of them
+        Point luminaires (:class:`~isocsg.lighting.luminaire.PhotometricLight`) cast hard shadows.
     occluders : Solid or sequence of Solid, optional
     resolution : int, keyword-only, default 64
         Tessellation of curved occluders.
