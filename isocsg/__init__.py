@@ -45,6 +45,8 @@ _EXPORTS: dict[str, str] = {
     "to_pyvista": ".interop.pyvista",
     **dict.fromkeys(["AreaLight", "PolyhedronLight"], ".lighting.area"),
     **dict.fromkeys(["illuminance", "shadow_state", "illuminance_and_state"], ".shadows.direct"),
+    **dict.fromkeys(["Interreflections", "RadiositySolution", "solve_radiosity"], ".shadows.radiosity"),
+    "Room": ".shadows.patches",
     **dict.fromkeys(["render_halftone", "HalftoneResult"], ".shadows.halftone"),
     "shadow_volumes": ".shadows.volumes",
     **dict.fromkeys(["LuxGrid", "LuxMap", "illuminance_map", "save_luxmap_png"], ".shadows.luxmap"),
@@ -79,6 +81,7 @@ __all__ = [
     "Ellipsoid",
     "EllipticTruncus",
     "HalftoneResult",
+    "Interreflections",
     "Intersection",
     "Intersection2D",
     "InvalidGeometryError",
@@ -97,11 +100,13 @@ __all__ = [
     "PointLight",
     "PolyhedronLight",
     "Primitive",
+    "RadiositySolution",
     "RayHits",
     "RenderResult",
     "RenderSettings",
     "Renderer",
     "ResourceLimitError",
+    "Room",
     "Scene",
     "SceneFileError",
     "SceneObject",
@@ -161,6 +166,7 @@ __all__ = [
     "shadow_state",
     "shadow_volumes",
     "show",
+    "solve_radiosity",
     "square",
     "text",
     "to_manifold",
@@ -285,6 +291,8 @@ if TYPE_CHECKING:  # what the names are, for type checkers and editors
     )
     from .shadows.direct import illuminance, illuminance_and_state, shadow_state
     from .shadows.halftone import HalftoneResult, render_halftone
+    from .shadows.patches import Room
+    from .shadows.radiosity import Interreflections, RadiositySolution, solve_radiosity
     from .shadows.luxmap import LuxGrid, LuxMap, illuminance_map, save_luxmap_png
     from .shadows.luxplot import save_luxmap_figure
     from .shadows.luxstats import LuxStats, lux_statistics, save_luxmap_csv
