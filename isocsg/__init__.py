@@ -291,11 +291,11 @@ if TYPE_CHECKING:  # what the names are, for type checkers and editors
     )
     from .shadows.direct import illuminance, illuminance_and_state, shadow_state
     from .shadows.halftone import HalftoneResult, render_halftone
-    from .shadows.patches import Room
-    from .shadows.radiosity import Interreflections, RadiositySolution, solve_radiosity
     from .shadows.luxmap import LuxGrid, LuxMap, illuminance_map, save_luxmap_png
     from .shadows.luxplot import save_luxmap_figure
     from .shadows.luxstats import LuxStats, lux_statistics, save_luxmap_csv
+    from .shadows.patches import Room
+    from .shadows.radiosity import Interreflections, RadiositySolution, solve_radiosity
     from .shadows.volumes import shadow_volumes
     from .shapes2d import (
         Circle,
