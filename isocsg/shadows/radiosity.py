@@ -44,8 +44,9 @@ light; the room casts no shadow inside itself.
 from __future__ import annotations
 
 import math
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
+from typing import Any
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -64,6 +65,9 @@ __all__ = ["Interreflections", "RadiositySolution", "solve_radiosity", "indirect
 
 #: Default budget for cached form-factor columns (bytes).
 DEFAULT_MEMORY = 256 * 2**20
+#: Fields of a scene file's ``[interreflections]`` table.
+TABLE_FIELDS = frozenset({"room_center", "room_size", "floor", "walls", "ceiling", "reflectances", "patch_size",
+                          "refine", "order", "tolerance"})
 #: Hard limit on the patch count (the per-patch Python work grows with it).
 MAX_PATCHES = 50_000
 
@@ -141,6 +145,44 @@ class Interreflections:
                                                    error=InvalidParameterError))
         object.__setattr__(self, "max_patches", integer("interreflections.max_patches", self.max_patches, low=1,
                                                         high=MAX_PATCHES, error=InvalidParameterError))
+
+    @classmethod
+    def from_dict(cls, table: Mapping[str, Any]) -> Interreflections:
+        """Settings from a scene file's ``[interreflections]`` table.
+
+        Fields: ``room_center``, ``room_size`` (the room, optional together),
+        ``floor``, ``walls``, ``ceiling`` (its reflectances), ``reflectances``
+        (the objects', one number or one per object), ``patch_size``,
+        ``refine``, ``order``, ``tolerance``.
+
+        Raises
+        ------
+        InvalidParameterError
+            On an unknown or missing field or a bad value (named).
+
+        Examples
+        --------
+        >>> Interreflections.from_dict({"room_center": [0, 0, 1.5], "room_size": [4, 4, 3], "walls": 0.6}).room.walls
+        0.6
+        """
+        if not isinstance(table, Mapping):
+            raise InvalidParameterError(f"interreflections must be a table, got {type(table).__name__}")
+        unknown = sorted(set(table) - TABLE_FIELDS)
+        if unknown:
+            raise InvalidParameterError(
+                f"interreflections.{unknown[0]}: unknown field (expected {', '.join(sorted(TABLE_FIELDS))})")
+        room = None
+        if ("room_center" in table) != ("room_size" in table):
+            missing = "room_size" if "room_center" in table else "room_center"
+            raise InvalidParameterError(f"interreflections.{missing}: missing (room_center and room_size go together)")
+        if "room_center" in table:
+            rho = {k: table[k] for k in ("floor", "walls", "ceiling") if k in table}
+            room = Room(table["room_center"], table["room_size"], **rho)
+        elif any(k in table for k in ("floor", "walls", "ceiling")):
+            raise InvalidParameterError("interreflections.room_center: missing (floor, walls and ceiling need a room)")
+        kw = {k: table[k] for k in ("patch_size", "refine", "order", "tolerance") if k in table}
+        refl = table.get("reflectances", 0.0)
+        return cls(room=room, reflectances=tuple(refl) if isinstance(refl, list) else refl, **kw)
 
     def indirect_illuminance(
         self, points: ArrayLike, normals: ArrayLike,
