@@ -20,10 +20,11 @@ from __future__ import annotations
 
 import math
 import re
+import sys
+from pathlib import Path
 
 import numpy as np
 import pytest
-from mc_paths import MCRoom, mc_indirect
 
 from isocsg import AreaLight, Box, Sphere, illuminance
 from isocsg.errors import InvalidParameterError, ResourceLimitError
@@ -36,6 +37,10 @@ from isocsg.shadows.radiosity import (
     indirect_illuminance,
     solve_radiosity,
 )
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+
+from mc_paths import MCRoom, mc_indirect  # noqa: E402
 
 LAMP = AreaLight([(-0.6, -0.3, 2.8), (-0.6, 0.3, 2.8), (0.6, 0.3, 2.8), (0.6, -0.3, 2.8)], radiance=1000.0)
 
@@ -118,7 +123,7 @@ def test_furnished_room_against_path_tracer():
     inter = Interreflections(room=room, reflectances=0.4, patch_size=0.5, refine=1, tolerance=1e-6)
     sol = solve_radiosity(LAMP, [table], inter)
     got = sol.indirect_illuminance(pts, nrm)
-    ref, err = mc_indirect(MC_ROOM, pts, nrm, paths=20000, seed=11)
+    ref, err = mc_indirect(MC_ROOM, pts, nrm, paths=10000, seed=11)
     assert np.all(np.abs(got - ref) <= 4 * err + DISCRETISATION * ref), (got, ref, err)
 
 

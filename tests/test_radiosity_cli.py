@@ -41,26 +41,27 @@ def _expected(inter):
 
 def test_room_flags_add_the_indirect_light(tmp_path, capsys):
     scene = tmp_path / "s.json"
-    scene.write_text(json.dumps(DOC))
+    scene.write_text(json.dumps(dict(DOC, interreflections={"refine": 0})))  # the room from the flags
     npy = tmp_path / "e.npy"
     args = ["illuminance", str(scene), "-o", str(tmp_path / "m.png"), "--npy", str(npy), "--no-progress",
             "--room", "0", "0", "1.25", "4", "3", "2.5", "--reflectances", "0.3", "0.6", "0.8",
             "--object-reflectance", "0.5", "--patch-size", "1.0"]
     assert main(args) == 0
     inter = Interreflections(room=Room((0, 0, 1.25), (4, 3, 2.5), floor=0.3, walls=0.6, ceiling=0.8),
-                             reflectances=0.5, patch_size=1.0)
+                             reflectances=0.5, patch_size=1.0, refine=0)
     np.testing.assert_allclose(np.load(npy), _expected(inter), rtol=1e-12)
     assert "interreflections:" in capsys.readouterr().out
 
 
 def test_scene_table_and_direct_only(tmp_path):
     doc = dict(DOC, interreflections={"room_center": [0, 0, 1.25], "room_size": [4, 3, 2.5], "walls": 0.6,
-                                      "reflectances": [0.5], "patch_size": 1.0})
+                                      "reflectances": [0.5], "patch_size": 1.0, "refine": 0})
     scene = tmp_path / "s.json"
     scene.write_text(json.dumps(doc))
     npy, npy2 = tmp_path / "e.npy", tmp_path / "d.npy"
     assert main(["illuminance", str(scene), "-o", str(tmp_path / "m.png"), "--npy", str(npy), "--no-progress"]) == 0
-    inter = Interreflections(room=Room((0, 0, 1.25), (4, 3, 2.5), walls=0.6), reflectances=(0.5,), patch_size=1.0)
+    inter = Interreflections(room=Room((0, 0, 1.25), (4, 3, 2.5), walls=0.6), reflectances=(0.5,), patch_size=1.0,
+                             refine=0)
     np.testing.assert_allclose(np.load(npy), _expected(inter), rtol=1e-12)
     assert main(["illuminance", str(scene), "-o", str(tmp_path / "m.png"), "--npy", str(npy2), "--no-progress",
                  "--direct-only"]) == 0

@@ -55,11 +55,12 @@ from .._validation import integer, scalar
 from ..errors import InvalidParameterError, ResourceLimitError
 from ..kinds import DEFAULT_RESOLUTION, Solid
 from ..lighting.area import AreaLight, PolyhedronLight, as_light_list
-from .direct import illuminance, shadow_state
+from .direct import _fallback_point, illuminance, shadow_state
 from .form_factors import pair_form_factors
 from .lambert import _prepare
-from .occluders import occluder_list
+from .occluders import occluder_list, shadow_pieces
 from .patches import PatchSet, Room, surface_patches
+from .visibility import PieceArrays, SourceArrays, visible_illuminance
 
 __all__ = ["Interreflections", "RadiositySolution", "solve_radiosity", "indirect_illuminance"]
 
@@ -346,12 +347,35 @@ class _Columns:
     """Columns of the form-factor matrix (F_ij for every i, one j), cached within a byte budget."""
 
     def __init__(self, patches: PatchSet, solids: list[Solid], blockers: _Blockers, order: int,
-                 resolution: int, memory: int) -> None:
+                 resolution: int, memory: int, scale: float = 1.0) -> None:
         self.p, self.solids, self.blockers, self.resolution = patches, solids, blockers, resolution
         self.lo, self.hi = patches.bounds()
         self.pts, self.wts, self.idx = patches.samples(order)
+        self.nrm = np.ascontiguousarray(patches.normal[self.idx])
         self.cache: dict[int, NDArray[np.float64]] = {}
         self.room_left = memory // max(8 * len(patches), 1)
+        self.scale = scale
+        self.pieces: dict[int, PieceArrays] = {}
+
+    def _pieces(self, owner: int) -> PieceArrays:
+        """Occluder pieces for sources on ``owner`` (left out), computed once per owner."""
+        got = self.pieces.get(owner)
+        if got is None:
+            others = _without(self.solids, owner)
+            pcs = shadow_pieces(others, self.pts, self.p.verts, resolution=self.resolution, scale=self.scale) \
+                if others else []
+            got = self.pieces[owner] = PieceArrays(pcs)
+        return got
+
+    def point_factors(self, sel: NDArray[np.bool_], j: int) -> NDArray[np.float64]:
+        """``F(x -> j)`` at the selected Gauss points, occlusion included (the direct light's kernel)."""
+        pa = self._pieces(int(self.p.owner[j]))
+        src = SourceArrays([self.p.polygon(j)], [1.0 / math.pi], [0])
+        pts, nrm = np.ascontiguousarray(self.pts[sel]), np.ascontiguousarray(self.nrm[sel])
+        e, _, overflow = visible_illuminance(pts, nrm, src, pa, self.scale)
+        for i in np.nonzero(overflow)[0]:
+            e[i] = _fallback_point(pts[i], nrm[i], src, pa, self.scale)[0]
+        return e
 
     def __call__(self, j: int) -> NDArray[np.float64]:
         got = self.cache.get(j)
@@ -370,10 +394,8 @@ class _Columns:
         hidden[j] = False
         sel = hidden[self.idx]
         if sel.any():
-            own = int(p.owner[j])
-            e = illuminance(self.pts[sel], p.normal[self.idx[sel]], [AreaLight(p.polygon(j), radiance=1.0)],
-                            _without(self.solids, own), resolution=self.resolution)
-            col += np.bincount(self.idx[sel], weights=self.wts[sel] * e, minlength=n) / (math.pi * p.area)
+            e = self.point_factors(sel, j)
+            col += np.bincount(self.idx[sel], weights=self.wts[sel] * e, minlength=n) / p.area
         if self.room_left > 0:
             self.cache[j] = col
             self.room_left -= 1
@@ -445,7 +467,7 @@ def solve_radiosity(
     direct = _direct_means(patches, light_list, solids, blockers, interre.order, resolution) if n else np.zeros(0)
     B = patches.reflectance * direct
     unshot = B.copy()
-    columns = _Columns(patches, solids, blockers, interre.order, resolution, interre.memory)
+    columns = _Columns(patches, solids, blockers, interre.order, resolution, interre.memory, scale)
     residuals: list[float] = []
     max_shots = interre.max_shots if interre.max_shots is not None else 1000 * max(n, 1)
     a = patches.area
