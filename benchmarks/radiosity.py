@@ -5,10 +5,11 @@ The scene: a 4 x 4 x 3 m room (floor 0.2, walls 0.5, ceiling 0.7), a
 reflecting box (0.4) standing on the floor. For each patch size the script
 prints the patch count, the shots and the final residual of the solve, the
 time of the solve and of the indirect illuminance on a 21 x 21 floor grid, the
-peak of traced Python memory (tracemalloc: the cached form-factor columns
-dominate, 8 n^2 bytes) and, with ``--mc``, the error of the indirect
-illuminance at four points against the path tracer of ``tests/mc_paths.py``
-(that is the discretisation error of constant radiosity per patch).
+size of the form-factor columns if all were cached (8 n^2 bytes; the solve keeps
+at most ``Interreflections.memory``), the process's peak resident memory so
+far, and, with ``--mc``, the error of the indirect illuminance at four points
+against the path tracer of ``tests/mc_paths.py`` (that is the discretisation
+error of constant radiosity per patch).
 
 Run: ``python benchmarks/radiosity.py [--quick] [--mc]``.
 """
@@ -16,9 +17,9 @@ Run: ``python benchmarks/radiosity.py [--quick] [--mc]``.
 from __future__ import annotations
 
 import argparse
+import resource
 import sys
 import time
-import tracemalloc
 from pathlib import Path
 
 import numpy as np
@@ -48,19 +49,18 @@ def run(sizes: list[float], mc: bool) -> None:
     solve_radiosity(LAMP, [TABLE], Interreflections(room=ROOM, reflectances=0.4, patch_size=2.0, refine=0))  # compile
     x, y = np.meshgrid(np.linspace(-1.9, 1.9, 21), np.linspace(-1.9, 1.9, 21))
     grid = np.c_[x.ravel(), y.ravel(), np.zeros(x.size)]
-    print("patch_size  patches  shots  residual  solve_s  grid_s  peak_MB" + ("  max_rel_err_vs_MC" if mc else ""))
+    print("patch_size  patches  shots  residual  solve_s  grid_s  columns_MB  peak_RSS_MB"
+          + ("  max_rel_err_vs_MC" if mc else ""))
     for size in sizes:
         inter = Interreflections(room=ROOM, reflectances=0.4, patch_size=size, refine=1, tolerance=1e-6)
-        tracemalloc.start()
         t0 = time.perf_counter()
         sol = solve_radiosity(LAMP, [TABLE], inter)
         t1 = time.perf_counter()
-        _, peak = tracemalloc.get_traced_memory()
-        tracemalloc.stop()
+        rss = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024  # kB on Linux
         sol.indirect_illuminance(grid, [0, 0, 1])
         t2 = time.perf_counter()
         line = (f"{size:10.3f}  {len(sol.patches):7d}  {sol.shots:5d}  {sol.residuals[-1]:8.1e}  {t1 - t0:7.1f}  "
-                f"{t2 - t1:6.1f}  {peak / 2**20:7.1f}")
+                f"{t2 - t1:6.1f}  {8 * len(sol.patches) ** 2 / 2**20:10.1f}  {rss:11.0f}")
         if ref is not None:
             got = sol.indirect_illuminance(POINTS, NORMALS)
             line += f"  {np.max(np.abs(got - ref) / ref):.4f}"
