@@ -25,6 +25,8 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from isocsg import AreaLight, Box, Sphere, illuminance
 from isocsg.errors import InvalidParameterError, ResourceLimitError
@@ -218,3 +220,24 @@ def test_memory_budget_zero_recomputes_columns_with_the_same_result():
 def test_illuminance_refuses_other_interreflection_values():
     with pytest.raises(InvalidParameterError, match="interreflections must be an Interreflections, got dict"):
         illuminance([[0, 0, 0]], [0, 0, 1], LAMP, interreflections={"room": None})
+
+
+@settings(max_examples=5, deadline=None)
+@given(
+    st.tuples(st.floats(1.0, 6.0), st.floats(1.0, 6.0), st.floats(2.0, 4.0)),
+    st.floats(0.05, 0.9),
+    st.tuples(st.floats(-0.3, 0.3), st.floats(-0.3, 0.3)),
+)
+def test_flux_balance_in_random_rooms(size, rho, offset):
+    """Any closed box room, any uniform reflectance, a panel anywhere below the ceiling."""
+    sx, sy, sz = size
+    room = Room((0, 0, sz / 2), size, floor=rho, walls=rho, ceiling=rho)
+    cx, cy = offset[0] * sx, offset[1] * sy
+    z = sz - 0.1
+    lamp = AreaLight([(cx - 0.2, cy - 0.1, z), (cx - 0.2, cy + 0.1, z), (cx + 0.2, cy + 0.1, z),
+                      (cx + 0.2, cy - 0.1, z)], radiance=500.0)
+    sol = solve_radiosity(lamp, (), Interreflections(room=room, patch_size=max(sx, sy, sz) / 2, refine=0,
+                                                     tolerance=1e-10))
+    a = sol.patches.area
+    assert float(a @ sol.direct) == pytest.approx(lamp.flux, rel=1e-9)
+    assert float(a @ (sol.incident - sol.direct)) == pytest.approx(rho * lamp.flux / (1 - rho), rel=1e-6)
