@@ -47,6 +47,8 @@ _EXPORTS: dict[str, str] = {
     **dict.fromkeys(["Photometry", "PhotometryFileError", "read_photometry"], ".lighting.photometry"),
     "PhotometricLight": ".lighting.luminaire",
     **dict.fromkeys(["illuminance", "shadow_state", "illuminance_and_state"], ".shadows.direct"),
+    **dict.fromkeys(["Interreflections", "RadiositySolution", "solve_radiosity"], ".shadows.radiosity"),
+    "Room": ".shadows.patches",
     **dict.fromkeys(["render_halftone", "HalftoneResult"], ".shadows.halftone"),
     "shadow_volumes": ".shadows.volumes",
     **dict.fromkeys(["LuxGrid", "LuxMap", "illuminance_map", "save_luxmap_png"], ".shadows.luxmap"),
@@ -81,6 +83,7 @@ __all__ = [
     "Ellipsoid",
     "EllipticTruncus",
     "HalftoneResult",
+    "Interreflections",
     "Intersection",
     "Intersection2D",
     "InvalidGeometryError",
@@ -102,11 +105,13 @@ __all__ = [
     "PointLight",
     "PolyhedronLight",
     "Primitive",
+    "RadiositySolution",
     "RayHits",
     "RenderResult",
     "RenderSettings",
     "Renderer",
     "ResourceLimitError",
+    "Room",
     "Scene",
     "SceneFileError",
     "SceneObject",
@@ -167,6 +172,7 @@ __all__ = [
     "shadow_state",
     "shadow_volumes",
     "show",
+    "solve_radiosity",
     "square",
     "text",
     "to_manifold",
@@ -296,6 +302,8 @@ if TYPE_CHECKING:  # what the names are, for type checkers and editors
     from .shadows.luxmap import LuxGrid, LuxMap, illuminance_map, save_luxmap_png
     from .shadows.luxplot import save_luxmap_figure
     from .shadows.luxstats import LuxStats, lux_statistics, save_luxmap_csv
+    from .shadows.patches import Room
+    from .shadows.radiosity import Interreflections, RadiositySolution, solve_radiosity
     from .shadows.volumes import shadow_volumes
     from .shapes2d import (
         Circle,

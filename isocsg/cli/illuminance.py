@@ -14,6 +14,12 @@ The grid lies on a plane given on the command line (``--origin``, ``--u``,
 or, by default, the scene's floor: the top face of the box with the largest
 horizontal footprint (else the bottom of the scene's bounding box).
 Only the scene's area and polyhedron lights count; its objects occlude.
+
+With ``--room CX CY CZ SX SY SZ`` (or a scene table ``[interreflections]``
+with ``room_center``, ``room_size``, ``floor``, ``walls``, ``ceiling``,
+``reflectances``, ``patch_size``, ...; see docs/interreflections.md) the light
+reflected by the room and the objects is added to the direct light;
+``--direct-only`` ignores the table.
 """
 
 from __future__ import annotations
@@ -87,6 +93,18 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
         "--resolution", type=int, default=32, metavar="R",
         help=f"tessellation of curved occluders, 3 .. {MAX_RESOLUTION} (default 32)",
     )
+    p.add_argument(
+        "--room", nargs=6, type=float, metavar=("CX", "CY", "CZ", "SX", "SY", "SZ"),
+        help="add interreflections in this box room (centre and size; see docs/interreflections.md)",
+    )
+    p.add_argument(
+        "--reflectances", nargs=3, type=float, metavar=("FLOOR", "WALLS", "CEILING"),
+        help="the room's reflectances with --room (default 0.2 0.5 0.7)",
+    )
+    p.add_argument("--object-reflectance", type=float, metavar="RHO",
+                   help="reflectance of the scene's boxes and convex polyhedra with --room (default 0)")
+    p.add_argument("--patch-size", type=float, metavar="M", help="radiosity patch size in metres (default 0.5)")
+    p.add_argument("--direct-only", action="store_true", help="ignore the scene's [interreflections] table")
     p.add_argument("--no-progress", action="store_true", help="do not show the progress bar on stderr")
     p.set_defaults(func=run)
     return p
@@ -123,6 +141,17 @@ def _name(path: str | Path) -> str:
 
 def load_scene_and_grid(path: str | Path) -> tuple[Scene, dict[str, Any] | None]:
     """Read a scene file and its optional ``[illuminance]`` table (raw mapping).
+
+    See :func:`load_scene_grid_and_interreflections`.
+    """
+    scene, table, _ = load_scene_grid_and_interreflections(path)
+    return scene, table
+
+
+def load_scene_grid_and_interreflections(path: str | Path) -> tuple[Scene, dict[str, Any] | None, Any]:
+    """Read a scene file, its optional ``[illuminance]`` table and its ``[interreflections]`` table.
+
+    The last is an :class:`~isocsg.shadows.radiosity.Interreflections` or None.
 
     The file is read as :func:`isocsg.scene.load_scene` reads it: ``.toml``
     or ``.json`` only, a regular UTF-8 file of at most 16 MiB; ``-`` reads
@@ -164,7 +193,44 @@ def load_scene_and_grid(path: str | Path) -> tuple[Scene, dict[str, Any] | None]
         except InvalidParameterError as exc:
             field, _, rest = str(exc).partition(" ")
             raise SceneFileError(f"{p}: {field}: {rest}") from None
-    return scene_from_dict(doc, source=p if isinstance(p, str) else p.name), table
+    inter = None
+    if isinstance(doc, dict) and "interreflections" in doc:
+        from ..shadows.radiosity import Interreflections
+
+        try:
+            inter = Interreflections.from_dict(doc.pop("interreflections"))
+        except InvalidParameterError as exc:
+            raise SceneFileError(f"{p}: {exc}") from None
+    return scene_from_dict(doc, source=p if isinstance(p, str) else p.name), table, inter
+
+
+def _interreflections(args: argparse.Namespace, inter: Any) -> Any:
+    """The scene's [interreflections] settings with the command line's overrides (None: direct only)."""
+    from dataclasses import replace
+
+    from ..shadows.patches import Room
+    from ..shadows.radiosity import Interreflections
+
+    if args.direct_only:
+        return None
+    if args.room is not None:
+        rho = dict(zip(("floor", "walls", "ceiling"), args.reflectances or (0.2, 0.5, 0.7), strict=True))
+        room = Room(args.room[:3], args.room[3:], **rho)
+        inter = replace(inter, room=room) if inter is not None else Interreflections(room=room)
+    elif args.reflectances is not None or args.object_reflectance is not None or args.patch_size is not None:
+        if inter is None:
+            raise InvalidParameterError("--reflectances, --object-reflectance and --patch-size need --room "
+                                        "or an [interreflections] table")
+    if inter is None:
+        return None
+    if args.reflectances is not None and args.room is None and inter.room is not None:
+        inter = replace(inter, room=replace(inter.room, **dict(zip(("floor", "walls", "ceiling"), args.reflectances,
+                                                                    strict=True))))
+    if args.object_reflectance is not None:
+        inter = replace(inter, reflectances=args.object_reflectance)
+    if args.patch_size is not None:
+        inter = replace(inter, patch_size=args.patch_size)
+    return inter
 
 
 def _levels(name: str, value: Any) -> int | list[float]:
@@ -230,7 +296,8 @@ def run(args: argparse.Namespace) -> int:
     if args.levels is not None:
         _levels("--levels", args.levels)
     res = resolution("--resolution", args.resolution)
-    scene, table = load_scene_and_grid(args.scene)
+    scene, table, inter = load_scene_grid_and_interreflections(args.scene)
+    inter = _interreflections(args, inter)
     lights = [li for li in scene.lights if isinstance(li, (AreaLight, PolyhedronLight))]
     if not lights:
         raise InvalidLightError(f"{_name(args.scene)} has no area or polyhedron light")
@@ -244,6 +311,16 @@ def run(args: argparse.Namespace) -> int:
     compile_notice("halftone")
     with progress_bar("illuminance", enabled=not args.no_progress) as progress:
         m = illuminance_map(grid, lights, [o.shape for o in scene.objects], resolution=res, progress=progress)
+    if inter is not None:
+        from dataclasses import replace
+
+        from ..shadows.radiosity import solve_radiosity
+
+        sol = solve_radiosity(lights, [o.shape for o in scene.objects], inter, resolution=res)
+        pts = grid.points().reshape(-1, 3)
+        indirect = sol.indirect_illuminance(pts, grid.normal).reshape(m.E.shape)
+        m = replace(m, E=m.E + np.where(np.asarray(m.occluded, dtype=bool), 0.0, indirect))
+        print(f"interreflections: {len(sol.patches)} patches, {sol.shots} shots, residual {sol.residuals[-1] if sol.shots else 0.0:.2g}")
     area = None
     if args.area is not None:
         x0, y0, x1, y1 = args.area

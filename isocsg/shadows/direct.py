@@ -28,17 +28,28 @@ the plane.
 from __future__ import annotations
 
 from collections.abc import Sequence
-from typing import Any
+from typing import Any, Protocol
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from ..errors import InvalidParameterError
 from ..kinds import DEFAULT_RESOLUTION, Solid
 from ..lighting.area import AreaLight, PolyhedronLight, as_light_list
 from ..lighting.luminaire import PhotometricLight
 from .lambert import _prepare, edge_terms
 from .occluders import ConvexPiece, occluder_list, shadow_pieces
 from .visibility import UMBRA_TOL, PieceArrays, SourceArrays, blockers_single, visible_illuminance
+
+
+class IndirectLight(Protocol):
+    """What ``illuminance(..., interreflections=)`` needs: :class:`~isocsg.shadows.radiosity.Interreflections`."""
+
+    def indirect_illuminance(
+        self, points: NDArray[np.float64], normals: NDArray[np.float64],
+        lights: Sequence[AreaLight | PolyhedronLight], occluders: Sequence[Solid], *, resolution: int,
+    ) -> NDArray[np.float64]: ...
+
 
 __all__ = ["illuminance", "shadow_state", "illuminance_and_state", "receiver_tiles", "LIT", "PENUMBRA", "UMBRA"]
 
@@ -235,6 +246,7 @@ def illuminance(
     occluders: Sequence[Solid] | Solid = (),
     *,
     resolution: int = DEFAULT_RESOLUTION,
+    interreflections: IndirectLight | None = None,
 ) -> NDArray[np.float64]:
     """Exact illuminance at points from area and polyhedron sources, with soft shadows.
 
@@ -252,13 +264,17 @@ def illuminance(
         tessellation).
     resolution : int, keyword-only, default 64
         Tessellation of spheres and frusta.
+    interreflections : Interreflections, keyword-only, optional
+        Add the light reflected by a room and the occluders
+        (:mod:`isocsg.shadows.radiosity`); by default direct light only.
 
     Returns
     -------
     ndarray, shape (n,)
         Illuminance, ``(L/2) sum beta_i (n . g_i)`` over the visible part of
         each source (``pi L`` for a source filling the hemisphere): lux for
-        radiances in cd/m^2. Direct light only; occluders are black.
+        radiances in cd/m^2. Direct light only (occluders black) unless
+        ``interreflections`` is given.
 
     Raises
     ------
@@ -278,7 +294,15 @@ def illuminance(
     >>> round(float(illuminance([[0, 0, 0]], [[0, 0, 1]], [disc])[0]), 4)  # pi R^2 / (R^2 + h^2) = 1.5708
     1.5695
     """
-    return illuminance_and_state(points, normals, lights, occluders, resolution=resolution)[0]
+    direct = illuminance_and_state(points, normals, lights, occluders, resolution=resolution)[0]
+    if interreflections is None:
+        return direct
+    if not callable(getattr(interreflections, "indirect_illuminance", None)):
+        raise InvalidParameterError(
+            f"interreflections must be an Interreflections, got {type(interreflections).__name__}")
+    p, n = _prepare(points, normals)
+    return direct + interreflections.indirect_illuminance(
+        p, n, as_light_list(lights), occluder_list(occluders, resolution), resolution=resolution)
 
 
 def shadow_state(
