@@ -1,0 +1,271 @@
+"""``isocsg.hull``: exact hulls of spheres, cylinders and polytopes, judged independently.
+
+- membership: random points in or out of the exact union against the distance to the hull of
+  the centres (or segments), computed by non-negative least squares in
+  ``tests/reference/convex_distance.py`` (hypothesis-drawn point sets, radii and maps);
+- volumes: Steiner's formula from scipy's hull of the centres; manifold3d's hull of ever finer
+  sphere meshes converging to the exact volume (spheres of different radii);
+- a render of a hull against the analytic ray caster, and the ray caster's depths of the
+  pieces against sphere tracing on the exact distance to a box grown by a ball;
+- refusals name what stops them.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+import sys
+from pathlib import Path
+
+import numpy as np
+import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+from isocsg import (
+    Box,
+    Cone,
+    ConvexPolyhedron,
+    Cylinder,
+    Ellipsoid,
+    InvalidGeometryError,
+    NotExactError,
+    PointLight,
+    Sphere,
+    Torus,
+    Union,
+    hull,
+    volume,
+)
+from isocsg.csg.hull import hull_pieces
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+
+from reference.convex_distance import ball_grown_volume, hull_distance, slice_distance  # noqa: E402
+
+SETTINGS = settings(max_examples=12, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+RNG_SEED = 20261128
+
+
+def _points_near(solid_bounds: np.ndarray, n: int, seed: int) -> np.ndarray:
+    lo, hi = solid_bounds
+    pad = 0.1 * (hi - lo)
+    return np.random.default_rng(seed).uniform(lo - pad, hi + pad, size=(n, 3))
+
+
+def _assert_membership(solid, inside: np.ndarray, xs: np.ndarray, margin: np.ndarray) -> None:
+    """``solid.contains`` agrees with the independent ``inside`` wherever the margin is clear."""
+    got = solid.contains(xs)
+    clear = margin > 1e-6
+    assert clear.mean() > 0.9
+    bad = np.nonzero((got != inside) & clear)[0]
+    assert bad.size == 0, f"{bad.size} of {clear.sum()} points disagree, e.g. {xs[bad[:3]]}"
+    assert inside[clear].any() and (~inside[clear]).any()
+
+
+# ----------------------------------------------------------------------------- equal spheres
+
+
+def test_rounded_box_from_eight_spheres_has_the_closed_form_volume() -> None:
+    a, b, c, r = 2.0, 3.0, 1.5, 0.4
+    rounded = hull(*[Sphere((x, y, z), r) for x in (0, a) for y in (0, b) for z in (0, c)])
+    pieces = rounded.children
+    assert sum(isinstance(p, Sphere) for p in pieces) == 8 and sum(isinstance(p, Cylinder) for p in pieces) == 12
+    want = a * b * c + 2 * r * (a * b + b * c + c * a) + math.pi * r * r * (a + b + c) + 4 / 3 * math.pi * r**3
+    assert volume(rounded) == pytest.approx(want, rel=1e-4)
+
+
+def test_steiner_formula_for_a_tetrahedron_of_spheres() -> None:
+    centres = np.array([[0.0, 0, 0], [2, 0.3, 0], [0.4, 1.7, 0.2], [0.5, 0.6, 1.9]])
+    r = 0.6
+    got = volume(hull(*[Sphere(c, r) for c in centres]))
+    assert got == pytest.approx(ball_grown_volume(centres, r), rel=1e-4)
+
+
+@SETTINGS
+@given(
+    centres=st.lists(st.tuples(*[st.floats(-2, 2)] * 3), min_size=1, max_size=7),
+    r=st.floats(0.1, 1.5),
+    seed=st.integers(0, 2**16),
+)
+def test_hull_of_equal_spheres_is_the_grown_hull_of_centres(centres, r: float, seed: int) -> None:
+    c = np.array(centres)
+    solid = hull(*[Sphere(p, r) for p in c])
+    xs = _points_near(solid.bounds, 400, seed)
+    dist = hull_distance(c, xs)
+    _assert_membership(solid, dist <= r, xs, np.abs(dist - r))
+
+
+@pytest.mark.parametrize(
+    "centres",
+    [
+        [[0.0, 0, 0]] * 3,  # one point: a sphere
+        [[0, 0, 0], [1, 1, 1], [3, 3, 3]],  # a segment: a capsule
+        [[0, 0, 0], [2, 0, 0], [0, 1.5, 0], [1, 0.5, 0]],  # a polygon: a slab, cylinders, spheres
+    ],
+    ids=["point", "segment", "polygon"],
+)
+def test_flat_and_degenerate_centres(centres) -> None:
+    c = np.array(centres, dtype=float)
+    r = 0.5
+    solid = hull(*[Sphere(p, r) for p in c])
+    xs = _points_near(solid.bounds, 1500, RNG_SEED)
+    dist = hull_distance(c, xs)
+    _assert_membership(solid, dist <= r, xs, np.abs(dist - r))
+    if len({tuple(p) for p in c}) == 1:
+        assert solid == Sphere(c[0], r)
+
+
+def test_ellipsoids_of_one_shape_hull_through_their_map() -> None:
+    A = np.array([[1.5, 0.3, 0.0], [0.0, 0.8, 0.2], [0.1, 0.0, 0.5]])
+    centres = np.array([[0.0, 0, 0], [3, 0, 0], [0, 2, 1], [1, 1, -2]])
+    solid = hull(*[Ellipsoid.from_affine(A, A @ c) for c in centres])
+    xs = _points_near(solid.bounds, 1500, RNG_SEED)
+    local = np.linalg.solve(A, xs.T).T  # the hull of unit balls at the centres, mapped by A
+    dist = hull_distance(centres, local)
+    _assert_membership(solid, dist <= 1.0, xs, np.abs(dist - 1.0) * 0.5)
+
+
+# ----------------------------------------------------------------------------- parallel cylinders
+
+
+@SETTINGS
+@given(
+    feet=st.lists(st.tuples(*[st.floats(-2, 2)] * 3), min_size=1, max_size=5),
+    heights=st.lists(st.floats(0.2, 2.0), min_size=5, max_size=5),
+    axis=st.tuples(st.floats(-1, 1), st.floats(-1, 1), st.floats(0.3, 1)),
+    r=st.floats(0.1, 1.0),
+    seed=st.integers(0, 2**16),
+)
+def test_hull_of_parallel_cylinders_is_the_hull_of_segments_grown_by_the_disc(feet, heights, axis, r, seed) -> None:
+    a = np.array(axis) / np.linalg.norm(axis)
+    feet_a = np.array(feet)
+    ends = [(f, f + h * a) for f, h in zip(feet_a, heights)]
+    solid = hull(*[Cylinder((p + q) / 2, q - p, r) for p, q in ends])
+    xs = _points_near(solid.bounds, 300, seed)
+    dist = slice_distance(np.vstack([np.array(e) for e in ends]), a, xs)
+    _assert_membership(solid, dist <= r, xs, np.abs(dist - r))
+
+
+def test_hull_of_four_cylinders_is_a_rounded_plate() -> None:
+    w, d, h, r = 30.0, 18.0, 4.0, 3.0
+    plate = hull(*[Cylinder((x, y, h / 2), (0, 0, h), r) for x in (0, w) for y in (0, d)])
+    assert volume(plate) == pytest.approx(h * (w * d + 2 * r * (w + d) + math.pi * r * r), rel=1e-4)
+
+
+# ----------------------------------------------------------------------------- spheres of different radii
+
+
+def _manifold_hull_volume(spheres: list[tuple[np.ndarray, float]], n: int) -> float:
+    import manifold3d
+
+    meshes = [manifold3d.Manifold.sphere(r, n).translate(tuple(c)) for c, r in spheres]
+    return float(manifold3d.Manifold.batch_hull(meshes).volume())
+
+
+@pytest.mark.parametrize(
+    "spheres",
+    [
+        [((0, 0, 0), 1.0), ((3, 1, 0.5), 0.4)],
+        [((0, 0, 0), 3.0), ((4, 0, 0), 0.5), ((6, 0, 0), 1.0), ((10, 0, 0), 2.5)],
+        [((0, 0, 0), 1.0), ((0.2, 0, 0), 0.5)],  # one inside the other
+    ],
+    ids=["two", "on_a_line", "nested"],
+)
+def test_spheres_of_different_radii_converge_with_manifold3d(spheres) -> None:
+    s = [(np.array(c, dtype=float), r) for c, r in spheres]
+    exact = volume(hull(*[Sphere(c, r) for c, r in s]))
+    meshes = [_manifold_hull_volume(s, n) for n in (32, 96, 288)]
+    gaps = [abs(v / exact - 1) for v in meshes]
+    assert gaps[0] > gaps[1] > gaps[2] and gaps[2] < 1e-3, gaps
+    # the mesh's error falls as 1 / n^2: extrapolated, it meets the exact volume
+    extrapolated = meshes[2] + (meshes[2] - meshes[1]) / 8
+    assert extrapolated == pytest.approx(exact, rel=5e-5)
+
+
+def test_spheres_on_a_line_leave_the_inner_one_out() -> None:
+    solid = hull(Sphere((0, 0, 0), 3), Sphere((4, 0, 0), 0.5), Sphere((6, 0, 0), 1), Sphere((10, 0, 0), 2.5))
+    radii = sorted(p.radius for p in solid.children if isinstance(p, Sphere))
+    assert radii == [2.5, 3.0]  # the others are inside the tangent cone
+
+
+# ----------------------------------------------------------------------------- polytopes, errors
+
+
+def test_hull_of_boxes_is_one_polyhedron() -> None:
+    solid = hull(Box((0, 0, 0), (1, 1, 1)), Box((3, 0, 0), (1, 1, 1)))
+    assert isinstance(solid, ConvexPolyhedron) and solid.volume == pytest.approx(4.0, rel=1e-14)
+
+
+@pytest.mark.parametrize(
+    "solids, message",
+    [
+        ((Sphere((0, 0, 0), 1), Box((2, 0, 0), (1, 1, 1))),
+         "hull: a hull of polytopes and round solids (Box, Sphere) is no exact union of isocsg kinds"),
+        ((Sphere((0, 0, 0), 1), Sphere((2, 0, 0), 0.5), Sphere((0, 2, 0), 0.7)),
+         "hull: a hull of spheres of radii 1, 0.5, 0.7 whose centres are not on one line"),
+        ((Cylinder((0, 0, 0), (0, 0, 1), 1), Cylinder((3, 0, 0), (0, 1, 0), 1)),
+         "hull: a hull of Cylinder of different shapes or directions is not an exact union"),
+        ((Cone((0, 0, 0), (0, 0, 1), 1),), "hull: a hull of a cone or frustum is not an exact union"),
+        ((Torus((0, 0, 0), (0, 0, 1), 2, 0.5),), "hull: a hull of a Torus is not an exact union"),
+        ((Box((0, 0, 0), (2, 2, 2)) - Sphere((1, 1, 1), 1),), "hull: a hull of a difference is not supported"),
+    ],
+    ids=["sphere_box", "off_line", "crossed_cylinders", "cone", "torus", "difference"],
+)
+def test_refusals_name_what_stops_them(solids, message: str) -> None:
+    with pytest.raises(NotExactError, match=re.escape(message)):
+        hull(*solids)
+
+
+def test_no_operand_is_refused_and_a_union_is_its_leaves() -> None:
+    with pytest.raises(InvalidGeometryError, match="hull: needs at least one solid"):
+        hull()
+    assert len(hull_pieces(Union(Box((0, 0, 0), (1, 1, 1)), Box((3, 0, 0), (1, 1, 1))))) == 1
+
+
+def test_flat_polygons_hull_to_nothing() -> None:
+    from isocsg.csg.hull_grow import grow_disc
+
+    square = np.array([[0.0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0]])
+    assert grow_disc(square, np.array([0.0, 0, 1]), 0.5) == []  # a disc in the square's plane: flat
+    assert len(grow_disc(square, np.array([1.0, 0, 0]), 0.5)) > 1  # across it: a slab and cylinders
+
+
+# ----------------------------------------------------------------------------- rays and renders
+
+
+def _box_distance(c: np.ndarray, half: np.ndarray, p: np.ndarray) -> np.ndarray:
+    q = np.abs(p - c) - half
+    return np.linalg.norm(np.maximum(q, 0), axis=-1) + np.minimum(q.max(axis=-1), 0)
+
+
+def test_reference_ray_depths_match_sphere_tracing_of_the_grown_box() -> None:
+    from reference import camera_rays, raycast
+
+    from isocsg import Camera, Material
+
+    c, half, r = np.array([0.2, -0.1, 0.3]), np.array([1.0, 0.6, 0.4]), 0.35
+    corners = np.array([[x, y, z] for x in (-1, 1) for y in (-1, 1) for z in (-1, 1)], dtype=float)
+    solid = hull(*[Sphere(c + half * s, r) for s in corners])
+    cam = Camera((3.5, -4.0, 2.5), tuple(c), width=48, height=40)
+    ref = raycast(cam, [(solid, Material())], [PointLight((4, -3, 5))])
+    origins, dirs = camera_rays(cam)
+    o, d = origins.reshape(-1, 3), dirs.reshape(-1, 3)
+    t = np.zeros(len(d))
+    for _ in range(400):  # sphere tracing on the exact distance (1-Lipschitz): no surface stepped over
+        step = _box_distance(c, half, o + t[:, None] * d) - r
+        t += np.where(step > 1e-12, step, 0.0)
+    hit = (_box_distance(c, half, o + t[:, None] * d) - r) < 1e-9
+    depth = ref.depth.reshape(-1)
+    assert np.array_equal(np.isfinite(depth), hit)
+    assert np.abs(depth[hit] - t[hit]).max() < 1e-8
+
+
+def test_a_hull_renders_like_the_reference() -> None:
+    from reference import compare, raycast_scene
+    from scenes import make_scene, render_image
+
+    solid = hull(Sphere((0, 0, 0), 0.9), Sphere((1.8, 0.4, 0.3), 0.5))
+    scene = make_scene((2.5, -4.5, 2.5), [solid], [PointLight((3, -4, 5))], target=(0.9, 0.2, 0.15), size=96)
+    result = compare(render_image(scene), raycast_scene(scene))
+    assert result.iou >= 0.99 and result.fraction >= 0.98, result.summary()
