@@ -33,6 +33,7 @@ from isocsg import (
     PointLight,
     Sphere,
     Torus,
+    Truncus,
     Union,
     hull,
     volume,
@@ -189,6 +190,51 @@ def test_spheres_on_a_line_leave_the_inner_one_out() -> None:
     assert radii == [2.5, 3.0]  # the others are inside the tangent cone
 
 
+# ----------------------------------------------------------------------------- coaxial cylinders, cones, frusta
+
+
+def _envelope(s_pts: np.ndarray, r_pts: np.ndarray, s: np.ndarray) -> np.ndarray:
+    """The concave envelope of the points (s_i, r_i) at s: the best chord over every pair."""
+    out = np.full(len(s), -np.inf)
+    for i in range(len(s_pts)):
+        for j in range(len(s_pts)):
+            if s_pts[j] > s_pts[i]:
+                w = (s - s_pts[i]) / (s_pts[j] - s_pts[i])
+                on = (w >= 0) & (w <= 1)
+                out[on] = np.maximum(out[on], (1 - w[on]) * r_pts[i] + w[on] * r_pts[j])
+            elif s_pts[j] == s_pts[i]:
+                out[s == s_pts[i]] = np.maximum(out[s == s_pts[i]], max(r_pts[i], r_pts[j]))
+    return out
+
+
+@SETTINGS
+@given(
+    spans=st.lists(st.tuples(st.floats(-3, 3), st.floats(0.2, 2), st.floats(0.05, 2), st.just(0.0) | st.floats(0.05, 2)),
+                   min_size=1, max_size=4),
+    axis=st.tuples(st.floats(-1, 1), st.floats(-1, 1), st.floats(0.2, 1)),
+    seed=st.integers(0, 2**16),
+)
+def test_hull_of_coaxial_trunci_is_the_revolved_envelope(spans, axis, seed) -> None:
+    a = np.array(axis) / np.linalg.norm(axis)
+    origin = np.array([0.5, -0.3, 0.2])
+    trunci = [Truncus(origin + (s0 + h / 2) * a, h * a, r1, r2) for s0, h, r1, r2 in spans]
+    solid = hull(*trunci)
+    s_pts = np.array([v for s0, h, _, _ in spans for v in (s0 + h, s0)])
+    r_pts = np.array([v for t in trunci for v in (t.r1, t.r2)])
+    xs = _points_near(solid.bounds, 600, seed)
+    s = (xs - origin) @ a
+    rho = np.linalg.norm(xs - origin - s[:, None] * a, axis=1)
+    limit = _envelope(s_pts, r_pts, s)
+    margin = np.minimum(np.abs(rho - limit), np.minimum(np.abs(s - s_pts.min()), np.abs(s - s_pts.max())))
+    _assert_membership(solid, rho <= limit, xs, np.where(np.isfinite(margin), margin, 1.0))
+
+
+def test_hull_of_a_cylinder_and_a_coaxial_cone_is_a_cylinder_and_a_frustum() -> None:
+    solid = hull(Cylinder((0, 0, 0.5), (0, 0, 1), 2), Cylinder((0, 0, 3), (0, 0, 1), 1))
+    assert sorted(type(p).__name__ for p in solid.children) == ["Cylinder", "Truncus"]
+    assert volume(solid) == pytest.approx(4 * math.pi + math.pi / 3 * 2.5 * (4 + 2 + 1), rel=1e-6)
+
+
 # ----------------------------------------------------------------------------- polytopes, errors
 
 
@@ -206,7 +252,7 @@ def test_hull_of_boxes_is_one_polyhedron() -> None:
          "hull: a hull of spheres of radii 1, 0.5, 0.7 whose centres are not on one line"),
         ((Cylinder((0, 0, 0), (0, 0, 1), 1), Cylinder((3, 0, 0), (0, 1, 0), 1)),
          "hull: a hull of Cylinder of different shapes or directions is not an exact union"),
-        ((Cone((0, 0, 0), (0, 0, 1), 1),), "hull: a hull of a cone or frustum is not an exact union"),
+        ((Cone((0, 0, 0), (0, 0, 1), 1), Cone((1, 0, 0), (0, 0, 1), 1)), "hull: a hull of a cone or frustum is not an exact union"),
         ((Torus((0, 0, 0), (0, 0, 1), 2, 0.5),), "hull: a hull of a Torus is not an exact union"),
         ((Box((0, 0, 0), (2, 2, 2)) - Sphere((1, 1, 1), 1),), "hull: a hull of a difference is not supported"),
     ],

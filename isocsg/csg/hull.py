@@ -15,7 +15,9 @@ segments grown by that ball or disc (:mod:`isocsg.csg.hull_grow`, mapped by ``L`
 a similarity). A hull of polytopes is the :class:`~isocsg.ConvexPolyhedron` of their corners.
 Spheres of different radii are exact when their centres lie on one line (two spheres always
 do): the hull is then a solid of revolution whose meridian is the hull of discs, so it is the
-spheres on that hull joined by the frusta of their common tangent cones.
+spheres on that hull joined by the frusta of their common tangent cones. Cylinders, cones and
+frusta on one axis are likewise the frusta between consecutive vertices of the upper hull of
+their ends' (position, radius) points.
 
 **minkowski**: sums of corners add (the sum of two polytopes is the hull of the pairwise sums
 of their corners), centres add, balls of one shape add (``L1 B + k L1 B = (1 + k) L1 B``) and so
@@ -42,7 +44,18 @@ import numpy as np
 from numpy.typing import NDArray
 
 from ..errors import InvalidGeometryError, NotExactError, ResourceLimitError
-from ..kinds import ConvexPolyhedron, Cylinder, Ellipsoid, EllipticTruncus, Primitive, Solid, Sphere, Torus, Truncus
+from ..kinds import (
+    Cone,
+    ConvexPolyhedron,
+    Cylinder,
+    Ellipsoid,
+    EllipticTruncus,
+    Primitive,
+    Solid,
+    Sphere,
+    Torus,
+    Truncus,
+)
 from ..kinds.affine import similarity_factor
 from .hull_grow import grow_ball, grow_disc, polytope
 from .tree import CSGNode, Union
@@ -167,6 +180,10 @@ def hull_pieces(*solids: Solid) -> list[Primitive]:
     leaves = [leaf for s in solids for leaf in _union_leaves(s, "hull")]
     if not leaves:
         raise InvalidGeometryError("hull: needs at least one solid")
+    if all(type(p) in (Truncus, Cylinder, Cone) for p in leaves):
+        coaxial = _coaxial_hull(leaves)  # type: ignore[arg-type]
+        if coaxial is not None:
+            return coaxial
     parts = [_convex(p, "hull") for p in leaves]
     rounds = [c for c in parts if c.round is not None]
     if not rounds:
@@ -184,6 +201,43 @@ def hull_pieces(*solids: Solid) -> list[Primitive]:
         f"hull: a hull of {shown} of different shapes or directions is not an exact union of isocsg kinds (only balls "
         "of one shape, parallel cylinders of one radius, or spheres whose centres lie on one line are)"
     )
+
+
+def _coaxial_hull(trunci: list[Truncus]) -> list[Primitive] | None:
+    """The hull of trunci on one axis (cylinders, cones, frusta), or None when they are not: a
+    solid of revolution whose meridian is the upper hull of the ends' (position, radius) points,
+    so frusta between consecutive vertices of that hull."""
+    axis = trunci[0].unit_axis
+    origin = trunci[0].center_array
+    ends = np.array([e for t in trunci for e in t.end_centers])
+    radii = np.array([r for t in trunci for r in (t.r1, t.r2)])
+    s = (ends - origin) @ axis
+    reach = float(np.ptp(s) + radii.max())
+    off_line = np.linalg.norm(ends - origin - s[:, None] * axis, axis=1)
+    if off_line.max() > SHAPE_TOLERANCE * reach:
+        return None
+    order = np.lexsort((-radii, s))
+    hull: list[tuple[float, float]] = []
+    for k in order:  # Andrew's monotone chain, upper half, one point per position (the widest)
+        point = (float(s[k]), float(radii[k]))
+        if hull and point[0] - hull[-1][0] <= SHAPE_TOLERANCE * reach:
+            continue
+        while len(hull) >= 2 and _turn(hull[-2], hull[-1], point) >= 0:
+            hull.pop()
+        hull.append(point)
+    if len(hull) == 1:
+        return None  # every end at one position: no length (not reached for valid trunci)
+    pieces: list[Primitive] = []
+    for (s0, r0), (s1, r1) in itertools.pairwise(hull):
+        if max(r0, r1) > 0:
+            a, b = origin + s0 * axis, origin + s1 * axis
+            pieces.append(Cylinder((a + b) / 2, b - a, r1) if r0 == r1 else Truncus((a + b) / 2, b - a, r1, r0))
+    return pieces
+
+
+def _turn(o: tuple[float, float], a: tuple[float, float], b: tuple[float, float]) -> float:
+    """The cross product of ``a - o`` and ``b - o``: > 0 for a left (counter-clockwise) turn."""
+    return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0])
 
 
 def _sphere_hull(spheres: list[Sphere]) -> list[Primitive]:
@@ -236,8 +290,8 @@ def hull(*solids: Solid) -> Solid:
     ----------
     *solids : Solid
         Primitives or unions of them: polytopes (boxes, convex polyhedra), spheres of one radius
-        (or ellipsoids of one shape), parallel cylinders of one radius, or spheres whose centres
-        lie on one line (see :mod:`isocsg.csg.hull`).
+        (or ellipsoids of one shape), parallel cylinders of one radius, cylinders and cones on
+        one axis, or spheres whose centres lie on one line (see :mod:`isocsg.csg.hull`).
 
     Returns
     -------

@@ -134,6 +134,8 @@ class _Lowerer:
 
     @staticmethod
     def reason(name: str, dim: str = "3D") -> str:
+        if dim == "2D" and name == "minkowski":
+            return "a 2D Minkowski sum is not supported (a 3D one is)"
         return UNSUPPORTED_NODES.get(name, f"unknown or unsupported {dim} module")
 
     # ------------------------------------------------------------------ arguments
