@@ -27,7 +27,6 @@ from isocsg import (
     Cone,
     ConvexPolyhedron,
     Cylinder,
-    Ellipsoid,
     InvalidGeometryError,
     NotExactError,
     PointLight,
@@ -36,6 +35,7 @@ from isocsg import (
     Truncus,
     Union,
     hull,
+    minkowski,
     volume,
 )
 from isocsg.csg.hull import hull_pieces
@@ -117,14 +117,23 @@ def test_flat_and_degenerate_centres(centres) -> None:
         assert solid == Sphere(c[0], r)
 
 
-def test_ellipsoids_of_one_shape_hull_through_their_map() -> None:
-    A = np.array([[1.5, 0.3, 0.0], [0.0, 0.8, 0.2], [0.1, 0.0, 0.5]])
-    centres = np.array([[0.0, 0, 0], [3, 0, 0], [0, 2, 1], [1, 1, -2]])
-    solid = hull(*[Ellipsoid.from_affine(A, A @ c) for c in centres])
-    xs = _points_near(solid.bounds, 1500, RNG_SEED)
-    local = np.linalg.solve(A, xs.T).T  # the hull of unit balls at the centres, mapped by A
-    dist = hull_distance(centres, local)
-    _assert_membership(solid, dist <= 1.0, xs, np.abs(dist - 1.0) * 0.5)
+@SETTINGS
+@given(
+    shear=st.lists(st.floats(-0.45, 0.45), min_size=9, max_size=9),
+    centres=st.lists(st.tuples(*[st.floats(-2, 2)] * 3), min_size=1, max_size=5),
+    seed=st.integers(0, 2**16),
+)
+def test_spheres_under_one_map_hull_through_the_map(shear, centres, seed) -> None:
+    """Spheres mapped by one affine map are ellipsoids of one shape; their hull is the map of the hull."""
+    A = np.eye(3) + np.array(shear).reshape(3, 3)
+    m = np.eye(4)
+    m[:3, :3], m[:3, 3] = A, (0.3, -0.7, 1.1)
+    c = np.array(centres)
+    solid = hull(*[Sphere(p, 0.8).transform(m) for p in c])
+    xs = _points_near(solid.bounds, 300, seed)
+    local = np.linalg.solve(A, (xs - m[:3, 3]).T).T  # back to the spheres' frame
+    dist = hull_distance(c, local)
+    _assert_membership(solid, dist <= 0.8, xs, np.abs(dist - 0.8) * 0.3)
 
 
 # ----------------------------------------------------------------------------- parallel cylinders
@@ -307,11 +316,18 @@ def test_reference_ray_depths_match_sphere_tracing_of_the_grown_box() -> None:
     assert np.abs(depth[hit] - t[hit]).max() < 1e-8
 
 
-def test_a_hull_renders_like_the_reference() -> None:
+@pytest.mark.parametrize(
+    "solid",
+    [
+        hull(Sphere((0, 0, 0), 0.9), Sphere((1.8, 0.4, 0.3), 0.5)),
+        minkowski(Box((0.9, 0.2, 0.15), (2, 1.4, 1)), Cylinder((0, 0, 0), (0.3, 0.2, 0.5), 0.3)),
+    ],
+    ids=["two_spheres", "box_plus_tilted_cylinder"],
+)
+def test_a_hull_renders_like_the_reference(solid) -> None:
     from reference import compare, raycast_scene
     from scenes import make_scene, render_image
 
-    solid = hull(Sphere((0, 0, 0), 0.9), Sphere((1.8, 0.4, 0.3), 0.5))
     scene = make_scene((2.5, -4.5, 2.5), [solid], [PointLight((3, -4, 5))], target=(0.9, 0.2, 0.15), size=96)
     result = compare(render_image(scene), raycast_scene(scene))
     assert result.iou >= 0.99 and result.fraction >= 0.98, result.summary()
