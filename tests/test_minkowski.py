@@ -197,3 +197,15 @@ def test_ellipsoid_plus_box_through_the_ellipsoids_map() -> None:
 def test_refusals_name_what_stops_them(operands, message: str) -> None:
     with pytest.raises(NotExactError, match=re.escape(message)):
         minkowski(*operands)
+
+
+def test_operands_must_be_solids_and_unions_stay_bounded() -> None:
+    from isocsg import ResourceLimitError
+    from isocsg.csg.hull import MAX_MINKOWSKI_TERMS
+
+    with pytest.raises(InvalidGeometryError, match=re.escape("minkowski: operands must be isocsg solids, got str")):
+        minkowski(Sphere((0, 0, 0), 1), "cube")  # type: ignore[arg-type]
+    many = Union(*[Box((3 * i, 0, 0), (1, 1, 1)) for i in range(65)])
+    assert 65 * 65 > MAX_MINKOWSKI_TERMS
+    with pytest.raises(ResourceLimitError, match=re.escape("minkowski: the operands' convex pieces make 4225 sums")):
+        minkowski(many, many)
