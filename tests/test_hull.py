@@ -238,6 +238,15 @@ def test_hull_of_coaxial_trunci_is_the_revolved_envelope(spans, axis, seed) -> N
     _assert_membership(solid, rho <= limit, xs, np.where(np.isfinite(margin), margin, 1.0))
 
 
+def test_ends_at_one_position_to_rounding_keep_the_widest() -> None:
+    """A cone's apex and a cylinder's end at one position (to rounding): the cylinder's rim counts."""
+    a = np.array([0.0, 1.0, 0.5]) / math.sqrt(1.25)
+    origin = np.array([0.5, -0.3, 0.2])
+    solid = hull(Truncus(origin + 0.25 * a, 0.5 * a, 1.0, 0.0), Cylinder(origin + a, 2 * a, 1.0))
+    assert isinstance(solid, Cylinder) and solid.radius == 1.0
+    assert np.allclose(solid.end_centers, [origin + 2 * a, origin], atol=1e-12)
+
+
 def test_hull_of_a_cylinder_and_a_coaxial_cone_is_a_cylinder_and_a_frustum() -> None:
     solid = hull(Cylinder((0, 0, 0.5), (0, 0, 1), 2), Cylinder((0, 0, 3), (0, 0, 1), 1))
     assert sorted(type(p).__name__ for p in solid.children) == ["Cylinder", "Truncus"]

@@ -216,12 +216,14 @@ def _coaxial_hull(trunci: list[Truncus]) -> list[Primitive] | None:
     off_line = np.linalg.norm(ends - origin - s[:, None] * axis, axis=1)
     if off_line.max() > SHAPE_TOLERANCE * reach:
         return None
-    order = np.lexsort((-radii, s))
+    points: list[tuple[float, float]] = []
+    for k in np.argsort(s, kind="stable"):  # one point per position (to rounding): the widest
+        if points and s[k] - points[-1][0] <= SHAPE_TOLERANCE * reach:
+            points[-1] = (points[-1][0], max(points[-1][1], float(radii[k])))
+        else:
+            points.append((float(s[k]), float(radii[k])))
     hull: list[tuple[float, float]] = []
-    for k in order:  # Andrew's monotone chain, upper half, one point per position (the widest)
-        point = (float(s[k]), float(radii[k]))
-        if hull and point[0] - hull[-1][0] <= SHAPE_TOLERANCE * reach:
-            continue
+    for point in points:  # Andrew's monotone chain, upper half
         while len(hull) >= 2 and _turn(hull[-2], hull[-1], point) >= 0:
             hull.pop()
         hull.append(point)
