@@ -13,6 +13,7 @@ from __future__ import annotations
 __all__ = [
     "IsocsgError",
     "InvalidGeometryError",
+    "NotExactError",
     "InvalidLightError",
     "InvalidParameterError",
     "SceneFileError",
@@ -29,6 +30,14 @@ class IsocsgError(Exception):
 
 class InvalidGeometryError(IsocsgError, ValueError):
     """A primitive, CSG node or occluder is malformed (NaN, zero size, ...)."""
+
+
+class NotExactError(InvalidGeometryError):
+    """An operation (``hull``, ``minkowski``) whose result is no exact union of isocsg kinds.
+
+    The message names the operation and the operands that stop it, e.g. ``hull: spheres of
+    radii 1 and 2 whose centres are not on one line: ...``.
+    """
 
 
 class InvalidLightError(IsocsgError, ValueError):

@@ -217,7 +217,7 @@ def test_extrusion_maps_the_plane() -> None:
 
 UNSUPPORTED = [
     ("hull", "hull() {\n  sphere(r = 1);\n  cube(size = 1);\n}"),
-    ("minkowski", "minkowski() {\n  cube(size = 1);\n  sphere(r = 0.1);\n}"),
+    ("minkowski", "minkowski() {\n  cube(size = 1);\n  cylinder(h = 1, r1 = 0.1, r2 = 0);\n}"),
     ("rotate_extrude", "rotate_extrude(angle = 360, convexity = 2) {\n  square(size = 1);\n}"),
     ("roof", "linear_extrude(height = 1) {\n  roof() {\n    square(size = 1);\n  }\n}"),
     ("import", "import(file = \"part.stl\", layer = \"\", origin = [0, 0], scale = 1);"),
@@ -278,8 +278,8 @@ def read_openscad_text(text: str):
 
 def test_skip_counts_add_up(tmp_path) -> None:
     text = (
-        "difference() {\n  cube(size = [3, 3, 3]);\n  hull() { sphere(r = 1); }\n  hull() { cube(size = 1); sphere(r = 0.5); }\n"
-        "  minkowski() { cube(size = 1); sphere(r = 1); }\n}\nlinear_extrude(height = 1, twist = 5) { square(size = 1); }\n"
+        "difference() {\n  cube(size = [3, 3, 3]);\n  hull() { sphere(r = 1); cube(size = 2); }\n  hull() { cube(size = 1); sphere(r = 0.5); }\n"
+        "  minkowski() { cube(size = 1); cylinder(h = 1, r1 = 1, r2 = 0); }\n}\nlinear_extrude(height = 1, twist = 5) { square(size = 1); }\n"
     )
     path = tmp_path / "m.csg"
     path.write_text(text)
@@ -289,7 +289,7 @@ def test_skip_counts_add_up(tmp_path) -> None:
     with pytest.warns(OpenSCADSkipWarning, match=re.escape("skipped 4 unsupported OpenSCAD nodes: 2 hull, 1 linear_extrude, 1 minkowski")):
         isocsg.load_openscad(path, skip_unsupported=True)
     with pytest.raises(OpenSCADError, match=re.escape("the model is empty: nothing of it has a volume (skipped: 1 hull)")):
-        load("hull() { sphere(r = 1); }", skip_unsupported=True)
+        load("hull() { sphere(r = 1); cube(size = 1); }", skip_unsupported=True)
 
 
 # ----------------------------------------------------------------------------- files and the program
@@ -495,7 +495,7 @@ def test_cli_reports_unsupported_nodes(tmp_path, capsys) -> None:
     from isocsg.cli import main
 
     model = tmp_path / "part.csg"
-    model.write_text("cube(size = 1);\nhull() { sphere(r = 1); }\n")
+    model.write_text("cube(size = 1);\nhull() { sphere(r = 1); cube(size = 1); }\n")
     assert main(["render", str(model), "-o", str(tmp_path / "o.png"), "--no-progress"]) == 2
     assert f"isocsg render: error: {model}:2: hull() is not supported" in capsys.readouterr().err
     args = ["render", str(model), "-o", str(tmp_path / "o.png"), "--size", "32x32", "--no-progress", "--skip-unsupported"]

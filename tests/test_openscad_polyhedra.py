@@ -128,8 +128,10 @@ def test_hull_of_polyhedral_children_loads_as_a_convex_polyhedron() -> None:
     assert np.array_equal(solid.bounds, [[-0.5, -0.5, -0.5], [3.5, 0.5, 0.5]])
     assert len(solid.vertices) == 8  # the interior corners are not kept
     for child, reason in (
-        ("sphere(r = 1);", "a convex hull of curved solids is not an exact isocsg solid"),
-        ("difference() { cube(size = 2); cube(size = 1); }", "a hull of a difference is not supported"),
+        ("sphere(r = 1);", "a hull of polytopes and round solids (Box, Sphere) is no exact union of isocsg kinds"),
+        ("difference() { cube(size = 2); cube(size = 1); }", (
+            "a hull of a difference is not supported (only unions split into convex pieces exactly: "
+            "a hull does not distribute over it)")),
     ):
         with pytest.raises(UnsupportedOpenSCADError, match=re.escape(f"m.csg:1: hull() is not supported ({reason})")):
             loads_openscad(f"hull() {{ cube(size = 1); {child} }}", source="m.csg")

@@ -55,7 +55,7 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
     )
     p.add_argument(
         "--skip-unsupported", action="store_true",
-        help="OpenSCAD models: skip nodes without an exact equivalent (minkowski, hull of curved solids, ...) and say how many",
+        help="OpenSCAD models: skip nodes without an exact equivalent (import, a hull of a sphere and a cube, ...) and say how many",
     )
     add_common_render_options(p)
     p.set_defaults(func=run)

@@ -244,7 +244,9 @@ class EllipticTruncus(Primitive):
             return EMPTY
         B = np.array([[ul @ e1, vl @ e1], [ul @ e2, vl @ e2]])  # (a, b) -> (x, y) in the local frame
         Binv = np.linalg.inv(B)
-        return shapely.transform(poly, lambda xy: xy @ Binv.T)
+        out = shapely.transform(poly, lambda xy: xy @ Binv.T)
+        # a sliver (a plane grazing an end) can come back crossing its own chord by a rounding error
+        return out if out.is_valid else shapely.make_valid(out).buffer(0)  # type: ignore[no-any-return]
 
     def manifold(self, resolution: int, shapes: dict[tuple[Any, ...], Any] | None = None) -> Any:
         """manifold3d's truncus (vertices on the surface) mapped by ``[matrix | center]``."""

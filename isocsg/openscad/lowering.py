@@ -19,13 +19,14 @@ What each node becomes (``docs/openscad.md`` has the table and the reasons):
   intersection nor stand first in a difference. A 2D object beside 3D ones is ignored with
   OpenSCAD's warning (:class:`~isocsg.openscad.flat.MixedDimensionsWarning`).
 - ``hull`` of polyhedral children (cubes, polyhedra, polygonal spheres and cylinders, under maps
-  and groups) -> the :class:`~isocsg.ConvexPolyhedron` of all their corners, exactly; a hull of a
-  round or cut child is refused.
+  and groups) -> the :class:`~isocsg.ConvexPolyhedron` of all their corners, exactly; ``hull`` of
+  round children and ``minkowski`` -> the exact unions of :mod:`isocsg.csg.hull` (spheres of one
+  radius, parallel cylinders of one radius, two spheres, ...), or refused naming what stops them.
 - ``linear_extrude(height, center, scale)`` of any 2D subtree (:mod:`isocsg.openscad.flat`,
   through :mod:`isocsg.shapes2d`): ``square``, ``circle``, ``polygon`` (non-convex, holes),
   ``text``, ``offset``, 2D Booleans, transforms and hulls of polygons.
 
-Nodes without an exact equivalent (``hull`` of round solids, ``minkowski``, ``rotate_extrude``,
+Nodes without an exact equivalent (the ``hull`` and ``minkowski`` that are not exact, ``rotate_extrude``,
 twisted extrusions, ``import``, ``surface``, ``projection``, ``resize``, non-convex polyhedra and
 unknown modules) raise :class:`~isocsg.errors.UnsupportedOpenSCADError` naming the node and its
 line, or are skipped when ``skip_unsupported=True``: :attr:`LoweredModel.skipped` counts them
@@ -49,8 +50,8 @@ from numpy.typing import NDArray
 
 from .._validation import parse_color
 from ..csg import Difference, Intersection, Union
-from ..errors import InvalidGeometryError, InvalidParameterError, OpenSCADError, UnsupportedOpenSCADError
-from ..kinds import Box, ConvexPolyhedron, Cylinder, Primitive, Solid, Sphere, Truncus
+from ..errors import InvalidGeometryError, InvalidParameterError, NotExactError, OpenSCADError, UnsupportedOpenSCADError
+from ..kinds import Box, ConvexPolyhedron, Cylinder, Solid, Sphere, Truncus
 from .flat import MixedDimensionsWarning, cylinder_points, extrude, polygonal_sides, sphere_points
 from .parser import CSGCall
 
@@ -58,7 +59,6 @@ __all__ = ["lower", "LoweredModel", "UNSUPPORTED_NODES"]
 
 #: OpenSCAD modules that have no exact isocsg equivalent, with the reason given in errors.
 UNSUPPORTED_NODES: dict[str, str] = {
-    "minkowski": "Minkowski sums are not exact isocsg solids",
     "rotate_extrude": "surfaces of revolution other than spheres and cones are not isocsg primitives",
     "import": "meshes and drawings from other files are not read",
     "surface": "height maps are not read",
@@ -69,10 +69,8 @@ UNSUPPORTED_NODES: dict[str, str] = {
 }
 
 _UNION_LIKE = {"union", "group", "render", "color"}
-_BOOLEANS = _UNION_LIKE | {"difference", "intersection", "hull"}
+_BOOLEANS = _UNION_LIKE | {"difference", "intersection", "hull", "minkowski"}
 
-#: Why a ``hull`` is refused when a child is not polyhedral.
-HULL_OF_CURVED = "a convex hull of curved solids is not an exact isocsg solid"
 _LEAVES_3D = {"cube", "sphere", "cylinder", "polyhedron"}
 _LEAVES_2D = {"square", "circle", "polygon"}
 
@@ -95,7 +93,7 @@ class LoweredModel:
         ``skip_unsupported=True`` met an unsupported node).
     left_out : tuple of str
         One line per node left out of the model, skipped or ignored as OpenSCAD ignores it (a 2D
-        object beside 3D ones): ``"model.csg:12: minkowski(): Minkowski sums are not ..."``.
+        object beside 3D ones): ``"model.csg:12: import(): meshes and drawings ..."``.
     leaf_colors : tuple of (r, g, b) or None
         The colour ``color()`` gives each leaf of :attr:`solid` (in ``leaves()`` order; the
         innermost ``color`` wins, as in OpenSCAD), or None; empty when nothing is coloured. Pass
@@ -143,6 +141,8 @@ class _Lowerer:
 
     @staticmethod
     def reason(name: str, dim: str = "3D") -> str:
+        if dim == "2D" and name == "minkowski":
+            return "a 2D Minkowski sum is not supported (a 3D one is)"
         return UNSUPPORTED_NODES.get(name, f"unknown or unsupported {dim} module")
 
     # ------------------------------------------------------------------ arguments
@@ -557,6 +557,8 @@ def _leave(lw: _Lowerer, call: CSGCall, m: NDArray[np.float64] | None, parts: li
         return _combine(name, kept)
     if name == "hull":
         return _hull(lw, call, kept)
+    if name == "minkowski":
+        return _minkowski(lw, call, m, kept)
     combined = _combine("union", kept)
     if name == "color":
         _color(lw, call, combined)
@@ -622,18 +624,39 @@ def _hull_of(pts: NDArray[np.float64] | None) -> Solid | None:
 
 
 def _hull(lw: _Lowerer, call: CSGCall, parts: list[Solid | None]) -> Solid | None:
-    """``hull()`` of polyhedral children (boxes, convex polyhedra, their unions): the convex
-    polyhedron of all their corners, exactly; a curved or cut child is refused."""
-    corners: list[NDArray[np.float64]] = []
-    todo = [p for p in parts if p is not None]
-    while todo:
-        s = todo.pop()
-        if isinstance(s, Union):
-            todo.extend(s.children)
-        elif isinstance(s, Primitive) and (pts := s.hull_points()) is not None:
-            corners.append(pts)
-        else:
-            what = type(s).__name__.lower()
-            lw.unsupported(call, HULL_OF_CURVED if isinstance(s, Primitive) else f"a hull of {'an' if what[0] in 'aeiou' else 'a'} {what} is not supported")
-            return None
-    return _hull_of(np.vstack(corners) if corners else None)
+    """``hull()`` of the children's solids, exactly (:func:`~isocsg.csg.hull.hull_pieces`); the
+    maps on the children are affine, and the hull of their images is the image of their hull."""
+    from ..csg.hull import hull_pieces
+
+    return _exactly(lw, call, hull_pieces, [p for p in parts if p is not None])
+
+
+def _minkowski(lw: _Lowerer, call: CSGCall, m: NDArray[np.float64] | None, parts: list[Solid | None]) -> Solid | None:
+    """``minkowski()`` of the children's solids, exactly (:func:`~isocsg.csg.hull.minkowski_pieces`).
+    Each child carries the whole map ``x -> A x + t``; the sum of k images is the image of the sum
+    shifted by ``(k - 1) t``, taken back."""
+    from ..csg.hull import minkowski_pieces
+
+    solids = [p for p in parts if p is not None]
+    if len(solids) < 2:
+        return solids[0] if solids else None
+    result = _exactly(lw, call, minkowski_pieces, solids)
+    if result is None or m is None or not np.any(m[:3, 3]):
+        return result
+    return result.translate(-(len(solids) - 1) * m[:3, 3])
+
+
+def _exactly(lw: _Lowerer, call: CSGCall, build: Any, solids: list[Solid]) -> Solid | None:
+    """The union of ``build(*solids)``'s pieces; None when flat (no volume, as in OpenSCAD)."""
+    if not solids:
+        return None
+    try:
+        pieces = build(*solids)
+    except NotExactError as exc:
+        lw.unsupported(call, str(exc).removeprefix(f"{call.name}: "))
+        return None
+    except InvalidGeometryError as exc:
+        raise lw.fail(call, str(exc)) from None
+    if not pieces:
+        return None
+    return pieces[0] if len(pieces) == 1 else Union(*pieces)  # type: ignore[no-any-return]

@@ -1,0 +1,451 @@
+"""Exact convex hulls and Minkowski sums of solids, as unions of isocsg kinds.
+
+Every convex operand is read as a *point set plus at most one round generator*:
+
+- a polytope (:class:`~isocsg.Box`, :class:`~isocsg.ConvexPolyhedron`): its corners;
+- a ball (:class:`~isocsg.Sphere`, :class:`~isocsg.Ellipsoid`): its centre plus ``L B``, the
+  image of the unit ball under a linear map ``L``;
+- a cylinder (:class:`~isocsg.Cylinder`, an :class:`~isocsg.EllipticTruncus` with equal end
+  radii): the segment between its end centres plus ``L D``, the image of the unit disc.
+
+**hull**: the hull of ``c_i + K`` for one body ``K`` is ``hull(c_i) + K``. So a hull of balls of
+one shape (spheres of one radius, or ellipsoids of one shape and orientation), or of cylinders
+whose discs are one ellipse (parallel cylinders of one radius), is the hull of the centres or
+segments grown by that ball or disc (:mod:`isocsg.csg.hull_grow`, mapped by ``L`` when it is not
+a similarity). A hull of polytopes is the :class:`~isocsg.ConvexPolyhedron` of their corners.
+Spheres of different radii are exact when their centres lie on one line (two spheres always
+do): the hull is then a solid of revolution whose meridian is the hull of discs, so it is the
+spheres on that hull joined by the frusta of their common tangent cones. Cylinders, cones and
+frusta on one axis are likewise the frusta between consecutive vertices of the upper hull of
+their ends' (position, radius) points.
+
+**minkowski**: sums of corners add (the sum of two polytopes is the hull of the pairwise sums
+of their corners), centres add, balls of one shape add (``L1 B + k L1 B = (1 + k) L1 B``) and so
+do discs in one plane; the sum is then a polytope grown by at most one ball or one disc, as for
+the hull. A sphere plus a cylinder (a rounded cylinder) is exact too: two cylinders and two
+tori (:class:`~isocsg.Torus`, which needs the cylinder's radius above the sphere's). A union
+operand distributes, ``(A u B) + K = (A + K) u (B + K)``; a difference or an intersection does
+not and is refused.
+
+Anything else (a hull of spheres of different radii off one line, of a sphere and a box, of
+cones; a sum of a sphere and an ellipsoid; non-parallel cylinders; a torus) raises
+:class:`~isocsg.errors.NotExactError` naming what stops it. Radii and shapes count as equal to
+1e-9, relatively.
+"""
+
+from __future__ import annotations
+
+import itertools
+import math
+from dataclasses import dataclass
+from typing import Literal
+
+import numpy as np
+from numpy.typing import NDArray
+
+from ..errors import InvalidGeometryError, NotExactError, ResourceLimitError
+from ..kinds import (
+    Cone,
+    ConvexPolyhedron,
+    Cylinder,
+    Ellipsoid,
+    EllipticTruncus,
+    Primitive,
+    Solid,
+    Sphere,
+    Torus,
+    Truncus,
+)
+from ..kinds.affine import similarity_factor
+from .hull_grow import grow_ball, grow_disc, polytope
+from .tree import CSGNode, Union
+
+__all__ = ["hull", "minkowski", "hull_pieces", "minkowski_pieces", "MAX_MINKOWSKI_TERMS"]
+
+#: The most pairs of convex pieces a Minkowski sum of unions may expand into.
+MAX_MINKOWSKI_TERMS = 4096
+#: Relative tolerance for equal radii, shapes and parallel directions.
+SHAPE_TOLERANCE = 1e-9
+
+
+@dataclass(frozen=True)
+class _Convex:
+    """A convex operand: ``hull(points) + L K`` (K the unit ball or disc, or nothing)."""
+
+    points: NDArray[np.float64]
+    round: Literal["ball", "disc"] | None = None
+    linear: NDArray[np.float64] | None = None  # L; for a disc, its third column is the unit normal
+
+
+def _name(solid: Solid) -> str:
+    return type(solid).__name__
+
+
+def _article(word: str) -> str:
+    return f"{'an' if word[0].lower() in 'aeiou' else 'a'} {word}"
+
+
+def _union_leaves(solid: Solid, operation: str) -> list[Primitive]:
+    """The primitives whose union ``solid`` is; another CSG node is refused, naming it."""
+    out: list[Primitive] = []
+    todo = [solid]
+    while todo:
+        s = todo.pop()
+        if isinstance(s, Union):
+            todo.extend(reversed(s.children))
+        elif isinstance(s, Primitive):
+            out.append(s)
+        elif isinstance(s, CSGNode):
+            raise NotExactError(
+                f"{operation}: a {operation} of {_article(_name(s).lower())} is not supported (only unions split "
+                f"into convex pieces exactly: a {operation} does not distribute over it)"
+            )
+        else:
+            raise InvalidGeometryError(f"{operation}: operands must be isocsg solids, got {_name(s)}")
+    return out
+
+
+def _convex(p: Primitive, operation: str) -> _Convex:
+    """A convex primitive as points plus a round generator; refuses the kinds that are not."""
+    corners = p.hull_points()
+    if corners is not None:
+        return _Convex(np.asarray(corners, dtype=np.float64))
+    if isinstance(p, Sphere):
+        return _Convex(p.center_array[None], "ball", p.radius * np.eye(3))
+    if isinstance(p, Ellipsoid):
+        rot = np.asarray(p.orientation, dtype=np.float64)
+        return _Convex(np.asarray(p.center, dtype=np.float64)[None], "ball", rot * np.asarray(p.radii))
+    if isinstance(p, EllipticTruncus) and p.r1 == p.r2:
+        m = p.linear
+        normal = np.cross(m[:, 0], m[:, 1])
+        ends = np.stack([p.center_array + m[:, 2] / 2, p.center_array - m[:, 2] / 2])
+        return _Convex(ends, "disc", np.column_stack([p.r1 * m[:, :2], normal / np.linalg.norm(normal)]))
+    if isinstance(p, Truncus) and p.r1 == p.r2:
+        from ..kinds.base import _perpendicular_frame
+
+        a = p.unit_axis
+        u, v = _perpendicular_frame(a)
+        return _Convex(np.stack(p.end_centers), "disc", np.column_stack([p.r1 * u, p.r1 * v, a]))
+    why = "a cone or frustum" if isinstance(p, (Truncus, EllipticTruncus)) else _article(_name(p))
+    raise NotExactError(f"{operation}: a {operation} of {why} is not an exact union of isocsg kinds "
+                        "(only polytopes, balls and cylinders are)")
+
+
+def _gram(c: _Convex) -> NDArray[np.float64]:
+    """The shape of the round generator as a set: ``L L^T`` (ball) or ``L2 L2^T`` (disc)."""
+    lin = c.linear
+    assert lin is not None
+    part = lin if c.round == "ball" else lin[:, :2]
+    return part @ part.T  # type: ignore[no-any-return]
+
+
+def _same(g1: NDArray[np.float64], g2: NDArray[np.float64]) -> bool:
+    scale = max(float(np.abs(g1).max()), float(np.abs(g2).max()))
+    return bool(np.abs(g1 - g2).max() <= SHAPE_TOLERANCE * scale)
+
+
+def _grown(points: NDArray[np.float64], c: _Convex) -> list[Primitive]:
+    """``hull(points) + L K`` as pieces: in the world when ``K``'s image is a round ball or
+    disc, else in ``L``'s frame, mapped back by ``L``."""
+    lin = c.linear
+    assert lin is not None
+    if c.round == "ball":
+        r = similarity_factor(lin)
+        if r is not None:
+            return grow_ball(points, r)
+    else:
+        g = lin[:, :2].T @ lin[:, :2]
+        r = math.sqrt(g[0, 0])
+        if abs(g[0, 1]) <= SHAPE_TOLERANCE * g[0, 0] and abs(g[1, 1] - g[0, 0]) <= SHAPE_TOLERANCE * g[0, 0]:
+            return grow_disc(points, lin[:, 2], r)
+    origin = points[0]
+    local = np.linalg.solve(lin, (points - origin).T).T
+    unit = grow_ball(local, 1.0) if c.round == "ball" else grow_disc(local, np.array([0.0, 0.0, 1.0]), 1.0)
+    m = np.eye(4)
+    m[:3, :3], m[:3, 3] = lin, origin
+    return [p.transform(m) for p in unit]  # type: ignore[misc]
+
+
+def _polyhedron(points: NDArray[np.float64]) -> list[Primitive]:
+    """The hull of points as one polyhedron; empty when flat."""
+    q = polytope(points)
+    return [ConvexPolyhedron(q.vertices)] if q.solid is not None else []
+
+
+def hull_pieces(*solids: Solid) -> list[Primitive]:
+    """The convex hull of ``solids`` as a list of primitives whose union it is (empty: no volume).
+
+    See :func:`hull`, which returns them as one solid.
+    """
+    leaves = [leaf for s in solids for leaf in _union_leaves(s, "hull")]
+    if not leaves:
+        raise InvalidGeometryError("hull: needs at least one solid")
+    if all(type(p) in (Truncus, Cylinder, Cone) for p in leaves):
+        coaxial = _coaxial_hull(leaves)  # type: ignore[arg-type]
+        if coaxial is not None:
+            return coaxial
+    parts = [_convex(p, "hull") for p in leaves]
+    rounds = [c for c in parts if c.round is not None]
+    if not rounds:
+        return _polyhedron(np.vstack([c.points for c in parts]))
+    if len(rounds) < len(parts):
+        kinds = ", ".join(sorted({_name(p) for p in leaves}))
+        raise NotExactError(f"hull: a hull of polytopes and round solids ({kinds}) is no exact union of isocsg kinds")
+    first = rounds[0]
+    if all(c.round == first.round and _same(_gram(c), _gram(first)) for c in rounds):
+        return _grown(np.vstack([c.points for c in rounds]), first)
+    if all(isinstance(p, Sphere) for p in leaves):
+        return _sphere_hull([p for p in leaves if isinstance(p, Sphere)])
+    shown = ", ".join(sorted({_name(p) for p in leaves}))
+    raise NotExactError(
+        f"hull: a hull of {shown} of different shapes or directions is not an exact union of isocsg kinds (only balls "
+        "of one shape, parallel cylinders of one radius, or spheres whose centres lie on one line are)"
+    )
+
+
+def _coaxial_hull(trunci: list[Truncus]) -> list[Primitive] | None:
+    """The hull of trunci on one axis (cylinders, cones, frusta), or None when they are not: a
+    solid of revolution whose meridian is the upper hull of the ends' (position, radius) points,
+    so frusta between consecutive vertices of that hull."""
+    axis = trunci[0].unit_axis
+    origin = trunci[0].center_array
+    ends = np.array([e for t in trunci for e in t.end_centers])
+    radii = np.array([r for t in trunci for r in (t.r1, t.r2)])
+    s = (ends - origin) @ axis
+    reach = float(np.ptp(s) + radii.max())
+    off_line = np.linalg.norm(ends - origin - s[:, None] * axis, axis=1)
+    if off_line.max() > SHAPE_TOLERANCE * reach:
+        return None
+    points: list[tuple[float, float]] = []
+    for k in np.argsort(s, kind="stable"):  # one point per position (to rounding): the widest
+        if points and s[k] - points[-1][0] <= SHAPE_TOLERANCE * reach:
+            points[-1] = (points[-1][0], max(points[-1][1], float(radii[k])))
+        else:
+            points.append((float(s[k]), float(radii[k])))
+    hull: list[tuple[float, float]] = []
+    for point in points:  # Andrew's monotone chain, upper half
+        while len(hull) >= 2 and _turn(hull[-2], hull[-1], point) >= 0:
+            hull.pop()
+        hull.append(point)
+    if len(hull) == 1:
+        return None  # every end at one position: no length (not reached for valid trunci)
+    pieces: list[Primitive] = []
+    for (s0, r0), (s1, r1) in itertools.pairwise(hull):
+        if max(r0, r1) > 0:
+            a, b = origin + s0 * axis, origin + s1 * axis
+            pieces.append(Cylinder((a + b) / 2, b - a, r1) if r0 == r1 else Truncus((a + b) / 2, b - a, r1, r0))
+    return pieces
+
+
+def _turn(o: tuple[float, float], a: tuple[float, float], b: tuple[float, float]) -> float:
+    """The cross product of ``a - o`` and ``b - o``: > 0 for a left (counter-clockwise) turn."""
+    return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0])
+
+
+def _sphere_hull(spheres: list[Sphere]) -> list[Primitive]:
+    """The hull of spheres whose centres lie on one line: the spheres on the meridian's hull of
+    discs, joined by the frusta of their common tangent cones."""
+    c = np.array([s.center_array for s in spheres])
+    r = np.array([s.radius for s in spheres])
+    gap = np.linalg.norm(c[:, None] - c[None], axis=2)
+    inside = (gap + r[:, None] <= r[None, :]) & ~np.eye(len(r), dtype=bool)
+    inside &= ~(inside.T & (np.arange(len(r))[:, None] > np.arange(len(r))[None, :]))  # equal ones: keep the first
+    keep = ~inside.any(axis=1)
+    c, r = c[keep], r[keep]
+    if len(r) == 1:
+        return [Sphere(c[0], r[0])]
+    axis = c[int(np.argmax(np.linalg.norm(c - c[0], axis=1)))] - c[0]
+    axis /= np.linalg.norm(axis)
+    t = (c - c[0]) @ axis
+    off = np.linalg.norm(c - c[0] - t[:, None] * axis, axis=1)
+    if off.max() > SHAPE_TOLERANCE * (np.ptp(t) + r.max()):
+        raise NotExactError(
+            f"hull: a hull of spheres of radii {', '.join(f'{x:g}' for x in r)} whose centres are not on one line "
+            "is not an exact union of isocsg kinds (only one radius, or centres on one line, are)"
+        )
+    order = np.argsort(t)
+    t, r, c = t[order], r[order], c[order]
+    pieces: list[Primitive] = []
+    used = np.zeros(len(r), dtype=bool)
+    reach = float(np.ptp(t) + r.max())
+    for i, j in itertools.combinations(range(len(r)), 2):
+        # the common tangent above both discs (t_i, 0, r_i), (t_j, 0, r_j): unit normal (nu_t, nu_r)
+        nu_t = (r[i] - r[j]) / (t[j] - t[i])
+        nu_r = math.sqrt(max(0.0, 1.0 - nu_t * nu_t))
+        support = nu_t * t[i] + r[i]
+        if np.any(nu_t * t + r > support + SHAPE_TOLERANCE * reach):
+            continue  # another sphere reaches beyond this cone: not on the hull
+        used[[i, j]] = True
+        ends = [c[k] + r[k] * nu_t * axis for k in (i, j)]
+        if r[i] == r[j]:
+            pieces.append(Cylinder((ends[0] + ends[1]) / 2, ends[0] - ends[1], r[i]))
+        else:
+            pieces.append(Truncus((ends[0] + ends[1]) / 2, ends[0] - ends[1], r[i] * nu_r, r[j] * nu_r))
+    pieces.extend(Sphere(c[k], r[k]) for k in np.nonzero(used)[0])
+    return pieces
+
+
+def hull(*solids: Solid) -> Solid:
+    """The convex hull of solids, exactly, as a union of isocsg kinds.
+
+    Parameters
+    ----------
+    *solids : Solid
+        Primitives or unions of them: polytopes (boxes, convex polyhedra), spheres of one radius
+        (or ellipsoids of one shape), parallel cylinders of one radius, cylinders and cones on
+        one axis, or spheres whose centres lie on one line (see :mod:`isocsg.csg.hull`).
+
+    Returns
+    -------
+    Solid
+        One primitive, or the :class:`~isocsg.Union` of the pieces (e.g. a convex polyhedron,
+        prisms on its faces, cylinders on its edges and spheres at its corners).
+
+    Raises
+    ------
+    NotExactError
+        When the hull is no exact union of isocsg kinds (spheres of different radii off one line,
+        a sphere with a box, cones, a difference); the message names what stops it.
+    InvalidGeometryError
+        When the hull has no volume (flat polytopes), or on no operand.
+
+    Examples
+    --------
+    >>> from isocsg import Sphere, hull, volume
+    >>> capsule = hull(Sphere((0, 0, 0), 1), Sphere((2, 0, 0), 1))
+    >>> sorted(type(p).__name__ for p in capsule.children)
+    ['Cylinder', 'Sphere', 'Sphere']
+    >>> round(volume(capsule) / math.pi, 3)  # 2 pi r^2 + 4/3 pi r^3
+    3.333
+    """
+    return _one(hull_pieces(*solids), "hull")
+
+
+def _one(pieces: list[Primitive], operation: str) -> Solid:
+    if not pieces:
+        raise InvalidGeometryError(f"{operation}: the result has no volume (flat)")
+    return pieces[0] if len(pieces) == 1 else Union(*pieces)
+
+
+def minkowski_pieces(*solids: Solid) -> list[Primitive]:
+    """The Minkowski sum of ``solids`` as primitives whose union it is (empty: no volume).
+
+    See :func:`minkowski`, which returns them as one solid.
+    """
+    if not solids:
+        raise InvalidGeometryError("minkowski: needs at least one solid")
+    operands = [[_convex(p, "minkowski") for p in _union_leaves(s, "minkowski")] for s in solids]
+    count = math.prod(len(o) for o in operands)
+    if count > MAX_MINKOWSKI_TERMS:
+        raise ResourceLimitError(
+            f"minkowski: the operands' convex pieces make {count} sums, "
+            f"over MAX_MINKOWSKI_TERMS = {MAX_MINKOWSKI_TERMS}"
+        )
+    pieces: list[Primitive] = []
+    for terms in itertools.product(*operands):
+        pieces.extend(_sum(terms))
+    return pieces
+
+
+def _sum(terms: tuple[_Convex, ...]) -> list[Primitive]:
+    """One sum of convex operands: the corners add, the round generators of one shape add."""
+    points = np.zeros((1, 3))
+    ball: _Convex | None = None
+    disc: _Convex | None = None
+    for c in terms:
+        points = (points[:, None, :] + c.points[None]).reshape(-1, 3)
+        if len(points) > 64:
+            points = polytope(points).vertices
+        if c.round == "ball":
+            ball = c if ball is None else _add_round(ball, c)
+        elif c.round == "disc":
+            disc = c if disc is None else _add_round(disc, c)
+    if ball is not None and disc is not None:
+        return _rounded_cylinder(points, ball, disc)
+    if ball is not None or disc is not None:
+        return _grown(points, ball or disc)  # type: ignore[arg-type]
+    return _polyhedron(points)
+
+
+def _add_round(a: _Convex, b: _Convex) -> _Convex:
+    """``L1 K + L2 K`` when ``L2 K = k L1 K``: ``(1 + k) L1 K``; refused otherwise."""
+    ga, gb = _gram(a), _gram(b)
+    k2 = float(np.trace(gb) / np.trace(ga))
+    if not _same(gb, k2 * ga):
+        what = "ellipsoids or spheres of different shapes" if a.round == "ball" else "cylinders that are not parallel"
+        raise NotExactError(f"minkowski: a sum of {what} is not an exact union of isocsg kinds")
+    lin = a.linear.copy()  # type: ignore[union-attr]
+    scale = 1.0 + math.sqrt(k2)
+    lin[:, : 3 if a.round == "ball" else 2] *= scale
+    return _Convex(a.points, a.round, lin)
+
+
+def _rounded_cylinder(points: NDArray[np.float64], ball: _Convex, disc: _Convex) -> list[Primitive]:
+    """A segment along a disc's normal (or a point) plus the disc plus a ball: cylinders and tori."""
+    lin_b, lin_d = ball.linear, disc.linear
+    assert lin_b is not None and lin_d is not None
+    r = similarity_factor(lin_b)
+    g = lin_d[:, :2].T @ lin_d[:, :2]
+    big = math.sqrt(g[0, 0])
+    circular = abs(g[0, 1]) <= SHAPE_TOLERANCE * g[0, 0] and abs(g[1, 1] - g[0, 0]) <= SHAPE_TOLERANCE * g[0, 0]
+    q = polytope(points)
+    normal = lin_d[:, 2]
+    along = q.dim == 0 or (q.dim == 1 and np.linalg.norm(np.cross(q.edges[0][1] - q.edges[0][0], normal))
+                           <= SHAPE_TOLERANCE * np.linalg.norm(q.edges[0][1] - q.edges[0][0]))
+    if r is None or not circular or not along:
+        raise NotExactError(
+            "minkowski: a ball plus a disc is exact only as a sphere plus a round cylinder (a rounded cylinder); "
+            "with a polytope, an ellipsoid or an oblique cylinder it is not an exact union of isocsg kinds"
+        )
+    if r >= big:
+        raise NotExactError(
+            f"minkowski: a sphere of radius {r:g} plus a cylinder of radius {big:g} needs a spindle torus "
+            "(the sphere's radius must be below the cylinder's)"
+        )
+    if q.dim == 0:
+        c = q.vertices[0]
+        return [Cylinder(c, 2 * r * normal, big), Torus(c, normal, big, r)]
+    e0, e1 = q.edges[0]
+    w = e1 - e0
+    unit = w / np.linalg.norm(w)
+    return [
+        Cylinder((e0 + e1) / 2, w, big + r),
+        Cylinder((e0 + e1) / 2, w + 2 * r * unit, big),
+        Torus(e0, normal, big, r),
+        Torus(e1, normal, big, r),
+    ]
+
+
+def minkowski(a: Solid, b: Solid, *more: Solid) -> Solid:
+    """The Minkowski sum ``{x + y + ...}`` of solids, exactly, as a union of isocsg kinds.
+
+    Parameters
+    ----------
+    a, b, *more : Solid
+        Unions of convex primitives: polytopes (boxes, convex polyhedra), balls (spheres,
+        ellipsoids) and cylinders of equal end radii (see :mod:`isocsg.csg.hull`).
+
+    Returns
+    -------
+    Solid
+        One primitive, or the :class:`~isocsg.Union` of the pieces.
+
+    Raises
+    ------
+    NotExactError
+        When the sum is no exact union of isocsg kinds (a difference or intersection operand,
+        cones, tori, a sphere plus an ellipsoid, non-parallel cylinders, a box plus a sphere
+        plus a cylinder); the message names what stops it.
+    ResourceLimitError
+        When the unions expand into more than :data:`MAX_MINKOWSKI_TERMS` sums.
+    InvalidGeometryError
+        When the sum has no volume.
+
+    Examples
+    --------
+    >>> from isocsg import Box, Sphere, minkowski, volume
+    >>> rounded = minkowski(Box((0, 0, 0), (2, 2, 2)), Sphere((0, 0, 0), 1))
+    >>> abs(volume(rounded) / (8 + 24 + 6 * math.pi + 4 / 3 * math.pi) - 1) < 1e-4  # Steiner's formula
+    True
+    """
+    return _one(minkowski_pieces(a, b, *more), "minkowski")
