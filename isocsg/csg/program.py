@@ -35,8 +35,10 @@ import numpy as np
 from numba import njit
 from numpy.typing import ArrayLike, NDArray
 
+from .._late import late
 from .._validation import points_array
 from ..errors import InvalidGeometryError
+from ..kinds.base import RELATIVE_TOLERANCE
 
 if TYPE_CHECKING:  # pragma: no cover
     from ..kinds import Primitive, Solid
@@ -49,6 +51,7 @@ __all__ = [
     "OP_NAMES",
     "Program",
     "compile_program",
+    "default_tolerance",
     "combine_masks",
     "evaluate_mask",
     "prune_arrays",
@@ -186,17 +189,16 @@ class Program:
         >>> prog.contains([[1e-6, 0, 0]], tol=1e-5).tolist()
         [True]
         """
-        from .membership import contains_program
-
         pts = points_array("contains(points)", points)
-        return contains_program(self, pts, tol)
+        # csg/membership.py (above this module: it reads the leaf tables of csg/section.py)
+        inside: NDArray[np.bool_] = late("contains_program")(self, pts, tol)
+        return inside
 
     def default_tolerance(self) -> float:
         """The default ``tol`` of :meth:`contains`: 1e-12 of the largest extent or
         coordinate magnitude of the leaves' boxes (metres)."""
-        from .membership import default_tolerance
-
-        return default_tolerance(np.array([np.asarray(p.bounds, dtype=np.float64) for p in self.leaves]).reshape(-1, 2, 3))
+        boxes = np.array([np.asarray(p.bounds, dtype=np.float64) for p in self.leaves]).reshape(-1, 2, 3)
+        return default_tolerance(boxes)
 
     def bounds(self, lo: ArrayLike | None = None, hi: ArrayLike | None = None) -> NDArray[np.float64]:
         """A conservative axis-aligned box ``(2, 3)``: unions take the hull,
@@ -332,9 +334,17 @@ class Program:
 
     def to_solid(self) -> Solid:
         """The program as a tree of CSG nodes (flat: one node per operation)."""
-        from .tree import NODE_TYPES
+        # the node classes of csg/tree.py, which builds on this module
+        node = late("csg_node")
+        return self.evaluate(lambda _, p: p, lambda o, xs: node(OP_NAMES[o], *xs))
 
-        return self.evaluate(lambda _, p: p, lambda o, xs: NODE_TYPES[OP_NAMES[o]](*xs))
+
+def default_tolerance(boxes: NDArray[np.float64]) -> float:
+    """1e-12 of the largest extent or coordinate magnitude of the leaves' boxes ``(n, 2, 3)``."""
+    if len(boxes) == 0:
+        return 0.0
+    lo, hi = boxes[:, 0].min(axis=0), boxes[:, 1].max(axis=0)
+    return RELATIVE_TOLERANCE * float(max(np.max(hi - lo), np.max(np.abs(boxes))))
 
 
 def _make(leaves: tuple[Primitive, ...], op: NDArray[np.int8], arg: NDArray[np.int64]) -> Program:
@@ -399,12 +409,11 @@ def compile_program(solid: Solid) -> Program:
     >>> prog.n_leaves, prog.op.tolist()[-1], prog.arg.tolist()[-1]
     (5, 1, 5)
     """
-    from ..kinds import Primitive
-    from .tree import CSGNode
+    from ..kinds import Primitive, Solid
 
     if isinstance(solid, Primitive):
         return _make((solid,), np.zeros(1, np.int8), np.zeros(1, np.int64))
-    if not isinstance(solid, CSGNode):
+    if not (isinstance(solid, Solid) and _opcode(solid) in OP_NAMES):
         raise InvalidGeometryError(f"solid must be a primitive or CSG node, got {type(solid).__name__}")
     leaves: list[Primitive] = []
     ops: list[int] = []
@@ -429,30 +438,33 @@ def compile_program(solid: Solid) -> Program:
     return _make(tuple(leaves), np.asarray(ops, np.int8), np.asarray(args, np.int64))
 
 
+def _opcode(solid: object) -> int:
+    """The operation of a CSG node (its class's ``opcode``, csg/tree.py); :data:`OP_LEAF` otherwise."""
+    return int(getattr(solid, "opcode", OP_LEAF))
+
+
 def _operands(node: Any) -> list[Solid]:
     """The operands of ``node`` after absorbing nested nodes of the same operation."""
-    from .tree import Difference, Union
-
-    if isinstance(node, Difference):
+    if node.opcode == OP_DIFFERENCE:
         # (a - b) - c: walk down the chain of first operands.
         subtracted: list[Sequence[Solid]] = []
         first: Solid = node
-        while isinstance(first, Difference):
-            subtracted.append(first.children[1:])
-            first = first.children[0]
+        while _opcode(first) == OP_DIFFERENCE:
+            subtracted.append(first.children[1:])  # type: ignore[attr-defined]
+            first = first.children[0]  # type: ignore[attr-defined]
         rest = [c for group in reversed(subtracted) for c in group]
         # a - (b | c): the subtracted unions' operands are subtracted one by one.
-        return [first] + _spliced(rest, Union)
-    return _spliced(node.children, type(node))
+        return [first] + _spliced(rest, OP_UNION)
+    return _spliced(node.children, node.opcode)
 
 
-def _spliced(children: Sequence[Solid], kind: type) -> list[Solid]:
-    """``children`` with every node of type ``kind`` replaced by its operands (at any depth)."""
+def _spliced(children: Sequence[Solid], op: int) -> list[Solid]:
+    """``children`` with every node of operation ``op`` replaced by its operands (at any depth)."""
     out: list[Solid] = []
     todo = list(reversed(children))
     while todo:
         c = todo.pop()
-        if type(c) is kind:
+        if _opcode(c) == op:
             todo.extend(reversed(c.children))  # type: ignore[attr-defined]
         else:
             out.append(c)

@@ -33,7 +33,7 @@ from .scad import encoded, mat, translated, vec
 if TYPE_CHECKING:  # pragma: no cover
     from shapely.geometry import Polygon
 
-    from ..laminae.surface import Surface
+    from ..bands.surface import Surface
     from .polyhedron import ConvexPolyhedron
 
 __all__ = ["Box"]
@@ -216,7 +216,7 @@ class Box(Primitive):
 
     def local_faces(self) -> tuple[NDArray[np.float64], list[NDArray[np.float64]]]:
         """Its centre and its faces about it (the same box at the origin: no hull of far-off
-        absolute coordinates), for :mod:`isocsg.laminae.polyhedron`."""
+        absolute coordinates), for :mod:`isocsg.kinds.polyhedron_bands`."""
         faces = Box((0.0, 0.0, 0.0), self.size, self.orientation).face_polygons()
         return self.center_array.copy(), [np.asarray(f, dtype=np.float64) for f in faces]
 
@@ -280,7 +280,7 @@ class Box(Primitive):
         hidden: tuple[Any, Any] | None = None,
     ) -> Surface:
         """Its faces, subdivided where a point light or a highlight varies across them."""
-        from ..laminae.polyhedron import polyhedron_surface
+        from .polyhedron_bands import polyhedron_surface
 
         return polyhedron_surface(self, lights, contours, eye=eye, shininess=shininess, weights=weights)
 
@@ -288,7 +288,7 @@ class Box(Primitive):
         self, light: Any, contours: int,
     ) -> list[tuple[NDArray[np.float64], NDArray[np.float64], float, str]]:
         """One lamina per face."""
-        from ..laminae.polyhedron import face_laminae
+        from .polyhedron_bands import face_laminae
 
         return [(v, nrm, c, "face") for v, nrm, c in face_laminae(self, light)]
 

@@ -36,15 +36,15 @@ from numpy.typing import ArrayLike, NDArray
 
 from .._cache import ByteCache
 from .._validation import integer, vector3
+from ..bands.families import GRAZING, FieldFamily, diffuse_family, incidence, specular_families
+from ..bands.lights import light_axis
+from ..bands.surface import Surface
 from ..errors import InvalidLightError, InvalidParameterError
 from ..kinds.base import Primitive, provides
 from ..lighting.lights import DirectionalLight, PointLight
 from ..lighting.shading import TERMINATOR_COSINE, Material
-from .families import GRAZING, FieldFamily, diffuse_family, incidence, specular_families
 from .model import BandMesh, ContourFamily, Lamina, LaminaSet
-from .sphere import light_axis
 from .split import MAX_PIECES, split_by_levels
-from .surface import Surface
 
 __all__ = ["build_laminae", "build_bands", "clear_cache", "cache_info", "cache_bytes", "MAX_CONTOURS"]
 
