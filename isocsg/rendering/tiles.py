@@ -35,8 +35,8 @@ from ..kinds.base import Primitive
 from .projection import NEAR_RELATIVE
 
 __all__ = [
-    "LeafGeometry", "leaf_geometry", "leaf_rects", "leaf_near_keys", "leaf_screen_sizes", "combine_rects", "tile_leaves", "TilePlan", "plan_tiles",
-    "open_tile_pixels", "clip_leaves", "hidden_box", "CLIP_MARGIN",
+    "LeafGeometry", "leaf_geometry", "leaf_rects", "leaf_near_keys", "leaf_screen_sizes", "combine_rects",
+    "tile_leaves", "TilePlan", "plan_tiles", "open_tile_pixels", "clip_leaves", "hidden_box", "CLIP_MARGIN",
 ]
 
 #: :func:`clip_leaves` keeps this fraction of the object box's diagonal beyond the box, so that
