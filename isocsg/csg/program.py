@@ -53,6 +53,7 @@ __all__ = [
     "compile_program",
     "default_tolerance",
     "combine_masks",
+    "combine_rects",
     "evaluate_mask",
     "prune_arrays",
 ]
@@ -238,6 +239,21 @@ class Program:
             return _combine_boxes(o, [(lo_[ids], hi_[ids])] * bool(ids) + nodes, stacked=True)
 
         return np.stack(box(self.evaluate(lambda i, _: i, combine)))
+
+    def screen_rect(self, rects: ArrayLike) -> NDArray[np.int64]:
+        """The program's screen rectangle ``(c0, r0, c1, r1)`` (pixels, end exclusive) from its
+        leaves' rectangles ``(n_leaves, 4)``: a union takes the hull of its non-empty operands, an
+        intersection their overlap, a difference its first operand's; an empty one is all zeros.
+
+        Examples
+        --------
+        >>> from isocsg import Box
+        >>> prog = compile_program(Box((0, 0, 0), (1, 1, 1)) & Box((1, 0, 0), (1, 1, 1)))
+        >>> prog.screen_rect([[0, 0, 10, 10], [5, 2, 20, 8]]).tolist()
+        [5, 2, 10, 8]
+        """
+        r = np.ascontiguousarray(np.asarray(rects, dtype=np.int64).reshape(-1, 4))
+        return combine_rects(self.op, self.arg, r)
 
     def prune(self, present: ArrayLike) -> tuple[Program, NDArray[np.int64]] | None:
         """The program with the leaves marked absent replaced by the empty set, simplified.
@@ -503,6 +519,49 @@ def evaluate_mask(
         stack[base] = r
         sp = base + 1
     return stack[0]
+
+
+@njit(cache=True)
+def combine_rects(op: NDArray[np.int8], arg: NDArray[np.int64], rects: NDArray[np.int64]) -> NDArray[np.int64]:
+    """The program's screen rectangle ``(c0, r0, c1, r1)`` from its leaves' (``rects``, (n, 4)),
+    compiled: :meth:`Program.screen_rect` over the arrays (the renderer calls it with them).
+
+    A union takes the hull of its operands' rectangles, an intersection their
+    overlap, a difference its first operand's. Empty rectangles are empty
+    sets (they leave a union's hull alone and empty an intersection).
+    """
+    stack = np.zeros((max(len(op), 1), 4), np.int64)
+    sp = 0
+    for k in range(len(op)):
+        o = op[k]
+        if o == 0:
+            # Element by element: a row assignment compiles numba's shape-mismatch message (seconds of compile).
+            r = arg[k]
+            stack[sp, 0], stack[sp, 1], stack[sp, 2], stack[sp, 3] = rects[r, 0], rects[r, 1], rects[r, 2], rects[r, 3]
+            sp += 1
+            continue
+        base = sp - arg[k]
+        c0, r0, c1, r1 = stack[base, 0], stack[base, 1], stack[base, 2], stack[base, 3]
+        if o == 1:  # union: hull of the non-empty operands
+            empty = not (c0 < c1 and r0 < r1)
+            for s in range(base + 1, sp):
+                if not (stack[s, 0] < stack[s, 2] and stack[s, 1] < stack[s, 3]):
+                    continue
+                if empty:
+                    c0, r0, c1, r1 = stack[s, 0], stack[s, 1], stack[s, 2], stack[s, 3]
+                    empty = False
+                else:
+                    c0, r0 = min(c0, stack[s, 0]), min(r0, stack[s, 1])
+                    c1, r1 = max(c1, stack[s, 2]), max(r1, stack[s, 3])
+        elif o == 2:  # intersection
+            for s in range(base + 1, sp):
+                c0, r0 = max(c0, stack[s, 0]), max(r0, stack[s, 1])
+                c1, r1 = min(c1, stack[s, 2]), min(r1, stack[s, 3])
+        if not (c0 < c1 and r0 < r1):
+            c0, r0, c1, r1 = 0, 0, 0, 0
+        stack[base, 0], stack[base, 1], stack[base, 2], stack[base, 3] = c0, r0, c1, r1
+        sp = base + 1
+    return stack[0].copy()
 
 
 @njit(cache=True, nogil=True)
