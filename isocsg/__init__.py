@@ -194,7 +194,7 @@ __getattr__, __dir__ = lazy_exports(globals(), _EXPORTS)
 
 
 # The operations lower layers offer and upper ones implement (isocsg/_late.py): Solid's Boolean
-# operators (csg/tree.py) and the notebook display of solids, scenes, renders and half-tone
+# operators (csg/tree.py), Program's membership and nodes (csg/membership.py, csg/tree.py) and the notebook display of solids, scenes, renders and half-tone
 # images (interop/notebook.py). Bound here, before any submodule runs; each imports its module
 # on first call.
 def _union(*solids: Any) -> Any:
@@ -215,6 +215,18 @@ def _difference(first: Any, *others: Any) -> Any:
     return difference(first, *others)
 
 
+def _contains_program(program: Any, points: Any, tol: Any) -> Any:
+    from .csg.membership import contains_program
+
+    return contains_program(program, points, tol)
+
+
+def _csg_node(name: str, *operands: Any) -> Any:
+    from .csg.tree import NODE_TYPES
+
+    return NODE_TYPES[name](*operands)
+
+
 def _mimebundle(obj: Any, include: Any = None, exclude: Any = None) -> dict[str, Any]:
     from .interop.notebook import mimebundle
 
@@ -222,7 +234,7 @@ def _mimebundle(obj: Any, include: Any = None, exclude: Any = None) -> dict[str,
 
 
 for _name, _fn in (("union", _union), ("intersection", _intersection), ("difference", _difference),
-                   ("mimebundle", _mimebundle)):
+                   ("contains_program", _contains_program), ("csg_node", _csg_node), ("mimebundle", _mimebundle)):
     _late.bind(_name, _fn)
 del _name, _fn
 

@@ -1,9 +1,10 @@
 """Late-bound operations: the one sanctioned way for a lower layer to offer what an upper one does.
 
-``Solid``'s conveniences (the Boolean operators ``| & -``, notebook display) and the notebook
-display of render results, half-tone images and scenes are written where their users find them,
-in layers below the modules that implement them (:mod:`isocsg.csg.tree`,
-:mod:`isocsg.interop.notebook`). Those layers never import upward: they call the operation by
+``Solid``'s conveniences (the Boolean operators ``| & -``, notebook display), ``Program.contains``
+and ``Program.to_solid``, and the notebook display of render results, half-tone images and
+scenes are written where their users find them, in modules below the ones that implement them
+(:mod:`isocsg.csg.tree`, :mod:`isocsg.csg.membership`, :mod:`isocsg.interop.notebook`). Those
+modules never import upward: they call the operation by
 name here, and the root package (``isocsg/__init__.py``, which Python always runs before any
 submodule) binds each name to a function that imports its implementation on first call. The
 import graph (and ``lint-imports``) thus sees each upward edge once, from the root package,

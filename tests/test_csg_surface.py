@@ -276,3 +276,39 @@ def test_nearly_coplanar_polyhedron_minus_cylinders_and_box_draws_as_per_pixel(e
     hit = np.isfinite(pixel)
     assert hit.sum() > 3000
     assert np.abs(surface[hit] - pixel[hit]).max() <= 0.02
+
+
+def test_a_cancelled_build_stops_between_boolean_batches(monkeypatch):
+    # The process is asked to stop (isocsg._workers' cancel flag) during a build: the build ends
+    # with Cancelled at the next batch instead of running its remaining Booleans.
+    import threading
+
+    from isocsg import _workers
+
+    bores = Cylinder((0, 0, 0), (0, 0, 3), 0.5) | Cylinder((0, 0, 0), (3, 0, 0), 0.5) | Cylinder((0, 0, 0), (0, 3, 0), 0.5)
+    tree = (Box((0, 0, 0), (2, 2, 2)) & Sphere((0, 0, 0), 1.3)) - bores  # three Boolean batches
+    checks: list[int] = []
+    real = _workers.raise_if_cancelled
+    cancel = threading.Event()
+
+    def counted() -> None:
+        checks.append(1)
+        real()
+
+    monkeypatch.setattr(_workers, "raise_if_cancelled", counted)
+    csg_surface(tree, LIGHTS, contours=8)
+    whole = len(checks)
+    assert whole >= 3
+    checks.clear()
+
+    def cancelled_after_two() -> None:
+        checks.append(1)
+        if len(checks) == 2:
+            cancel.set()
+        real()
+
+    monkeypatch.setattr(_workers, "_cancel", cancel)
+    monkeypatch.setattr(_workers, "raise_if_cancelled", cancelled_after_two)
+    with pytest.raises(_workers.Cancelled):
+        csg_surface(tree, LIGHTS, contours=8)
+    assert len(checks) == 2 < whole

@@ -147,3 +147,12 @@ def test_a_stale_entry_is_left_to_the_first_call() -> None:
     stale = Kernel(k.module, k.name, k.args[:-1], k.seconds)  # one argument short: numba refuses it
     _compile([stale])  # no error: the kernel is compiled when first called
     assert tuple(stale.signature()) not in k.dispatcher().overloads
+
+
+@pytest.mark.parametrize("path", PATHS)
+def test_every_listed_kernel_is_where_the_listing_says(path: str) -> None:
+    # A kernel whose module moved would make the cache check (missing_kernels) say all is cached.
+    from numba.core.registry import CPUDispatcher
+
+    for k in path_kernels(path):
+        assert isinstance(k.dispatcher(), CPUDispatcher), f"{k.module}.{k.name}"

@@ -29,6 +29,7 @@ from reference.raycaster import camera_rays
 import isocsg
 from isocsg import Camera, Cylinder, PointLight, Scene, Sphere
 from isocsg._validation import scalar, vector3
+from isocsg.bands.surface import Surface, orient_outward, ring_triangles
 from isocsg.kinds import (
     ConvexPolyhedron,
     Primitive,
@@ -37,8 +38,6 @@ from isocsg.kinds import (
     register_kind,
     unregister_kind,
 )
-from isocsg.laminae.sphere import ring_triangles
-from isocsg.laminae.surface import Surface, orient_outward
 
 
 @dataclass(frozen=True, slots=True)

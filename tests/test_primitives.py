@@ -187,3 +187,18 @@ def test_clipped_to_box_matches_the_tiles_cut():
     got = [p.clipped_to_box(lo - margin, hi + margin) for p in prog.leaves]
     assert got == want
     assert got[1] != prog.leaves[1] and got[-1] is prog.leaves[-1]
+
+
+def test_an_axis_aligned_box_gives_its_hull_faces_without_a_hull():
+    # Box.local_faces builds an axis-aligned box's faces directly (no qhull at start-up): the
+    # same polygons, in the same order and from the same corner, as the convex hull's.
+    rng = np.random.default_rng(7)
+    for i in range(200):
+        size = 10.0 ** rng.uniform(-3, 3, 3) if i % 2 else np.full(3, 10.0 ** rng.uniform(-3, 3))
+        box = ic.Box(tuple(rng.uniform(-1e3, 1e3, 3)), tuple(size))
+        hull = ic.Box((0.0, 0.0, 0.0), tuple(size)).to_polyhedron().face_polygons()
+        centre, faces = box.local_faces()
+        np.testing.assert_array_equal(centre, box.center_array)
+        assert len(faces) == len(hull) == 6
+        for got, want in zip(faces, hull):
+            assert np.array_equal(got, want) and np.array_equal(np.signbit(got), np.signbit(want))

@@ -48,9 +48,11 @@ def parse_size(text: str) -> tuple[int, int]:
 
 def add_common_render_options(parser: argparse.ArgumentParser) -> None:
     """``--size``, ``--contours`` and ``--no-progress``."""
-    parser.add_argument("--size", type=parse_size, metavar="WxH", help="image size in pixels, e.g. 640x480 (default: the scene's)")
+    parser.add_argument("--size", type=parse_size, metavar="WxH",
+                        help="image size in pixels, e.g. 640x480 (default: the scene's)")
     parser.add_argument(
-        "--contours", type=int, metavar="N", help="isoluminance contours per light (default: the scene's render.contours)"
+        "--contours", type=int, metavar="N",
+        help="isoluminance contours per light (default: the scene's render.contours)",
     )
     parser.add_argument("--no-progress", action="store_true", help="do not show the progress bar on stderr")
 

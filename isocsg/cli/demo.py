@@ -27,7 +27,8 @@ contours; with --halftone, blocks under a square area light with soft shadows.
 def register(subparsers: Any) -> argparse.ArgumentParser:
     """Add the ``demo`` sub-command."""
     p = subparsers.add_parser("demo", help=COMMANDS["demo"], description=DESCRIPTION)
-    p.add_argument("-o", "--output", metavar="OUT.png", help="PNG file to write (default: isocsg-demo.png or isocsg-halftone.png)")
+    p.add_argument("-o", "--output", metavar="OUT.png",
+                   help="PNG file to write (default: isocsg-demo.png or isocsg-halftone.png)")
     p.add_argument("--halftone", action="store_true", help="the soft-shadow scene instead of the CSG part")
     p.add_argument("--print-scene", action="store_true", help="print the scene file's path and exit")
     add_common_render_options(p)

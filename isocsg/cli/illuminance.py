@@ -73,12 +73,14 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
     """Add the ``illuminance`` sub-command."""
     p = subparsers.add_parser("illuminance", help=COMMANDS["illuminance"], description=DESCRIPTION)
     p.add_argument("scene", metavar="SCENE", help="scene file, .toml or .json, or - to read it from standard input")
-    p.add_argument("-o", "--output", required=True, metavar="MAP.png", help="PNG map to write, or GRID.csv for the grid as CSV")
+    p.add_argument("-o", "--output", required=True, metavar="MAP.png",
+                   help="PNG map to write, or GRID.csv for the grid as CSV")
     p.add_argument("--npy", metavar="E.npy", help="also write E (ny, nx) as .npy")
     p.add_argument("--csv", metavar="GRID.csv", help="also write the grid as CSV (i, j, x_m, y_m, z_m, E_lx, occluded)")
     p.add_argument(
         "--figure", metavar="FIG.png",
-        help="also draw a report figure (.png, .pdf or .svg; colour bar in lux, labelled isolux lines; needs matplotlib)",
+        help="also draw a report figure (.png, .pdf or .svg; colour bar in lux, labelled isolux lines; "
+             "needs matplotlib)",
     )
     p.add_argument(
         "--area", nargs=4, type=float, metavar=("X0", "Y0", "X1", "Y1"),
@@ -187,7 +189,8 @@ def load_scene_grid_and_interreflections(path: str | Path) -> tuple[Scene, dict[
         try:
             for key in ("nx", "ny"):
                 if key in table:
-                    table[key] = integer(f"illuminance.{key}", table[key], low=2, high=4096, error=InvalidParameterError)
+                    table[key] = integer(f"illuminance.{key}", table[key], low=2, high=4096,
+                                         error=InvalidParameterError)
             if "levels" in table:
                 table["levels"] = _levels("illuminance.levels", table["levels"])
         except InvalidParameterError as exc:
@@ -302,7 +305,9 @@ def run(args: argparse.Namespace) -> int:
     if not lights:
         raise InvalidLightError(f"{_name(args.scene)} has no area or polyhedron light")
     if all(given):
-        grid = LuxGrid(args.origin, args.u, args.v, DEFAULT_NODES if nx is None else nx, DEFAULT_NODES if ny is None else ny)
+        nodes_x = DEFAULT_NODES if nx is None else nx
+        nodes_y = DEFAULT_NODES if ny is None else ny
+        grid = LuxGrid(args.origin, args.u, args.v, nodes_x, nodes_y)
     elif table is not None:
         grid = _grid_from_table(args.scene, table, nx, ny)
     else:
@@ -320,7 +325,8 @@ def run(args: argparse.Namespace) -> int:
         pts = grid.points().reshape(-1, 3)
         indirect = sol.indirect_illuminance(pts, grid.normal).reshape(m.E.shape)
         m = replace(m, E=m.E + np.where(np.asarray(m.occluded, dtype=bool), 0.0, indirect))
-        print(f"interreflections: {len(sol.patches)} patches, {sol.shots} shots, residual {sol.residuals[-1] if sol.shots else 0.0:.2g}")
+        residual = sol.residuals[-1] if sol.shots else 0.0
+        print(f"interreflections: {len(sol.patches)} patches, {sol.shots} shots, residual {residual:.2g}")
     area = None
     if args.area is not None:
         x0, y0, x1, y1 = args.area

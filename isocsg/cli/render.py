@@ -55,7 +55,8 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
     )
     p.add_argument(
         "--skip-unsupported", action="store_true",
-        help="OpenSCAD models: skip nodes without an exact equivalent (import, a hull of a sphere and a cube, ...) and say how many",
+        help="OpenSCAD models: skip nodes without an exact equivalent (a hull of a sphere and a cube, SVG "
+             "drawings, ...) and say how many",
     )
     add_common_render_options(p)
     p.set_defaults(func=run)
@@ -74,9 +75,12 @@ def run(args: argparse.Namespace) -> int:
         raise InvalidParameterError(f"--svg must name a .svg file, got {args.svg!r}")
     if args.svg is not None and Path(args.svg).is_dir():
         raise InvalidParameterError(f"--svg {args.svg!r} is a directory")
-    scene = apply_overrides(_load(args.scene, skip_unsupported=args.skip_unsupported), size=args.size, contours=args.contours)
+    loaded = _load(args.scene, skip_unsupported=args.skip_unsupported)
+    scene = apply_overrides(loaded, size=args.size, contours=args.contours)
     if gltf and scene.render.mode != "isoluminance":
-        raise InvalidParameterError(f"{args.output}: glTF output needs render.mode = \"isoluminance\" (point or directional lights)")
+        raise InvalidParameterError(
+            f"{args.output}: glTF output needs render.mode = \"isoluminance\" (point or directional lights)"
+        )
     if args.svg is not None:
         from ..kinds import (
             Primitive,  # here: ``isocsg render --help`` loads no geometry
@@ -121,7 +125,8 @@ def _load(path: str, *, skip_unsupported: bool = False) -> Any:
     model = read_openscad(path, skip_unsupported=skip_unsupported)
     if model.skipped:
         counts = ", ".join(f"{n} {name}" for name, n in sorted(model.skipped.items()))
-        print(f"isocsg render: skipped {sum(model.skipped.values())} unsupported OpenSCAD node(s): {counts}", file=sys.stderr)
+        skipped = sum(model.skipped.values())
+        print(f"isocsg render: skipped {skipped} unsupported OpenSCAD node(s): {counts}", file=sys.stderr)
     for line in getattr(model, "left_out", ()):  # each node left out, with its line and why
         print(f"isocsg render: left out {line}", file=sys.stderr)
     from ..scene.model import SceneObject

@@ -30,7 +30,8 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
 
 
 def run(args: argparse.Namespace) -> int:
-    """Compile the listed kernels, render the built-in scenes at a tiny size; prints what it did and how long it took."""
+    """Compile the listed kernels, render the built-in scenes at a tiny size; prints what it did and how
+    long it took."""
     from ..kernels import PATHS, compile_kernels
     from ..rendering import Renderer
     from ..scene.io import builtin_scene_path, load_scene
@@ -40,7 +41,8 @@ def run(args: argparse.Namespace) -> int:
     print("isocsg warmup: compiling kernels (once per install; later runs read the on-disk cache)", flush=True)
 
     def say(kernels: int, processes: int, seconds: float) -> None:
-        print(f"isocsg warmup: {kernels} kernels on {processes} processes (about {max(1, round(seconds))} s on idle cores)",
+        about = max(1, round(seconds))
+        print(f"isocsg warmup: {kernels} kernels on {processes} processes (about {about} s on idle cores)",
               flush=True)
 
     compile_kernels(PATHS, on_start=say)

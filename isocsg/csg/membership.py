@@ -41,16 +41,13 @@ of (point, leaf box) incidences rather than points x leaves.
 from __future__ import annotations
 
 import math
-from typing import TYPE_CHECKING
 
 import numpy as np
 from numpy.typing import NDArray
 
 from ..errors import InvalidParameterError
-from ..kinds.base import RELATIVE_TOLERANCE, LeafForm, Primitive, check_tolerance
-
-if TYPE_CHECKING:  # pragma: no cover
-    from .program import Program
+from ..kinds.base import LeafForm, Primitive, check_tolerance
+from .program import OP_INTERSECTION, OP_UNION, Program, default_tolerance
 
 __all__ = ["signed_distance", "default_tolerance", "check_tolerance", "contains_program"]
 
@@ -98,14 +95,6 @@ def signed_distance(prim: Primitive, points: NDArray[np.float64]) -> NDArray[np.
     if not isinstance(prim, Primitive):
         raise InvalidParameterError(f"signed_distance needs a primitive, got {type(prim).__name__}")
     return prim.signed_distance(np.asarray(points, dtype=np.float64).reshape(-1, 3))
-
-
-def default_tolerance(boxes: NDArray[np.float64]) -> float:
-    """1e-12 of the largest extent or coordinate magnitude of the leaves' boxes ``(n, 2, 3)``."""
-    if len(boxes) == 0:
-        return 0.0
-    lo, hi = boxes[:, 0].min(axis=0), boxes[:, 1].max(axis=0)
-    return RELATIVE_TOLERANCE * float(max(np.max(hi - lo), np.max(np.abs(boxes))))
 
 
 def _fixed_directions() -> NDArray[np.float64]:
@@ -170,8 +159,6 @@ def _sorted_unique(x: NDArray[np.int64]) -> NDArray[np.int64]:
 
 
 def _combine_sets(op: int, xs: list[NDArray[np.int64]]) -> NDArray[np.int64]:
-    from .program import OP_INTERSECTION, OP_UNION
-
     if op == OP_UNION:
         return _union(xs)
     if op == OP_INTERSECTION:

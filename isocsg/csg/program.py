@@ -35,8 +35,10 @@ import numpy as np
 from numba import njit
 from numpy.typing import ArrayLike, NDArray
 
+from .._late import late
 from .._validation import points_array
 from ..errors import InvalidGeometryError
+from ..kinds.base import RELATIVE_TOLERANCE
 
 if TYPE_CHECKING:  # pragma: no cover
     from ..kinds import Primitive, Solid
@@ -49,7 +51,9 @@ __all__ = [
     "OP_NAMES",
     "Program",
     "compile_program",
+    "default_tolerance",
     "combine_masks",
+    "combine_rects",
     "evaluate_mask",
     "prune_arrays",
 ]
@@ -186,17 +190,16 @@ class Program:
         >>> prog.contains([[1e-6, 0, 0]], tol=1e-5).tolist()
         [True]
         """
-        from .membership import contains_program
-
         pts = points_array("contains(points)", points)
-        return contains_program(self, pts, tol)
+        # csg/membership.py (above this module: it reads the leaf tables of csg/section.py)
+        inside: NDArray[np.bool_] = late("contains_program")(self, pts, tol)
+        return inside
 
     def default_tolerance(self) -> float:
         """The default ``tol`` of :meth:`contains`: 1e-12 of the largest extent or
         coordinate magnitude of the leaves' boxes (metres)."""
-        from .membership import default_tolerance
-
-        return default_tolerance(np.array([np.asarray(p.bounds, dtype=np.float64) for p in self.leaves]).reshape(-1, 2, 3))
+        boxes = np.array([np.asarray(p.bounds, dtype=np.float64) for p in self.leaves]).reshape(-1, 2, 3)
+        return default_tolerance(boxes)
 
     def bounds(self, lo: ArrayLike | None = None, hi: ArrayLike | None = None) -> NDArray[np.float64]:
         """A conservative axis-aligned box ``(2, 3)``: unions take the hull,
@@ -236,6 +239,21 @@ class Program:
             return _combine_boxes(o, [(lo_[ids], hi_[ids])] * bool(ids) + nodes, stacked=True)
 
         return np.stack(box(self.evaluate(lambda i, _: i, combine)))
+
+    def screen_rect(self, rects: ArrayLike) -> NDArray[np.int64]:
+        """The program's screen rectangle ``(c0, r0, c1, r1)`` (pixels, end exclusive) from its
+        leaves' rectangles ``(n_leaves, 4)``: a union takes the hull of its non-empty operands, an
+        intersection their overlap, a difference its first operand's; an empty one is all zeros.
+
+        Examples
+        --------
+        >>> from isocsg import Box
+        >>> prog = compile_program(Box((0, 0, 0), (1, 1, 1)) & Box((1, 0, 0), (1, 1, 1)))
+        >>> prog.screen_rect([[0, 0, 10, 10], [5, 2, 20, 8]]).tolist()
+        [5, 2, 10, 8]
+        """
+        r = np.ascontiguousarray(np.asarray(rects, dtype=np.int64).reshape(-1, 4))
+        return combine_rects(self.op, self.arg, r)
 
     def prune(self, present: ArrayLike) -> tuple[Program, NDArray[np.int64]] | None:
         """The program with the leaves marked absent replaced by the empty set, simplified.
@@ -332,9 +350,17 @@ class Program:
 
     def to_solid(self) -> Solid:
         """The program as a tree of CSG nodes (flat: one node per operation)."""
-        from .tree import NODE_TYPES
+        # the node classes of csg/tree.py, which builds on this module
+        node = late("csg_node")
+        return self.evaluate(lambda _, p: p, lambda o, xs: node(OP_NAMES[o], *xs))
 
-        return self.evaluate(lambda _, p: p, lambda o, xs: NODE_TYPES[OP_NAMES[o]](*xs))
+
+def default_tolerance(boxes: NDArray[np.float64]) -> float:
+    """1e-12 of the largest extent or coordinate magnitude of the leaves' boxes ``(n, 2, 3)``."""
+    if len(boxes) == 0:
+        return 0.0
+    lo, hi = boxes[:, 0].min(axis=0), boxes[:, 1].max(axis=0)
+    return RELATIVE_TOLERANCE * float(max(np.max(hi - lo), np.max(np.abs(boxes))))
 
 
 def _make(leaves: tuple[Primitive, ...], op: NDArray[np.int8], arg: NDArray[np.int64]) -> Program:
@@ -399,12 +425,11 @@ def compile_program(solid: Solid) -> Program:
     >>> prog.n_leaves, prog.op.tolist()[-1], prog.arg.tolist()[-1]
     (5, 1, 5)
     """
-    from ..kinds import Primitive
-    from .tree import CSGNode
+    from ..kinds import Primitive, Solid
 
     if isinstance(solid, Primitive):
         return _make((solid,), np.zeros(1, np.int8), np.zeros(1, np.int64))
-    if not isinstance(solid, CSGNode):
+    if not (isinstance(solid, Solid) and _opcode(solid) in OP_NAMES):
         raise InvalidGeometryError(f"solid must be a primitive or CSG node, got {type(solid).__name__}")
     leaves: list[Primitive] = []
     ops: list[int] = []
@@ -429,30 +454,33 @@ def compile_program(solid: Solid) -> Program:
     return _make(tuple(leaves), np.asarray(ops, np.int8), np.asarray(args, np.int64))
 
 
+def _opcode(solid: object) -> int:
+    """The operation of a CSG node (its class's ``opcode``, csg/tree.py); :data:`OP_LEAF` otherwise."""
+    return int(getattr(solid, "opcode", OP_LEAF))
+
+
 def _operands(node: Any) -> list[Solid]:
     """The operands of ``node`` after absorbing nested nodes of the same operation."""
-    from .tree import Difference, Union
-
-    if isinstance(node, Difference):
+    if node.opcode == OP_DIFFERENCE:
         # (a - b) - c: walk down the chain of first operands.
         subtracted: list[Sequence[Solid]] = []
         first: Solid = node
-        while isinstance(first, Difference):
-            subtracted.append(first.children[1:])
-            first = first.children[0]
+        while _opcode(first) == OP_DIFFERENCE:
+            subtracted.append(first.children[1:])  # type: ignore[attr-defined]
+            first = first.children[0]  # type: ignore[attr-defined]
         rest = [c for group in reversed(subtracted) for c in group]
         # a - (b | c): the subtracted unions' operands are subtracted one by one.
-        return [first] + _spliced(rest, Union)
-    return _spliced(node.children, type(node))
+        return [first] + _spliced(rest, OP_UNION)
+    return _spliced(node.children, node.opcode)
 
 
-def _spliced(children: Sequence[Solid], kind: type) -> list[Solid]:
-    """``children`` with every node of type ``kind`` replaced by its operands (at any depth)."""
+def _spliced(children: Sequence[Solid], op: int) -> list[Solid]:
+    """``children`` with every node of operation ``op`` replaced by its operands (at any depth)."""
     out: list[Solid] = []
     todo = list(reversed(children))
     while todo:
         c = todo.pop()
-        if type(c) is kind:
+        if _opcode(c) == op:
             todo.extend(reversed(c.children))  # type: ignore[attr-defined]
         else:
             out.append(c)
@@ -491,6 +519,49 @@ def evaluate_mask(
         stack[base] = r
         sp = base + 1
     return stack[0]
+
+
+@njit(cache=True)
+def combine_rects(op: NDArray[np.int8], arg: NDArray[np.int64], rects: NDArray[np.int64]) -> NDArray[np.int64]:
+    """The program's screen rectangle ``(c0, r0, c1, r1)`` from its leaves' (``rects``, (n, 4)),
+    compiled: :meth:`Program.screen_rect` over the arrays (the renderer calls it with them).
+
+    A union takes the hull of its operands' rectangles, an intersection their
+    overlap, a difference its first operand's. Empty rectangles are empty
+    sets (they leave a union's hull alone and empty an intersection).
+    """
+    stack = np.zeros((max(len(op), 1), 4), np.int64)
+    sp = 0
+    for k in range(len(op)):
+        o = op[k]
+        if o == 0:
+            # Element by element: a row assignment compiles numba's shape-mismatch message (seconds of compile).
+            r = arg[k]
+            stack[sp, 0], stack[sp, 1], stack[sp, 2], stack[sp, 3] = rects[r, 0], rects[r, 1], rects[r, 2], rects[r, 3]
+            sp += 1
+            continue
+        base = sp - arg[k]
+        c0, r0, c1, r1 = stack[base, 0], stack[base, 1], stack[base, 2], stack[base, 3]
+        if o == 1:  # union: hull of the non-empty operands
+            empty = not (c0 < c1 and r0 < r1)
+            for s in range(base + 1, sp):
+                if not (stack[s, 0] < stack[s, 2] and stack[s, 1] < stack[s, 3]):
+                    continue
+                if empty:
+                    c0, r0, c1, r1 = stack[s, 0], stack[s, 1], stack[s, 2], stack[s, 3]
+                    empty = False
+                else:
+                    c0, r0 = min(c0, stack[s, 0]), min(r0, stack[s, 1])
+                    c1, r1 = max(c1, stack[s, 2]), max(r1, stack[s, 3])
+        elif o == 2:  # intersection
+            for s in range(base + 1, sp):
+                c0, r0 = max(c0, stack[s, 0]), max(r0, stack[s, 1])
+                c1, r1 = min(c1, stack[s, 2]), min(r1, stack[s, 3])
+        if not (c0 < c1 and r0 < r1):
+            c0, r0, c1, r1 = 0, 0, 0, 0
+        stack[base, 0], stack[base, 1], stack[base, 2], stack[base, 3] = c0, r0, c1, r1
+        sp = base + 1
+    return stack[0].copy()
 
 
 @njit(cache=True, nogil=True)

@@ -378,7 +378,8 @@ def leaf_table(prog: Program) -> LeafTable:
 
 
 def leaf_sections(
-    prog: Program, F: NDArray[np.float64], resolution: int, *, area_exact: bool = False, ids: NDArray[np.int64] | None = None
+    prog: Program, F: NDArray[np.float64], resolution: int, *, area_exact: bool = False,
+    ids: NDArray[np.int64] | None = None,
 ) -> list[Polygon]:
     """The sections of the leaves ``ids`` (default: all) of ``prog`` in the plane of ``F``.
 
@@ -393,7 +394,8 @@ def leaf_sections(
     d = (tab.center[idx] - o) @ n
     rad = np.full(len(idx), -1.0)
     sph = k == LeafForm.BALL
-    rad[sph] = np.where(tab.radius[idx][sph] ** 2 - d[sph] ** 2 > 0, np.sqrt(np.maximum(tab.radius[idx][sph] ** 2 - d[sph] ** 2, 0)), 0.0)
+    left = tab.radius[idx][sph] ** 2 - d[sph] ** 2
+    rad[sph] = np.where(left > 0, np.sqrt(np.maximum(left, 0)), 0.0)
     tr = k == LeafForm.FRUSTUM
     an = np.abs(tab.axis[idx] @ n)
     circ = tr & (an >= 1.0 - 1e-13)
@@ -465,11 +467,11 @@ def coplanar_sides(prog: Program, F: NDArray[np.float64], ids: NDArray[np.int64]
         if faces is None:
             continue
         normals, offsets = faces
-        size = float(np.max(p.bounds[1] - p.bounds[0]))
+        extent = float(np.max(p.bounds[1] - p.bounds[0]))
         dots = normals @ n
         par = np.abs(dots) >= 1.0 - 1e-13
         if par.any():
-            hit = np.abs(offsets[par] - normals[par] @ o) <= 1e-12 * size
+            hit = np.abs(offsets[par] - normals[par] @ o) <= 1e-12 * extent
             if hit.any():
                 out[j] = -1 if dots[par][hit][0] > 0 else 1
     return out
@@ -542,11 +544,14 @@ def combine_sections(
     calls = [0]
     struct = _Structure()
 
-    def combine(op: int, args: list[BaseGeometry]) -> BaseGeometry:
+    # Each value of the walk is (the subtree's interned key, its geometry): equal operands are
+    # recognised by their keys.
+    def combine(op: int, xs: list[tuple[int, BaseGeometry]]) -> tuple[int, BaseGeometry]:
         calls[0] += 1
-        last = area_only and calls[0] == n_ops
-        keys = struct.pop(len(args))
-        args, empty = struct.simplify(op, keys, args)
+        args, empty, key = struct.simplify(op, [k for k, _ in xs], [g for _, g in xs])
+        return key, operation(op, args, empty, area_only and calls[0] == n_ops)
+
+    def operation(op: int, args: list[BaseGeometry], empty: bool, last: bool) -> BaseGeometry:
         if empty:
             return _Area(0.0) if last else _EMPTY
         if len(args) == 1:
@@ -581,11 +586,10 @@ def combine_sections(
                     res = shapely.difference(first, shapely.union_all(rest))
         return polygonal(res, min_width)
 
-    def leaf(i: int, p: Primitive) -> BaseGeometry:
-        struct.push_leaf(p)
-        return leaf_geoms[i]
+    def leaf(i: int, p: Primitive) -> tuple[int, BaseGeometry]:
+        return struct.leaf_key(p), leaf_geoms[i]
 
-    out = program.evaluate(leaf, combine)
+    out = program.evaluate(leaf, combine)[1]
     if isinstance(out, _Area):
         return max(out.value, 0.0)
     out = polygonal(out, min_width)
@@ -596,29 +600,30 @@ class _Structure:
     """Interned keys of the subtrees met while a program is evaluated, so that equal operands are
     recognised: ``A | A`` and ``A & A`` keep one ``A``; ``A - A`` is empty in each of its flattened
     forms (``A - ... - A``; ``(b | c) - b - c``; ``A - S.. - (A - S..)``). Exact where the 2D
-    Booleans would leave slivers."""
+    Booleans would leave slivers. The keys travel with the values of :meth:`Program.evaluate`
+    (no stack of its own)."""
 
     def __init__(self) -> None:
         self.ids: dict[object, int] = {}
         self.nodes: dict[int, tuple[int, tuple[int, ...]]] = {}
-        self.stack: list[int] = []
 
     def _key(self, k: object) -> int:
         return self.ids.setdefault(k, len(self.ids))
 
-    def push_leaf(self, prim: object) -> None:
-        self.stack.append(self._key(("leaf", prim)))
+    def leaf_key(self, prim: object) -> int:
+        """The key of a leaf (equal primitives, one key)."""
+        return self._key(("leaf", prim))
 
-    def pop(self, n: int) -> list[int]:
-        keys = self.stack[len(self.stack) - n :]
-        del self.stack[len(self.stack) - n :]
-        return keys
-
-    def simplify(self, op: int, keys: list[int], args: list) -> tuple[list, bool]:
-        """Drop repeated operands; push the node's key; True when the result is empty by structure."""
+    def simplify(self, op: int, keys: list[int], args: list) -> tuple[list, bool, int]:
+        """Drop repeated operands of a node whose operands have ``keys``: the operands kept, True when
+        the result is empty by structure, and the node's key."""
         if op != OP_DIFFERENCE:
             seen: set[int] = set()
-            keep = [i for i, k in enumerate(keys) if not (k in seen or seen.add(k))]
+            keep = []
+            for i, k in enumerate(keys):
+                if k not in seen:
+                    seen.add(k)
+                    keep.append(i)
             keys, args = [keys[i] for i in keep], [args[i] for i in keep]
             empty = False
         else:
@@ -632,21 +637,21 @@ class _Structure:
             )
         key = keys[0] if len(keys) == 1 else self._key((op, tuple(keys)))
         self.nodes.setdefault(key, (op, tuple(keys)))
-        self.stack.append(key)
-        return args, empty
+        return args, empty, key
 
 
 def _subtract_disjoint(first: BaseGeometry, rest: list[BaseGeometry]) -> BaseGeometry:
     """``first`` minus pairwise-disjoint polygons: those strictly inside a polygon
     ``first`` become its holes directly, the others are subtracted as one multipolygon."""
-    inner: list[BaseGeometry] = []
     if isinstance(first, Polygon):
         shapely.prepare(first)
         arr = np.asarray(rest, dtype=object)
-        take = shapely.contains_properly(first, arr) & (shapely.get_type_id(arr) == 3) & (shapely.get_num_interior_rings(arr) == 0)
+        take = (shapely.contains_properly(first, arr) & (shapely.get_type_id(arr) == 3)
+                & (shapely.get_num_interior_rings(arr) == 0))
         if take.any():
             rest = arr[~take].tolist()
-            holes = np.concatenate([shapely.get_interior_ring(first, np.arange(len(first.interiors))), shapely.get_exterior_ring(arr[take])])
+            own = shapely.get_interior_ring(first, np.arange(len(first.interiors)))
+            holes = np.concatenate([own, shapely.get_exterior_ring(arr[take])])
             first = shapely.polygons(shapely.get_exterior_ring(first), holes=holes)
     if not rest:
         return first

@@ -37,7 +37,7 @@ import functools
 import math
 from collections.abc import Sequence
 from dataclasses import dataclass
-from typing import TYPE_CHECKING, Any, ClassVar
+from typing import TYPE_CHECKING, Any, ClassVar, Protocol
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -51,13 +51,13 @@ if TYPE_CHECKING:  # pragma: no cover
     import trimesh
     from shapely.geometry import Polygon
 
-    from ..laminae.surface import Surface
-    from .polyhedron import ConvexPolyhedron
+    from ..bands.surface import Surface
 
 __all__ = [
     "DEFAULT_RESOLUTION",
     "LeafForm",
     "LeafRow",
+    "Polytope",
     "Primitive",
     "RayHits",
     "Solid",
@@ -68,6 +68,36 @@ __all__ = [
 DEFAULT_RESOLUTION = 64
 #: The relative size of a primitive's default membership tolerance.
 RELATIVE_TOLERANCE = 1e-12
+
+class Polytope(Protocol):
+    """What the kind interface reads of a convex polyhedron (:class:`~isocsg.kinds.ConvexPolyhedron`,
+    which is itself a kind built on this module): the result of :meth:`Primitive.to_polyhedron`."""
+
+    @property
+    def vertices(self) -> tuple[Vec3, ...]: ...
+
+    @property
+    def hull_vertices(self) -> NDArray[np.float64]: ...
+
+    @property
+    def faces(self) -> tuple[NDArray[np.int64], ...]: ...
+
+    @property
+    def face_normals(self) -> NDArray[np.float64]: ...
+
+    @property
+    def face_offsets(self) -> NDArray[np.float64]: ...
+
+    @property
+    def triangles(self) -> NDArray[np.int64]: ...
+
+    @property
+    def bounds(self) -> NDArray[np.float64]: ...
+
+    def face_polygons(self) -> list[NDArray[np.float64]]: ...
+
+    def section(self, frame: NDArray[np.float64], resolution: int, area_exact: bool = False) -> Polygon: ...
+
 
 @dataclass(frozen=True, slots=True)
 class RayHits:
@@ -432,7 +462,7 @@ class Primitive(Solid):
         return lo, hi, np.zeros(n, np.bool_), np.zeros((n, 3)), np.zeros(n)
 
     # ------------------------------------------------------------ meshes and shadows
-    def to_polyhedron(self, resolution: int = DEFAULT_RESOLUTION) -> ConvexPolyhedron:  # pragma: no cover
+    def to_polyhedron(self, resolution: int = DEFAULT_RESOLUTION) -> Polytope:  # pragma: no cover
         """A :class:`~isocsg.kinds.polyhedron.ConvexPolyhedron` inscribed in the solid (a convex kind)."""
         raise NotImplementedError
 
@@ -444,7 +474,8 @@ class Primitive(Solid):
         poly = self.to_polyhedron(resolution)
         return manifold3d_module().Manifold.hull_points(np.asarray(poly.hull_vertices, dtype=np.float64).tolist())
 
-    def convex_pieces(self, resolution: int = DEFAULT_RESOLUTION) -> list[ConvexPolyhedron]:
+    # Any: the shadows take the pieces as ConvexPolyhedron, a kind module above this one.
+    def convex_pieces(self, resolution: int = DEFAULT_RESOLUTION) -> list[Any]:
         """Convex polyhedra whose union is the solid (inscribed for curved kinds): the shadows'
         occluders. Default: ``[to_polyhedron(resolution)]``."""
         return [self.to_polyhedron(resolution)]

@@ -22,6 +22,7 @@ from .base import (
     TangentCone,
     _as_rays,
     _orthogonal_columns,
+    _perpendicular_frame,
     _snap_rotation,
     rotation3,
 )
@@ -33,7 +34,7 @@ from .scad import encoded, mat, translated, vec
 if TYPE_CHECKING:  # pragma: no cover
     from shapely.geometry import Polygon
 
-    from ..laminae.surface import Surface
+    from ..bands.surface import Surface
     from .polyhedron import ConvexPolyhedron
 
 __all__ = ["Box"]
@@ -216,7 +217,9 @@ class Box(Primitive):
 
     def local_faces(self) -> tuple[NDArray[np.float64], list[NDArray[np.float64]]]:
         """Its centre and its faces about it (the same box at the origin: no hull of far-off
-        absolute coordinates), for :mod:`isocsg.laminae.polyhedron`."""
+        absolute coordinates), for :mod:`isocsg.kinds.polyhedron_bands`."""
+        if self.axis_aligned:  # no convex hull (and no scipy.spatial) for the common box
+            return self.center_array.copy(), _axis_aligned_faces(self.half_size)
         faces = Box((0.0, 0.0, 0.0), self.size, self.orientation).face_polygons()
         return self.center_array.copy(), [np.asarray(f, dtype=np.float64) for f in faces]
 
@@ -280,7 +283,7 @@ class Box(Primitive):
         hidden: tuple[Any, Any] | None = None,
     ) -> Surface:
         """Its faces, subdivided where a point light or a highlight varies across them."""
-        from ..laminae.polyhedron import polyhedron_surface
+        from .polyhedron_bands import polyhedron_surface
 
         return polyhedron_surface(self, lights, contours, eye=eye, shininess=shininess, weights=weights)
 
@@ -288,7 +291,7 @@ class Box(Primitive):
         self, light: Any, contours: int,
     ) -> list[tuple[NDArray[np.float64], NDArray[np.float64], float, str]]:
         """One lamina per face."""
-        from ..laminae.polyhedron import face_laminae
+        from .polyhedron_bands import face_laminae
 
         return [(v, nrm, c, "face") for v, nrm, c in face_laminae(self, light)]
 
@@ -312,3 +315,25 @@ class Box(Primitive):
         if not self.axis_aligned:
             out["orientation"] = [list(r) for r in self.orientation]
         return {"box": out}
+
+
+#: The corners' signs, in the order of :attr:`Box.corners`.
+_SIGNS = np.array([[x, y, z] for x in (-1, 1) for y in (-1, 1) for z in (-1, 1)], dtype=np.float64)
+
+
+def _axis_aligned_faces(half: NDArray[np.float64]) -> list[NDArray[np.float64]]:
+    """The faces of the axis-aligned box ``[-half, half]`` as its convex hull gives them
+    (:class:`ConvexPolyhedron`, the face polygons of :meth:`Box.local_faces` for a turned box):
+    the hull's face order (its planes sorted: -x, -y, -z, +z, +y, +x) and each face's corners
+    sorted by angle about its centre in the same frame, so the band meshes are the same bit
+    for bit (tests/test_primitives.py checks it against the hull)."""
+    corners = _SIGNS * half
+    faces = []
+    for k, s in ((0, -1.0), (1, -1.0), (2, -1.0), (2, 1.0), (1, 1.0), (0, 1.0)):
+        n = np.zeros(3)
+        n[k] = s
+        pts = corners[_SIGNS[:, k] == s]
+        c = pts.mean(axis=0)
+        u, v = _perpendicular_frame(n)
+        faces.append(pts[np.argsort(np.arctan2((pts - c) @ v, (pts - c) @ u))])
+    return faces

@@ -43,7 +43,7 @@ from .sphere import Sphere
 if TYPE_CHECKING:  # pragma: no cover
     from shapely.geometry import Polygon
 
-    from ..laminae.surface import Surface
+    from ..bands.surface import Surface
 
 __all__ = ["Ellipsoid"]
 
@@ -286,8 +286,8 @@ class Ellipsoid(Primitive):
         weights: tuple[float, float] = (1.0, 1.0), segments: int | None = None, *,
         hidden: tuple[Any, Any] | None = None,
     ) -> Surface:
-        """Latitude-longitude mesh fine enough for every field (:mod:`isocsg.laminae.ellipsoid`)."""
-        from ..laminae.ellipsoid import ellipsoid_surface
+        """Latitude-longitude mesh fine enough for every field (:mod:`isocsg.kinds.ellipsoid_bands`)."""
+        from .ellipsoid_bands import ellipsoid_surface
 
         return ellipsoid_surface(self, lights, contours, eye, shininess, weights, segments)
 

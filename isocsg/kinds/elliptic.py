@@ -37,7 +37,7 @@ from .truncus import Truncus
 if TYPE_CHECKING:  # pragma: no cover
     from shapely.geometry import Polygon
 
-    from ..laminae.surface import Surface
+    from ..bands.surface import Surface
 
 __all__ = ["EllipticTruncus"]
 
@@ -258,8 +258,8 @@ class EllipticTruncus(Primitive):
         weights: tuple[float, float] = (1.0, 1.0), segments: int | None = None, *,
         hidden: tuple[Any, Any] | None = None,
     ) -> Surface:
-        """Side and end meshes fine enough for every field (:mod:`isocsg.laminae.elliptic`)."""
-        from ..laminae.elliptic import elliptic_surface
+        """Side and end meshes fine enough for every field (:mod:`isocsg.kinds.elliptic_bands`)."""
+        from .elliptic_bands import elliptic_surface
 
         return elliptic_surface(self, lights, contours, eye, shininess, weights, segments)
 

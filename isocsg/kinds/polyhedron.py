@@ -35,7 +35,7 @@ from .scad import encoded, num_sig, round_sig, short_mat, vec
 if TYPE_CHECKING:  # pragma: no cover
     from shapely.geometry import Polygon
 
-    from ..laminae.surface import Surface
+    from ..bands.surface import Surface
 
 __all__ = ["ConvexPolyhedron"]
 
@@ -201,7 +201,7 @@ class ConvexPolyhedron(Primitive):
         return halfspace_section(self.face_normals, self.face_offsets, self.hull_vertices, frame)
 
     def local_faces(self) -> tuple[NDArray[np.float64], list[NDArray[np.float64]]]:
-        """The centre of its bounds and its faces about it, for :mod:`isocsg.laminae.polyhedron`."""
+        """The centre of its bounds and its faces about it, for :mod:`isocsg.kinds.polyhedron_bands`."""
         lo, hi = self.bounds
         origin = 0.5 * (lo + hi)
         return origin, [np.asarray(f, dtype=np.float64) - origin for f in self.face_polygons()]
@@ -232,8 +232,8 @@ class ConvexPolyhedron(Primitive):
         hidden: tuple[Any, Any] | None = None,
     ) -> Surface:
         """Its faces (flat: ``segments`` does not apply), subdivided where a point light or a
-        highlight varies across them (:func:`isocsg.laminae.polyhedron.polyhedron_surface`)."""
-        from ..laminae.polyhedron import polyhedron_surface
+        highlight varies across them (:func:`isocsg.kinds.polyhedron_bands.polyhedron_surface`)."""
+        from .polyhedron_bands import polyhedron_surface
 
         return polyhedron_surface(self, lights, contours, eye=eye, shininess=shininess, weights=weights)
 
@@ -241,7 +241,7 @@ class ConvexPolyhedron(Primitive):
         self, light: Any, contours: int,
     ) -> list[tuple[NDArray[np.float64], NDArray[np.float64], float, str]]:
         """One lamina per face."""
-        from ..laminae.polyhedron import face_laminae
+        from .polyhedron_bands import face_laminae
 
         return [(v, nrm, c, "face") for v, nrm, c in face_laminae(self, light)]
 

@@ -20,7 +20,7 @@ from typing import Any, TypeVar
 
 from ..errors import InvalidParameterError
 
-__all__ = ["PrimitiveKind", "kind_named", "kind_of", "register_kind", "registered_kinds"]
+__all__ = ["PrimitiveKind", "kind_class", "kind_named", "kind_of", "register_kind", "registered_kinds"]
 
 T = TypeVar("T", bound=type)
 
@@ -111,6 +111,21 @@ def kind_of(prim: Any) -> PrimitiveKind | None:
 def kind_named(name: str) -> PrimitiveKind | None:
     """The kind registered under a scene-file name, or None (read at call time: live)."""
     return _BY_NAME.get(name)
+
+
+def kind_class(name: str) -> type[Any]:
+    """The class registered under ``name``, for a kind whose values map onto another kind's (a
+    ball's uneven image is an ellipsoid) without importing the module that builds on it.
+
+    Raises
+    ------
+    InvalidParameterError
+        If no kind is registered under ``name``.
+    """
+    kind = _BY_NAME.get(name)
+    if kind is None:
+        raise InvalidParameterError(f"kind {name!r} is not registered")
+    return kind.cls
 
 
 def registered_kinds() -> tuple[PrimitiveKind, ...]:

@@ -1,7 +1,7 @@
 """The sphere kind: a solid ball, exact in every operation but its meshes.
 
 Rays, distances and sections are closed forms; its bands are latitude rings about
-the light (the seed's construction, :mod:`isocsg.laminae.sphere`); its meshes and
+the light (the seed's construction, :mod:`isocsg.kinds.sphere_bands`); its meshes and
 shadow pieces are inscribed UV spheres.
 """
 
@@ -28,13 +28,13 @@ from .base import (
     _check_length,
 )
 from .meshing import manifold3d_module
-from .registry import register_kind
+from .registry import kind_class, register_kind
 from .scad import encoded, num, translated
 
 if TYPE_CHECKING:  # pragma: no cover
     from shapely.geometry import Polygon
 
-    from ..laminae.surface import Surface
+    from ..bands.surface import Surface
     from .polyhedron import ConvexPolyhedron
 
 __all__ = ["Sphere"]
@@ -141,9 +141,9 @@ class Sphere(Primitive):
         k = similarity_factor(A)
         if k is not None:
             return Sphere(c, k * self.radius)
-        from .ellipsoid import Ellipsoid
-
-        return Ellipsoid.from_affine(A * self.radius, c)
+        # an ellipsoid, looked up by name: kinds/ellipsoid.py builds on this module
+        image: Primitive = kind_class("ellipsoid").from_affine(A * self.radius, c)
+        return image
 
     # ------------------------------------------------------------ the kind interface
     def extent(self, n: ArrayLike) -> tuple[float, float]:
@@ -202,9 +202,9 @@ class Sphere(Primitive):
         hidden: tuple[Any, Any] | None = None,
     ) -> Surface:
         """Latitude-longitude mesh about the first light's axis, its contour circles as mesh edges
-        (``segments`` longitudes, by default :data:`isocsg.laminae.sphere.LONGITUDES`)."""
-        from ..laminae.families import diffuse_levels
-        from ..laminae.sphere import LONGITUDES, sphere_surface
+        (``segments`` longitudes, by default :data:`isocsg.kinds.sphere_bands.LONGITUDES`)."""
+        from ..bands.families import diffuse_levels
+        from .sphere_bands import LONGITUDES, sphere_surface
 
         levels = diffuse_levels(np.array([-1.0, 1.0]), contours)
         return sphere_surface(self, lights[0] if lights else None, levels, LONGITUDES if segments is None else segments)
@@ -213,7 +213,7 @@ class Sphere(Primitive):
         self, light: Any, contours: int,
     ) -> list[tuple[NDArray[np.float64], NDArray[np.float64], float, str]]:
         """The seed's contour discs."""
-        from ..laminae.sphere import sphere_laminae
+        from .sphere_bands import sphere_laminae
 
         return [(v, nrm, c, "contour") for v, nrm, c in sphere_laminae(self, light, contours)]
 
@@ -221,7 +221,8 @@ class Sphere(Primitive):
         self, light: Any, contours: int,
     ) -> tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.float64]]:
         """Contour planes across the centre-light axis at the heights of cosines ``k / N``."""
-        from ..laminae.sphere import contour_heights, light_axis
+        from ..bands.lights import light_axis
+        from .sphere_bands import contour_heights
 
         cos_k = np.arange(contours + 1) / contours
         c = self.center_array

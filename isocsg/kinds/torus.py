@@ -47,7 +47,7 @@ if TYPE_CHECKING:  # pragma: no cover
     import trimesh
     from shapely.geometry import Polygon
 
-    from ..laminae.surface import Surface
+    from ..bands.surface import Surface
 
 __all__ = ["Torus", "torus_quartic_roots"]
 

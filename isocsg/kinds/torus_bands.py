@@ -2,12 +2,12 @@
 
 ``u`` turns about the axis, ``v`` about the tube. Vertices lie exactly on the surface,
 ``center + (R + r cos v) e(u) + r sin v w``, with the exact normals
-``cos v e(u) + sin v w``. As for the ellipsoid (:mod:`isocsg.laminae.ellipsoid`), the
+``cos v e(u) + sin v w``. As for the ellipsoid (:mod:`isocsg.kinds.ellipsoid_bands`), the
 isoluminance curves of a torus are not planar, so the bands come from the general
 machinery: the grid is refined until every field (diffuse ``n . l`` per light, Phong terms)
 is followed within a quarter of a band step along the rings, along the tube circles and
-across the cells (:func:`~isocsg.laminae.surface.curvature_spacing`,
-:func:`~isocsg.laminae.surface.mixed_spacing`); the families then cut it along their level
+across the cells (:func:`~isocsg.bands.surface.curvature_spacing`,
+:func:`~isocsg.bands.surface.mixed_spacing`); the families then cut it along their level
 lines. The grid is never coarser than a chord sag of about 3e-4 of the tube's radius
 (``MIN_TUBE`` vertices around the tube, as many around the axis as keep the outer rings'
 sag as small) and never finer than ``MAX_RING`` x ``MAX_TUBE``.
@@ -16,16 +16,15 @@ sag as small) and never finer than ``MAX_RING`` x ``MAX_TUBE``.
 from __future__ import annotations
 
 import math
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, Protocol
 
 import numpy as np
 from numpy.typing import NDArray
 
 if TYPE_CHECKING:  # pragma: no cover
-    from ..laminae.surface import Surface
-    from .torus import Torus
+    from ..bands.surface import Surface
 
-__all__ = ["torus_surface", "MIN_TUBE", "MAX_TUBE", "MAX_RING"]
+__all__ = ["Ring", "torus_surface", "MIN_TUBE", "MAX_TUBE", "MAX_RING"]
 
 #: Vertices around the tube at least and at most; around the axis at most.
 MIN_TUBE = 128
@@ -34,8 +33,26 @@ MAX_RING = 1024
 _SAMPLES = 181
 
 
+class Ring(Protocol):
+    """What the torus's bands read of it (:class:`~isocsg.kinds.Torus`)."""
+
+    @property
+    def center_array(self) -> NDArray[np.float64]: ...
+
+    @property
+    def rotation(self) -> NDArray[np.float64]: ...
+
+    @property
+    def major(self) -> float: ...
+
+    @property
+    def minor(self) -> float: ...
+
+    def _grid_triangles(self, n_u: int, n_v: int) -> NDArray[np.int64]: ...
+
+
 def _points(
-    t: Torus, uu: NDArray[np.float64], vv: NDArray[np.float64]
+    t: Ring, uu: NDArray[np.float64], vv: NDArray[np.float64]
 ) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
     """Points relative to the centre and normals on the grid ``uu x vv`` (shape (len(uu), len(vv), 3))."""
     Q = t.rotation
@@ -44,10 +61,10 @@ def _points(
     return t.major * ring[:, None, :] + t.minor * nrm, nrm
 
 
-def _spacings(t: Torus, lights: list[Any], contours: int, eye: NDArray[np.float64] | None, shininess: float,
+def _spacings(t: Ring, lights: list[Any], contours: int, eye: NDArray[np.float64] | None, shininess: float,
               weights: tuple[float, float]) -> tuple[float, float]:
     """The largest angular steps in u and v that follow every field (inf where nothing bends)."""
-    from ..laminae.surface import curvature_spacing
+    from ..bands.surface import curvature_spacing
 
     origin = t.center_array
     R, r = t.major, t.minor
@@ -68,14 +85,14 @@ def _spacings(t: Torus, lights: list[Any], contours: int, eye: NDArray[np.float6
 
 
 def torus_surface(
-    t: Torus, lights: list[Any], contours: int, eye: NDArray[np.float64] | None, shininess: float,
+    t: Ring, lights: list[Any], contours: int, eye: NDArray[np.float64] | None, shininess: float,
     weights: tuple[float, float] = (1.0, 1.0),
 ) -> Surface:
     """The torus's base mesh for its bands (see the module docstring).
 
     Parameters
     ----------
-    t : Torus
+    t : Ring
     lights : list of PointLight or DirectionalLight
     contours : int
         N, the contours per family.
@@ -90,7 +107,7 @@ def torus_surface(
     Surface
         Relative to the centre; one smooth part.
     """
-    from ..laminae.surface import Surface, mixed_spacing, orient_outward, pieces
+    from ..bands.surface import Surface, mixed_spacing, orient_outward, pieces
 
     R, r = t.major, t.minor
     min_v = MIN_TUBE

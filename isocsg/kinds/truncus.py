@@ -3,7 +3,7 @@
 End E1 of radius ``r1`` is centred at ``center + axis / 2``, end E2 of radius ``r2`` at
 ``center - axis / 2``. Rays, distances (in the meridian half-plane), sections (the plane
 cut of the lateral cone, solved per generator) and its OpenSCAD form are exact; its
-bands are the seed's appendix construction (:mod:`isocsg.laminae.truncus`).
+bands are the seed's appendix construction (:mod:`isocsg.kinds.truncus_bands`).
 """
 
 from __future__ import annotations
@@ -41,13 +41,13 @@ from .base import (
     _unit,
 )
 from .meshing import manifold3d_module, rotation_to_axis
-from .registry import register_kind
+from .registry import kind_class, register_kind
 from .scad import encoded, frame, mat, num, translated, truncus_body
 
 if TYPE_CHECKING:  # pragma: no cover
     from shapely.geometry import Polygon
 
-    from ..laminae.surface import Surface
+    from ..bands.surface import Surface
     from .polyhedron import ConvexPolyhedron
 
 __all__ = ["Cone", "Cylinder", "Truncus", "truncus_section"]
@@ -158,6 +158,19 @@ class Truncus(Primitive):
         """Radius at signed axial coordinate ``s`` (0 at the centre, +h/2 at E1)."""
         s = np.asarray(s, dtype=np.float64)
         return self.r2 + self.slope * (s + self.height / 2)
+
+    def stacked(self, k: int) -> list[Truncus]:
+        """``k`` trunci stacked along the axis, E1 first (the slices of a truncus near a point light)."""
+        a = np.asarray(self.axis, dtype=np.float64)
+        zs = np.linspace(0.5, -0.5, k + 1)
+        radii = np.maximum(self.radius_at(zs * self.height), 0.0)
+        # An apex stays an apex: the interpolation at an end of radius 0 may round to 1e-17.
+        radii[0] = self.r1 if self.r1 == 0.0 else radii[0]
+        radii[-1] = self.r2 if self.r2 == 0.0 else radii[-1]
+        return [
+            Truncus(self.center_array + 0.5 * (z0 + z1) * a, a * (z0 - z1), float(r0), float(r1))
+            for z0, z1, r0, r1 in zip(zs[:-1], zs[1:], radii[:-1], radii[1:])
+        ]
 
     @property
     def volume(self) -> float:
@@ -333,10 +346,12 @@ class Truncus(Primitive):
             if type(self) is Cone:
                 return Cone(c, axis, k * self.r1)
             return Truncus(c, axis, k * self.r1, k * self.r2)
-        from .elliptic import EllipticTruncus
+        # an elliptic truncus, looked up by name: kinds/elliptic.py builds on this module
+        elliptic = kind_class("elliptic_truncus")
 
         frame = np.column_stack([u, v, np.asarray(self.axis, dtype=np.float64)])  # canonical -> self
-        return EllipticTruncus(tuple(c), A @ frame, self.r1, self.r2)
+        image: Primitive = elliptic(tuple(c), A @ frame, self.r1, self.r2)
+        return image
 
     # ------------------------------------------------------------ the kind interface
     def extent(self, n: ArrayLike) -> tuple[float, float]:
@@ -478,10 +493,10 @@ class Truncus(Primitive):
         weights: tuple[float, float] = (1.0, 1.0), segments: int | None = None, *,
         hidden: tuple[Any, Any] | None = None,
     ) -> Surface:
-        """Side and end meshes (:func:`isocsg.laminae.truncus.truncus_surface`), with at least
+        """Side and end meshes (:func:`isocsg.kinds.truncus_bands.truncus_surface`), with at least
         ``segments`` generators (by default ``truncus.GENERATORS``); ends outside the box ``hidden``
         are not refined."""
-        from ..laminae.truncus import GENERATORS, truncus_surface
+        from .truncus_bands import GENERATORS, truncus_surface
 
         seg = GENERATORS if segments is None else segments
         return truncus_surface(self, lights, contours, eye=eye, shininess=shininess, weights=weights, segments=seg,
@@ -491,7 +506,7 @@ class Truncus(Primitive):
         self, light: Any, contours: int,
     ) -> list[tuple[NDArray[np.float64], NDArray[np.float64], float, str]]:
         """The appendix's quads and end laminae."""
-        from ..laminae.truncus import truncus_laminae
+        from .truncus_bands import truncus_laminae
 
         return truncus_laminae(self, light, contours)
 
@@ -499,8 +514,8 @@ class Truncus(Primitive):
         self, light: Any, contours: int,
     ) -> tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.float64]]:
         """The quads' planes: cosine-spaced offsets across the axis, the seed's levels."""
-        from ..laminae.sphere import light_axis
-        from ..laminae.truncus import light_frame, paper_levels
+        from ..bands.lights import light_axis
+        from .truncus_bands import light_frame, paper_levels
 
         ct = self.center_array
         ln = light_axis(ct, light)  # a directional light's unit direction, else towards the light

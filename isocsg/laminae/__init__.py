@@ -2,10 +2,12 @@
 
 - :func:`build_laminae` builds (and caches) a primitive's :class:`LaminaSet`;
   :func:`build_bands` only its band mesh (what the renderer fills).
-- :mod:`~isocsg.laminae.sphere`, :mod:`~isocsg.laminae.truncus` and
-  :mod:`~isocsg.laminae.polyhedron` hold the seed's constructions per primitive;
-  :mod:`~isocsg.laminae.families` the shading fields and levels;
-  :mod:`~isocsg.laminae.split` the cutting of a mesh into bands.
+- :mod:`~isocsg.laminae.split` the cutting of a mesh into bands.
+
+The seed's constructions per primitive live beside each kind (``isocsg/kinds/<kind>_bands.py``)
+and the shading fields and levels in :mod:`isocsg.bands`, below the kinds; the modules
+``laminae.sphere``, ``truncus``, ``polyhedron``, ``ellipsoid``, ``elliptic``, ``surface`` and
+``families`` keep their names under the former paths.
 """
 
 from .builder import MAX_CONTOURS, build_bands, build_laminae, cache_info, clear_cache

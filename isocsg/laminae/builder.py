@@ -36,15 +36,15 @@ from numpy.typing import ArrayLike, NDArray
 
 from .._cache import ByteCache
 from .._validation import integer, vector3
+from ..bands.families import GRAZING, FieldFamily, diffuse_family, incidence, specular_families
+from ..bands.lights import light_axis
+from ..bands.surface import Surface
 from ..errors import InvalidLightError, InvalidParameterError
 from ..kinds.base import Primitive, provides
 from ..lighting.lights import DirectionalLight, PointLight
 from ..lighting.shading import TERMINATOR_COSINE, Material
-from .families import GRAZING, FieldFamily, diffuse_family, incidence, specular_families
 from .model import BandMesh, ContourFamily, Lamina, LaminaSet
-from .sphere import light_axis
 from .split import MAX_PIECES, split_by_levels
-from .surface import Surface
 
 __all__ = ["build_laminae", "build_bands", "clear_cache", "cache_info", "cache_bytes", "MAX_CONTOURS"]
 
@@ -302,13 +302,14 @@ def _cached(
         segments = integer("segments", segments, low=8, high=MAX_CONTOURS, error=InvalidParameterError)
         if segments >= DEFAULT_SEGMENTS:
             segments = None  # the defaults
-    key = (primitive, lights_t, mat, n, eye_t)
+    key: tuple[Any, ...] = (primitive, lights_t, mat, n, eye_t)
     part = (*key, "bands") if segments is None else (*key, "bands", segments)  # a set without laminae
     if hidden is not None:
         part = (*part, "hidden", hidden)
     full_serves = bands_only and segments is None and hidden is None
     with _LOCK:
-        for k in (key, part) if full_serves else (part,) if bands_only else (key,):  # a full set serves a bands-only request too
+        # a full set serves a bands-only request too
+        for k in (key, part) if full_serves else (part,) if bands_only else (key,):
             hit = _CACHE.get(k)
             if hit is not None:
                 _STATS["hits"] += 1
@@ -382,7 +383,8 @@ def _family_description(primitive: Primitive, light: Light, index: int, n: int, 
     family = primitive.contour_family(light, n)
     w, offsets, levels = (np.zeros(3), np.zeros(0), np.zeros(0)) if family is None else family
     lv = np.asarray(levels, dtype=np.float64)
-    values = mat.ambient + mat.kd * light.intensity * np.maximum(0.5 * (lv[:-1] + lv[1:]), 0.0) if len(lv) > 1 else np.zeros(0)
+    mids = np.maximum(0.5 * (lv[:-1] + lv[1:]), 0.0)
+    values = mat.ambient + mat.kd * light.intensity * mids if len(lv) > 1 else np.zeros(0)
     return ContourFamily(w, np.asarray(offsets, dtype=np.float64), lv, values, index)
 
 
@@ -413,7 +415,7 @@ def _build_bands(
     fams: list[FieldFamily] = []
     for j, light in enumerate(lights):
         fams.append(diffuse_family(j, light, mat, incidence(light, surf.vertices, surf.normals, surf.origin)))
-        if eye_local is not None:
+        if eye is not None:
             fams.extend(specular_families(j, light, mat, surf.vertices, surf.normals, eye - surf.origin, surf.origin))
     return _cut(surf, fams, mat, n, hidden)
 
@@ -430,11 +432,12 @@ def _build(
         w = light.intensity
         for verts, nrm, cos, kind in _paper_laminae(primitive, light, n):
             value = mat.ambient + mat.kd * w * max(cos, 0.0)
-            laminae.append(Lamina(verts, nrm, float(value), float(nrm @ verts[0]), kind, j if kind == "contour" else -1))
+            family = j if kind == "contour" else -1
+            laminae.append(Lamina(verts, nrm, float(value), float(nrm @ verts[0]), kind, family))
         if eye is not None:
             virtual = _virtual_light(primitive, light, eye)
             if virtual is not None:
-                for verts, nrm, cos, kind in _paper_laminae(primitive, virtual, n):
+                for verts, nrm, cos, _kind in _paper_laminae(primitive, virtual, n):
                     value = mat.ks * w * max(cos, 0.0) ** mat.shininess
                     laminae.append(Lamina(verts, nrm, float(value), float(nrm @ verts[0]), "specular", j))
     if not lights:
@@ -542,7 +545,8 @@ def _cut(
         # with 1-d uniques (much faster than a unique over rows).
         composite = part_of[kept[:m]]
         for i in range(k):
-            key = np.unique(composite, return_inverse=True)[1].reshape(-1).astype(np.int64) * int(offsets[i]) + band[:, i]
+            ranks = np.unique(composite, return_inverse=True)[1].reshape(-1).astype(np.int64)
+            key = ranks * int(offsets[i]) + band[:, i]
             composite = key
         composite = np.unique(composite, return_inverse=True)[1].reshape(-1)
     return BandMesh(surf.origin + vertices, tri32[:m], v_out[:m], v_in[:m], composite.astype(np.int32))

@@ -15,8 +15,8 @@ and empties an intersection or a difference whose first operand it is
 Everything here is known before any band is built: the leaves' bounding
 boxes (:func:`leaf_geometry`), their screen rectangles, the near plane of
 each leaf and their unclipped size on screen (:func:`leaf_rects`), the
-object's rectangle (:func:`combine_rects`) and the tile plan
-(:func:`plan_tiles`).
+object's rectangle (:meth:`~isocsg.csg.program.Program.screen_rect`, compiled as
+:func:`~isocsg.csg.program.combine_rects`) and the tile plan (:func:`plan_tiles`).
 """
 
 from __future__ import annotations
@@ -29,14 +29,14 @@ from numba import njit
 from numpy.typing import NDArray
 
 from ..camera import Camera
-from ..csg.program import prune_arrays
+from ..csg.program import combine_rects, prune_arrays
 from ..errors import InvalidGeometryError
 from ..kinds.base import Primitive
 from .projection import NEAR_RELATIVE
 
 __all__ = [
-    "LeafGeometry", "leaf_geometry", "leaf_rects", "leaf_near_keys", "leaf_screen_sizes", "combine_rects", "tile_leaves", "TilePlan", "plan_tiles",
-    "open_tile_pixels", "clip_leaves", "hidden_box", "CLIP_MARGIN",
+    "LeafGeometry", "leaf_geometry", "leaf_rects", "leaf_near_keys", "leaf_screen_sizes", "combine_rects",
+    "tile_leaves", "TilePlan", "plan_tiles", "open_tile_pixels", "clip_leaves", "hidden_box", "CLIP_MARGIN",
 ]
 
 #: :func:`clip_leaves` keeps this fraction of the object box's diagonal beyond the box, so that
@@ -265,48 +265,6 @@ def _screen_boxes(geom: LeafGeometry, cam: Camera) -> tuple[NDArray[np.float64],
         r0 = (1.0 - box[:, 3] * sy_scale) * H / 2
         r1 = (1.0 - box[:, 2] * sy_scale) * H / 2
     return c0, c1, r0, r1, behind, near
-
-
-@njit(cache=True)
-def combine_rects(op: NDArray[np.int8], arg: NDArray[np.int64], rects: NDArray[np.int64]) -> NDArray[np.int64]:
-    """The object's rectangle from its leaves' (a :class:`~isocsg.csg.program.Program`'s arrays).
-
-    A union takes the hull of its operands' rectangles, an intersection their
-    overlap, a difference its first operand's. Empty rectangles are empty
-    sets (they leave a union's hull alone and empty an intersection).
-    """
-    stack = np.zeros((max(len(op), 1), 4), np.int64)
-    sp = 0
-    for k in range(len(op)):
-        o = op[k]
-        if o == 0:
-            # Element by element: a row assignment compiles numba's shape-mismatch message (seconds of compile).
-            r = arg[k]
-            stack[sp, 0], stack[sp, 1], stack[sp, 2], stack[sp, 3] = rects[r, 0], rects[r, 1], rects[r, 2], rects[r, 3]
-            sp += 1
-            continue
-        base = sp - arg[k]
-        c0, r0, c1, r1 = stack[base, 0], stack[base, 1], stack[base, 2], stack[base, 3]
-        if o == 1:  # union: hull of the non-empty operands
-            empty = not (c0 < c1 and r0 < r1)
-            for s in range(base + 1, sp):
-                if not (stack[s, 0] < stack[s, 2] and stack[s, 1] < stack[s, 3]):
-                    continue
-                if empty:
-                    c0, r0, c1, r1 = stack[s, 0], stack[s, 1], stack[s, 2], stack[s, 3]
-                    empty = False
-                else:
-                    c0, r0 = min(c0, stack[s, 0]), min(r0, stack[s, 1])
-                    c1, r1 = max(c1, stack[s, 2]), max(r1, stack[s, 3])
-        elif o == 2:  # intersection
-            for s in range(base + 1, sp):
-                c0, r0 = max(c0, stack[s, 0]), max(r0, stack[s, 1])
-                c1, r1 = min(c1, stack[s, 2]), min(r1, stack[s, 3])
-        if not (c0 < c1 and r0 < r1):
-            c0, r0, c1, r1 = 0, 0, 0, 0
-        stack[base, 0], stack[base, 1], stack[base, 2], stack[base, 3] = c0, r0, c1, r1
-        sp = base + 1
-    return stack[0].copy()
 
 
 def hidden_box(lo: NDArray[np.float64], hi: NDArray[np.float64]) -> tuple[tuple[float, ...], tuple[float, ...]]:

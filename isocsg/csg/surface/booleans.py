@@ -3,6 +3,10 @@
 Each leaf's closed band mesh becomes a manifold3d solid whose triangles remember
 their band triangle (face ids, one original id per leaf); every result triangle
 then keeps its band's value, reversed where it faces the other way.
+
+A background build (:mod:`isocsg._workers`) is cancellable between the batches: each
+Boolean and each read-back first checks :func:`isocsg._workers.raise_if_cancelled`, so that
+a build asked to stop (the process is ending) leaves manifold3d after the batch it is in.
 """
 
 from __future__ import annotations
@@ -15,6 +19,7 @@ from typing import Any
 import numpy as np
 from numpy.typing import NDArray
 
+from ... import _workers
 from ...errors import InvalidGeometryError
 from ...laminae.model import BandMesh
 from ..mesh import _manifold3d
@@ -92,6 +97,7 @@ def run_booleans(
                 leaf_solid.pop(r, None)
 
     def build(k: int) -> None:
+        _workers.raise_if_cancelled()  # between manifold3d batches
         op, refs = plan.nodes[k]
         parts = [solid(r) for r in refs]
         if op == "as is":
@@ -129,6 +135,7 @@ def run_booleans(
             for k in plan.nodes_of(c.ref):
                 if built[k] is None:
                     build(k)
+        _workers.raise_if_cancelled()
         out = built[-1 - c.ref].to_mesh64()
         release(c.ref)  # the solid goes before its result is read back
         piece = _read_back(out, members[c.ref], bands, subset, shared, first_id, centre, half)
