@@ -25,6 +25,7 @@ _EXPORTS: dict[str, str] = {
     **dict.fromkeys(["Solid", "Primitive", "RayHits", "Sphere", "Truncus", "Cylinder", "Cone", "Box", "ConvexPolyhedron",
                      "Ellipsoid", "EllipticTruncus"], ".kinds"),
     "Torus": ".kinds",
+    "TriangleMesh": ".kinds",
     "extrude": ".csg.extrude",
     **dict.fromkeys(["PointLight", "DirectionalLight", "Material", "shade"], ".lighting"),
     **dict.fromkeys(["Scene", "SceneObject", "RenderSettings", "load_scene", "loads_scene", "save_scene", "dumps_scene",
@@ -110,6 +111,7 @@ __all__ = [
     "Solid",
     "Sphere",
     "Torus",
+    "TriangleMesh",
     "Truncus",
     "Union",
     "Union2D",
@@ -205,8 +207,14 @@ def _mimebundle(obj: Any, include: Any = None, exclude: Any = None) -> dict[str,
     return mimebundle(obj, include, exclude)
 
 
+def _band_surface(vertices: Any, normals: Any, triangles: Any, origin: Any, parts: Any) -> Any:
+    from .laminae.surface import Surface, orient_outward
+
+    return Surface(vertices, normals, orient_outward(vertices, normals, triangles), origin, parts)
+
+
 for _name, _fn in (("union", _union), ("intersection", _intersection), ("difference", _difference),
-                   ("mimebundle", _mimebundle)):
+                   ("mimebundle", _mimebundle), ("band_surface", _band_surface)):
     _late.bind(_name, _fn)
 del _name, _fn
 
@@ -256,6 +264,7 @@ if TYPE_CHECKING:  # what the names are, for type checkers and editors
         Solid,
         Sphere,
         Torus,
+        TriangleMesh,
         Truncus,
     )
     from .laminae import BandMesh, Lamina, LaminaSet, build_laminae
