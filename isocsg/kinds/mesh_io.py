@@ -184,7 +184,8 @@ def read_height_map(path: str | os.PathLike[str], *, invert: bool = False) -> tu
     A PNG image (recognised by its signature, as OpenSCAD does): each pixel's luminance
     ``0.2126 R + 0.7152 G + 0.0722 B`` (8-bit channels) maps to ``z = 100 / 255 * pixel``, or with
     ``invert`` to OpenSCAD's ``100 / 255 * (1 - pixel)``; the image's top row is the last line
-    (largest y); the base is ``min(z) - 1``. Otherwise a DAT text file: one line of numbers
+    (largest y); the base is ``min(z) - 1`` (today's OpenSCAD; 2021.01 put it at ``min(min(z) - 1, 0)``,
+    the same for an image with a black pixel or with ``invert``). Otherwise a DAT text file: one line of numbers
     (separated by spaces or tabs) per row, ``#`` comment lines and blank lines skipped, short
     rows padded with 0 as OpenSCAD pads them; the base is ``min(min(values), 1) - 1``
     (``invert`` does not apply).

@@ -44,7 +44,7 @@ def mesh_section(vertices: NDArray[np.float64], faces: NDArray[np.int64], F: NDA
         hp, hq = h[lo_i], h[hi_i]
         with np.errstate(invalid="ignore", divide="ignore"):
             s = hp / (hp - hq)
-        x = p + s[:, None] * (q - p)
+            x = p + s[:, None] * (q - p)
         pts.append(np.where(crosses[:, None], x, np.nan))
     P = np.stack(pts, axis=1)  # (k, 3 edges, 3), NaN on the edge that does not cross
     ok = np.isfinite(P[:, :, 0])
@@ -55,8 +55,10 @@ def mesh_section(vertices: NDArray[np.float64], faces: NDArray[np.int64], F: NDA
     faces2 = shapely.get_parts(shapely.polygonize(shapely.get_parts(merged)))
     if not len(faces2):
         return EMPTY
-    # even-odd: a polygonised face is in the section when it is nested in an odd number of faces
-    tree = shapely.STRtree(faces2)
+    # even-odd: a polygonised face is in the section when it is nested in an odd number of faces'
+    # outlines (polygonize cuts an inner face out of the one around it: compare with shells)
+    shells = shapely.polygons(shapely.get_exterior_ring(faces2))
+    tree = shapely.STRtree(shells)
     reps = shapely.point_on_surface(faces2)
     pairs = tree.query(reps, predicate="within")
     depth = np.bincount(pairs[0], minlength=len(faces2))
