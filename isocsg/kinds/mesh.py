@@ -370,8 +370,8 @@ class TriangleMesh(Primitive):
 
         m3d = manifold3d_module()
         if hasattr(m3d, "Mesh64"):
-            mesh = m3d.Mesh64(vert_properties=np.ascontiguousarray(self.vertices, np.float64),
-                              tri_verts=np.ascontiguousarray(self.faces, np.uint64))
+            mesh = m3d.Mesh64(vert_properties=np.array(self.vertices, np.float64),  # writable copies
+                              tri_verts=np.array(self.faces, np.uint64))
         else:  # pragma: no cover - older manifold3d
             mesh = m3d.Mesh(vert_properties=np.ascontiguousarray(self.vertices, np.float32),
                             tri_verts=np.ascontiguousarray(self.faces, np.uint32))

@@ -33,10 +33,13 @@ import numpy as np
 from numba import njit
 from numpy.typing import NDArray
 
-__all__ = ["LEAF_SIZE", "build_bvh", "bvh_ray_intervals", "bvh_nearest", "bvh_winding_parity"]
+__all__ = ["BOX_PADDING", "LEAF_SIZE", "build_bvh", "bvh_ray_intervals", "bvh_nearest", "bvh_winding_parity"]
 
 #: Triangles per leaf of the hierarchy at most.
 LEAF_SIZE = 4
+
+#: How much every box of the hierarchy is grown, relative to the mesh's size and coordinates.
+BOX_PADDING = 1e-9
 
 @njit(cache=True, nogil=True)
 def _build(tri_lo: Any, tri_hi: Any, cen: Any, leaf: Any) -> Any:
@@ -90,7 +93,11 @@ def _build(tri_lo: Any, tri_hi: Any, cen: Any, leaf: Any) -> Any:
 def build_bvh(vertices: NDArray[np.float64], faces: NDArray[np.int64]) -> tuple[NDArray[np.float64], ...]:
     """The hierarchy of the triangles ``vertices[faces]``: ``(lo, hi, left, start, count, order)``."""
     tri = vertices[faces]
-    return _build(tri.min(axis=1), tri.max(axis=1), tri.mean(axis=1), LEAF_SIZE)  # type: ignore[no-any-return]
+    lo, hi, left, start, count, order = _build(tri.min(axis=1), tri.max(axis=1), tri.mean(axis=1), LEAF_SIZE)
+    # Boxes grown by BOX_PADDING of the mesh's size: a ray through a vertex or an edge on a box's
+    # boundary must not miss the box by a rounding of the slab test (the triangles decide exactly).
+    pad = BOX_PADDING * max(float(np.max(np.ptp(vertices, axis=0))), float(np.max(np.abs(vertices))))
+    return lo - pad, hi + pad, left, start, count, order
 
 
 @njit(cache=True, nogil=True)
