@@ -53,21 +53,31 @@ def mesh_intervals(V: F64, F: NDArray[np.int64], o: F64, d: F64) -> tuple[F64, F
         t = np.einsum("mk,rmk->rm", e2, q) * inv
         hit = ok & (u >= 0) & (v >= 0) & (u + v <= 1)
         tl = np.linalg.norm(dd, axis=1)
-        for r in np.nonzero(hit.any(axis=1))[0].tolist():
-            faces = np.nonzero(hit[r])[0]
-            ts = t[r, faces]
-            order = np.argsort(ts)
-            ts, faces = ts[order], faces[order]
-            keep = np.ones(len(ts), bool)
-            keep[1:] = np.diff(ts) * tl[r] > DUPLICATE * size
-            ts, faces = ts[keep], faces[keep]
-            if len(ts) % 2:
-                raise ValueError("reference mesh: a ray met the mesh an odd number of times (an edge-on ray)")
-            k = len(ts) // 2
-            if k > MESH_LAYERS:
-                raise ValueError(f"reference mesh: a ray has {k} intervals, more than MESH_LAYERS = {MESH_LAYERS}")
-            t_in[s + r, :k], t_out[s + r, :k] = ts[0::2], ts[1::2]
-            f_in[s + r, :k], f_out[s + r, :k] = faces[0::2], faces[1::2]
+        ts = np.where(hit, t, np.inf)
+        order = np.argsort(ts, axis=1)
+        ts = np.take_along_axis(ts, order, axis=1)
+        # a hit within DUPLICATE of the previous one is the same crossing (an edge or a vertex)
+        dup = np.zeros_like(hit)
+        with np.errstate(invalid="ignore"):  # inf - inf past the last hit
+            dup[:, 1:] = np.isfinite(ts[:, 1:]) & ((ts[:, 1:] - ts[:, :-1]) * tl[:, None] <= DUPLICATE * size)
+        ts = np.where(dup, np.inf, ts)
+        again = np.argsort(ts, axis=1, kind="stable")
+        ts = np.take_along_axis(ts, again, axis=1)
+        faces = np.take_along_axis(order, again, axis=1)
+        count = np.isfinite(ts).sum(axis=1)
+        if np.any(count % 2):
+            raise ValueError("reference mesh: a ray met the mesh an odd number of times (an edge-on ray)")
+        if np.any(count > 2 * MESH_LAYERS):
+            raise ValueError(f"reference mesh: a ray has more than MESH_LAYERS = {MESH_LAYERS} intervals")
+        width = min(2 * MESH_LAYERS, ts.shape[1])
+        ts, faces = ts[:, :width], faces[:, :width]
+        k = width // 2
+        fin = np.isfinite(ts)
+        rows = slice(s, s + len(oo))
+        t_in[rows, :k] = np.where(fin[:, 0::2], ts[:, 0::2], np.nan)
+        t_out[rows, :k] = np.where(fin[:, 1::2], ts[:, 1::2], np.nan)
+        f_in[rows, :k] = np.where(fin[:, 0::2], faces[:, 0::2], -1)
+        f_out[rows, :k] = np.where(fin[:, 1::2], faces[:, 1::2], -1)
     n_in = np.where((f_in >= 0)[..., None], nrm[np.maximum(f_in, 0)], 0.0)
     n_out = np.where((f_out >= 0)[..., None], nrm[np.maximum(f_out, 0)], 0.0)
     return t_in, t_out, n_in, n_out, f_in, f_out
