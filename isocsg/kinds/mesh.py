@@ -42,7 +42,6 @@ from numpy.typing import ArrayLike, NDArray
 from .._validation import MAX_ABS_COORD
 from ..errors import InvalidGeometryError
 from .base import DEFAULT_RESOLUTION, Primitive, RayHits, _as_rays
-from .mesh_bvh import build_bvh, bvh_nearest, bvh_ray_intervals, bvh_winding_parity
 from .polyhedron import ConvexPolyhedron
 from .registry import register_kind
 from .scad import vec
@@ -218,6 +217,8 @@ class TriangleMesh(Primitive):
         """The bounding-volume hierarchy (:func:`~isocsg.kinds.mesh_bvh.build_bvh`), built on first use."""
         b = self._bvh  # type: ignore[attr-defined]
         if b is None:
+            from .mesh_bvh import build_bvh  # numba on first use only
+
             b = build_bvh(self.vertices, self.faces)
             object.__setattr__(self, "_bvh", b)
         return b  # type: ignore[no-any-return]
@@ -275,6 +276,8 @@ class TriangleMesh(Primitive):
     # ------------------------------------------------------------ membership
     def signed_distance(self, points: ArrayLike) -> NDArray[np.float64]:
         """Exact distance to the nearest face, negative inside (positive winding along a fixed ray)."""
+        from .mesh_bvh import bvh_nearest, bvh_winding_parity
+
         p = self._points(points)
         dist, _ = bvh_nearest(self.bvh, self.vertices, self.faces, p)
         inside = bvh_winding_parity(self.bvh, self.vertices, self.faces, p)
@@ -282,12 +285,16 @@ class TriangleMesh(Primitive):
 
     def normals_at(self, points: ArrayLike) -> NDArray[np.float64]:
         """The outward normal of the face nearest each point."""
+        from .mesh_bvh import bvh_nearest
+
         p = np.asarray(points, dtype=np.float64).reshape(-1, 3)
         _, face = bvh_nearest(self.bvh, self.vertices, self.faces, p)
         return self.face_normals[face]  # type: ignore[no-any-return]
 
     def part_index(self, points: NDArray[np.float64], normals: NDArray[np.float64]) -> NDArray[np.int64]:
         """The index of the face nearest each point."""
+        from .mesh_bvh import bvh_nearest
+
         _, face = bvh_nearest(self.bvh, self.vertices, self.faces, np.asarray(points, np.float64).reshape(-1, 3))
         return face
 
@@ -296,6 +303,8 @@ class TriangleMesh(Primitive):
         """Every depth interval of each ray's line in the solid, ``(n, k, 2)`` NaN padded, ``t`` in units
         of each direction's length; ``k`` is the most any of these rays needs (at least 1, at most
         ``max_intervals``). See :mod:`~isocsg.kinds.mesh_bvh` for the edge and vertex rule."""
+        from .mesh_bvh import bvh_ray_intervals
+
         o, d = _as_rays(origins, directions)
         good = np.any(d != 0.0, axis=1)
         out = bvh_ray_intervals(self.bvh, self.vertices, self.faces, o, np.where(good[:, None], d, 1.0))
