@@ -106,7 +106,8 @@ def _check_closed(F: NDArray[np.int64]) -> None:
             f"TriangleMesh.faces are not consistently oriented or not manifold: the edge {e // n} -> {e % n} "
             "is used by more than one face in the same direction (TriangleMesh.repaired can fix the orientation)")
     rev = b * n + a
-    missing = ~np.isin(rev, uniq)
+    at = np.minimum(np.searchsorted(uniq, rev), len(uniq) - 1)  # uniq is sorted
+    missing = uniq[at] != rev
     if missing.any():
         k = int(np.argmax(missing))
         raise InvalidGeometryError(

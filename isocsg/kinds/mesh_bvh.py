@@ -27,6 +27,7 @@ Touching intervals (one ends where the next begins) are merged and empty ones dr
 
 from __future__ import annotations
 
+import os
 from typing import Any
 
 import numpy as np
@@ -225,18 +226,40 @@ def _intervals_of(ts: Any, signs: Any, m: Any, out: Any, row: Any) -> Any:
 @njit(cache=True, nogil=True)
 def _all_intervals(O: Any, D: Any, V: Any, F: Any, lo: Any, hi: Any, left: Any, start: Any, count: Any,
                    order: Any, out: Any, need: Any) -> Any:
-    n = O.shape[0]
-    for r in range(n):
-        stack = np.empty(256, np.int64)
-        cap = 64
-        ts = np.empty(cap)
-        signs = np.empty(cap, np.int64)
+    stack = np.empty(256, np.int64)  # a median split of 20 million faces is 23 levels deep
+    ts = np.empty(64)
+    signs = np.empty(64, np.int64)
+    for r in range(O.shape[0]):
         m = _ray_hits(O[r], D[r], V, F, lo, hi, left, start, count, order, stack, ts, signs)
-        if m > cap:
-            ts = np.empty(m)
-            signs = np.empty(m, np.int64)
+        if m > ts.shape[0]:  # more hits than room: grow and trace again
+            ts = np.empty(2 * m)
+            signs = np.empty(2 * m, np.int64)
             m = _ray_hits(O[r], D[r], V, F, lo, hi, left, start, count, order, stack, ts, signs)
         need[r] = _intervals_of(ts, signs, m, out, r)
+
+
+#: Rays per task when a call holds many (the kernels release the GIL: tasks run on several cores).
+RAY_CHUNK = 16384
+
+
+def _traced(O: Any, D: Any, V: Any, F: Any, bvh: tuple[NDArray[np.float64], ...], out: Any, need: Any) -> None:
+    """:func:`_all_intervals` over blocks of rays, on a thread pool when there are several blocks."""
+    lo, hi, left, start, count, order = bvh
+    n = O.shape[0]
+    blocks = [(s, min(s + RAY_CHUNK, n)) for s in range(0, n, RAY_CHUNK)]
+
+    def run(block: tuple[int, int]) -> None:
+        a, b = block
+        _all_intervals(O[a:b], D[a:b], V, F, lo, hi, left, start, count, order, out[a:b], need[a:b])
+
+    if len(blocks) <= 1:
+        for block in blocks:
+            run(block)
+        return
+    from concurrent.futures import ThreadPoolExecutor
+
+    with ThreadPoolExecutor(max_workers=min(len(blocks), os.cpu_count() or 1)) as pool:
+        list(pool.map(run, blocks))
 
 
 def bvh_ray_intervals(
@@ -248,17 +271,14 @@ def bvh_ray_intervals(
     n = len(origins)
     O = np.ascontiguousarray(origins, np.float64)
     D = np.ascontiguousarray(directions, np.float64)
-    lo, hi, left, start, count, order = bvh
     out = np.full((n, max(width, 1), 2), np.nan)
     need = np.zeros(n, np.int64)
-    if n:
-        _all_intervals(O, D, vertices, faces, lo, hi, left, start, count, order, out, need)
+    _traced(O, D, vertices, faces, bvh, out, need)
     most = int(need.max()) if n else 0
     if most > out.shape[1]:  # some rays need more columns: those rays again, wider
         rows = np.nonzero(need > out.shape[1])[0]
         wide = np.full((len(rows), most, 2), np.nan)
-        _all_intervals(O[rows], D[rows], vertices, faces, lo, hi, left, start, count, order, wide,
-                       np.zeros(len(rows), np.int64))
+        _traced(O[rows], D[rows], vertices, faces, bvh, wide, np.zeros(len(rows), np.int64))
         grown = np.full((n, most, 2), np.nan)
         grown[:, : out.shape[1]] = out
         grown[rows] = wide
