@@ -89,3 +89,17 @@ def test_many_faces_render_as_one_part(monkeypatch) -> None:
     assert len(mesh.faces) > 8
     for light in LIGHTS:
         _check(Scene(CAM_COMB, [light], [mesh]), Scene(CAM_COMB, [light], [COMB_BOXES]))
+
+
+@pytest.mark.parametrize("csg", ["minus", "or"])
+def test_comb_mesh_in_csg_through_screen_tiles(csg, monkeypatch) -> None:
+    """The same through the tiled path (screen tiles, groups of equal leaves, layers per tile)."""
+    from isocsg.rendering import policy
+
+    monkeypatch.setattr(policy, "DENSE_MAX_LEAVES", 0)
+    ball = Sphere((3.0, 2.2, 0.6), 1.1)
+    mesh = COMB_MESH - ball if csg == "minus" else COMB_MESH | ball
+    boxes = COMB_BOXES - ball if csg == "minus" else COMB_BOXES | ball
+    image = isocsg.Renderer(csg="pixel").render(Scene(CAM_COMB, LIGHTS[1:], [mesh]), contours=64).image
+    result = compare(image, raycast_scene(Scene(CAM_COMB, LIGHTS[1:], [boxes])))
+    assert result.iou >= 0.995 and result.fraction >= 0.99 and result.mean_error <= 0.01, result
