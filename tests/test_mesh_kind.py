@@ -341,3 +341,18 @@ def test_value_semantics_scene_files_and_openscad_text() -> None:
     cube = TriangleMesh(*grid_box(2))
     (piece,) = cube.convex_pieces()
     assert math.isclose(piece.volume, 8.0, rel_tol=1e-12)
+
+
+def test_scene_files_read_meshes_and_name_their_errors() -> None:
+    import json
+
+    from isocsg import SceneFileError
+
+    V, F = _tetra()
+    mesh = TriangleMesh(V, F)
+    doc = {"camera": {"eye": [3, 3, 3], "target": [0, 0, 0]}, "lights": [{"kind": "directional", "direction": [0, 0, 1]}],
+           "objects": [{"shape": mesh.to_dict()}]}
+    assert isocsg.loads_scene(json.dumps(doc), format="json").objects[0].shape == mesh
+    doc["objects"][0]["shape"]["mesh"]["faces"][0] = [0, 1, 2]
+    with pytest.raises(SceneFileError, match=re.escape("objects[0].shape.mesh.faces: are not consistently oriented")):
+        isocsg.loads_scene(json.dumps(doc), format="json")

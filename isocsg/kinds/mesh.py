@@ -104,7 +104,7 @@ def _check_closed(F: NDArray[np.int64]) -> None:
         e = int(uniq[np.argmax(counts > 1)])
         raise InvalidGeometryError(
             f"TriangleMesh.faces are not consistently oriented or not manifold: the edge {e // n} -> {e % n} "
-            "is used by more than one face in the same direction (TriangleMesh.repaired can fix the orientation)")
+            "is used by more than one face in the same direction (the constructor repaired() can fix the orientation)")
     rev = b * n + a
     at = np.minimum(np.searchsorted(uniq, rev), len(uniq) - 1)  # uniq is sorted
     missing = uniq[at] != rev
@@ -112,7 +112,7 @@ def _check_closed(F: NDArray[np.int64]) -> None:
         k = int(np.argmax(missing))
         raise InvalidGeometryError(
             f"TriangleMesh.faces are not closed (watertight): the edge {int(a[k])} -> {int(b[k])} of face {k // 3} "
-            "has no face on its other side (TriangleMesh.repaired can fill holes)")
+            "has no face on its other side (the constructor repaired() can fill holes)")
 
 
 def _signed_volume(V: NDArray[np.float64], F: NDArray[np.int64]) -> float:
