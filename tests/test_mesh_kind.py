@@ -356,3 +356,19 @@ def test_scene_files_read_meshes_and_name_their_errors() -> None:
     doc["objects"][0]["shape"]["mesh"]["faces"][0] = [0, 1, 2]
     with pytest.raises(SceneFileError, match=re.escape("objects[0].shape.mesh.faces: are not consistently oriented")):
         isocsg.loads_scene(json.dumps(doc), format="json")
+
+
+def test_self_intersecting_meshes_are_refused() -> None:
+    """Two overlapping boxes in one mesh (each closed and outward): their faces cross. A sphere-like
+    mesh whose north pole is pushed out through its south: the pole's fan crosses the south cap."""
+    V, F = grid_box(1)
+    F2 = np.vstack([F, F + len(V)])
+    with pytest.raises(InvalidGeometryError, match=re.escape("TriangleMesh.faces intersect themselves: the edge")):
+        TriangleMesh(np.vstack([V, V + 0.5]), F2)
+    # apart, the two boxes are one valid mesh of two shells
+    assert math.isclose(TriangleMesh(np.vstack([V, V + 3.0]), F2).volume, 16.0, rel_tol=1e-13)
+    S, G = star_mesh(np.full(5 * 8 + 2, 1.0), 6, 8)
+    TriangleMesh(S, G)
+    S[0] = (0.05, 0.02, -1.6)
+    with pytest.raises(InvalidGeometryError, match="intersect themselves"):
+        TriangleMesh(S, G)

@@ -7,10 +7,10 @@ counter-clockwise seen from outside). It is what OpenSCAD's ``import()`` of STL,
 **Validity** (checked on construction, else :class:`~isocsg.errors.InvalidGeometryError`
 naming the problem): finite coordinates, face indices in range, no face that repeats a vertex,
 every directed edge used once and its reverse once (closed, edge-manifold and consistently
-oriented), and a positive volume (outward orientation). Self-intersections are not detected:
-the solid is then read as the points of positive winding number (the union of its shells) by
-rays and membership, while the volume (divergence theorem) counts overlaps twice. A mesh that
-fails can be repaired on request (:meth:`TriangleMesh.repaired`: trimesh merges duplicate
+oriented), a positive volume (outward orientation), and no self-intersection: no edge passes
+through a face that does not share one of its ends (every pair of crossing triangles has such an
+edge; two faces overlapping within one plane are not detected). A mesh that fails (except for a
+self-intersection) can be repaired on request (:meth:`TriangleMesh.repaired`: trimesh merges duplicate
 vertices, drops degenerate and duplicate faces, fills holes and makes the winding consistent
 and outward); the repaired mesh is checked again.
 
@@ -177,6 +177,10 @@ class TriangleMesh(Primitive):
             raise InvalidGeometryError(
                 f"TriangleMesh must have a positive volume (faces counter-clockwise seen from outside), got {vol:g}"
                 + (" (its faces wind inwards: reverse them)" if vol < 0 else ""))
+        object.__setattr__(self, "_bvh", None)
+        object.__setattr__(self, "vertices", V)
+        object.__setattr__(self, "faces", F)
+        self._check_crossings()
         cross = np.cross(V[F[:, 1]] - V[F[:, 0]], V[F[:, 2]] - V[F[:, 0]])
         norm = np.linalg.norm(cross, axis=1)
         normals = cross / np.where(norm > 0, norm, 1.0)[:, None]
@@ -188,7 +192,21 @@ class TriangleMesh(Primitive):
         object.__setattr__(self, "max_intervals", len(F) // 2)
         object.__setattr__(self, "_volume", vol)
         object.__setattr__(self, "_digest", hashlib.blake2b(V.tobytes() + b"|" + F.tobytes(), digest_size=16).digest())
-        object.__setattr__(self, "_bvh", None)
+
+    def _check_crossings(self) -> None:
+        """Refuse a mesh with an edge through a face that does not share its ends (a self-intersection;
+        :func:`~isocsg.kinds.mesh_bvh.bvh_edge_crossing`)."""
+        from .mesh_bvh import bvh_edge_crossing
+
+        F = self.faces
+        e = np.concatenate([F[:, [0, 1]], F[:, [1, 2]], F[:, [2, 0]]])
+        e = e[e[:, 0] < e[:, 1]]  # each edge once (its reverse belongs to the neighbouring face)
+        k, face = bvh_edge_crossing(self.bvh, self.vertices, F, e)
+        if k >= 0:
+            a, b = (int(x) for x in e[k])
+            raise InvalidGeometryError(
+                f"TriangleMesh.faces intersect themselves: the edge {a} -> {b} passes through face {face} "
+                f"{F[face].tolist()} (a self-intersecting mesh is not a valid solid; repair cannot fix it)")
 
     # ------------------------------------------------------------ value semantics
     def __eq__(self, other: object) -> bool:

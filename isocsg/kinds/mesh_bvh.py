@@ -34,7 +34,8 @@ import numpy as np
 from numba import njit
 from numpy.typing import NDArray
 
-__all__ = ["BOX_PADDING", "LEAF_SIZE", "build_bvh", "bvh_ray_intervals", "bvh_nearest", "bvh_winding_parity"]
+__all__ = ["BOX_PADDING", "LEAF_SIZE", "bvh_edge_crossing", "build_bvh", "bvh_ray_intervals", "bvh_nearest",
+           "bvh_winding_parity"]
 
 #: Triangles per leaf of the hierarchy at most.
 LEAF_SIZE = 4
@@ -396,3 +397,87 @@ def bvh_winding_parity(
     iv = bvh_ray_intervals(bvh, vertices, faces, points, d)
     with np.errstate(invalid="ignore"):
         return np.any((iv[:, :, 0] <= 0.0) & (iv[:, :, 1] >= 0.0), axis=1)  # type: ignore[no-any-return]
+
+
+@njit(cache=True, nogil=True)
+def _segment_box(p: Any, d: Any, lo: Any, hi: Any, node: Any) -> Any:
+    """Whether the segment ``p + t d``, ``0 <= t <= 1``, meets the node's box."""
+    t0 = 0.0
+    t1 = 1.0
+    for k in range(3):
+        if d[k] == 0.0:
+            if p[k] < lo[node, k] or p[k] > hi[node, k]:
+                return False
+            continue
+        a = (lo[node, k] - p[k]) / d[k]
+        b = (hi[node, k] - p[k]) / d[k]
+        if a > b:
+            a, b = b, a
+        t0 = max(t0, a)
+        t1 = min(t1, b)
+    return t0 <= t1
+
+
+@njit(cache=True, nogil=True)
+def _edge_crossings(V: Any, F: Any, E: Any, lo: Any, hi: Any, left: Any, start: Any, count: Any, order: Any,
+                    tol: Any) -> Any:
+    """The first edge ``E[i] = (a, b)`` that passes through a face without either end (Moller-Trumbore,
+    ``tol < t < 1 - tol``, edges of the face inclusive): ``(i, face)``, or ``(-1, -1)``."""
+    stack = np.empty(256, np.int64)
+    d = np.empty(3)
+    for i in range(E.shape[0]):
+        a, b = E[i, 0], E[i, 1]
+        p = V[a]
+        for k in range(3):
+            d[k] = V[b, k] - p[k]
+        top = 1
+        stack[0] = 0
+        while top > 0:
+            top -= 1
+            node = stack[top]
+            if not _segment_box(p, d, lo, hi, node):
+                continue
+            if left[node] >= 0:
+                stack[top] = left[node]
+                stack[top + 1] = left[node] + 1
+                top += 2
+                continue
+            for j in range(start[node], start[node] + count[node]):
+                f = order[j]
+                if F[f, 0] == a or F[f, 1] == a or F[f, 2] == a or F[f, 0] == b or F[f, 1] == b or F[f, 2] == b:
+                    continue
+                v0, v1, v2 = V[F[f, 0]], V[F[f, 1]], V[F[f, 2]]
+                e1x, e1y, e1z = v1[0] - v0[0], v1[1] - v0[1], v1[2] - v0[2]
+                e2x, e2y, e2z = v2[0] - v0[0], v2[1] - v0[1], v2[2] - v0[2]
+                px, py, pz = d[1] * e2z - d[2] * e2y, d[2] * e2x - d[0] * e2z, d[0] * e2y - d[1] * e2x
+                det = e1x * px + e1y * py + e1z * pz
+                if det == 0.0:
+                    continue  # the edge is parallel to the face's plane
+                inv = 1.0 / det
+                sx, sy, sz = p[0] - v0[0], p[1] - v0[1], p[2] - v0[2]
+                u = (sx * px + sy * py + sz * pz) * inv
+                if u < 0.0 or u > 1.0:
+                    continue
+                qx, qy, qz = sy * e1z - sz * e1y, sz * e1x - sx * e1z, sx * e1y - sy * e1x
+                v = (d[0] * qx + d[1] * qy + d[2] * qz) * inv
+                if v < 0.0 or u + v > 1.0:
+                    continue
+                t = (e2x * qx + e2y * qy + e2z * qz) * inv
+                if tol < t < 1.0 - tol:
+                    return i, f
+    return -1, -1
+
+
+def bvh_edge_crossing(
+    bvh: tuple[NDArray[np.float64], ...], vertices: NDArray[np.float64], faces: NDArray[np.int64],
+    edges: NDArray[np.int64], tol: float = 1e-9,
+) -> tuple[int, int]:
+    """An edge that passes through a face not incident to it, ``(edge row, face)``, or ``(-1, -1)``.
+
+    Two triangles that cross (not in one plane) meet in a segment whose ends lie on edges, so every
+    such pair has an edge of one through the other: this finds every transversal self-intersection
+    of a mesh (faces overlapping within one plane are not seen)."""
+    lo, hi, left, start, count, order = bvh
+    i, f = _edge_crossings(vertices, faces, np.ascontiguousarray(edges, np.int64), lo, hi, left, start, count, order,
+                           float(tol))
+    return int(i), int(f)
