@@ -23,6 +23,10 @@ Each hit carries a sign, +1 where the ray enters (its direction against the face
 normal) and -1 where it leaves. Sorted by depth, the running sum is the winding number of the
 ray's points; intervals are where it is positive (for a valid mesh it is 0 or 1: parity).
 Touching intervals (one ends where the next begins) are merged and empty ones dropped.
+
+Points (:func:`bvh_nearest`) find their nearest triangle exactly (Ericson's closest point on a
+triangle, nearer boxes first); edges (:func:`bvh_edge_crossing`) find a face they pass through,
+the mesh's self-intersection test.
 """
 
 from __future__ import annotations
