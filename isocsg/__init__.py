@@ -25,6 +25,7 @@ _EXPORTS: dict[str, str] = {
     **dict.fromkeys(["Solid", "Primitive", "RayHits", "Sphere", "Truncus", "Cylinder", "Cone", "Box", "ConvexPolyhedron",
                      "Ellipsoid", "EllipticTruncus"], ".kinds"),
     "Torus": ".kinds",
+    "TriangleMesh": ".kinds",
     "extrude": ".csg.extrude",
     **dict.fromkeys(["hull", "minkowski"], ".csg.hull"),
     **dict.fromkeys(["PointLight", "DirectionalLight", "Material", "shade"], ".lighting"),
@@ -122,6 +123,7 @@ __all__ = [
     "Solid",
     "Sphere",
     "Torus",
+    "TriangleMesh",
     "Truncus",
     "Union",
     "Union2D",
@@ -284,6 +286,7 @@ if TYPE_CHECKING:  # what the names are, for type checkers and editors
         Solid,
         Sphere,
         Torus,
+        TriangleMesh,
         Truncus,
     )
     from .laminae import BandMesh, Lamina, LaminaSet, build_laminae

@@ -220,8 +220,7 @@ UNSUPPORTED = [
     ("minkowski", "minkowski() {\n  cube(size = 1);\n  cylinder(h = 1, r1 = 0.1, r2 = 0);\n}"),
     ("rotate_extrude", "rotate_extrude(angle = 360, convexity = 2) {\n  square(size = 1);\n}"),
     ("roof", "linear_extrude(height = 1) {\n  roof() {\n    square(size = 1);\n  }\n}"),
-    ("import", "import(file = \"part.stl\", layer = \"\", origin = [0, 0], scale = 1);"),
-    ("surface", "surface(file = \"h.dat\", center = false, invert = false);"),
+    ("import", "import(file = \"part.dxf\", layer = \"\", origin = [0, 0], scale = 1);"),
     ("projection", "linear_extrude(height = 1) {\n  projection(cut = false) {\n    sphere(r = 1);\n  }\n}"),
     ("fill", "fill() {\n  cube(size = 1);\n}"),
     ("resize", "resize(newsize = [2, 2, 2]) {\n  sphere(r = 1);\n}"),
@@ -249,13 +248,6 @@ SPECIAL = [
     ("twist", "linear_extrude(height = 1, twist = 90, slices = 10) {\n  square(size = 1);\n}", "linear_extrude", "a twisted extrusion (twist = 90)"),
     ("scale", "linear_extrude(height = 1, scale = [2, 1]) {\n  circle(r = 1);\n}", "linear_extrude", "linear_extrude.scale must be uniform for a circle"),
     ("twist", "linear_extrude(height = 1, twist = 90) {\n  square(size = 1);\n}", "linear_extrude", "a twisted extrusion (twist = 90)"),
-    (
-        "non-convex polyhedron",
-        "polyhedron(points = [[0, 0, 0], [2, 0, 0], [2, 2, 0], [0, 2, 0], [1, 1, 0.5], [0, 0, 2], [2, 0, 2], [2, 2, 2], [0, 2, 2]],\n"
-        "  faces = [[0, 1, 4], [1, 2, 4], [2, 3, 4], [3, 0, 4], [5, 8, 7, 6], [0, 5, 6, 1], [1, 6, 7, 2], [2, 7, 8, 3], [3, 8, 5, 0]]);",
-        "polyhedron",
-        "a non-convex polyhedron is not an isocsg primitive",
-    ),
 ]
 
 

@@ -6,7 +6,8 @@
   :mod:`~isocsg.kinds.sphere`, :mod:`~isocsg.kinds.truncus` (with cylinder and cone),
   :mod:`~isocsg.kinds.box`, :mod:`~isocsg.kinds.polyhedron`,
   :mod:`~isocsg.kinds.ellipsoid`, :mod:`~isocsg.kinds.elliptic`,
-  :mod:`~isocsg.kinds.torus` (the first non-convex kind);
+  :mod:`~isocsg.kinds.torus` (the first non-convex kind), :mod:`~isocsg.kinds.mesh` (closed
+  triangle meshes);
 - helpers the kinds share: :mod:`~isocsg.kinds.planar` (plane sections),
   :mod:`~isocsg.kinds.meshing` (manifold3d), :mod:`~isocsg.kinds.scad` (OpenSCAD text).
 
@@ -24,6 +25,7 @@ from .polyhedron import ConvexPolyhedron
 from .ellipsoid import Ellipsoid
 from .elliptic import EllipticTruncus
 from .torus import Torus
+from .mesh import TriangleMesh
 
 __all__ = [
     "DEFAULT_RESOLUTION",
@@ -41,6 +43,7 @@ __all__ = [
     "Solid",
     "Sphere",
     "Torus",
+    "TriangleMesh",
     "Truncus",
     "kind_named",
     "kind_of",

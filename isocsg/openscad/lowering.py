@@ -5,7 +5,9 @@ What each node becomes (``docs/openscad.md`` has the table and the reasons):
 - ``cube(size, center)`` -> :class:`~isocsg.Box` (of any aspect); ``sphere(r)`` ->
   :class:`~isocsg.Sphere`; ``cylinder(h, r1, r2, center)`` -> :class:`~isocsg.Truncus` (a
   cylinder, cone or frustum); a convex ``polyhedron(points, faces)`` ->
-  :class:`~isocsg.ConvexPolyhedron`. Without ``$fn``, or with ``$fn`` above
+  :class:`~isocsg.ConvexPolyhedron`, a non-convex one -> :class:`~isocsg.TriangleMesh`;
+  ``import(file)`` of an STL, OFF, OBJ, PLY or 3MF mesh (relative to the model file's directory)
+  and ``surface(file, center, invert)`` (OpenSCAD's height-map solid) -> a ``TriangleMesh``. Without ``$fn``, or with ``$fn`` above
   :data:`~isocsg.openscad.flat.FN_MAX` (64), spheres, cylinders and circles are the exact round
   solids; an explicit ``$fn`` from 1 to 64 makes OpenSCAD's own polygonal solid (a hexagonal
   prism, a pyramid, OpenSCAD's polyhedral sphere) as a ``ConvexPolyhedron`` with OpenSCAD's
@@ -26,9 +28,9 @@ What each node becomes (``docs/openscad.md`` has the table and the reasons):
   through :mod:`isocsg.shapes2d`): ``square``, ``circle``, ``polygon`` (non-convex, holes),
   ``text``, ``offset``, 2D Booleans, transforms and hulls of polygons.
 
-Nodes without an exact equivalent (the ``hull`` and ``minkowski`` that are not exact, ``rotate_extrude``,
-twisted extrusions, ``import``, ``surface``, ``projection``, ``resize``, non-convex polyhedra and
-unknown modules) raise :class:`~isocsg.errors.UnsupportedOpenSCADError` naming the node and its
+Nodes without an exact equivalent (the ``hull`` and ``minkowski`` that are not exact, 2D ``import`` of
+SVG drawings, ``projection``, ``resize`` and unknown modules) raise
+:class:`~isocsg.errors.UnsupportedOpenSCADError` naming the node and its
 line, or are skipped when ``skip_unsupported=True``: :attr:`LoweredModel.skipped` counts them
 and :attr:`LoweredModel.left_out` names each (line and reason). Objects that OpenSCAD itself
 renders as nothing (a zero size, a zero radius, a singular matrix) are empty and are dropped
@@ -43,6 +45,7 @@ import math
 import warnings
 from collections import Counter
 from dataclasses import dataclass
+from pathlib import Path
 from typing import Any
 
 import numpy as np
@@ -52,6 +55,7 @@ from .._validation import parse_color
 from ..csg import Difference, Intersection, Union
 from ..errors import InvalidGeometryError, InvalidParameterError, NotExactError, OpenSCADError, UnsupportedOpenSCADError
 from ..kinds import Box, ConvexPolyhedron, Cylinder, Solid, Sphere, Truncus
+from ..kinds.mesh_io import MESH_SUFFIXES, height_map, polygon_mesh, read_height_map, read_mesh
 from .flat import MixedDimensionsWarning, cylinder_points, extrude, polygonal_sides, sphere_points
 from .parser import CSGCall
 
@@ -60,8 +64,6 @@ __all__ = ["lower", "LoweredModel", "UNSUPPORTED_NODES"]
 #: OpenSCAD modules that have no exact isocsg equivalent, with the reason given in errors.
 UNSUPPORTED_NODES: dict[str, str] = {
     "rotate_extrude": "surfaces of revolution other than spheres and cones are not isocsg primitives",
-    "import": "meshes and drawings from other files are not read",
-    "surface": "height maps are not read",
     "projection": "projections to 2D are not solids",
     "resize": "resize depends on the tessellated bounds",
     "roof": "roofs are not supported",
@@ -71,7 +73,7 @@ UNSUPPORTED_NODES: dict[str, str] = {
 _UNION_LIKE = {"union", "group", "render", "color"}
 _BOOLEANS = _UNION_LIKE | {"difference", "intersection", "hull", "minkowski"}
 
-_LEAVES_3D = {"cube", "sphere", "cylinder", "polyhedron"}
+_LEAVES_3D = {"cube", "sphere", "cylinder", "polyhedron", "import", "surface"}
 _LEAVES_2D = {"square", "circle", "polygon"}
 
 
@@ -281,9 +283,43 @@ class _Lowerer:
         planar = np.all(np.abs(used @ hull.face_normals.T - hull.face_offsets).min(axis=1) <= off + 1e-9 * max(scale, 1.0))
         # a face off its plane by `off` encloses at most `off` x the hull's area (< 6 scale^2) more or less
         if not planar or abs(abs(enclosed) - hull.volume) > 6 * off * scale**2 + 1e-9 * max(hull.volume, scale**3):
-            self.unsupported(call, "a non-convex polyhedron is not an isocsg primitive; split it into convex ones")
-            return None
+            return self.make(call, polygon_mesh, pts, faces)  # non-convex: a closed triangle mesh
         return hull
+
+    def model_file(self, call: CSGCall, name: str) -> Path:
+        """A file named by the node, relative to the model file's directory (the working directory
+        for a model without one)."""
+        value = self.arg(call, "file", 0, None)
+        if not isinstance(value, str) or not value:
+            raise self.fail(call, f"{name} must be a file name, got {_show(value)}")
+        p = Path(value)
+        if not p.is_absolute() and self.source:
+            p = Path(self.source).parent / p
+        if not p.is_file():
+            raise self.fail(call, f"{name} {value!r} not found (looked for {str(p)!r})")
+        return p
+
+    def import_file(self, call: CSGCall) -> Solid | None:
+        """``import(file)`` of a mesh (``convexity`` and ``layer`` do not matter to a mesh)."""
+        value = self.arg(call, "file", 0, None)
+        suffix = Path(value).suffix.lower() if isinstance(value, str) else ""
+        if isinstance(value, str) and suffix not in MESH_SUFFIXES:
+            self.unsupported(call, f"only 3D meshes ({', '.join(MESH_SUFFIXES)}) are imported, not {suffix or value!r}")
+            return None
+        return self.make(call, read_mesh, self.model_file(call, "file"))
+
+    def surface(self, call: CSGCall) -> Solid | None:
+        """``surface(file, center, invert)``: OpenSCAD's height-map solid (:func:`~isocsg.kinds.mesh_io.height_map`)."""
+        p = self.model_file(call, "file")
+        center = self.boolean(call, "center", self.arg(call, "center", 1, False))
+        invert = self.boolean(call, "invert", call.kwargs.get("invert", False))
+        try:
+            heights, base = read_height_map(p, invert=invert)
+        except InvalidGeometryError as exc:
+            raise self.fail(call, str(exc)) from None
+        if heights.shape[0] < 2 or heights.shape[1] < 2:
+            return None  # OpenSCAD makes no solid of a single line
+        return self.make(call, lambda: height_map(heights, center=center, base=base))
 
 
 def _show(value: Any, limit: int = 60) -> str:
@@ -542,7 +578,7 @@ def _enter(lw: _Lowerer, call: CSGCall, m: NDArray[np.float64] | None) -> tuple[
     if name == "linear_extrude":
         return _placed(lw, call, extrude(lw, call), m), m, False
     if name in _LEAVES_3D:
-        return _placed(lw, call, getattr(lw, name)(call), m), m, False
+        return _placed(lw, call, getattr(lw, "import_file" if name == "import" else name)(call), m), m, False
     lw.unsupported(call, "unknown module")
     return None, m, False
 

@@ -31,8 +31,9 @@ __all__ = ["layer_counts", "expand_program", "leaf_layers"]
 
 
 def layer_counts(leaves: Sequence[Any]) -> NDArray[np.int64] | None:
-    """Each leaf's most intervals per ray (its kind's ``max_intervals``), or None if every leaf
-    has one (the common case: nothing changes)."""
+    """Each leaf's most intervals per ray (its ``max_intervals``), or None if every leaf has one (the
+    common case: nothing changes). The layers built are as many as the rays at hand need
+    (:meth:`~isocsg.kinds.base.Primitive.ray_intervals` may return fewer columns than this bound)."""
     if not any(getattr(kind, "max_intervals", 1) > 1 for kind in set(map(type, leaves))):
         return None
     return np.fromiter((getattr(leaf, "max_intervals", 1) for leaf in leaves), np.int64, len(leaves))
@@ -61,20 +62,31 @@ def expand_program(
 
 
 class _BandValues:
-    """A band mesh's values at surface points: those of the nearest triangle (by centroid)."""
+    """A band mesh's values at surface points: those of the nearest triangle (by centroid), or, for a
+    kind whose band surface is its surface (``flat_bands``: a triangle mesh's faces), of the
+    triangle nearest the point exactly (a centroid can lie nearer a neighbouring face's point)."""
 
-    def __init__(self, mesh: PreparedMesh) -> None:
-        from scipy.spatial import cKDTree  # on first use: objects without such a leaf never load it
-
+    def __init__(self, mesh: PreparedMesh, exact: bool = False) -> None:
         tri = mesh.triangles
-        self.tree = cKDTree(mesh.vertices[tri].mean(axis=1))
         self.value_out = mesh.value_out
         self.value_in = mesh.value_in
+        if exact:
+            from ..kinds.mesh_bvh import build_bvh, bvh_nearest
+
+            v = np.ascontiguousarray(mesh.vertices, np.float64)
+            t = np.ascontiguousarray(tri, np.int64)
+            bvh = build_bvh(v, t)
+            self.nearest = lambda p: bvh_nearest(bvh, v, t, p)[1]
+            return
+        from scipy.spatial import cKDTree  # on first use: objects without such a leaf never load it
+
+        tree = cKDTree(mesh.vertices[tri].mean(axis=1))
+        self.nearest = lambda p: tree.query(p)[1]
 
     def at(self, points: NDArray[np.float64], outward: bool) -> NDArray[np.float32]:
         if not len(points):
             return np.zeros(0, np.float32)
-        _, k = self.tree.query(points)
+        k = self.nearest(points)
         return (self.value_out if outward else self.value_in)[k].astype(np.float32)
 
 
@@ -88,7 +100,7 @@ def leaf_layers(
     norm = np.linalg.norm(directions, axis=1)
     unit = directions / norm[:, None]
     iv = np.asarray(leaf.ray_intervals(origins, unit), np.float64)
-    values = _BandValues(mesh)
+    values = _BandValues(mesh, bool(getattr(leaf, "flat_bands", False)))
     layers = []
     for j in range(iv.shape[1]):
         # Parameters along unit directions; the camera depth is t over the direction's length.
@@ -117,17 +129,23 @@ def resolve_dense_layers(
 
     ox, oy, x1, y1 = obj.rect
     w, h = x1 - ox, y1 - oy
+    rays = PixelRays(rp.cam)
+    # a leaf's layers are as many as its rays here need (a mesh: up to len(faces) // 2, rarely many)
+    layered = {i: leaf_layers(obj.leaves[i], meshes[i], rays, oy, ox, h, w, float(obj.nears[i]))
+               for i in range(len(counts)) if counts[i] > 1}
+    counts = counts.copy()
+    for i, layers in layered.items():
+        counts[i] = len(layers)
     op, arg, owner, first = expand_program(obj.program.op, obj.program.arg, counts)
     m = len(owner)
     filled: list[NDArray[Any]] = list(bufs)
     out = [np.empty((m, h * w), b.dtype) for b in filled]
-    rays = PixelRays(rp.cam)
     for i in range(len(counts)):
-        if counts[i] == 1:
+        if i not in layered:
             for dst, b in zip(out, filled):
                 dst[first[i]] = b[i].reshape(-1)
             continue
-        for j, layer in enumerate(leaf_layers(obj.leaves[i], meshes[i], rays, oy, ox, h, w, float(obj.nears[i]))):
+        for j, layer in enumerate(layered[i]):
             for o, x in zip(out, layer):
                 o[first[i] + j] = x
     lr0, lc0 = np.full(m, oy, np.int64), np.full(m, ox, np.int64)

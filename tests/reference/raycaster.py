@@ -24,6 +24,9 @@ itself:
   at grazing incidence) from where the ray enters the bounding sphere of radius
   ``R + r`` to where it leaves it, each sign change bisected to the last bit; its up
   to two intervals are two leaves of a union in the tree (disjoint intervals),
+- a closed triangle mesh (``TriangleMesh.vertices/.faces``) by brute force over its triangles
+  (:mod:`reference.mesh`: Moller-Trumbore, hits paired by parity); its first ``MESH_LAYERS``
+  intervals are leaves of a union in the tree,
 - CSG by interval arithmetic: the boundary events of all leaves are sorted
   along each ray and the tree is evaluated on every segment between them; the
   visible point is the start of the first non-empty segment inside the result,
@@ -73,8 +76,9 @@ from isocsg import (
     Truncus,
     Union,
 )
-from isocsg.kinds import Torus
+from isocsg.kinds import Torus, TriangleMesh
 
+from .mesh import MESH_LAYERS, mesh_intervals
 from .torus import torus_intervals, torus_trace
 
 __all__ = [
@@ -393,7 +397,7 @@ def primitive_intervals(primitive: Any, origins: Any, directions: Any) -> Interv
 # ----------------------------------------------------------------------------- leaves
 
 
-_SPHERE, _TRUNCUS, _BOX, _POLY, _LOCAL, _TORUS = 0, 1, 2, 3, 4, 5
+_SPHERE, _TRUNCUS, _BOX, _POLY, _LOCAL, _TORUS, _MESH = 0, 1, 2, 3, 4, 5, 6
 
 
 @dataclass(frozen=True)
@@ -452,6 +456,9 @@ class _Leaf:
         if isinstance(p, ConvexPolyhedron):
             pts = np.asarray(p.vertices, dtype=np.float64)
             return _Leaf(_POLY, (p,), pts.min(axis=0), pts.max(axis=0))
+        if isinstance(p, TriangleMesh):  # its interval 0; read_tree adds the others
+            V, F = np.asarray(p.vertices, dtype=np.float64), np.asarray(p.faces, dtype=np.int64)
+            return _Leaf(_MESH, (V, F, 0), V.min(axis=0), V.max(axis=0))
         raise TypeError(f"unsupported primitive {type(p).__name__}")
 
 
@@ -507,6 +514,16 @@ def _torus_leaf(params: tuple[Any, ...], o: F64, d: F64) -> Intervals:
     return _finish(np.where(hit, t_in, np.inf), np.where(hit, t_out, -np.inf), n_in, n_out, zero, zero)
 
 
+def _mesh_leaf(params: tuple[Any, ...], o: F64, d: F64) -> Intervals:
+    """Interval ``k`` of a triangle mesh (``params = (V, F, k)``, :func:`reference.mesh.mesh_intervals`);
+    the part is the face hit (modulo the parts' bound)."""
+    V, F, k = params
+    t_in, t_out, n_in, n_out, f_in, f_out = mesh_intervals(V, F, o, d)
+    hit = np.isfinite(t_in[:, k])
+    return _finish(np.where(hit, t_in[:, k], np.inf), np.where(hit, t_out[:, k], -np.inf), n_in[:, k], n_out[:, k],
+                   f_in[:, k] % _MAX_PARTS, f_out[:, k] % _MAX_PARTS)
+
+
 def _batch_intervals(leaves: Sequence[_Leaf], o: F64, d: F64) -> Intervals:
     """Intervals of every leaf against every ray: arrays (k, n), rows in the order of ``leaves``."""
     k, n = len(leaves), len(o)
@@ -535,6 +552,8 @@ def _batch_intervals(leaves: Sequence[_Leaf], o: F64, d: F64) -> Intervals:
             ivs = [(np.array([r]), _local_intervals(g.params, o, d)) for r, g in zip(rows.tolist(), group)]
         elif kind == _TORUS:
             ivs = [(np.array([r]), _torus_leaf(g.params, o, d)) for r, g in zip(rows.tolist(), group)]
+        elif kind == _MESH:
+            ivs = [(np.array([r]), _mesh_leaf(g.params, o, d)) for r, g in zip(rows.tolist(), group)]
         else:
             ivs = []
             for r, g in zip(rows.tolist(), group):
@@ -618,6 +637,12 @@ def read_tree(solid: Any) -> _Tree:
             op.extend([OP_LEAF, OP_LEAF, OP_UNION])
             arg.extend([len(leaves), len(leaves) + 1, 2])
             leaves.extend([first, second])
+            continue
+        if kind == OP_LEAF and isinstance(item, TriangleMesh):  # MESH_LAYERS intervals: a union of leaves
+            first = _Leaf.of(item)
+            op.extend([OP_LEAF] * MESH_LAYERS + [OP_UNION])
+            arg.extend([len(leaves) + j for j in range(MESH_LAYERS)] + [MESH_LAYERS])
+            leaves.extend(_Leaf(_MESH, first.params[:2] + (j,), first.lo, first.hi) for j in range(MESH_LAYERS))
             continue
         if kind == OP_LEAF:
             leaf = seen.get(id(item))

@@ -1,0 +1,229 @@
+"""Triangle meshes from files, from polygon faces and from height maps.
+
+- :func:`read_mesh`: STL, OFF, OBJ, PLY and 3MF through trimesh (3MF also needs the ``mesh``
+  extra: networkx and lxml), every body of the file in one mesh (duplicate vertices merged, as
+  OpenSCAD merges them);
+- :func:`polygon_mesh`: the faces of an OpenSCAD ``polyhedron`` (planar polygons, convex or not,
+  clockwise seen from outside as OpenSCAD wants them) triangulated without new vertices;
+- :func:`height_map`, :func:`read_height_map`: OpenSCAD's ``surface()`` exactly as its
+  ``SurfaceNode.cc`` builds it (see :func:`height_map`).
+"""
+
+from __future__ import annotations
+
+import os
+from pathlib import Path
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from ..errors import InvalidGeometryError, MissingDependencyError
+from .mesh import TriangleMesh
+
+__all__ = ["MESH_SUFFIXES", "read_mesh", "polygon_mesh", "height_map", "read_height_map", "MAX_HEIGHT_MAP_CELLS"]
+
+#: The file types :func:`read_mesh` reads.
+MESH_SUFFIXES = (".stl", ".off", ".obj", ".ply", ".3mf")
+
+#: The most cells a height map may have (OpenSCAD makes 4 triangles per cell).
+MAX_HEIGHT_MAP_CELLS = 4_000_000
+
+
+def read_mesh(path: str | os.PathLike[str], *, repair: bool = False) -> TriangleMesh:
+    """The closed mesh of a mesh file (every body in it, as one solid).
+
+    Parameters
+    ----------
+    path : path-like
+        A ``.stl``, ``.off``, ``.obj``, ``.ply`` or ``.3mf`` file.
+    repair : bool
+        Repair an open or inconsistently wound mesh (:meth:`TriangleMesh.repaired`).
+
+    Raises
+    ------
+    InvalidGeometryError
+        If the file is missing, of another type, unreadable, holds no triangles, or its mesh is not
+        a valid closed solid (the message says why).
+    MissingDependencyError
+        For a 3MF file without networkx and lxml (the ``mesh`` extra).
+    """
+    import trimesh
+
+    p = Path(path)
+    suffix = p.suffix.lower()
+    if suffix not in MESH_SUFFIXES:
+        raise InvalidGeometryError(f"mesh file {str(p)!r} must be one of {', '.join(MESH_SUFFIXES)}, got {suffix!r}")
+    if not p.is_file():
+        raise InvalidGeometryError(f"mesh file {str(p)!r} does not exist")
+    if suffix == ".3mf":
+        from importlib.util import find_spec
+
+        if find_spec("networkx") is None or find_spec("lxml") is None:
+            raise MissingDependencyError("reading 3MF files needs networkx and lxml: pip install isocsg[mesh]")
+    try:
+        loaded = trimesh.load(str(p), force="mesh", process=True)
+    except Exception as exc:  # noqa: BLE001 - trimesh's readers raise many kinds on a malformed file
+        raise InvalidGeometryError(f"mesh file {str(p)!r} could not be read: {type(exc).__name__}: {exc}") from None
+    faces = np.asarray(getattr(loaded, "faces", np.zeros((0, 3))))
+    if faces.ndim != 2 or len(faces) == 0:
+        raise InvalidGeometryError(f"mesh file {str(p)!r} holds no triangles")
+    try:
+        return TriangleMesh.from_trimesh(loaded, repair=repair)
+    except InvalidGeometryError as exc:
+        raise InvalidGeometryError(f"mesh file {str(p)!r}: {exc}") from None
+
+
+def polygon_mesh(points: ArrayLike, faces: list[list[int]], *, clockwise: bool = True) -> TriangleMesh:
+    """The solid bounded by planar polygon faces, each triangulated in its own plane (no new vertex).
+
+    Parameters
+    ----------
+    points : array_like, shape (n, 3)
+    faces : list of list of int
+        Polygons of at least 3 point indices; faces of fewer are dropped.
+    clockwise : bool
+        The faces are clockwise seen from outside (OpenSCAD's order). A mesh whose faces all wind
+        the other way (a negative volume) is turned over, as OpenSCAD accepts either.
+
+    Raises
+    ------
+    InvalidGeometryError
+        When the faces do not bound a valid closed solid (see :class:`TriangleMesh`).
+    """
+    import manifold3d
+
+    P = np.asarray(points, dtype=np.float64)
+    tris: list[tuple[int, int, int]] = []
+    for f in faces:
+        if len(f) < 3:
+            continue
+        if len(f) == 3:
+            tris.append((f[0], f[1], f[2]))
+            continue
+        q = P[f]
+        g = q - q.mean(axis=0)
+        n = np.sum(np.cross(g, np.roll(g, -1, axis=0)), axis=0)  # Newell's normal of the polygon's order
+        if not np.linalg.norm(n) > 0:
+            continue  # a flat-to-a-line face: no area
+        n /= np.linalg.norm(n)
+        u = np.cross(n, [1.0, 0.0, 0.0] if abs(n[0]) < 0.9 else [0.0, 1.0, 0.0])
+        u /= np.linalg.norm(u)
+        v = np.cross(n, u)
+        ring = np.stack([g @ u, g @ v], axis=1)  # counter-clockwise about n
+        local = np.asarray(manifold3d.triangulate([ring]), dtype=np.int64).reshape(-1, 3)
+        tris.extend((f[a], f[b], f[c]) for a, b, c in local.tolist())
+    T = np.asarray(tris, dtype=np.int64).reshape(-1, 3)
+    if clockwise:
+        T = T[:, ::-1]
+    if len(T) >= 4 and len(P):
+        c = 0.5 * (P.min(axis=0) + P.max(axis=0))
+        a, b, d = P[T[:, 0]] - c, P[T[:, 1]] - c, P[T[:, 2]] - c
+        if float(np.einsum("ij,ij->i", a, np.cross(b, d)).sum()) < 0:
+            T = T[:, ::-1]
+    return TriangleMesh(P, T)
+
+
+def height_map(heights: ArrayLike, *, center: bool = False, base: float | None = None) -> TriangleMesh:
+    """OpenSCAD's ``surface()`` solid of a grid of heights, exactly as its ``SurfaceNode.cc`` builds it.
+
+    Row ``i`` of ``heights`` lies at ``y = i``, column ``j`` at ``x = j`` (``center``: the grid
+    centred on the origin, ``x - (columns - 1) / 2``, ``y - (lines - 1) / 2``). Each cell is four
+    triangles meeting at its centre, raised to the mean of its four corners; walls go down from the
+    boundary to the base ``z = base`` (OpenSCAD's: ``min(heights) - 1``; a ``.dat`` file's minimum
+    also counts 1, see :func:`read_height_map`), closed by the flat bottom.
+
+    Raises
+    ------
+    InvalidGeometryError
+        On fewer than 2 rows or columns (OpenSCAD makes no solid), non-finite heights, or more than
+        :data:`MAX_HEIGHT_MAP_CELLS` cells.
+    """
+    H = np.asarray(heights, dtype=np.float64)
+    if H.ndim != 2 or H.shape[0] < 2 or H.shape[1] < 2:
+        raise InvalidGeometryError(f"surface heights must be a grid of at least 2 x 2 values, got shape {H.shape}")
+    if not np.all(np.isfinite(H)):
+        raise InvalidGeometryError("surface heights must be finite")
+    lines, cols = H.shape
+    if (lines - 1) * (cols - 1) > MAX_HEIGHT_MAP_CELLS:
+        raise InvalidGeometryError(f"surface heights must have at most {MAX_HEIGHT_MAP_CELLS} cells, got {H.shape}")
+    zb = float(H.min() - 1.0 if base is None else base)
+    ox = -(cols - 1) / 2.0 if center else 0.0
+    oy = -(lines - 1) / 2.0 if center else 0.0
+    jj, ii = np.meshgrid(np.arange(cols), np.arange(lines))
+    grid = np.stack([ox + jj, oy + ii, H], axis=-1).reshape(-1, 3)  # index i * cols + j
+    ci, cj = np.meshgrid(np.arange(1, lines), np.arange(1, cols), indexing="ij")
+    vx = (H[:-1, :-1] + H[:-1, 1:] + H[1:, :-1] + H[1:, 1:]) / 4.0
+    centres = np.stack([ox + cj - 0.5, oy + ci - 0.5, vx], axis=-1).reshape(-1, 3)
+    n_grid = len(grid)
+    v1 = ((ci - 1) * cols + (cj - 1)).reshape(-1)
+    v2 = ((ci - 1) * cols + cj).reshape(-1)
+    v3 = (ci * cols + (cj - 1)).reshape(-1)
+    v4 = (ci * cols + cj).reshape(-1)
+    c = n_grid + np.arange(len(centres))
+    top = np.concatenate([np.stack(t, axis=1) for t in ((v1, v2, c), (v2, v4, c), (v4, v3, c), (v3, v1, c))])
+    # the boundary ring of the grid, counter-clockwise seen from above, and its copy at the base
+    ring = np.concatenate([np.arange(cols - 1), (np.arange(lines - 1) * cols + cols - 1),
+                           (lines - 1) * cols + np.arange(cols - 1, 0, -1), np.arange(lines - 1, 0, -1) * cols])
+    low = grid[ring].copy()
+    low[:, 2] = zb
+    b0 = n_grid + len(centres)
+    bottom_c = b0 + len(ring)
+    k = np.arange(len(ring))
+    up0, up1 = ring, np.roll(ring, -1)
+    dn0, dn1 = b0 + k, b0 + np.roll(k, -1)
+    walls = np.concatenate([np.stack([dn0, dn1, up1], axis=1), np.stack([dn0, up1, up0], axis=1)])
+    bottom = np.stack([np.full(len(ring), bottom_c), dn1, dn0], axis=1)
+    V = np.vstack([grid, centres, low, [[ox + (cols - 1) / 2.0, oy + (lines - 1) / 2.0, zb]]])
+    F = np.vstack([top, walls, bottom]).astype(np.int64)
+    return TriangleMesh(V, F)
+
+
+def read_height_map(path: str | os.PathLike[str], *, invert: bool = False) -> tuple[NDArray[np.float64], float]:
+    """A ``surface()`` file's heights and the base OpenSCAD puts under them.
+
+    A PNG image (recognised by its signature, as OpenSCAD does): each pixel's luminance
+    ``0.2126 R + 0.7152 G + 0.0722 B`` (8-bit channels) maps to ``z = 100 / 255 * pixel``, or with
+    ``invert`` to OpenSCAD's ``100 / 255 * (1 - pixel)``; the image's top row is the last line
+    (largest y); the base is ``min(z) - 1`` (today's OpenSCAD; 2021.01 put it at ``min(min(z) - 1, 0)``,
+    the same for an image with a black pixel or with ``invert``). Otherwise a DAT text file: one line of numbers
+    (separated by spaces or tabs) per row, ``#`` comment lines and blank lines skipped, short
+    rows padded with 0 as OpenSCAD pads them; the base is ``min(min(values), 1) - 1``
+    (``invert`` does not apply).
+
+    Raises
+    ------
+    InvalidGeometryError
+        If the file is missing, a PNG cannot be decoded, or a DAT value is not a number.
+    """
+    p = Path(path)
+    if not p.is_file():
+        raise InvalidGeometryError(f"surface file {str(p)!r} does not exist")
+    head = p.read_bytes()[:8]
+    if head == b"\x89PNG\r\n\x1a\n":
+        from PIL import Image, UnidentifiedImageError
+
+        try:
+            with Image.open(p) as im:
+                rgba = np.asarray(im.convert("RGBA"), dtype=np.float64)
+        except (OSError, UnidentifiedImageError, ValueError) as exc:
+            raise InvalidGeometryError(f"surface file {str(p)!r} is not a readable PNG image: {exc}") from None
+        pixel = 0.2126 * rgba[..., 0] + 0.7152 * rgba[..., 1] + 0.0722 * rgba[..., 2]
+        z = 100.0 / 255.0 * ((1.0 - pixel) if invert else pixel)
+        z = z[::-1]  # image row 0 is the top: the last line
+        return z, float(min(z.min(), 200.0) - 1.0)
+    rows: list[list[float]] = []
+    for number, raw in enumerate(p.read_text(encoding="utf-8", errors="replace").splitlines(), start=1):
+        line = raw.strip()
+        if not line or line.startswith("#"):
+            continue
+        try:
+            rows.append([float(tok) for tok in line.replace("\t", " ").split()])
+        except ValueError:
+            raise InvalidGeometryError(
+                f"surface file {str(p)!r}, line {number}: not a number in {line[:40]!r}") from None
+    width = max((len(r) for r in rows), default=0)
+    H = np.zeros((len(rows), width))
+    for i, r in enumerate(rows):
+        H[i, : len(r)] = r
+    low = min([1.0] + [min(r) for r in rows if r])
+    return H, low - 1.0

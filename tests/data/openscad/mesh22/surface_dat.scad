@@ -1,0 +1,2 @@
+// a height field from a DAT file
+surface(file = "field.dat");
