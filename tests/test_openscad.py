@@ -218,7 +218,6 @@ def test_extrusion_maps_the_plane() -> None:
 UNSUPPORTED = [
     ("hull", "hull() {\n  sphere(r = 1);\n  cube(size = 1);\n}"),
     ("minkowski", "minkowski() {\n  cube(size = 1);\n  sphere(r = 0.1);\n}"),
-    ("rotate_extrude", "rotate_extrude(angle = 360, convexity = 2) {\n  square(size = 1);\n}"),
     ("roof", "linear_extrude(height = 1) {\n  roof() {\n    square(size = 1);\n  }\n}"),
     ("import", "import(file = \"part.stl\", layer = \"\", origin = [0, 0], scale = 1);"),
     ("surface", "surface(file = \"h.dat\", center = false, invert = false);"),

@@ -23,10 +23,10 @@ What each node becomes (``docs/openscad.md`` has the table and the reasons):
   round or cut child is refused.
 - ``linear_extrude(height, center, scale)`` of any 2D subtree (:mod:`isocsg.openscad.flat`,
   through :mod:`isocsg.shapes2d`): ``square``, ``circle``, ``polygon`` (non-convex, holes),
-  ``text``, ``offset``, 2D Booleans, transforms and hulls of polygons.
+  ``text``, ``offset``, 2D Booleans, transforms and hulls of polygons; ``rotate_extrude(angle)``
+  of the same subtrees (:mod:`isocsg.openscad.revolve`).
 
-Nodes without an exact equivalent (``hull`` of round solids, ``minkowski``, ``rotate_extrude``,
-twisted extrusions, ``import``, ``surface``, ``projection``, ``resize``, non-convex polyhedra and
+Nodes without an exact equivalent (``hull`` of round solids, ``minkowski``, twisted extrusions, ``import``, ``surface``, ``projection``, ``resize``, non-convex polyhedra and
 unknown modules) raise :class:`~isocsg.errors.UnsupportedOpenSCADError` naming the node and its
 line, or are skipped when ``skip_unsupported=True``: :attr:`LoweredModel.skipped` counts them
 and :attr:`LoweredModel.left_out` names each (line and reason). Objects that OpenSCAD itself
@@ -52,13 +52,13 @@ from ..errors import InvalidGeometryError, InvalidParameterError, OpenSCADError,
 from ..kinds import Box, ConvexPolyhedron, Cylinder, Primitive, Solid, Sphere, Truncus
 from .flat import MixedDimensionsWarning, cylinder_points, extrude, polygonal_sides, sphere_points
 from .parser import CSGCall
+from .revolve import revolve
 
 __all__ = ["lower", "LoweredModel", "UNSUPPORTED_NODES"]
 
 #: OpenSCAD modules that have no exact isocsg equivalent, with the reason given in errors.
 UNSUPPORTED_NODES: dict[str, str] = {
     "minkowski": "Minkowski sums are not exact isocsg solids",
-    "rotate_extrude": "surfaces of revolution other than spheres and cones are not isocsg primitives",
     "import": "meshes and drawings from other files are not read",
     "surface": "height maps are not read",
     "projection": "projections to 2D are not solids",
@@ -509,6 +509,8 @@ def _enter(lw: _Lowerer, call: CSGCall, m: NDArray[np.float64] | None) -> tuple[
         return None, local if m is None else m @ local, True
     if name == "linear_extrude":
         return _placed(lw, call, extrude(lw, call), m), m, False
+    if name == "rotate_extrude":
+        return _placed(lw, call, revolve(lw, call), m), m, False
     if name in _LEAVES_3D:
         return _placed(lw, call, getattr(lw, name)(call), m), m, False
     lw.unsupported(call, "unknown module")
