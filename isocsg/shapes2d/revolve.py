@@ -15,6 +15,7 @@ spheres (circles), spheroids (ellipses centred on the axis).
 
 from __future__ import annotations
 
+import math
 from typing import Any
 
 import numpy as np
@@ -46,6 +47,8 @@ def profile_side(shape: Shape2D) -> float:
         When it has area on both sides of the axis (OpenSCAD refuses it too), or none.
     """
     x0, y0, x1, y1 = shape.bounds
+    if not all(math.isfinite(v) for v in (x0, y0, x1, y1)):  # NaN: an intersection of disjoint parts
+        raise InvalidGeometryError("rotate_extrude.shape must not be empty")
     if x0 >= 0.0 and x1 > 0.0:
         return 1.0
     if x1 <= 0.0 and x0 < 0.0:
