@@ -163,3 +163,20 @@ def test_silhouette_and_depths_match_the_profile(pts, angle, start, eye) -> None
     assert iou >= MIN_IOU, iou
     both = hit & np.isfinite(got)
     assert np.mean(np.abs(got[both] - depth[both]) <= 1e-3 * depth[both]) >= MIN_FRACTION
+
+
+def test_many_convex_pieces_render_at_the_profile_depths() -> None:
+    # a wavy vase of 80 vertices: about 40 convex pieces, 300 leaves, surfaces shared along the
+    # pieces' diagonals. (The tests' reference caster disagrees with both the renderer and the
+    # profile caster on about 1 % of this view at 320 px, inside the cavity, so it is not used here.)
+    z = np.linspace(0.0, 30.0, 40)
+    outer = 8 + 2 * np.sin(z / 4)
+    pts = [(0.0, 0.0), *zip(outer, z), *list(zip(outer[::-1] - 1, z[::-1]))[:-1], (0.0, 1.0)]
+    camera = Camera((40.0, -30.0, 35.0), (0.0, 0.0, 15.0), width=128, height=128, fov=45)
+    got = isocsg.render(Scene(camera, [PointLight((20.0, -30.0, 60.0))], [rotate_extrude(polygon(pts))]),
+                        contours=16).depth
+    _, depth = profile_hits(camera, pts)
+    hit = np.isfinite(depth)
+    assert np.count_nonzero(hit != np.isfinite(got)) <= 0.005 * np.count_nonzero(hit)
+    both = hit & np.isfinite(got)
+    assert np.mean(np.abs(got[both] - depth[both]) <= 1e-3 * depth[both]) >= 0.995

@@ -134,3 +134,13 @@ def test_a_circle_meeting_the_axis_is_unsupported_or_skipped() -> None:
         model = lower(parse_csg(text), skip_unsupported=True)
     assert model.skipped == {"rotate_extrude": 1}
     assert "meets the axis" in model.left_out[0]
+
+
+def test_a_torus_written_by_save_openscad_reads_back_as_a_torus() -> None:
+    from isocsg import Torus
+
+    t = Torus((1.0, -2.0, 0.5), (0.0, 0.6, 0.8), 3.0, 0.7)
+    again = loads_openscad(dumps_openscad(t))
+    assert isinstance(again, Torus)
+    assert again.major == pytest.approx(3.0, rel=1e-12) and again.minor == pytest.approx(0.7, rel=1e-12)
+    assert np.allclose(again.center, t.center, atol=1e-12) and np.allclose(again.axis, t.axis, atol=1e-12)
