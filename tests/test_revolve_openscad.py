@@ -33,6 +33,7 @@ from isocsg import OpenSCADError, UnsupportedOpenSCADError, dumps_openscad, load
 from isocsg.openscad import load_openscad
 from isocsg.openscad.lowering import lower
 from isocsg.openscad.parser import parse_csg
+from isocsg.openscad.revolve import ProfileAcrossAxisWarning
 
 DIR = Path(__file__).resolve().parent / "data" / "openscad" / "revolve"
 MODELS = sorted(p.stem for p in DIR.glob("*.scad"))
@@ -119,10 +120,15 @@ def test_faceted_sections_follow_the_version() -> None:
         assert volume(solid, tol=1e-9) == pytest.approx(want, rel=1e-9)
 
 
-def test_a_profile_across_the_axis_is_an_error_naming_the_line() -> None:
+def test_a_profile_across_the_axis_is_left_out_as_openscad_does() -> None:
     text = "cube(1);\nrotate_extrude() translate([-1, 0]) square(2);"
-    with pytest.raises(OpenSCADError, match=re.escape("line 2: rotate_extrude: rotate_extrude.shape must lie on one side")):
-        loads_openscad(text)
+    with pytest.warns(ProfileAcrossAxisWarning, match=re.escape("line 2: rotate_extrude(): rotate_extrude.shape must lie")):
+        model = lower(parse_csg(text))
+    assert volume(model.solid) == pytest.approx(1.0)
+    assert "left out, as OpenSCAD draws nothing" in model.left_out[0]
+    with pytest.raises(OpenSCADError), warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        loads_openscad("rotate_extrude() translate([-1, 0]) square(2);")  # nothing left
 
 
 def test_a_circle_meeting_the_axis_is_unsupported_or_skipped() -> None:

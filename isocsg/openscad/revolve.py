@@ -7,19 +7,26 @@ versions only) defaults to 180 for a full turn and to 0 otherwise (2021.01 start
 full turn on -x). An explicit ``$fn`` up to :data:`~isocsg.openscad.flat.FN_MAX` makes
 OpenSCAD's faceted solid with ``floor(fn |angle| / 360)`` sections (2021.01; newer versions,
 recognised by their ``start`` argument, round up), at least one; otherwise the solid is the
-exact round one. A profile with area on both sides of the axis is an error, as in OpenSCAD.
+exact round one. A profile with area on both sides of the axis draws nothing, as in OpenSCAD
+(which reports an error and goes on): it is left out with a :class:`ProfileAcrossAxisWarning`
+and listed in ``LoweredModel.left_out``.
 """
 
 from __future__ import annotations
 
 import math
+import warnings
 from typing import Any
 
 from ..errors import InvalidGeometryError
 from .flat import polygonal_sides, shape_of
 from .parser import CSGCall
 
-__all__ = ["revolve"]
+__all__ = ["revolve", "ProfileAcrossAxisWarning"]
+
+
+class ProfileAcrossAxisWarning(UserWarning):
+    """A ``rotate_extrude`` profile with area on both sides of the axis: left out, as OpenSCAD leaves it out."""
 
 
 def _angle(value: Any) -> float:
@@ -55,5 +62,10 @@ def revolve(lw: Any, call: CSGCall) -> Any:
     except InvalidGeometryError as exc:
         if "segments" in str(exc) or "meets the axis" in str(exc) or "ellipse" in str(exc):
             lw.unsupported(call, str(exc))
+            return None
+        if "must lie on one side" in str(exc):
+            lw.note(call, f"{exc}; left out, as OpenSCAD draws nothing for it")
+            warnings.warn(ProfileAcrossAxisWarning(
+                f"{lw.where(call)}rotate_extrude(): {exc}; left out, as OpenSCAD draws nothing for it"), stacklevel=4)
             return None
         raise lw.fail(call, str(exc)) from None
