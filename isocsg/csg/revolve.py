@@ -23,7 +23,9 @@ revolves the leaves, given as plain numbers:
 - OpenSCAD's faceted revolution (``segments`` flat sections): a section between the
   meridian planes at angles ``a`` and ``b`` maps ``(x, y, t)`` to ``x((1 - t) u_a + t u_b) +
   y e_z``, linear in ``(x (1 - t), x t, y)``, so the section of a convex polygon is the
-  convex hull of the polygon placed at ``a`` and at ``b`` (a :class:`~isocsg.ConvexPolyhedron`).
+  convex hull of the polygon placed at ``a`` and at ``b`` (a :class:`~isocsg.ConvexPolyhedron`),
+  and the section of a circle or ellipse is an elliptic cylinder (the affine image of a
+  :class:`~isocsg.Cylinder`) along ``alpha - beta`` cut by the wedge ``alpha, beta >= 0``.
 """
 
 from __future__ import annotations
@@ -45,6 +47,7 @@ __all__ = [
     "revolved_disc",
     "revolved_ellipse",
     "faceted_polygon",
+    "faceted_round",
     "cut_to_angle",
     "sector_angles",
 ]
@@ -226,6 +229,43 @@ def faceted_polygon(vertices: Any, angles: NDArray[np.float64]) -> Solid | None:
         ends = [np.column_stack([p[:, 0] * math.cos(t), p[:, 0] * math.sin(t), p[:, 1]]) for t in (a, b)]
         pts = np.unique(np.round(np.vstack(ends), 15), axis=0)
         pieces.append(ConvexPolyhedron(pts))  # type: ignore[arg-type]  # any (n, 3) array-like
+    return _union(pieces)
+
+
+def faceted_round(center: tuple[float, float], matrix: Any, angles: NDArray[np.float64]) -> Solid | None:
+    """OpenSCAD's faceted revolution of the part with ``x >= 0`` of the ellipse ``center + M u``
+    (``|u| <= 1``; a circle is ``M = r I``): per section, an elliptic cylinder cut by the section's wedge.
+
+    In the section's coordinates ``(alpha, beta, y)`` (a point is ``alpha u_a + beta u_b + y e_z``)
+    the solid is ``{alpha, beta >= 0, (alpha + beta, y) in the ellipse}``: a cylinder along
+    ``alpha - beta`` over the ellipse, cut by ``alpha >= 0`` and ``beta >= 0`` (the wedge, which
+    also keeps only ``x = alpha + beta >= 0``).
+    """
+    from ..kinds import Cylinder
+
+    c, h = float(center[0]), float(center[1])
+    m = np.asarray(matrix, dtype=np.float64)
+    hx, hy = float(np.hypot(m[0, 0], m[0, 1])), float(np.hypot(m[1, 0], m[1, 1]))
+    if c + hx <= 0.0:
+        return None
+    reach = c + hx
+    span = 2.02 * reach  # the cylinder's length along alpha - beta covers |alpha - beta| <= alpha + beta <= reach
+    unit = Cylinder((0.0, 0.0, 0.0), (0.0, 0.0, 1.0), 1.0)
+    pieces: list[Solid] = []
+    for a, b in zip(angles[:-1], angles[1:], strict=True):
+        if abs(math.sin(b - a)) < 1e-12:
+            continue
+        ua = np.array([math.cos(a), math.sin(a), 0.0])
+        ub = np.array([math.cos(b), math.sin(b), 0.0])
+        # (p, q, s) of the unit cylinder -> x = c + M0.(p, q), y = h + M1.(p, q), alpha - beta = span s
+        to_xy = np.column_stack([ua + ub, [0.0, 0.0, 2.0], ua - ub]) / 2.0  # (x, y, alpha - beta) -> world
+        A = to_xy @ np.array([[m[0, 0], m[0, 1], 0.0], [m[1, 0], m[1, 1], 0.0], [0.0, 0.0, span]])
+        t = to_xy @ np.array([c, h, 0.0])
+        tube = unit.transform(np.column_stack([A, t]))
+        d = (b - a) % (2 * math.pi)  # the section is the short sector between u_a and u_b (as the hull's)
+        lo, sweep = (a, d) if d <= math.pi else (b, 2 * math.pi - d)
+        wedge = _wedge(lo, sweep, 1.05 * reach + 0.05 * hy, h - 1.1 * hy, h + 1.1 * hy)
+        pieces.append(Intersection((tube, wedge)))
     return _union(pieces)
 
 

@@ -60,7 +60,7 @@ def revolve(lw: Any, call: CSGCall) -> Any:
     try:
         return rotate_extrude(shape, angle, start=start, segments=segments)
     except InvalidGeometryError as exc:
-        if "segments" in str(exc) or "meets the axis" in str(exc) or "ellipse" in str(exc):
+        if "meets the axis" in str(exc) or "ellipse" in str(exc):
             lw.unsupported(call, str(exc))
             return None
         if "must lie on one side" in str(exc):

@@ -10,7 +10,9 @@ the axis is an error, as in OpenSCAD.
 Revolving distributes over the 2D Booleans (see :mod:`isocsg.csg.revolve`), and every leaf
 is first cut to the side ``x >= 0``: the profile lies there, so its tree over the cut leaves
 is the same set. The leaves revolve into frusta and cones (convex polygons), tori and
-spheres (circles), spheroids (ellipses centred on the axis).
+spheres (circles), spheroids (ellipses centred on the axis). With ``segments``, OpenSCAD's
+faceted solid: convex hulls for polygons, elliptic cylinders cut by wedges for circles and
+ellipses (any of them, also across the axis: the section keeps ``x >= 0`` by itself).
 """
 
 from __future__ import annotations
@@ -100,7 +102,8 @@ def rotate_extrude(shape: Shape2D, angle: Any = 360.0, *, start: Any = None, seg
         or a partial angle).
     segments : int, optional
         OpenSCAD's faceted solid with this many flat sections over ``angle`` (each section of
-        a convex piece is a convex polyhedron, exactly). Default: the exact round solid.
+        a convex piece is a convex polyhedron, of a circle or ellipse an elliptic cylinder cut
+        by a wedge, exactly). Default: the exact round solid.
 
     Returns
     -------
@@ -114,8 +117,8 @@ def rotate_extrude(shape: Shape2D, angle: Any = 360.0, *, start: Any = None, seg
     InvalidGeometryError
         On an empty profile, one with area on both sides of the axis, a zero or out-of-range
         angle, a circle that meets the axis off its centre (a spindle or horn torus), an
-        ellipse off the axis, or ``segments`` with a circle or ellipse in the profile (naming
-        the field).
+        ellipse off the axis (both only without ``segments``), or ``segments`` that is not an
+        integer in ``[1, 4096]`` (naming the field).
 
     Examples
     --------
@@ -129,6 +132,7 @@ def rotate_extrude(shape: Shape2D, angle: Any = 360.0, *, start: Any = None, seg
         clip_to_right_half,
         cut_to_angle,
         faceted_polygon,
+        faceted_round,
         revolved_disc,
         revolved_ellipse,
         revolved_polygon,
@@ -155,11 +159,8 @@ def rotate_extrude(shape: Shape2D, angle: Any = 360.0, *, start: Any = None, seg
             if p is None:
                 return None
             return revolved_polygon(p) if angles is None else faceted_polygon(p, angles)
-        if angles is not None:
-            raise InvalidGeometryError(
-                f"rotate_extrude.segments: the faceted revolution of a {type(l).__name__.lower()} is not supported "
-                "(give the circle its own polygon, e.g. circle(r, fn=n), or leave segments out for the exact solid)"
-            )
+        if angles is not None and isinstance(l, (Circle, Ellipse)):
+            return faceted_round(l.center, l.matrix, angles)
         if isinstance(l, Circle):
             return revolved_disc(l.center, l.radius)
         if isinstance(l, Ellipse):
