@@ -3,7 +3,7 @@
 ``tests/data/openscad/revolve`` holds small ``.scad`` models written for these tests (a vase,
 an O-ring, partial and negative turns, a profile on the side x < 0, a 2D difference, an
 offset, a hemisphere, a pulley in an assembly, a profile with a hole, profiles touching the
-axis, explicit small ``$fn``), committed with ``openscad``'s ``.csg`` export and the volume
+axis, explicit small ``$fn``, also on a round circle), committed with ``openscad``'s ``.csg`` export and the volume
 and centre of mass of its STL export at ``$fn = 96`` (``stl_volumes.json``, with each
 ``.scad``'s sha256):
 
