@@ -224,6 +224,7 @@ ERRORS = [
     (lambda: rotate_extrude(square(1).translate([3, 0]), segments=0), "rotate_extrude.segments must be an integer"),
     (lambda: rotate_extrude(square(1).translate([3, 0]), segments=2.5), "rotate_extrude.segments must be an integer"),
     (lambda: rotate_extrude(EMPTY), "rotate_extrude.shape must not be empty"),
+    (lambda: rotate_extrude(polygon([(5, 0), (6, 0), (6.5, 1e-9), (6, 1), (5, 1)])), "rotate_extrude.shape: the slab"),
     (lambda: rotate_extrude(square(1).translate([-2, 0]) & square(1).translate([2, 0])), "must not be empty"),
     (lambda: rotate_extrude("square"), "rotate_extrude.shape must be a 2D shape"),
     (lambda: rotate_extrude(square(1).translate([2, 0]), 90, start=float("inf")), "rotate_extrude.start"),

@@ -119,7 +119,13 @@ def _frusta(chain: NDArray[np.float64], tol: float) -> list[Solid]:
         r_bottom, r_top = _radius(x0, y0), _radius(x1, y1)
         if r_bottom == 0.0 and r_top == 0.0:
             continue
-        out.append(Truncus((0.0, 0.0, 0.5 * (y0 + y1)), (0.0, 0.0, y1 - y0), r_top, r_bottom))
+        try:
+            out.append(Truncus((0.0, 0.0, 0.5 * (y0 + y1)), (0.0, 0.0, y1 - y0), r_top, r_bottom))
+        except InvalidGeometryError as exc:  # a slab far thinner than its radius (the frusta's aspect limit)
+            raise InvalidGeometryError(
+                f"rotate_extrude.shape: the slab between the vertex heights {y0:g} and {y1:g} at radius "
+                f"{max(x0, x1):g} cannot be a frustum ({exc})"
+            ) from None
     return out
 
 
