@@ -109,7 +109,7 @@ def _profile(d: dict, *, round_hole: bool = False) -> tuple:
     return shape, region
 
 
-@settings(max_examples=6, deadline=None, phases=QUICK)
+@settings(max_examples=5, deadline=None, phases=QUICK)
 @given(profiles, angles)
 def test_volume_is_pappus(d: dict, angle: float) -> None:
     shape, region = _profile(d)
