@@ -64,6 +64,7 @@ _EXPORTS: dict[str, str] = {
         "Shape2D", "ConvexPolygon", "Circle", "Ellipse", "Union2D", "Intersection2D", "Difference2D", "polygon",
         "square", "circle", "text", "offset", "linear_extrude", "union_all2d", "to_shapely",
     ], ".shapes2d"),
+    "rotate_extrude": ".shapes2d.revolve",
 }
 
 # Written out for linters and type checkers: the keys of _EXPORTS (tests/test_public_api.py).
@@ -162,6 +163,7 @@ __all__ = [
     "render",
     "render_halftone",
     "render_views",
+    "rotate_extrude",
     "save_gltf",
     "save_luxmap_csv",
     "save_luxmap_figure",
@@ -341,3 +343,4 @@ if TYPE_CHECKING:  # what the names are, for type checkers and editors
         to_shapely,
         union_all2d,
     )
+    from .shapes2d.revolve import rotate_extrude

@@ -218,7 +218,6 @@ def test_extrusion_maps_the_plane() -> None:
 UNSUPPORTED = [
     ("hull", "hull() {\n  sphere(r = 1);\n  cube(size = 1);\n}"),
     ("minkowski", "minkowski() {\n  cube(size = 1);\n  cylinder(h = 1, r1 = 0.1, r2 = 0);\n}"),
-    ("rotate_extrude", "rotate_extrude(angle = 360, convexity = 2) {\n  square(size = 1);\n}"),
     ("roof", "linear_extrude(height = 1) {\n  roof() {\n    square(size = 1);\n  }\n}"),
     ("import", "import(file = \"part.dxf\", layer = \"\", origin = [0, 0], scale = 1);"),
     ("projection", "linear_extrude(height = 1) {\n  projection(cut = false) {\n    sphere(r = 1);\n  }\n}"),

@@ -150,7 +150,7 @@ def drawing_path(lw: _Lowerer, call: CSGCall) -> Path:
     return path
 
 
-def _import2d(lw: _Lowerer, call: CSGCall) -> Any:
+def import_drawing(lw: _Lowerer, call: CSGCall) -> Any:
     """``import("drawing.dxf", layer, origin, scale)`` in 2D: the drawing's region as OpenSCAD reads
     it (:func:`isocsg.shapes2d.drawings.import_dxf`); other 2D formats are refused by name."""
     from ..shapes2d.drawings import import_dxf
@@ -179,7 +179,7 @@ def _node(lw: _Lowerer, call: CSGCall, kids: list[Any]) -> Any:
 
     name = call.name
     if name == "import":
-        return _import2d(lw, call)
+        return import_drawing(lw, call)
     if name == "hull":
         return _hull2d(lw, call, union2d(*kids) if kids else EMPTY)
     args = _named(lw, call)
@@ -303,7 +303,7 @@ def extrude(lw: _Lowerer, call: CSGCall) -> Any:
     if h <= 0:
         return None
     # The old form names its drawing itself: linear_extrude(file = "x.dxf", layer = ...).
-    shape = _import2d(lw, call) if "file" in call.kwargs else shape_of(lw, call)
+    shape = import_drawing(lw, call) if "file" in call.kwargs else shape_of(lw, call)
     if shape is None or shape is EMPTY:
         return None
     s: Any = float(scale_v[0]) if scale_v[0] == scale_v[1] else scale_v.tolist()

@@ -26,7 +26,8 @@ What each node becomes (``docs/openscad.md`` has the table and the reasons):
   radius, parallel cylinders of one radius, two spheres, ...), or refused naming what stops them.
 - ``linear_extrude(height, center, scale)`` of any 2D subtree (:mod:`isocsg.openscad.flat`,
   through :mod:`isocsg.shapes2d`): ``square``, ``circle``, ``polygon`` (non-convex, holes),
-  ``text``, ``offset``, 2D Booleans, transforms and hulls of polygons.
+  ``text``, ``offset``, 2D Booleans, transforms and hulls of polygons; ``rotate_extrude(angle)``
+  of the same subtrees (:mod:`isocsg.openscad.revolve`).
 
 Nodes without an exact equivalent (the ``hull`` and ``minkowski`` that are not exact, 2D ``import`` of
 SVG drawings, ``projection``, ``resize`` and unknown modules) raise
@@ -58,6 +59,7 @@ from ..kinds import Box, ConvexPolyhedron, Cylinder, Solid, Sphere, Truncus
 from ..kinds.mesh_io import MESH_SUFFIXES, height_map, polygon_mesh, read_height_map, read_mesh
 from .flat import MixedDimensionsWarning, cylinder_points, extrude, polygonal_sides, sphere_points
 from .parser import CSGCall
+from .revolve import revolve
 
 __all__ = ["lower", "LoweredModel", "UNSUPPORTED_NODES"]
 
@@ -577,6 +579,8 @@ def _enter(lw: _Lowerer, call: CSGCall, m: NDArray[np.float64] | None) -> tuple[
         return None, local if m is None else m @ local, True
     if name == "linear_extrude":
         return _placed(lw, call, extrude(lw, call), m), m, False
+    if name == "rotate_extrude":
+        return _placed(lw, call, revolve(lw, call), m), m, False
     if name in _LEAVES_3D:
         return _placed(lw, call, getattr(lw, "import_file" if name == "import" else name)(call), m), m, False
     lw.unsupported(call, "unknown module")

@@ -18,6 +18,7 @@ from .measure import area, area_bounds, bounds, to_shapely
 from .offset import offset
 from .openscad import fragments, from_openscad, text_segments
 from .region import convex_pieces, fill, shape_from_region
+from .revolve import rotate_extrude
 from .shape import (
     EMPTY,
     Difference2D,
@@ -43,6 +44,6 @@ __all__ = [
     "union2d", "intersection2d", "difference2d", "union_all2d",
     "transform2d", "translate2d", "rotate2d", "scale2d", "mirror2d",
     "area", "area_bounds", "bounds", "to_shapely", "fill", "convex_pieces", "shape_from_region",
-    "offset", "linear_extrude", "text", "font_path", "FontFallbackWarning",
+    "offset", "linear_extrude", "rotate_extrude", "text", "font_path", "FontFallbackWarning",
     "from_openscad", "fragments", "text_segments",
 ]
