@@ -167,3 +167,18 @@ def test_openscad_models_extrude_imported_drawings(doc, tmp_path: Path) -> None:
     model.write_text('linear_extrude(height = 1) import(file = "parts/base.svg");\n')
     with pytest.raises(UnsupportedOpenSCADError, match="svg"):
         load_openscad(model)
+
+
+def test_the_old_forms_name_their_drawing_themselves(doc, tmp_path: Path) -> None:  # noqa: ANN001
+    from isocsg import load_openscad, volume
+
+    doc.modelspace().add_lwpolyline([(1, 0), (3, 0), (3, 2), (1, 2)], close=True)
+    doc.saveas(tmp_path / "r.dxf")
+    model = tmp_path / "m.csg"
+    model.write_text('linear_extrude(file = "r.dxf", layer = "", origin = [0, 0], height = 3, center = false, '
+                     'scale = [1, 1], $fn = 0, $fa = 12, $fs = 2);\n')
+    assert volume(load_openscad(model)) == pytest.approx(4 * 3, rel=1e-12)
+    model.write_text('rotate_extrude(file = "r.dxf", layer = "", origin = [0, 0], scale = 1, angle = 360, '
+                     '$fn = 0, $fa = 12, $fs = 2);\n')
+    # Pappus: the square from x = 1 to 3 turned once about the axis
+    assert volume(load_openscad(model)) == pytest.approx(2 * np.pi * 2.0 * 4.0, rel=1e-9)

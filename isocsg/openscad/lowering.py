@@ -65,7 +65,6 @@ __all__ = ["lower", "LoweredModel", "UNSUPPORTED_NODES"]
 
 #: OpenSCAD modules that have no exact isocsg equivalent, with the reason given in errors.
 UNSUPPORTED_NODES: dict[str, str] = {
-    "rotate_extrude": "surfaces of revolution other than spheres and cones are not isocsg primitives",
     "projection": "projections to 2D are not solids",
     "resize": "resize depends on the tessellated bounds",
     "roof": "roofs are not supported",

@@ -40,9 +40,6 @@ def revolve(lw: Any, call: CSGCall) -> Any:
     from ..shapes2d import EMPTY
     from ..shapes2d.revolve import rotate_extrude
 
-    if "file" in call.kwargs:
-        lw.unsupported(call, "revolving an imported drawing is not supported")
-        return None
     raw = call.kwargs.get("angle", call.kwargs.get("a", call.args[0] if call.args else None))
     angle = 360.0 if raw is None else _angle(raw)
     if angle == 0.0:
