@@ -20,12 +20,12 @@ from typing import Any
 import numpy as np
 from numpy.typing import NDArray
 
-from .._validation import MAX_ABS_COORD, MAX_VERTICES, scalar
+from .._validation import MAX_ABS_COORD, MAX_VERTICES, length_floor, scalar
 from ..errors import InvalidGeometryError
 from ..kinds.base import Solid
 from ..kinds.polyhedron import ConvexPolyhedron
 
-__all__ = ["extrude", "extrude_rings", "convex_partition", "merged_triangulation", "prisms"]
+__all__ = ["extrude", "extrude_rings", "convex_partition", "merged_triangulation", "prisms", "prism"]
 
 
 def _polygons(polygon: Any, name: str) -> list[Any]:
@@ -203,16 +203,64 @@ def prisms(polygon: Any, z0: float, z1: float) -> Solid:
     if not (math.isfinite(z0) and math.isfinite(z1)) or z1 <= z0:
         raise InvalidGeometryError(f"extrude.height must be > 0, got {z1 - z0:g}")
     pieces = convex_partition(polygon, name="extrude.polygon")
-    solids = []
-    for piece in pieces:
-        k = len(piece)
-        verts = np.empty((2 * k, 3))
-        verts[:k, :2] = piece
-        verts[:k, 2] = z0
-        verts[k:, :2] = piece
-        verts[k:, 2] = z1
-        solids.append(ConvexPolyhedron(verts))
+    solids = [prism(piece, z0, z1) for piece in pieces]
     return solids[0] if len(solids) == 1 else union_all(solids)
+
+
+def prism(piece: NDArray[np.float64], z0: float, z1: float) -> ConvexPolyhedron:
+    """The straight prism over a convex polygon between ``z = z0`` and ``z = z1 > z0``, built from
+    its known faces (no convex hull: a model of thousands of extruded polygons spent most of its
+    loading time in one hull per prism).
+
+    Parameters
+    ----------
+    piece : ndarray, shape (k, 2)
+        A convex polygon, counter-clockwise (collinear corners allowed).
+
+    Returns
+    -------
+    ConvexPolyhedron
+        Equal to ``ConvexPolyhedron`` of the same ``2k`` points (same ``vertices``); its
+        hull vertices are the strict corners, its faces the two ends and one quad per edge.
+        A polygon that is not strictly convex and counter-clockwise, or too small for its
+        position, goes through the full hull build, which accepts or refuses it.
+    """
+    p = np.asarray(piece, dtype=np.float64)
+    k = len(p)
+    verts = np.empty((2 * k, 3))
+    verts[:k, :2], verts[:k, 2] = p, z0
+    verts[k:, :2], verts[k:, 2] = p, z1
+    size = float(np.max(np.ptp(p, axis=0))) if k else 0.0
+    e_in = p - np.roll(p, 1, axis=0)
+    e_out = np.roll(p, -1, axis=0) - p
+    turn = e_in[:, 0] * e_out[:, 1] - e_in[:, 1] * e_out[:, 0]
+    strict = p[turn > 1e-12 * size * size]
+    if (
+        k < 3 or not np.all(np.isfinite(verts)) or np.any(turn < -1e-12 * size * size) or len(strict) < 3
+        or min(size, z1 - z0) < length_floor(verts.min(axis=0), verts.max(axis=0)) or not z1 > z0
+    ):
+        return ConvexPolyhedron(verts)  # type: ignore[arg-type]  # the full build decides
+    m = len(strict)
+    hv = np.empty((2 * m, 3))
+    hv[:m, :2], hv[:m, 2] = strict, z0
+    hv[m:, :2], hv[m:, 2] = strict, z1
+    edge = np.roll(strict, -1, axis=0) - strict
+    side = np.column_stack([edge[:, 1], -edge[:, 0], np.zeros(m)])  # outward: the inside is on the left
+    side /= np.linalg.norm(side, axis=1)[:, None]
+    normals = np.vstack([[0.0, 0.0, -1.0], [0.0, 0.0, 1.0], side])
+    i = np.arange(m)
+    faces = [np.arange(m - 1, -1, -1), np.arange(m, 2 * m)]
+    faces += [np.array([a, (a + 1) % m, m + (a + 1) % m, m + a]) for a in i]
+    offsets = np.concatenate([[-z0, z1], np.einsum("ij,ij->i", side[:, :2], strict)])
+    tris = np.array([(f[0], f[j], f[j + 1]) for f in faces for j in range(1, len(f) - 1)], dtype=np.int64)
+    out = object.__new__(ConvexPolyhedron)
+    object.__setattr__(out, "vertices", tuple(tuple(map(float, q)) for q in verts))
+    for arr in (hv, normals, offsets, tris):
+        arr.setflags(write=False)
+    for name, value in (("hull_vertices", hv), ("faces", tuple(faces)), ("face_normals", normals),
+                        ("face_offsets", offsets), ("triangles", tris)):
+        object.__setattr__(out, name, value)
+    return out
 
 
 def _ring(name: str, value: Any) -> NDArray[np.float64]:

@@ -7,8 +7,9 @@ OpenSCAD's own polygonal solids for an explicit small ``$fn``.
   ``mirror``, ``color``, ``render``, and ``hull`` of polygons (the convex hull of their
   corners, exactly). ``%`` and ``*`` children are left out, 3D objects are ignored with
   OpenSCAD's warning, other nodes are unsupported (named).
-- :func:`extrude` is ``linear_extrude`` with ``center`` and ``scale`` (uniform, or per axis for
-  polygons); ``twist`` is refused.
+- :func:`extrude` is ``linear_extrude`` with ``center``, ``scale`` (uniform, or per axis for
+  polygons), ``twist`` and ``slices`` (by default OpenSCAD 2021.01's count from ``$fn``, ``$fs``,
+  ``$fa``: :mod:`isocsg.shapes2d.twist`).
 - :func:`polygonal_sides` says when ``$fn`` asks for OpenSCAD's polygonal circle
   (``0 < $fn <= FN_MAX``); :func:`cylinder_points` and :func:`sphere_points` are the vertices
   of OpenSCAD's polygonal cylinder and sphere (2021.01's ``primitives.cc``: ``n`` points at
@@ -258,13 +259,13 @@ def extrude(lw: _Lowerer, call: CSGCall) -> Any:
         lw.unsupported(call, "extruding an imported drawing is not supported")
         return None
     twist = lw.number(call, "twist", call.kwargs.get("twist", 0.0) or 0.0)
-    if twist != 0.0:
-        lw.unsupported(call, f"a twisted extrusion (twist = {twist:g}) is not supported yet")
-        return None
     h = lw.number(call, "height", lw.arg(call, "height", 0, 100.0))
     center = lw.boolean(call, "center", call.kwargs.get("center", False))
     scale = call.kwargs.get("scale", 1.0)
     scale_v = lw.vector(call, "scale", 1.0 if scale is None else scale, 2)
+    slices = call.kwargs.get("slices")
+    n = lw.number(call, "slices", slices) if slices is not None else 0.0
+    details = {k: lw.number(call, k, call.kwargs.get(k, d)) for k, d in (("$fn", 0.0), ("$fs", 2.0), ("$fa", 12.0))}
     if h <= 0:
         return None
     shape = shape_of(lw, call)
@@ -272,9 +273,13 @@ def extrude(lw: _Lowerer, call: CSGCall) -> Any:
         return None
     s: Any = float(scale_v[0]) if scale_v[0] == scale_v[1] else scale_v.tolist()
     try:
-        return _as_boxes(linear_extrude(shape, h, center=center, scale=s))
+        solid = linear_extrude(
+            shape, h, center=center, scale=s, twist=twist,
+            slices=int(n) if n >= 1 else None,  # OpenSCAD reads slices < 1 as absent
+            fn=max(details["$fn"], 0.0), fs=max(details["$fs"], 0.01), fa=max(details["$fa"], 0.01))
+        return _as_boxes(solid)
     except InvalidGeometryError as exc:
-        if "scale" in str(exc):
+        if "scale" in str(exc) or "twist" in str(exc) or "slices" in str(exc):
             lw.unsupported(call, str(exc))
             return None
         raise lw.fail(call, str(exc)) from None
