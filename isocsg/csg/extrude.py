@@ -230,31 +230,43 @@ def prism(piece: NDArray[np.float64], z0: float, z1: float) -> ConvexPolyhedron:
     verts = np.empty((2 * k, 3))
     verts[:k, :2], verts[:k, 2] = p, z0
     verts[k:, :2], verts[k:, 2] = p, z1
-    size = float(np.max(np.ptp(p, axis=0))) if k else 0.0
-    e_in = p - np.roll(p, 1, axis=0)
-    e_out = np.roll(p, -1, axis=0) - p
+    if k < 3 or not z1 > z0:
+        return ConvexPolyhedron(verts)  # type: ignore[arg-type]  # the full build decides
+    lo, hi = verts.min(axis=0), verts.max(axis=0)
+    size = float(max(hi[0] - lo[0], hi[1] - lo[1]))
+    nxt = np.arange(1, k + 1) % k
+    e_out = p[nxt] - p
+    e_in = e_out[np.arange(-1, k - 1)]
     turn = e_in[:, 0] * e_out[:, 1] - e_in[:, 1] * e_out[:, 0]
-    strict = p[turn > 1e-12 * size * size]
+    keep = turn > 1e-12 * size * size
+    m = int(keep.sum())
     if (
-        k < 3 or not np.all(np.isfinite(verts)) or np.any(turn < -1e-12 * size * size) or len(strict) < 3
-        or min(size, z1 - z0) < length_floor(verts.min(axis=0), verts.max(axis=0)) or not z1 > z0
+        m < 3 or not (math.isfinite(size) and math.isfinite(z0) and math.isfinite(z1))
+        or bool((turn < -1e-12 * size * size).any()) or min(size, z1 - z0) < length_floor(lo, hi)
     ):
         return ConvexPolyhedron(verts)  # type: ignore[arg-type]  # the full build decides
-    m = len(strict)
+    strict = p[keep]
     hv = np.empty((2 * m, 3))
     hv[:m, :2], hv[:m, 2] = strict, z0
     hv[m:, :2], hv[m:, 2] = strict, z1
-    edge = np.roll(strict, -1, axis=0) - strict
-    side = np.column_stack([edge[:, 1], -edge[:, 0], np.zeros(m)])  # outward: the inside is on the left
-    side /= np.linalg.norm(side, axis=1)[:, None]
-    normals = np.vstack([[0.0, 0.0, -1.0], [0.0, 0.0, 1.0], side])
     i = np.arange(m)
-    faces = [np.arange(m - 1, -1, -1), np.arange(m, 2 * m)]
-    faces += [np.array([a, (a + 1) % m, m + (a + 1) % m, m + a]) for a in i]
-    offsets = np.concatenate([[-z0, z1], np.einsum("ij,ij->i", side[:, :2], strict)])
-    tris = np.array([(f[0], f[j], f[j + 1]) for f in faces for j in range(1, len(f) - 1)], dtype=np.int64)
+    j = (i + 1) % m
+    edge = strict[j] - strict
+    side = np.zeros((m, 3))
+    side[:, 0], side[:, 1] = edge[:, 1], -edge[:, 0]  # outward: the inside is on the left
+    side /= np.sqrt(side[:, 0] ** 2 + side[:, 1] ** 2)[:, None]
+    normals = np.vstack([[0.0, 0.0, -1.0], [0.0, 0.0, 1.0], side])
+    quads = np.column_stack([i, j, m + j, m + i])
+    faces = [i[::-1].copy(), i + m, *quads]
+    offsets = np.concatenate([[-z0, z1], side[:, 0] * strict[:, 0] + side[:, 1] * strict[:, 1]])
+    fan = np.arange(1, m - 1)
+    tris = np.vstack([
+        np.column_stack([np.full(m - 2, m - 1), m - 1 - fan, m - 2 - fan]),  # the bottom, reversed
+        np.column_stack([np.full(m - 2, m), m + fan, m + fan + 1]),
+        quads[:, [0, 1, 2]], quads[:, [0, 2, 3]],
+    ]).astype(np.int64)
     out = object.__new__(ConvexPolyhedron)
-    object.__setattr__(out, "vertices", tuple(tuple(map(float, q)) for q in verts))
+    object.__setattr__(out, "vertices", tuple(map(tuple, verts.tolist())))
     for arr in (hv, normals, offsets, tris):
         arr.setflags(write=False)
     for name, value in (("hull_vertices", hv), ("faces", tuple(faces)), ("face_normals", normals),
