@@ -36,7 +36,8 @@ def model(polygons: int, points: int = 28, depth: int = 5, seed: int = 0) -> str
         for k in range(depth):
             a = math.radians(7 * (k + g))
             c, s = math.cos(a), math.sin(a)
-            m = f"[[{c:.9f}, {-s:.9f}, 0, {k + g * 0.5}], [{s:.9f}, {c:.9f}, 0, {g * 0.25}], [0, 0, 1, {k}], [0, 0, 0, 1]]"
+            rows = [f"[{c:.9f}, {-s:.9f}, 0, {k + g * 0.5}]", f"[{s:.9f}, {c:.9f}, 0, {g * 0.25}]", f"[0, 0, 1, {k}]"]
+            m = "[" + ", ".join([*rows, "[0, 0, 0, 1]"]) + "]"
             text = f"multmatrix({m}) {{ {text} }}"
         groups.append(text)
     return "union() { " + " ".join(groups) + " }"
