@@ -4,8 +4,8 @@ OpenSCAD's own polygonal solids for an explicit small ``$fn``.
 - :func:`shape_of` converts the children of a node into one 2D shape with an explicit stack:
   ``square``, ``circle``, ``polygon`` (non-convex, holes), ``text``, ``offset`` (``r``,
   ``delta``, ``chamfer``), the 2D Booleans, ``multmatrix``/``translate``/``rotate``/``scale``/
-  ``mirror``, ``color``, ``render``, and ``hull`` of polygons (the convex hull of their
-  corners, exactly). ``%`` and ``*`` children are left out, 3D objects are ignored with
+  ``mirror``, ``color``, ``render``, and ``hull`` of polygons and circles (exactly: the discs
+  and the polygon of the hull's tangent points). ``%`` and ``*`` children are left out, 3D objects are ignored with
   OpenSCAD's warning, other nodes are unsupported (named).
 - :func:`extrude` is ``linear_extrude`` with ``center``, ``scale`` (uniform, or per axis for
   polygons), ``twist`` and ``slices`` (by default OpenSCAD 2021.01's count from ``$fn``, ``$fs``,
@@ -117,25 +117,64 @@ def _empty_leaf(name: str, args: dict[str, Any]) -> bool:
     return False
 
 
+def _disc_hull(centres: NDArray[np.float64], radii: NDArray[np.float64]) -> Any:
+    """The convex hull of discs (radius 0: points), exactly: the discs together with the convex
+    polygon of the points where the hull's outer tangent lines touch them."""
+    import shapely
+
+    from ..shapes2d import EMPTY, circle, polygon, union2d
+
+    size = float(np.ptp(centres, axis=0).max() + 2 * radii.max())
+    touch = []
+    for i in range(len(centres)):
+        d = centres - centres[i]
+        length = np.hypot(d[:, 0], d[:, 1])
+        for j in np.nonzero(length > np.abs(radii[i] - radii))[0]:
+            u = d[j] / length[j]
+            a = (radii[i] - radii[j]) / length[j]
+            n = a * u - math.sqrt(max(0.0, 1.0 - a * a)) * np.array([-u[1], u[0]])  # outward, on the right
+            if np.all(centres @ n + radii <= centres[i] @ n + radii[i] + 1e-12 * size):
+                touch += [centres[i] + radii[i] * n, centres[j] + radii[j] * n]
+    hull = shapely.convex_hull(shapely.multipoints(np.array(touch))) if touch else None
+    discs = [circle(float(r)).translate(c.tolist()) for c, r in zip(centres, radii) if r > 0]
+    parts = list(discs)
+    if hull is not None and hull.geom_type == "Polygon" and hull.area > 0:
+        parts.append(polygon(np.asarray(hull.exterior.coords)[:-1].tolist()))
+    return union2d(*parts) if parts else EMPTY
+
+
 def _hull2d(lw: _Lowerer, call: CSGCall, body: Any) -> Any:
-    """``hull()`` of 2D polygons: the convex polygon of all their corners (circles are refused)."""
-    from ..shapes2d import EMPTY, ConvexPolygon, polygon
+    """``hull()`` of 2D shapes: polygons and circles exactly (:func:`_disc_hull`); ellipses are refused."""
+    from ..shapes2d import EMPTY, Circle, ConvexPolygon
     from ..shapes2d.shape import iter_leaves
 
     if body is EMPTY:
         return EMPTY
-    corners = []
+    corners, centres, radii = [], [], []
     for leaf in iter_leaves(body):
-        if not isinstance(leaf, ConvexPolygon):
-            lw.unsupported(call, "a 2D hull of circles or ellipses is not supported")
+        if isinstance(leaf, ConvexPolygon):
+            corners.append(leaf.array)
+        elif isinstance(leaf, Circle):
+            centres.append(leaf.center)
+            radii.append(leaf.radius)
+        else:
+            lw.unsupported(call, "a 2D hull of ellipses is not supported")
             return None
-        corners.append(leaf.array)
     import shapely
 
-    hull = shapely.convex_hull(shapely.multipoints(np.vstack(corners)))
-    if hull.geom_type != "Polygon" or hull.area <= 0:
-        return EMPTY
-    return polygon(np.asarray(hull.exterior.coords)[:-1].tolist())
+    points = np.zeros((0, 2))
+    if corners:
+        hull = shapely.convex_hull(shapely.multipoints(np.vstack(corners)))
+        points = shapely.get_coordinates(hull)  # its corners (or a segment's ends, or a point)
+    if not centres:
+        if hull.geom_type != "Polygon" or hull.area <= 0:
+            return EMPTY
+        from ..shapes2d import polygon
+
+        return polygon(np.asarray(hull.exterior.coords)[:-1].tolist())
+    c = np.vstack([np.array(centres, dtype=np.float64), points])
+    r = np.concatenate([np.array(radii, dtype=np.float64), np.zeros(len(points))])
+    return _disc_hull(c, r)
 
 
 def _node(lw: _Lowerer, call: CSGCall, kids: list[Any]) -> Any:
