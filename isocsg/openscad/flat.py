@@ -7,9 +7,9 @@ OpenSCAD's own polygonal solids for an explicit small ``$fn``.
   ``mirror``, ``color``, ``render``, and ``hull`` of polygons and circles (exactly: the discs
   and the polygon of the hull's tangent points). ``%`` and ``*`` children are left out, 3D objects are ignored with
   OpenSCAD's warning, other nodes are unsupported (named).
-- :func:`extrude` is ``linear_extrude`` with ``center``, ``scale`` (uniform, or per axis for
-  polygons), ``twist`` and ``slices`` (by default OpenSCAD 2021.01's count from ``$fn``, ``$fs``,
-  ``$fa``: :mod:`isocsg.shapes2d.twist`).
+- :func:`extrude` is ``linear_extrude`` with ``center``, ``scale`` (uniform, or per axis: circles
+  are then OpenSCAD's own polygons, from ``$fn``, ``$fs``, ``$fa``), ``twist`` and ``slices``
+  (by default OpenSCAD 2021.01's count from ``$fn``, ``$fs``, ``$fa``: :mod:`isocsg.shapes2d.twist`).
 - :func:`polygonal_sides` says when ``$fn`` asks for OpenSCAD's polygonal circle
   (``0 < $fn <= FN_MAX``); :func:`cylinder_points` and :func:`sphere_points` are the vertices
   of OpenSCAD's polygonal cylinder and sphere (2021.01's ``primitives.cc``: ``n`` points at
@@ -177,7 +177,22 @@ def _hull2d(lw: _Lowerer, call: CSGCall, body: Any) -> Any:
     return _disc_hull(c, r)
 
 
-def _node(lw: _Lowerer, call: CSGCall, kids: list[Any]) -> Any:
+def _openscad_sides(call: CSGCall, args: dict[str, Any]) -> int:
+    """OpenSCAD's number of sides of a ``circle`` node (``Calc::get_fragments_from_r``)."""
+    from ..shapes2d import fragments
+
+    def num(key: str, default: float) -> float:
+        v = call.kwargs.get(key, default)
+        return float(v) if isinstance(v, (int, float)) and not isinstance(v, bool) and math.isfinite(v) else default
+
+    r = args.get("r")
+    if not isinstance(r, (int, float)) or isinstance(r, bool):
+        d = args.get("d", 2.0)
+        r = d / 2 if isinstance(d, (int, float)) and not isinstance(d, bool) else 1.0
+    return fragments(float(r), num("$fn", 0.0), max(num("$fs", 2.0), 0.01), max(num("$fa", 12.0), 0.01))
+
+
+def _node(lw: _Lowerer, call: CSGCall, kids: list[Any], polygonal: bool = False) -> Any:
     """The shape of one 2D node from its children's shapes (None: skipped)."""
     from ..shapes2d import EMPTY, from_openscad, union2d
 
@@ -188,7 +203,7 @@ def _node(lw: _Lowerer, call: CSGCall, kids: list[Any]) -> Any:
     if _empty_leaf(name, args):
         return EMPTY
     if name == "circle" and polygonal_sides(call) is None:
-        args["$fn"] = 0  # the exact disc (a large $fn too)
+        args["$fn"] = _openscad_sides(call, args) if polygonal else 0  # the exact disc (a large $fn too)
     if name == "translate" and isinstance(args.get("v"), list):
         args["v"] = list(args["v"])[:2]
     if name == "rotate" and "v" in args:
@@ -229,8 +244,9 @@ def _kept(lw: _Lowerer, call: CSGCall) -> list[CSGCall]:
     return out
 
 
-def shape_of(lw: _Lowerer, call: CSGCall) -> Any:
-    """The union of the 2D shapes of ``call``'s children (``EMPTY`` when there are none)."""
+def shape_of(lw: _Lowerer, call: CSGCall, polygonal: bool = False) -> Any:
+    """The union of the 2D shapes of ``call``'s children (``EMPTY`` when there are none); with
+    ``polygonal``, circles are OpenSCAD's polygons (from ``$fn``, ``$fs``, ``$fa``)."""
     from ..shapes2d import EMPTY, union2d
 
     stack: list[tuple[CSGCall, list[CSGCall], list[Any]]] = [(call, _kept(lw, call), [])]
@@ -250,7 +266,7 @@ def shape_of(lw: _Lowerer, call: CSGCall) -> Any:
         elif node.name == "difference" and shapes and shapes[0] is EMPTY:
             value = EMPTY
         else:
-            value = _node(lw, node, [s for s in shapes if s is not EMPTY])
+            value = _node(lw, node, [s for s in shapes if s is not EMPTY], polygonal)
         stack[-1][2].append(value)
 
 
@@ -307,7 +323,8 @@ def extrude(lw: _Lowerer, call: CSGCall) -> Any:
     details = {k: lw.number(call, k, call.kwargs.get(k, d)) for k, d in (("$fn", 0.0), ("$fs", 2.0), ("$fa", 12.0))}
     if h <= 0:
         return None
-    shape = shape_of(lw, call)
+    # A per-axis scale of a disc has no exact isocsg form: OpenSCAD's own polygonal circles then.
+    shape = shape_of(lw, call, polygonal=scale_v[0] != scale_v[1])
     if shape is EMPTY:
         return None
     s: Any = float(scale_v[0]) if scale_v[0] == scale_v[1] else scale_v.tolist()
