@@ -65,7 +65,7 @@ def test_committed_export_is_current(name: str, tmp_path: Path) -> None:
     assert out.read_text() == (DIR / f"{name}.csg").read_text()
 
 
-@settings(max_examples=25, deadline=None)
+@settings(max_examples=10, deadline=None)
 @given(st.lists(st.tuples(st.floats(-5, 5), st.floats(-5, 5), st.one_of(st.just(0.0), st.floats(0.1, 3))),
                 min_size=2, max_size=6))
 def test_2d_hull_of_discs_and_points_is_exact(discs):
