@@ -156,6 +156,7 @@ def _slice_solid(
     centre = pts.mean(axis=0)
     flat = 1e-10 * scale**3
     cuts = []
+    cut_points: list[NDArray[np.float64]] = []
     for i in range(k):
         j = (i + 1) % k
         o = float(np.linalg.det(np.array([b[j] - b[i], t[j] - b[i], t[i] - b[i]])))
@@ -177,9 +178,15 @@ def _slice_solid(
             first = (o < 0) if prio < info else (o > 0)
         if first != (o < 0):
             cuts.append(ConvexPolyhedron(np.array([b[i], b[j], t[j], t[i]])))
+            cut_points.append(np.array([b[i], b[j], t[j], t[i]]))
     if sl.hi[1] == (0.0, 0.0):
         pts = np.vstack([b, [[0.0, 0.0, sl.hi[2]]]])
     hull = ConvexPolyhedron(pts)  # type: ignore[arg-type]
+    if _any_overlap(cut_points, scale):  # two concave bands of one piece cross: no such solid
+        raise InvalidGeometryError(
+            "linear_extrude.slices: the turn per slice is too large for an exact form of this outline "
+            "(its slices' bands cross); give more slices"
+        )
     return Difference((hull, *cuts)) if cuts else hull
 
 
@@ -227,6 +234,39 @@ def twisted_pieces(
         for a in range(len(cell)):  # the cell itself no longer owns its edges
             owners[frozenset((_key(cell[a]), _key(cell[(a + 1) % len(cell)])))].remove(prio)
     return out
+
+
+def _any_overlap(tetras: list[NDArray[np.float64]], scale: float) -> bool:
+    """Whether two of the cut tetrahedra share interior (no separating axis among their face
+    normals and edge cross products): then the slice's concave bands cross each other."""
+    if len(tetras) < 2:
+        return False
+    pairs = [(0, 1), (0, 2), (0, 3), (1, 2), (1, 3), (2, 3)]
+    eps = 1e-9 * scale
+    for x in range(len(tetras)):
+        for y in range(x + 1, len(tetras)):
+            a, b = tetras[x], tetras[y]
+            lo = np.maximum(a.min(axis=0), b.min(axis=0))
+            hi = np.minimum(a.max(axis=0), b.max(axis=0))
+            if np.any(hi - lo <= eps):
+                continue
+            ea = [a[j] - a[i] for i, j in pairs]
+            eb = [b[j] - b[i] for i, j in pairs]
+            axes = [np.cross(ea[0], ea[1]), np.cross(ea[0], ea[2]), np.cross(ea[1], ea[2]), np.cross(ea[3], ea[4]),
+                    np.cross(eb[0], eb[1]), np.cross(eb[0], eb[2]), np.cross(eb[1], eb[2]), np.cross(eb[3], eb[4])]
+            axes += [np.cross(u, v) for u in ea for v in eb]
+            separated = False
+            for n in axes:
+                norm = float(np.linalg.norm(n))
+                if norm <= 1e-12 * scale * scale:
+                    continue
+                pa, pb = a @ n / norm, b @ n / norm
+                if pa.max() <= pb.min() + eps or pb.max() <= pa.min() + eps:
+                    separated = True
+                    break
+            if not separated:
+                return True
+    return False
 
 
 def make_slices(
