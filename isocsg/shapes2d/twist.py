@@ -15,7 +15,8 @@ Along a diagonal shared by two pieces, the piece listed first keeps its convex s
 subtracts that tetrahedron, so the pieces tile the slice. The result is OpenSCAD's solid, exactly.
 This needs each piece's hull to join corresponding corners (the turn per slice below the piece's
 sharpest exterior angle); a piece that fails is split into triangles about its centroid, and a
-triangle that still fails is refused (more ``slices`` help).
+triangle that still fails is refused (more ``slices`` help), and so is a piece two of whose cut
+tetrahedra overlap (two of its concave bands cross).
 
 :func:`slice_count` is OpenSCAD 2021.01's number of slices when ``slices`` is not given
 (``Calc::get_helix_slices``, ``get_conical_helix_slices``, ``get_diagonal_slices``). Newer
