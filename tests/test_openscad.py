@@ -244,9 +244,12 @@ def test_unsupported_node_names_itself_and_its_line(node: str, text: str) -> Non
 
 
 SPECIAL = [
-    ("twist", "linear_extrude(height = 1, twist = 90, slices = 10) {\n  square(size = 1);\n}", "linear_extrude", "a twisted extrusion (twist = 90)"),
-    ("scale", "linear_extrude(height = 1, scale = [2, 1]) {\n  circle(r = 1);\n}", "linear_extrude", "linear_extrude.scale must be uniform for a circle"),
-    ("twist", "linear_extrude(height = 1, twist = 90) {\n  square(size = 1);\n}", "linear_extrude", "a twisted extrusion (twist = 90)"),
+    (
+        "twisted ellipse",
+        "linear_extrude(height = 1, twist = 90, slices = 10) {\n  multmatrix([[2, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) circle(r = 1);\n}",
+        "linear_extrude",
+        "linear_extrude.twist: a twisted ellipse has no exact form",
+    ),
 ]
 
 
@@ -270,7 +273,8 @@ def read_openscad_text(text: str):
 def test_skip_counts_add_up(tmp_path) -> None:
     text = (
         "difference() {\n  cube(size = [3, 3, 3]);\n  hull() { sphere(r = 1); cube(size = 2); }\n  hull() { cube(size = 1); sphere(r = 0.5); }\n"
-        "  minkowski() { cube(size = 1); cylinder(h = 1, r1 = 1, r2 = 0); }\n}\nlinear_extrude(height = 1, twist = 5) { square(size = 1); }\n"
+        "  minkowski() { cube(size = 1); cylinder(h = 1, r1 = 1, r2 = 0); }\n}\n"
+        "linear_extrude(height = 1, twist = 5) { multmatrix([[2, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) circle(r = 1); }\n"
     )
     path = tmp_path / "m.csg"
     path.write_text(text)

@@ -172,7 +172,7 @@ def test_transforms_compose_once_per_leaf(monkeypatch: pytest.MonkeyPatch) -> No
     monkeypatch.setattr(poly, "_hull", counted)
     solid = loads_openscad(head + body + " }" * depth)
     assert sum(1 for _ in leaves(solid)) == count
-    assert calls == count  # one hull per prism, however deep the maps nest
+    assert calls == 0  # prisms built from their faces, mapped without a new hull, however deep the maps nest
     assert volume(solid) == pytest.approx(count * 3.5, rel=1e-9)
 
 

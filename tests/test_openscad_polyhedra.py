@@ -135,8 +135,10 @@ def test_hull_of_polyhedral_children_loads_as_a_convex_polyhedron() -> None:
     ):
         with pytest.raises(UnsupportedOpenSCADError, match=re.escape(f"m.csg:1: hull() is not supported ({reason})")):
             loads_openscad(f"hull() {{ cube(size = 1); {child} }}", source="m.csg")
-    with pytest.raises(UnsupportedOpenSCADError, match=re.escape("m.csg:1: hull() is not supported (a 2D hull of circles")):
-        loads_openscad("linear_extrude(height = 1) { hull() { square(size = 1); circle(r = 1); } }", source="m.csg")
+    with pytest.raises(UnsupportedOpenSCADError, match=re.escape("m.csg:1: hull() is not supported (a 2D hull of ellipses")):
+        loads_openscad("linear_extrude(height = 1) { hull() { square(size = 1); "
+                       "multmatrix([[2, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) { circle(r = 1); } } }",
+                       source="m.csg")
     # a 2D hull of polygons: the convex polygon of their corners
     hull2d = loads_openscad("linear_extrude(height = 2) { hull() { square(size = 1); "
                             "multmatrix([[1, 0, 0, 3], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) { square(size = 1); } } }")

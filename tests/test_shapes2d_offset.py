@@ -8,12 +8,13 @@ import re
 import numpy as np
 import pytest
 import shapely
-from hypothesis import given, settings
+from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 from shapely.geometry import Polygon
 
 from isocsg.errors import InvalidGeometryError
-from isocsg.shapes2d import EMPTY, Circle, area, circle, offset, polygon, square, to_shapely
+from isocsg.shapes2d import EMPTY, Circle, area, area_bounds, circle, offset, polygon, square, to_shapely
+from isocsg.shapes2d.boundary import contains_points
 
 L_SHAPE = [(0, 0), (4, 0), (4, 1), (1, 1), (1, 4), (0, 4)]
 
@@ -140,20 +141,50 @@ def test_rounded_offsets_of_any_tree_are_exact():
     assert area(grown) == pytest.approx(reference.area, rel=1e-6)
 
 
+def _distance_judge(shape, r, n=160, margin=2e-3):
+    """Membership of the offset by r, from the distance to a fine polygonisation of ``shape``.
+
+    A point belongs to the dilation (r > 0) when it is inside or within r of the boundary, to the
+    erosion (r < 0) when it is inside and at least |r| from the boundary. Points within ``margin``
+    of the contour |r| (polygonisation error, rounding) are left out. Returns the sample points,
+    the expected membership and the mask of points that are judged.
+    """
+    fine = to_shapely(shape, resolution=2048)
+    x0, y0, x1, y1 = fine.bounds
+    pad = max(r, 0.0) + 0.1
+    xs, ys = np.meshgrid(np.linspace(x0 - pad, x1 + pad, n), np.linspace(y0 - pad, y1 + pad, n))
+    pts = np.column_stack([xs.ravel(), ys.ravel()])
+    inside = shapely.contains_xy(fine, pts[:, 0], pts[:, 1])
+    dist = shapely.distance(shapely.points(pts), fine.boundary)
+    expected = (inside | (dist <= r)) if r > 0 else (inside & (dist >= -r))
+    return pts, expected, np.abs(dist - abs(r)) > margin
+
+
 @settings(max_examples=15, deadline=None)
 @given(
     st.lists(st.tuples(st.floats(-1, 1), st.floats(-1, 1), st.floats(0.3, 1.0), st.booleans()), min_size=2, max_size=4),
     st.floats(-0.3, 0.4).filter(lambda r: abs(r) > 0.02),
 )
-def test_random_trees_with_circles_offset_like_fine_buffers(parts, r):
+def test_random_trees_with_circles_offset_like_the_distance_function(parts, r):
     shape = square(2, center=True)
     for x, y, size, is_circle in parts:
         leaf = circle(size) if is_circle else square(size, center=True).rotate(30)
         shape = shape - leaf.translate([x, y]) if size < 0.6 else shape | leaf.translate([x + 1, y])
-    ours = offset(shape, r)
-    # GEOS's buffer of very fine polygons leaves spurious lobes (seen at 8192 segments): a moderate reference.
-    reference = to_shapely(shape, resolution=1024).buffer(r, quad_segs=64)
-    assert area(ours) == pytest.approx(reference.area, rel=2e-4, abs=1e-6)
+    try:
+        ours = offset(shape, r)
+    except InvalidGeometryError as exc:
+        # The documented refusal: a boundary whose chain of pieces does not close (curves tangent
+        # within rounding, e.g. a circle touching an edge from inside) has no exact offset here.
+        assert "with curved parts has no exact form here; pass offset(..., tolerance=...)" in str(exc)
+        assume(False)
+    # The judge is the distance to the shape, not GEOS's buffer: a negative buffer of a union of a
+    # square and a rotated square minus a disc came out 2 % too small (2.2102 against the exact
+    # 2.25582, which a 1000 x 1000 grid of distances confirmed at 2.2555).
+    pts, expected, judged = _distance_judge(shape, r)
+    got = contains_points(ours, pts)
+    assert np.array_equal(got[judged], expected[judged]), pts[judged & (got != expected)][:5]
+    lo, hi = area_bounds(ours, resolution=256)
+    assert lo - 1e-9 <= area(ours) <= hi + 1e-9
 
 
 @settings(max_examples=20, deadline=None)

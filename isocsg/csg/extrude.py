@@ -20,12 +20,12 @@ from typing import Any
 import numpy as np
 from numpy.typing import NDArray
 
-from .._validation import MAX_ABS_COORD, MAX_VERTICES, scalar
+from .._validation import MAX_ABS_COORD, MAX_VERTICES, length_floor, scalar
 from ..errors import InvalidGeometryError
 from ..kinds.base import Solid
 from ..kinds.polyhedron import ConvexPolyhedron
 
-__all__ = ["extrude", "extrude_rings", "convex_partition", "merged_triangulation", "prisms"]
+__all__ = ["extrude", "extrude_rings", "convex_partition", "merged_triangulation", "prisms", "prism"]
 
 
 def _polygons(polygon: Any, name: str) -> list[Any]:
@@ -203,16 +203,76 @@ def prisms(polygon: Any, z0: float, z1: float) -> Solid:
     if not (math.isfinite(z0) and math.isfinite(z1)) or z1 <= z0:
         raise InvalidGeometryError(f"extrude.height must be > 0, got {z1 - z0:g}")
     pieces = convex_partition(polygon, name="extrude.polygon")
-    solids = []
-    for piece in pieces:
-        k = len(piece)
-        verts = np.empty((2 * k, 3))
-        verts[:k, :2] = piece
-        verts[:k, 2] = z0
-        verts[k:, :2] = piece
-        verts[k:, 2] = z1
-        solids.append(ConvexPolyhedron(verts))
+    solids = [prism(piece, z0, z1) for piece in pieces]
     return solids[0] if len(solids) == 1 else union_all(solids)
+
+
+def prism(piece: NDArray[np.float64], z0: float, z1: float) -> ConvexPolyhedron:
+    """The straight prism over a convex polygon between ``z = z0`` and ``z = z1 > z0``, built from
+    its known faces (no convex hull: a model of thousands of extruded polygons spent most of its
+    loading time in one hull per prism).
+
+    Parameters
+    ----------
+    piece : ndarray, shape (k, 2)
+        A convex polygon, counter-clockwise (collinear corners allowed).
+
+    Returns
+    -------
+    ConvexPolyhedron
+        Equal to ``ConvexPolyhedron`` of the same ``2k`` points (same ``vertices``); its
+        hull vertices are the strict corners, its faces the two ends and one quad per edge.
+        A polygon that is not strictly convex and counter-clockwise, or too small for its
+        position, goes through the full hull build, which accepts or refuses it.
+    """
+    p = np.asarray(piece, dtype=np.float64)
+    k = len(p)
+    verts = np.empty((2 * k, 3))
+    verts[:k, :2], verts[:k, 2] = p, z0
+    verts[k:, :2], verts[k:, 2] = p, z1
+    if k < 3 or not z1 > z0:
+        return ConvexPolyhedron(verts)  # type: ignore[arg-type]  # the full build decides
+    lo, hi = verts.min(axis=0), verts.max(axis=0)
+    size = float(max(hi[0] - lo[0], hi[1] - lo[1]))
+    nxt = np.arange(1, k + 1) % k
+    e_out = p[nxt] - p
+    e_in = e_out[np.arange(-1, k - 1)]
+    turn = e_in[:, 0] * e_out[:, 1] - e_in[:, 1] * e_out[:, 0]
+    keep = turn > 1e-12 * size * size
+    m = int(keep.sum())
+    if (
+        m < 3 or not (math.isfinite(size) and math.isfinite(z0) and math.isfinite(z1))
+        or bool((turn < -1e-12 * size * size).any()) or min(size, z1 - z0) < length_floor(lo, hi)
+    ):
+        return ConvexPolyhedron(verts)  # type: ignore[arg-type]  # the full build decides
+    strict = p[keep]
+    hv = np.empty((2 * m, 3))
+    hv[:m, :2], hv[:m, 2] = strict, z0
+    hv[m:, :2], hv[m:, 2] = strict, z1
+    i = np.arange(m)
+    j = (i + 1) % m
+    edge = strict[j] - strict
+    side = np.zeros((m, 3))
+    side[:, 0], side[:, 1] = edge[:, 1], -edge[:, 0]  # outward: the inside is on the left
+    side /= np.sqrt(side[:, 0] ** 2 + side[:, 1] ** 2)[:, None]
+    normals = np.vstack([[0.0, 0.0, -1.0], [0.0, 0.0, 1.0], side])
+    quads = np.column_stack([i, j, m + j, m + i])
+    faces = [i[::-1].copy(), i + m, *quads]
+    offsets = np.concatenate([[-z0, z1], side[:, 0] * strict[:, 0] + side[:, 1] * strict[:, 1]])
+    fan = np.arange(1, m - 1)
+    tris = np.vstack([
+        np.column_stack([np.full(m - 2, m - 1), m - 1 - fan, m - 2 - fan]),  # the bottom, reversed
+        np.column_stack([np.full(m - 2, m), m + fan, m + fan + 1]),
+        quads[:, [0, 1, 2]], quads[:, [0, 2, 3]],
+    ]).astype(np.int64)
+    out = object.__new__(ConvexPolyhedron)
+    object.__setattr__(out, "vertices", tuple(map(tuple, verts.tolist())))
+    for arr in (hv, normals, offsets, tris):
+        arr.setflags(write=False)
+    for name, value in (("hull_vertices", hv), ("faces", tuple(faces)), ("face_normals", normals),
+                        ("face_offsets", offsets), ("triangles", tris)):
+        object.__setattr__(out, name, value)
+    return out
 
 
 def _ring(name: str, value: Any) -> NDArray[np.float64]:

@@ -4,11 +4,12 @@ OpenSCAD's own polygonal solids for an explicit small ``$fn``.
 - :func:`shape_of` converts the children of a node into one 2D shape with an explicit stack:
   ``square``, ``circle``, ``polygon`` (non-convex, holes), ``text``, ``offset`` (``r``,
   ``delta``, ``chamfer``), the 2D Booleans, ``multmatrix``/``translate``/``rotate``/``scale``/
-  ``mirror``, ``color``, ``render``, and ``hull`` of polygons (the convex hull of their
-  corners, exactly). ``%`` and ``*`` children are left out, 3D objects are ignored with
+  ``mirror``, ``color``, ``render``, and ``hull`` of polygons and circles (exactly: the discs
+  and the polygon of the hull's tangent points). ``%`` and ``*`` children are left out, 3D objects are ignored with
   OpenSCAD's warning, other nodes are unsupported (named).
-- :func:`extrude` is ``linear_extrude`` with ``center`` and ``scale`` (uniform, or per axis for
-  polygons); ``twist`` is refused.
+- :func:`extrude` is ``linear_extrude`` with ``center``, ``scale`` (uniform, or per axis: circles
+  are then OpenSCAD's own polygons, from ``$fn``, ``$fs``, ``$fa``), ``twist`` and ``slices``
+  (by default OpenSCAD 2021.01's count from ``$fn``, ``$fs``, ``$fa``: :mod:`isocsg.shapes2d.twist`).
 - :func:`polygonal_sides` says when ``$fn`` asks for OpenSCAD's polygonal circle
   (``0 < $fn <= FN_MAX``); :func:`cylinder_points` and :func:`sphere_points` are the vertices
   of OpenSCAD's polygonal cylinder and sphere (2021.01's ``primitives.cc``: ``n`` points at
@@ -117,25 +118,64 @@ def _empty_leaf(name: str, args: dict[str, Any]) -> bool:
     return False
 
 
+def _disc_hull(centres: NDArray[np.float64], radii: NDArray[np.float64]) -> Any:
+    """The convex hull of discs (radius 0: points), exactly: the discs together with the convex
+    polygon of the points where the hull's outer tangent lines touch them."""
+    import shapely
+
+    from ..shapes2d import EMPTY, circle, polygon, union2d
+
+    size = float(np.ptp(centres, axis=0).max() + 2 * radii.max())
+    touch = []
+    for i in range(len(centres)):
+        d = centres - centres[i]
+        length = np.hypot(d[:, 0], d[:, 1])
+        for j in np.nonzero(length > np.abs(radii[i] - radii))[0]:
+            u = d[j] / length[j]
+            a = (radii[i] - radii[j]) / length[j]
+            n = a * u - math.sqrt(max(0.0, 1.0 - a * a)) * np.array([-u[1], u[0]])  # outward, on the right
+            if np.all(centres @ n + radii <= centres[i] @ n + radii[i] + 1e-12 * size):
+                touch += [centres[i] + radii[i] * n, centres[j] + radii[j] * n]
+    hull = shapely.convex_hull(shapely.multipoints(np.array(touch))) if touch else None
+    discs = [circle(float(r)).translate(c.tolist()) for c, r in zip(centres, radii) if r > 0]
+    parts = list(discs)
+    if hull is not None and hull.geom_type == "Polygon" and hull.area > 0:
+        parts.append(polygon(np.asarray(hull.exterior.coords)[:-1].tolist()))
+    return union2d(*parts) if parts else EMPTY
+
+
 def _hull2d(lw: _Lowerer, call: CSGCall, body: Any) -> Any:
-    """``hull()`` of 2D polygons: the convex polygon of all their corners (circles are refused)."""
-    from ..shapes2d import EMPTY, ConvexPolygon, polygon
+    """``hull()`` of 2D shapes: polygons and circles exactly (:func:`_disc_hull`); ellipses are refused."""
+    from ..shapes2d import EMPTY, Circle, ConvexPolygon
     from ..shapes2d.shape import iter_leaves
 
     if body is EMPTY:
         return EMPTY
-    corners = []
+    corners, centres, radii = [], [], []
     for leaf in iter_leaves(body):
-        if not isinstance(leaf, ConvexPolygon):
-            lw.unsupported(call, "a 2D hull of circles or ellipses is not supported")
+        if isinstance(leaf, ConvexPolygon):
+            corners.append(leaf.array)
+        elif isinstance(leaf, Circle):
+            centres.append(leaf.center)
+            radii.append(leaf.radius)
+        else:
+            lw.unsupported(call, "a 2D hull of ellipses is not supported")
             return None
-        corners.append(leaf.array)
     import shapely
 
-    hull = shapely.convex_hull(shapely.multipoints(np.vstack(corners)))
-    if hull.geom_type != "Polygon" or hull.area <= 0:
-        return EMPTY
-    return polygon(np.asarray(hull.exterior.coords)[:-1].tolist())
+    points = np.zeros((0, 2))
+    if corners:
+        hull = shapely.convex_hull(shapely.multipoints(np.vstack(corners)))
+        points = shapely.get_coordinates(hull)  # its corners (or a segment's ends, or a point)
+    if not centres:
+        if hull.geom_type != "Polygon" or hull.area <= 0:
+            return EMPTY
+        from ..shapes2d import polygon
+
+        return polygon(np.asarray(hull.exterior.coords)[:-1].tolist())
+    c = np.vstack([np.array(centres, dtype=np.float64), points])
+    r = np.concatenate([np.array(radii, dtype=np.float64), np.zeros(len(points))])
+    return _disc_hull(c, r)
 
 
 def drawing_path(lw: _Lowerer, call: CSGCall) -> Path:
@@ -173,7 +213,22 @@ def import_drawing(lw: _Lowerer, call: CSGCall) -> Any:
         raise lw.fail(call, str(exc)) from None
 
 
-def _node(lw: _Lowerer, call: CSGCall, kids: list[Any]) -> Any:
+def _openscad_sides(call: CSGCall, args: dict[str, Any]) -> int:
+    """OpenSCAD's number of sides of a ``circle`` node (``Calc::get_fragments_from_r``)."""
+    from ..shapes2d import fragments
+
+    def num(key: str, default: float) -> float:
+        v = call.kwargs.get(key, default)
+        return float(v) if isinstance(v, (int, float)) and not isinstance(v, bool) and math.isfinite(v) else default
+
+    r = args.get("r")
+    if not isinstance(r, (int, float)) or isinstance(r, bool):
+        d = args.get("d", 2.0)
+        r = d / 2 if isinstance(d, (int, float)) and not isinstance(d, bool) else 1.0
+    return fragments(float(r), num("$fn", 0.0), max(num("$fs", 2.0), 0.01), max(num("$fa", 12.0), 0.01))
+
+
+def _node(lw: _Lowerer, call: CSGCall, kids: list[Any], polygonal: bool = False) -> Any:
     """The shape of one 2D node from its children's shapes (None: skipped)."""
     from ..shapes2d import EMPTY, from_openscad, union2d
 
@@ -186,7 +241,7 @@ def _node(lw: _Lowerer, call: CSGCall, kids: list[Any]) -> Any:
     if _empty_leaf(name, args):
         return EMPTY
     if name == "circle" and polygonal_sides(call) is None:
-        args["$fn"] = 0  # the exact disc (a large $fn too)
+        args["$fn"] = _openscad_sides(call, args) if polygonal else 0  # the exact disc (a large $fn too)
     if name == "translate" and isinstance(args.get("v"), list):
         args["v"] = list(args["v"])[:2]
     if name == "rotate" and "v" in args:
@@ -227,8 +282,9 @@ def _kept(lw: _Lowerer, call: CSGCall) -> list[CSGCall]:
     return out
 
 
-def shape_of(lw: _Lowerer, call: CSGCall) -> Any:
-    """The union of the 2D shapes of ``call``'s children (``EMPTY`` when there are none)."""
+def shape_of(lw: _Lowerer, call: CSGCall, polygonal: bool = False) -> Any:
+    """The union of the 2D shapes of ``call``'s children (``EMPTY`` when there are none); with
+    ``polygonal``, circles are OpenSCAD's polygons (from ``$fn``, ``$fs``, ``$fa``)."""
     from ..shapes2d import EMPTY, union2d
 
     stack: list[tuple[CSGCall, list[CSGCall], list[Any]]] = [(call, _kept(lw, call), [])]
@@ -248,7 +304,7 @@ def shape_of(lw: _Lowerer, call: CSGCall) -> Any:
         elif node.name == "difference" and shapes and shapes[0] is EMPTY:
             value = EMPTY
         else:
-            value = _node(lw, node, [s for s in shapes if s is not EMPTY])
+            value = _node(lw, node, [s for s in shapes if s is not EMPTY], polygonal)
         stack[-1][2].append(value)
 
 
@@ -293,24 +349,30 @@ def extrude(lw: _Lowerer, call: CSGCall) -> Any:
     from ..shapes2d import EMPTY, linear_extrude
 
     twist = lw.number(call, "twist", call.kwargs.get("twist", 0.0) or 0.0)
-    if twist != 0.0:
-        lw.unsupported(call, f"a twisted extrusion (twist = {twist:g}) is not supported yet")
-        return None
     h = lw.number(call, "height", lw.arg(call, "height", 0, 100.0))
     center = lw.boolean(call, "center", call.kwargs.get("center", False))
     scale = call.kwargs.get("scale", 1.0)
     scale_v = lw.vector(call, "scale", 1.0 if scale is None else scale, 2)
+    slices = call.kwargs.get("slices")
+    n = lw.number(call, "slices", slices) if slices is not None else 0.0
+    details = {k: lw.number(call, k, call.kwargs.get(k, d)) for k, d in (("$fn", 0.0), ("$fs", 2.0), ("$fa", 12.0))}
     if h <= 0:
         return None
-    # The old form names its drawing itself: linear_extrude(file = "x.dxf", layer = ...).
-    shape = import_drawing(lw, call) if "file" in call.kwargs else shape_of(lw, call)
+    # The old form names its drawing itself: linear_extrude(file = "x.dxf", layer = ...). A per-axis
+    # scale of a disc has no exact isocsg form: OpenSCAD's own polygonal circles then.
+    polygonal = scale_v[0] != scale_v[1]
+    shape = import_drawing(lw, call) if "file" in call.kwargs else shape_of(lw, call, polygonal=polygonal)
     if shape is None or shape is EMPTY:
         return None
     s: Any = float(scale_v[0]) if scale_v[0] == scale_v[1] else scale_v.tolist()
     try:
-        return _as_boxes(linear_extrude(shape, h, center=center, scale=s))
+        solid = linear_extrude(
+            shape, h, center=center, scale=s, twist=twist,
+            slices=int(n) if n >= 1 else None,  # OpenSCAD reads slices < 1 as absent
+            fn=max(details["$fn"], 0.0), fs=max(details["$fs"], 0.01), fa=max(details["$fa"], 0.01))
+        return _as_boxes(solid)
     except InvalidGeometryError as exc:
-        if "scale" in str(exc):
+        if "scale" in str(exc) or "twist" in str(exc) or "slices" in str(exc):
             lw.unsupported(call, str(exc))
             return None
         raise lw.fail(call, str(exc)) from None

@@ -13,10 +13,13 @@ leaves, built with an explicit stack (trees of many thousands of nodes):
 - an ellipse becomes the affine image of a cylinder (or frustum).
 
 With a uniform scale every side face is planar and the solid is exactly
-OpenSCAD's. A non-uniform ``scale`` of a polygon makes each convex piece the
-convex hull of its two ends: OpenSCAD splits each (then non-planar) side quad
-into two triangles instead, so the two differ by the twist of those quads.
-A non-uniform scale of a circle or ellipse (not a cone) is refused.
+OpenSCAD's. A ``twist`` or a non-uniform ``scale`` is OpenSCAD's stack of
+slices (:mod:`isocsg.shapes2d.twist`): exact for polygons, whose outline is
+taken as one region (OpenSCAD extrudes the outline, not the tree); a circle
+becomes one sheared frustum per slice, its centre and radius following the
+slices' chords (OpenSCAD's polygonal circle joins corresponding corners, which
+narrows each slice's waist by ``cos(turn / 2)``); a non-uniform scale of a circle
+(not a cone) and a twisted ellipse are refused.
 """
 
 from __future__ import annotations
@@ -30,7 +33,10 @@ from ._checks import MAX_ABS_COORD, flag, number, vector2
 from .leaves import Circle, ConvexPolygon, Ellipse
 from .shape import Shape2D, fold
 
-__all__ = ["linear_extrude"]
+__all__ = ["linear_extrude", "MAX_SLICES"]
+
+#: The most slices a twisted or non-uniformly scaled extrusion may have.
+MAX_SLICES = 10000
 
 
 def _scale(value: Any) -> tuple[float, float]:
@@ -44,9 +50,12 @@ def _scale(value: Any) -> tuple[float, float]:
 
 
 def _prism(leaf: ConvexPolygon, z0: float, z1: float, s: tuple[float, float]) -> Any:
+    from ..csg.extrude import prism
     from ..kinds.polyhedron import ConvexPolyhedron
 
     p = leaf.array
+    if s == (1.0, 1.0):
+        return prism(p, z0, z1)
     k = len(p)
     verts = np.empty((2 * k, 3))
     verts[:k, :2], verts[:k, 2] = p, z0
@@ -88,7 +97,36 @@ def _round(leaf: Circle | Ellipse, z0: float, z1: float, s: tuple[float, float])
     return base.transform(A)
 
 
-def linear_extrude(shape: Shape2D, height: Any, *, center: bool = False, scale: Any = 1.0) -> Any:
+def _combine(op: str, n: Shape2D, kids: list[Any]) -> Any:
+    """One 2D node's Boolean over its children's solids (None: empty)."""
+    from ..csg.tree import Difference, Intersection, Union
+
+    if op == "union":
+        real = [k for k in kids if k is not None]
+        return None if not real else real[0] if len(real) == 1 else Union(tuple(real))
+    if op == "intersection":
+        if any(k is None for k in kids):
+            return None
+        return kids[0] if len(kids) == 1 else Intersection(tuple(kids))
+    if kids[0] is None:
+        return None
+    rest = [k for k in kids[1:] if k is not None]
+    return kids[0] if not rest else Difference((kids[0], *rest))
+
+
+def _slices(value: Any) -> int | None:
+    if value is None:
+        return None
+    n = number("linear_extrude.slices", value, low=1.0, high=MAX_SLICES, strict=False)
+    if n != int(n):
+        raise InvalidGeometryError(f"linear_extrude.slices must be a whole number, got {n:g}")
+    return int(n)
+
+
+def linear_extrude(
+    shape: Shape2D, height: Any, *, center: bool = False, scale: Any = 1.0, twist: Any = 0.0,
+    slices: Any = None, fn: Any = 0.0, fs: Any = 2.0, fa: Any = 12.0,
+) -> Any:
     """OpenSCAD's ``linear_extrude``: the exact solid swept by a 2D shape along +z.
 
     Parameters
@@ -103,6 +141,13 @@ def linear_extrude(shape: Shape2D, height: Any, *, center: bool = False, scale: 
         Scale of the top about the z axis (>= 0). Uniform scales are exact for
         every leaf; a non-uniform scale is accepted for polygons only (see the
         module notes).
+    twist : float, default 0
+        Degrees the top turns, clockwise seen from above for a positive twist
+        (as in OpenSCAD), in ``slices`` steps.
+    slices : int, optional
+        1 to :data:`MAX_SLICES`; by default OpenSCAD 2021.01's count from
+        ``fn``, ``fs``, ``fa`` (its ``$fn``, ``$fs``, ``$fa``), see
+        :func:`isocsg.shapes2d.twist.slice_count`.
 
     Returns
     -------
@@ -110,12 +155,15 @@ def linear_extrude(shape: Shape2D, height: Any, *, center: bool = False, scale: 
         A primitive for a single leaf, else the 3D CSG tree of the shape's
         Booleans over the extruded leaves; its volume is ``area * height``
         (``area * height * (1 + s + s^2) / 3`` with a uniform scale ``s``).
+        With a twist or a non-uniform scale: OpenSCAD's stack of slices
+        (see :mod:`isocsg.shapes2d.twist`).
 
     Raises
     ------
     InvalidGeometryError
-        On an empty shape, a height that is not > 0, a negative scale, or a
-        non-uniform scale of a circle or ellipse (naming the field).
+        On an empty shape, a height that is not > 0, a negative scale, a
+        non-uniform scale of a circle or ellipse, a twisted ellipse, bad
+        ``slices``, ``fn``, ``fs`` or ``fa`` (naming the field).
 
     Examples
     --------
@@ -124,34 +172,32 @@ def linear_extrude(shape: Shape2D, height: Any, *, center: bool = False, scale: 
     >>> solid = linear_extrude(square(4, center=True) - circle(1), 2)
     >>> abs(volume(solid) - (16 - 3.141592653589793) * 2) < 1e-6
     True
+    >>> twisted = linear_extrude(square(2, center=True), 1, twist=90, slices=6)
+    >>> type(twisted).__name__, len(twisted.children)  # one convex slice per step
+    ('Union', 6)
     """
-    from ..csg.tree import Difference, Intersection, Union
-
     h = number("linear_extrude.height", height, low=0.0, high=MAX_ABS_COORD)
     z0, z1 = (-h / 2, h / 2) if flag("linear_extrude.center", center) else (0.0, h)
     s = _scale(scale)
+    tw = number("linear_extrude.twist", twist, low=-1e6, high=1e6)
+    n = _slices(slices)
+    if not isinstance(shape, Shape2D):
+        raise InvalidGeometryError(f"linear_extrude.shape must be a 2D shape, got {type(shape).__name__}")
+    if tw != 0.0 or s[0] != s[1]:
+        from .twist import sliced_extrude
 
-    def leaf(l: Shape2D) -> Any:
-        if isinstance(l, ConvexPolygon):
-            return _prism(l, z0, z1, s)
-        if isinstance(l, (Circle, Ellipse)):
-            return _round(l, z0, z1, s)
-        raise InvalidGeometryError(f"linear_extrude.shape holds an unknown leaf {type(l).__name__}")
+        details = (number("linear_extrude.fn", fn, low=0.0, strict=False), number("linear_extrude.fs", fs, low=0.0),
+                   number("linear_extrude.fa", fa, low=0.0))
+        solid = sliced_extrude(shape, z0, z1, tw, s, n, details, _combine)
+    else:
+        def leaf(l: Shape2D) -> Any:
+            if isinstance(l, ConvexPolygon):
+                return _prism(l, z0, z1, s)
+            if isinstance(l, (Circle, Ellipse)):
+                return _round(l, z0, z1, s)
+            raise InvalidGeometryError(f"linear_extrude.shape holds an unknown leaf {type(l).__name__}")
 
-    def node(op: str, n: Shape2D, kids: list[Any]) -> Any:
-        if op == "union":
-            real = [k for k in kids if k is not None]
-            return None if not real else real[0] if len(real) == 1 else Union(tuple(real))
-        if op == "intersection":
-            if any(k is None for k in kids):
-                return None
-            return kids[0] if len(kids) == 1 else Intersection(tuple(kids))
-        if kids[0] is None:
-            return None
-        rest = [k for k in kids[1:] if k is not None]
-        return kids[0] if not rest else Difference((kids[0], *rest))
-
-    solid = fold(shape, leaf, node)
+        solid = fold(shape, leaf, _combine)
     if solid is None:
         raise InvalidGeometryError("linear_extrude.shape must not be empty")
     return solid
