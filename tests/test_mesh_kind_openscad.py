@@ -25,9 +25,9 @@ import numpy as np
 import pytest
 
 import isocsg
-from isocsg import InvalidGeometryError, OpenSCADError, TriangleMesh, UnsupportedOpenSCADError
+from isocsg import InvalidGeometryError, OpenSCADError, TriangleMesh
 from isocsg.kinds.mesh_io import height_map, polygon_mesh, read_height_map, read_mesh
-from isocsg.openscad import OpenSCADSkipWarning, load_openscad, loads_openscad
+from isocsg.openscad import load_openscad, loads_openscad
 
 DIR = Path(__file__).resolve().parent / "data" / "openscad" / "mesh22"
 MODELS = sorted(p.stem for p in DIR.glob("*.scad"))
@@ -149,12 +149,12 @@ def test_missing_file_names_the_file_and_line(tmp_path: Path) -> None:
         load_openscad(p)
 
 
-def test_2d_imports_are_refused_and_skippable(tmp_path: Path) -> None:
+def test_2d_imports_beside_3d_objects_are_ignored_as_openscad_does(tmp_path: Path) -> None:
+    from isocsg.openscad.flat import MixedDimensionsWarning
+
     p = _csg(tmp_path, 'import(file = "plate.svg");')
-    with pytest.raises(UnsupportedOpenSCADError, match=re.escape("m.csg:2: import() is not supported (only 3D meshes")):
-        load_openscad(p)
-    with pytest.warns(OpenSCADSkipWarning, match="1 import"):
-        assert isocsg.volume(load_openscad(p, skip_unsupported=True)) == 1.0
+    with pytest.warns(MixedDimensionsWarning, match="ignoring the 2D object import"):
+        assert isocsg.volume(load_openscad(p)) == 1.0
 
 
 @pytest.mark.parametrize("content, message", [

@@ -548,12 +548,18 @@ def _placed(lw: _Lowerer, call: CSGCall, solid: Solid | None, m: NDArray[np.floa
     return _transform(lw, call, solid, m)
 
 
+def _drawing_file(lw: _Lowerer, call: CSGCall) -> bool:
+    """An ``import`` of a 2D drawing (DXF, SVG): a 2D object."""
+    value = lw.arg(call, "file", 0, None)
+    return isinstance(value, str) and Path(value).suffix.lower() in (".dxf", ".svg")
+
+
 def _enter(lw: _Lowerer, call: CSGCall, m: NDArray[np.float64] | None) -> tuple[Any, NDArray[np.float64] | None, bool]:
     """Start a node: ``(value, map for its children, descend)``; a leaf's value is final at once."""
     if "%" in call.modifiers or "*" in call.modifiers:
         return _DROP, m, False  # background and disabled objects are not part of the model
     name = call.name
-    if name in _DIM2:
+    if name in _DIM2 or (name == "import" and _drawing_file(lw, call)):
         lw.note(call, "a 2D object beside 3D ones is ignored (as OpenSCAD does)")
         warnings.warn(MixedDimensionsWarning(
             f"{lw.where(call)}ignoring the 2D object {name}() beside 3D objects, as OpenSCAD does"), stacklevel=4)
