@@ -32,9 +32,9 @@ Where another leaf ``j``'s surface passes through ``p`` (within 1e-11 of the sce
 with the same or the opposite normal, ``j`` takes the side its normal says (in on the side
 its interior is), so two boxes stacked in a union lose their shared face and a face common to
 ``A`` and ``B`` in ``A - B`` is removed. A face shared by several leaves is counted once, by
-the leaf of lowest index (the others skip it), and only where the CSG rule keeps it. A crossing
-missed by the sampling (two crossings of a curved leaf closer than ``2 pi / samples`` on one
-ring, near tangencies) is not in the error estimate; it shows as slow convergence.
+the leaf of lowest index (the others skip it), and only where the CSG rule keeps it. The split
+test assumes signed distances that are 1-Lipschitz (exact ones are); two crossings closer than
+2**-30 of a ring (tangencies) are not in the error estimate.
 """
 
 from __future__ import annotations
@@ -73,6 +73,8 @@ _GL_X, _GL_W = np.polynomial.legendre.leggauss(6)
 RING_GRID = 17
 #: Where another leaf's surface passes within this fraction of the scene's size, it is on it.
 COINCIDENT = 1e-11
+#: Most ring intervals per ring kept splitting at one level of the crossing search.
+MAX_SPLITS = 64
 #: Most sweep intervals per patch before the integration returns what it has.
 MAX_INTERVALS = 4000
 
@@ -135,6 +137,22 @@ def closed_form_area(prim: Primitive) -> float:
     raise InvalidParameterError(f"surface area: no closed form for the kind {type(prim).__name__}")
 
 
+def _planes(prim: Primitive) -> tuple[F64, F64] | None:
+    """The planes ``n . x = d`` of a leaf's planar faces (a truncus' ends too), or None."""
+    if isinstance(prim, (Box, ConvexPolyhedron)):
+        n, d = prim.planar_faces()
+        return np.asarray(n, dtype=np.float64), np.asarray(d, dtype=np.float64)
+    if isinstance(prim, Truncus):
+        a, c, h = prim.unit_axis, prim.center_array, float(prim.height)
+        return np.stack([a, -a]), np.array([a @ (c + a * h / 2), -a @ (c - a * h / 2)])
+    if isinstance(prim, EllipticTruncus):
+        M, c = prim.linear, prim.center_array
+        nz = np.linalg.inv(M).T @ np.array([0.0, 0.0, 1.0])
+        nz = nz / np.linalg.norm(nz)
+        return np.stack([nz, -nz]), np.array([nz @ (c + M[:, 2] / 2), -nz @ (c - M[:, 2] / 2)])
+    return None
+
+
 class _Tree:
     """What the ring classification needs of the tree: its program, boxes, planes and tolerance."""
 
@@ -148,6 +166,7 @@ class _Tree:
         self.step = 1e-7 * scale
         self.last_inside_minus = np.zeros(0, bool)
         self.planar = [isinstance(p, (Box, ConvexPolyhedron)) for p in self.leaves]
+        self.planes = [_planes(p) for p in self.leaves]
 
     def relevant(self, i: int) -> NDArray[np.int64]:
         """The leaves other than ``i`` whose boxes meet ``i``'s (grown by the tolerance)."""
@@ -201,8 +220,7 @@ class _Tree:
         return (rp != rm) & ~skip, undecided
 
     def state(self, j: int, p: F64) -> NDArray[np.int8]:
-        sd = self.leaves[j].signed_distance(p)
-        return np.where(np.abs(sd) <= self.tol, 0, np.sign(sd)).astype(np.int8)  # type: ignore[no-any-return]
+        return _state(np.asarray(self.leaves[j].signed_distance(p)), self.tol)
 
 
 def _plane_crossings(rings: Rings, normals: F64, offsets: F64) -> tuple[NDArray[np.int64], F64]:
@@ -228,20 +246,48 @@ def _plane_crossings(rings: Rings, normals: F64, offsets: F64) -> tuple[NDArray[
 def _curved_crossings(
     tree: _Tree, rings: Rings, leaves: list[int], samples: int,
 ) -> tuple[NDArray[np.int64], F64]:
-    """Sign changes of curved leaves' signed distances along the rings, bisected to rounding."""
+    """Sign changes of curved leaves' signed distances along the rings, bisected to rounding.
+
+    The rings are sampled at ``samples`` points; an interval without a sign change is split again
+    while its ends' distances could hide two crossings between them (``|f_a| + |f_b|`` at most
+    the arc's length bound: signed distances are 1-Lipschitz), down to 2**-30 of the ring, so that
+    thin rods and slots are not stepped over; a ring that runs along a surface (more than
+    ``MAX_SPLITS`` such intervals per ring) stops the splitting."""
     k = len(rings.c)
     u = np.linspace(0.0, 1.0, samples + 1)
     T = rings.t0[:, None] + (rings.t1 - rings.t0)[:, None] * u
-    ring = np.repeat(np.arange(k), samples + 1)
-    P = rings.points(ring, T.ravel())
+    speed = np.linalg.norm(rings.A, axis=1) + (np.linalg.norm(rings.B, axis=1) if rings.trig else 0.0)
+    ring0 = np.repeat(np.arange(k), samples)
     out_r: list[NDArray[np.int64]] = []
     out_t: list[F64] = []
     for j in leaves:
-        st = tree.state(j, P).reshape(k, samples + 1)
-        ri, ci = np.nonzero(st[:, :-1] != st[:, 1:])
+        prim = tree.leaves[j]
+        f = np.asarray(prim.signed_distance(rings.points(np.repeat(np.arange(k), samples + 1), T.ravel())))
+        f = f.reshape(k, samples + 1)
+        r, ta, tb = ring0, T[:, :-1].ravel(), T[:, 1:].ravel()
+        fa, fb = f[:, :-1].ravel(), f[:, 1:].ravel()
+        found_r, found_a, found_b, found_s = [], [], [], []
+        for _ in range(30):
+            sa, sb = _state(fa, tree.tol), _state(fb, tree.tol)
+            change = sa != sb
+            found_r.append(r[change])
+            found_a.append(ta[change])
+            found_b.append(tb[change])
+            found_s.append(sa[change])
+            hidden = ~change & (np.abs(fa) + np.abs(fb) <= 1.01 * speed[r] * (tb - ta) + tree.tol)
+            hidden &= (np.abs(fa) > tree.tol) | (np.abs(fb) > tree.tol)  # on the surface: coincident
+            if not hidden.any() or hidden.sum() > MAX_SPLITS * k:
+                break  # a ring that runs along a surface stops the splitting here
+            r, ta, tb, fa, fb = r[hidden], ta[hidden], tb[hidden], fa[hidden], fb[hidden]
+            tm = 0.5 * (ta + tb)
+            fm = np.asarray(prim.signed_distance(rings.points(r, tm)))
+            r = np.concatenate([r, r])
+            ta, tb = np.concatenate([ta, tm]), np.concatenate([tm, tb])
+            fa, fb = np.concatenate([fa, fm]), np.concatenate([fm, fb])
+        ri = np.concatenate(found_r)
         if len(ri) == 0:
             continue
-        lo, hi, sl = T[ri, ci], T[ri, ci + 1], st[ri, ci]
+        lo, hi, sl = np.concatenate(found_a), np.concatenate(found_b), np.concatenate(found_s)
         for _ in range(52):
             mid = 0.5 * (lo + hi)
             same = tree.state(j, rings.points(ri, mid)) == sl
@@ -253,6 +299,10 @@ def _curved_crossings(
     if not out_r:
         return np.zeros(0, np.int64), np.zeros(0)
     return np.concatenate(out_r), np.concatenate(out_t)
+
+
+def _state(sd: F64, tol: float) -> NDArray[np.int8]:
+    return np.where(np.abs(sd) <= tol, 0, np.sign(sd)).astype(np.int8)  # type: ignore[no-any-return]
 
 
 def _ring_measure(
@@ -311,13 +361,11 @@ def _patch_area(
 ) -> tuple[float, float]:
     """Adaptive Gauss-Kronrod over the sweep parameter; returns (area, error), or with ``origin``
     (the patch's share of the volume, error)."""
-    pl = [j for j in rel.tolist() if tree.planar[j]]
+    faces = [f for f in (tree.planes[j] for j in rel.tolist()) if f is not None]
     curved = [j for j in rel.tolist() if not tree.planar[j]]
     planes = None
-    if pl:
-        faces = [tree.leaves[j].planar_faces() for j in pl]
-        planes = (np.concatenate([np.asarray(f[0], dtype=np.float64) for f in faces]),
-                  np.concatenate([np.asarray(f[1], dtype=np.float64) for f in faces]))
+    if faces:
+        planes = (np.concatenate([f[0] for f in faces]), np.concatenate([f[1] for f in faces]))
     br = _sweep_breaks(tree, patch, rel)
     span = patch.s_hi - patch.s_lo
     br = br[np.concatenate([[True], np.diff(br) > 1e-13 * span])]
