@@ -19,18 +19,21 @@ BALLS = Sphere((0, 0, 0), 1) | Sphere((0, 0, 0.75), 1) | Sphere((0, 0, 1.5), 1)
 
 @pytest.fixture(scope="module")
 def balls_ref():
-    return reference(BALLS, tol=1e-7)
+    return reference(BALLS, tol=1e-6)
 
 
 def test_three_unit_spheres_of_trimesh_suite(balls_ref):
     # trimesh's golden 8.617306056726884 is 0.73 % low; the exact volume is 8.680286
-    assert abs(balls_ref.volume - 8.680286) < 1e-6
+    # 3 balls less 2 lenses of unit spheres 0.75 apart (the outer pair's lens lies in the middle ball)
+    exact = math.pi * (4 - 2 * (4 + 0.75) * (2 - 0.75) ** 2 / 12)
+    assert abs(exact - 8.680286) < 1e-6
+    assert abs(balls_ref.volume - exact) <= balls_ref.volume_error + 1e-12
     m = to_trimesh(BALLS, 64)
-    c = compare_mesh(m, BALLS, segments=64, samples=1000, ref=balls_ref)
+    c = compare_mesh(m, BALLS, segments=64, samples=500, ref=balls_ref)
     assert c.ok, c.summary()
     assert dict(c.verdicts)["volume"] == "tessellation"
     assert "OK" in str(c)
-    assert compare_mesh(m.copy(), BALLS, samples=500, ref=balls_ref).segments == 64  # guessed
+    assert compare_mesh(m, BALLS, samples=200, ref=balls_ref).segments == 64  # guessed
 
 
 def test_missing_triangle_and_flipped_face(balls_ref):

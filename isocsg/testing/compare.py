@@ -236,8 +236,8 @@ def compare_mesh(
         The primitive or CSG tree the mesh should be.
     segments : int, optional
         Segments per circle the engine used for the curved leaves; None for an all-planar tree
-        (tessellation explains nothing) or to take the count (8 .. 1024, powers of two and
-        multiples of 8) whose isocsg mesh has the vertex count nearest the mesh's.
+        (tessellation explains nothing) or to take the count (a power of two, 8 .. 512) whose
+        isocsg mesh has the vertex count nearest the mesh's.
     samples : int, default 4000
         Surface samples on each side for the Hausdorff estimates, 100 .. 10**6.
     slack : float, default 1.5
@@ -332,7 +332,7 @@ def _tessellation(solid: Solid, segments: int, n: int, seed: int, planar: bool) 
 
 def _guess_segments(solid: Solid, vertices: int) -> int:
     best, best_d = 32, math.inf
-    for s in (8, 12, 16, 24, 32, 48, 64, 96, 128, 192, 256, 384, 512, 768, 1024):
+    for s in (8, 16, 32, 64, 128, 256, 512):
         v = len(to_manifold(solid, s).to_mesh().vert_properties)
         d = abs(math.log(max(v, 1) / max(vertices, 1)))
         if d < best_d:
