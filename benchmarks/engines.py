@@ -114,6 +114,44 @@ def run_pyvista(tree: Any, leaves: list[Any]) -> Any:
     return evaluate(tree, lambda i: leaves[i], combine)
 
 
+class EngineCrash(RuntimeError):
+    """The engine killed the process it ran in (a segmentation fault)."""
+
+
+def isolated(fn: Any, *args: Any, timeout: float = 120.0) -> Any:
+    """``fn(*args)`` (a mesh) computed in a forked process: an engine that crashes (VTK's Booleans
+    can end in a segmentation fault) or hangs becomes a finding instead of ending the run."""
+    import multiprocessing as mp
+
+    import trimesh
+
+    ctx = mp.get_context("fork")
+    recv, send = ctx.Pipe(duplex=False)
+
+    def target() -> None:
+        try:
+            m = fn(*args)
+            tm = as_trimesh(m) if m.n_cells else None
+            send.send(("ok", None if tm is None else (np.asarray(tm.vertices), np.asarray(tm.faces))))
+        except Exception as exc:  # noqa: BLE001 - handed to the parent
+            send.send(("raised", f"{type(exc).__name__}: {exc}"))
+
+    proc = ctx.Process(target=target)
+    proc.start()
+    res = recv.recv() if recv.poll(timeout) else None
+    proc.join(5)
+    if proc.is_alive():
+        proc.kill()
+        proc.join()
+    if res is None:
+        raise EngineCrash(f"crashed (exit code {proc.exitcode})" if proc.exitcode else f"hung over {timeout:.0f} s")
+    if res[0] == "raised":
+        raise RuntimeError(res[1])
+    if res[1] is None:
+        return trimesh.Trimesh(np.zeros((0, 3)), np.zeros((0, 3), int))
+    return trimesh.Trimesh(res[1][0], res[1][1], process=False)
+
+
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--n", type=int, default=20, help="number of trees (1000 for the full run)")
@@ -133,7 +171,6 @@ def main() -> None:
 
     faulthandler.enable()  # an engine that crashes the process says where
     import pyvista as pv
-    import trimesh
 
     t0 = time.time()
     cases = draw_trees(args.n, args.seed, args.fuzz, args.max_cubes, args.max_leaves)
@@ -142,6 +179,12 @@ def main() -> None:
     checks: dict[str, Counter[str]] = defaultdict(Counter)
     rel: dict[str, dict[str, list[float]]] = defaultdict(lambda: defaultdict(list))
     findings: list[str] = []
+
+    def note(text: str) -> None:  # written as found: a run stopped early keeps its findings
+        findings.append(text)
+        if args.findings:
+            with open(args.findings, "a") as fh:
+                fh.write(text + "\n")
     skipped = 0
 
     def alarm(*_: Any) -> None:
@@ -166,16 +209,16 @@ def main() -> None:
             try:
                 if eng == "manifold3d":
                     mesh = run_manifold(tree, mf)
+                    mesh.num_tri()  # manifold3d evaluates lazily: time the Booleans, not the tree
                 elif eng.startswith("trimesh-"):
                     mesh = run_trimesh(tree, [as_trimesh(m) for m in mf], eng.split("-", 1)[1])
                 else:
-                    pvl = [pv.wrap(as_trimesh(m)) for m in mf]
-                    mesh = run_pyvista(tree, pvl)
-                    if mesh.n_cells == 0:
-                        mesh = trimesh.Trimesh(np.zeros((0, 3)), np.zeros((0, 3), int))
+                    mesh = isolated(run_pyvista, tree, [pv.wrap(as_trimesh(m)) for m in mf])
             except Exception as exc:  # noqa: BLE001 - an engine's failure is a finding
-                checks[eng]["raised"] += 1
-                findings.append(f"# case {k}, {eng}: raised {type(exc).__name__}: {exc}\n{to_python(tree)}\n")
+                crashed = isinstance(exc, EngineCrash)
+                checks[eng]["crashed" if crashed else "raised"] += 1
+                what = str(exc) if crashed else f"raised {type(exc).__name__}: {exc}"
+                note(f"# case {k}, {eng}: {what}\n{to_python(tree)}\n")
                 continue
             dt = time.time() - t1
             c = compare_mesh(mesh, tree, segments=args.segments, samples=args.samples, ref=ref, seed=k)
@@ -189,7 +232,7 @@ def main() -> None:
             rel[eng]["hausdorff"].append(max(c.hausdorff_mesh_to_true, c.hausdorff_true_to_mesh) / size)
             rel[eng]["seconds"].append(dt)
             if not c.ok:
-                findings.append(f"# case {k}, {eng}: wrong {', '.join(c.wrong)}\n# "
+                note(f"# case {k}, {eng}: wrong {', '.join(c.wrong)}\n# "
                                 + c.summary().replace("\n", "\n# ") + f"\n{to_python(tree)}\n")
         if (k + 1) % 20 == 0:
             report(engines, checks, rel, f"after {k + 1}/{len(cases)} trees, {time.time() - t0:.0f} s")
@@ -197,21 +240,20 @@ def main() -> None:
     took = time.time() - t0
     report(engines, checks, rel, f"{len(cases)} trees in {took:.0f} s ({skipped} skipped: reference over budget)")
     print(f"\n{len(findings)} findings")
-    if args.findings:
-        with open(args.findings, "w") as fh:
-            fh.write("\n".join(findings))
-    else:
+    if not args.findings:
         for f in findings:
             print(f)
 
 
 def report(engines: list[str], checks: Any, rel: Any, title: str) -> None:
     print(f"\n{title}\n")
-    print("| engine | cases | raised | OK | wrong | wrong volume | wrong area | wrong hausdorff | wrong topology |")
-    print("|---|---|---|---|---|---|---|---|---|")
+    print("| engine | judged | raised | crashed | OK | wrong | wrong volume | wrong area | wrong hausdorff "
+          "| wrong topology |")
+    print("|---|---|---|---|---|---|---|---|---|---|")
     for eng in engines:
         c = checks[eng]
-        print(f"| {eng} | {c['cases']} | {c['raised']} | {c['ok']} | {c['wrong']} | {c['wrong volume']} | "
+        print(f"| {eng} | {c['cases']} | {c['raised']} | {c['crashed']} | {c['ok']} | {c['wrong']} | "
+              f"{c['wrong volume']} | "
               f"{c['wrong area']} | {c['wrong hausdorff']} | {c['wrong topology']} |")
     print("\n| engine | figure | median | 90 % | 99 % | max |")
     print("|---|---|---|---|---|---|")
