@@ -43,7 +43,8 @@ TASK_AREA = [(-0.6, -0.3, 0.75), (0.6, -0.3, 0.75), (0.6, 0.3, 0.75), (-0.6, 0.3
 def panel(cx: float, cy: float, lumens: float) -> AreaLight:
     """A 0.6 m square ceiling panel at 2.8 m, facing down, of the given luminous flux."""
     h = 0.3
-    return AreaLight.from_flux([(cx - h, cy - h, 2.8), (cx - h, cy + h, 2.8), (cx + h, cy + h, 2.8), (cx + h, cy - h, 2.8)], lumens)
+    corners = [(cx - h, cy - h, 2.8), (cx - h, cy + h, 2.8), (cx + h, cy + h, 2.8), (cx + h, cy - h, 2.8)]
+    return AreaLight.from_flux(corners, lumens)
 
 
 def run(output_dir: str | Path | None = None) -> list[Path]:

@@ -37,7 +37,11 @@ def run(output_dir: str | Path | None = None, *, contours: int = 10) -> list[Pat
     scene = Scene(
         camera,
         [PointLight((4.0, -5.0, 6.0))],
-        [Sphere((-0.4, -1.2, 0.5), 0.9), Box((0.2, 1.0, 0.3), (2.4, 1.2, 1.6)), Cone((2.0, -0.5, 0.3), (0, 0, -1.6), 0.6)],
+        [
+            Sphere((-0.4, -1.2, 0.5), 0.9),
+            Box((0.2, 1.0, 0.3), (2.4, 1.2, 1.6)),
+            Cone((2.0, -0.5, 0.3), (0, 0, -1.6), 0.6),
+        ],
     )
     svg = out / "iso_svg.svg"
     save_scene_svg(svg, scene, contours=contours)

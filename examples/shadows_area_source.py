@@ -40,7 +40,10 @@ def scene(width: int = 200, height: int = 150) -> Scene:
     objects = [
         Box((0, 0, -0.05), (6, 5, 0.1)),
         Box((0.5, 0.3, 0.45), (0.7, 0.7, 0.9)),
-        ConvexPolyhedron([(-1.4, -0.9, 0), (-0.6, -1.2, 0), (-1.0, -0.3, 0), (-1.4, -0.9, 0.8), (-0.6, -1.2, 0.8), (-1.0, -0.3, 0.8)]),
+        ConvexPolyhedron([
+            (-1.4, -0.9, 0), (-0.6, -1.2, 0), (-1.0, -0.3, 0),
+            (-1.4, -0.9, 0.8), (-0.6, -1.2, 0.8), (-1.0, -0.3, 0.8),
+        ]),
         Sphere((-0.6, 1.0, 0.4), 0.4),
     ]
     camera = Camera((4.5, -6.0, 4.5), (0, 0, 0.3), fov=36, width=width, height=height)
@@ -53,7 +56,7 @@ def run(output_dir: str | Path | None = None) -> list[Path]:
     out.mkdir(parents=True, exist_ok=True)
     sc = scene()
     result = render_halftone(sc, resolution=24)
-    paths = [out / "shadows_area_source.png", out / "shadows_area_source_states.png", out / "shadows_area_source_lux.png"]
+    paths = [out / f"shadows_area_source{suffix}.png" for suffix in ("", "_states", "_lux")]
     save_png(paths[0], result.display)
     states = np.where(result.shadow < 0, np.nan, 1.0 - 0.4 * result.shadow)  # white lit, grey penumbra, dark umbra
     save_png(paths[1], states)

@@ -62,8 +62,8 @@ def room() -> list[Box]:
 
 def ceiling_light(x: float, y: float, radiance: float = 4.0) -> AreaLight:
     """A 1.2 x 0.6 m luminaire at 2.8 m facing down (counter-clockwise seen from below)."""
-    return AreaLight([(x - 0.6, y - 0.3, 2.8), (x - 0.6, y + 0.3, 2.8), (x + 0.6, y + 0.3, 2.8), (x + 0.6, y - 0.3, 2.8)],
-                     radiance=radiance)
+    corners = [(x - 0.6, y - 0.3, 2.8), (x - 0.6, y + 0.3, 2.8), (x + 0.6, y + 0.3, 2.8), (x + 0.6, y - 0.3, 2.8)]
+    return AreaLight(corners, radiance=radiance)
 
 
 def sphere_source(center: tuple[float, float, float], radius: float, radiance: float) -> PolyhedronLight:

@@ -22,8 +22,10 @@ _EXPORTS: dict[str, str] = {
         "SceneFileError", "MissingDependencyError", "OpenSCADError", "UnsupportedOpenSCADError",
         "ResourceLimitError", "NotExactError",
     ], ".errors"),
-    **dict.fromkeys(["Solid", "Primitive", "RayHits", "Sphere", "Truncus", "Cylinder", "Cone", "Box", "ConvexPolyhedron",
-                     "Ellipsoid", "EllipticTruncus"], ".kinds"),
+    **dict.fromkeys([
+        "Solid", "Primitive", "RayHits", "Sphere", "Truncus", "Cylinder", "Cone", "Box", "ConvexPolyhedron",
+        "Ellipsoid", "EllipticTruncus",
+    ], ".kinds"),
     "Torus": ".kinds",
     "TriangleMesh": ".kinds",
     "extrude": ".csg.extrude",
@@ -31,8 +33,9 @@ _EXPORTS: dict[str, str] = {
     **dict.fromkeys(["PointLight", "DirectionalLight", "Material", "shade"], ".lighting"),
     **dict.fromkeys(["Scene", "SceneObject", "RenderSettings", "load_scene", "loads_scene", "save_scene", "dumps_scene",
                      "builtin_scene", "builtin_scene_path"], ".scene"),
-    **dict.fromkeys(["CSGNode", "Union", "Intersection", "Difference", "union", "intersection", "difference", "union_all"],
-                    ".csg"),
+    **dict.fromkeys([
+        "CSGNode", "Union", "Intersection", "Difference", "union", "intersection", "difference", "union_all",
+    ], ".csg"),
     "section": ".csg.section",
     "volume": ".csg.volume",
     **dict.fromkeys(["to_manifold", "to_trimesh"], ".csg.mesh"),
@@ -198,9 +201,9 @@ __getattr__, __dir__ = lazy_exports(globals(), _EXPORTS)
 
 
 # The operations lower layers offer and upper ones implement (isocsg/_late.py): Solid's Boolean
-# operators (csg/tree.py), Program's membership and nodes (csg/membership.py, csg/tree.py) and the notebook display of solids, scenes, renders and half-tone
-# images (interop/notebook.py). Bound here, before any submodule runs; each imports its module
-# on first call.
+# operators (csg/tree.py), Program's membership and nodes (csg/membership.py, csg/tree.py) and
+# the notebook display of solids, scenes, renders and half-tone images (interop/notebook.py).
+# Bound here, before any submodule runs; each imports its module on first call.
 def _union(*solids: Any) -> Any:
     from .csg.tree import union
 

@@ -114,7 +114,7 @@ def show(
     else:
         build = build_laminae
     if camera is not None:
-        eye = camera.eye
+        eye: tuple[float, ...] = camera.eye
     else:
         lo = np.min([o.shape.bounds[0] for o in objs], axis=0) if objs else np.zeros(3)
         hi = np.max([o.shape.bounds[1] for o in objs], axis=0) if objs else np.ones(3)

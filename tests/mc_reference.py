@@ -172,7 +172,7 @@ def _mc_kernel(P, NR, tris, tri_L, k, R, pn, pd, poff, pocc, psign, nocc, seed, 
     n = P.shape[0]
     ntri = tris.shape[0]
     for i in numba.prange(n):
-        np.random.seed(seed + i)
+        np.random.seed(seed + i)  # noqa: NPY002 - numba's per-thread generator, seeded per point
         p = P[i]
         nr = NR[i]
         q = np.empty(3)
@@ -194,8 +194,8 @@ def _mc_kernel(P, NR, tris, tri_L, k, R, pn, pd, poff, pocc, psign, nocc, seed, 
                 w = 0.5 * twice / (k * k)
                 for si in range(k):
                     for ti in range(k):
-                        s = (si + np.random.random()) / k
-                        tt = (ti + np.random.random()) / k
+                        s = (si + np.random.random()) / k  # noqa: NPY002 - numba's per-thread generator
+                        tt = (ti + np.random.random()) / k  # noqa: NPY002 - numba's per-thread generator
                         rs = math.sqrt(s)
                         wa = 1.0 - rs
                         wb = rs * (1.0 - tt)

@@ -81,7 +81,7 @@ def test_merging_loaders_cannot_blend_bands(glb_path: Path, references: list) ->
     # trimesh's default load merges vertices: with no vertex shared between two
     # triangles of different colours, no colour can be averaged.
     loaded = trimesh.load(glb_path)
-    for name, (_, t, value) in zip(("object0", "object1"), references):
+    for name, (_, _, value) in zip(("object0", "object1"), references):
         g = loaded.geometry[name]
         colour = np.asarray(g.visual.vertex_attributes["color"], dtype=np.float64)[g.faces][:, :, 0]
         assert np.ptp(colour, axis=1).max() == 0.0

@@ -44,8 +44,9 @@ def to_light(light, p):
     return unit(np.asarray(light.position) - p)
 
 
-def exact_value(p, n, lights, mat=Material(), eye=None):
-    """The conventions' intensity at points p (k, 3) with unit normals n."""
+def exact_value(p, n, lights, mat=None, eye=None):
+    """The conventions' intensity at points p (k, 3) with unit normals n (default material if mat is None)."""
+    mat = Material() if mat is None else mat
     out = np.full(len(p), mat.ambient)
     for light in lights:
         l = to_light(light, p)

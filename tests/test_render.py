@@ -140,24 +140,25 @@ def test_csg_resolution_matches_brute_force_on_intervals(seed, use_table):
     table = truth_table(program.op, program.arg, n) if use_table else np.zeros(0, np.bool_)
     resolve_csg(f, vf, b, vb, program.op, program.arg, table, 10, 0, 0, zkey, value, gid)
     n_visible = 0
-    for r, c in itertools.product(range(h), range(w)):
-        # Brute force: membership on each open stretch between consecutive distinct depths,
-        # evaluated on the tree structure itself (not on the postfix program).
-        def member(t):
-            flags = [
-                ((-np.inf if (f[i, r, c] == np.inf and b[i, r, c] > -np.inf) else f[i, r, c]) < t < b[i, r, c])
-                for i in range(n)
-            ]
-            it = iter(flags)
-            return _evaluate_positional(tree, it)
 
+    # Brute force: membership on each open stretch between consecutive distinct depths,
+    # evaluated on the tree structure itself (not on the postfix program).
+    def member(r, c, t):
+        flags = [
+            ((-np.inf if (f[i, r, c] == np.inf and b[i, r, c] > -np.inf) else f[i, r, c]) < t < b[i, r, c])
+            for i in range(n)
+        ]
+        it = iter(flags)
+        return _evaluate_positional(tree, it)
+
+    for r, c in itertools.product(range(h), range(w)):
         ts = np.unique(np.concatenate([f[:, r, c], b[:, r, c]]))
         ts = ts[np.isfinite(ts)]
         expected = None
-        prev = member(-1e9)
+        prev = member(r, c, -1e9)
         for k, t in enumerate(ts):
             nxt = ts[k + 1] if k + 1 < len(ts) else t + 1.0
-            now = member((t + nxt) / 2)
+            now = member(r, c, (t + nxt) / 2)
             if now and not prev:
                 expected = t
                 break

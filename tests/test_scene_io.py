@@ -285,19 +285,19 @@ DOC_ERRORS = [
     ("union-not-array", {"objects__0__shape__difference__2__union": {"sphere": {"center": [0, 0, 0], "radius": 1}}},
      "objects[0].shape.difference[2].union: must be an array, got a table"),
     ("unknown-node", {"objects__0__shape": {"klein_bottle": {"center": [0, 0, 0]}}},
-     "objects[0].shape: unknown shape 'klein_bottle' (expected one of sphere, truncus, cylinder, cone, box, polyhedron, "
-     "ellipsoid, elliptic_truncus, torus, mesh, extrude, union, intersection, difference, translate, rotate, scale, mirror, multmatrix, transform)"),
+     ("objects[0].shape: unknown shape 'klein_bottle' (expected one of sphere, truncus, cylinder, cone, box, polyhedron, "
+      "ellipsoid, elliptic_truncus, torus, mesh, extrude, union, intersection, difference, translate, rotate, scale, mirror, multmatrix, transform)")),
     ("two-keys", {"objects__0__shape": {"sphere": {"center": [0, 0, 0], "radius": 1}, "box": {"center": [0, 0, 0], "size": [1, 1, 1]}}},
-     "objects[0].shape: a shape node must have exactly one key (sphere, truncus, cylinder, cone, box, polyhedron, "
-     "ellipsoid, elliptic_truncus, torus, mesh, extrude, union, intersection, difference, translate, rotate, scale, mirror, multmatrix, transform), "
-     "got 2 ('sphere', 'box')"),
+     ("objects[0].shape: a shape node must have exactly one key (sphere, truncus, cylinder, cone, box, polyhedron, "
+      "ellipsoid, elliptic_truncus, torus, mesh, extrude, union, intersection, difference, translate, rotate, scale, mirror, multmatrix, transform), "
+      "got 2 ('sphere', 'box')")),
     ("empty-node", {"objects__0__shape": {}},
-     "objects[0].shape: a shape node must have exactly one key (sphere, truncus, cylinder, cone, box, polyhedron, "
-     "ellipsoid, elliptic_truncus, torus, mesh, extrude, union, intersection, difference, translate, rotate, scale, mirror, multmatrix, transform), got none"),
+     ("objects[0].shape: a shape node must have exactly one key (sphere, truncus, cylinder, cone, box, polyhedron, "
+      "ellipsoid, elliptic_truncus, torus, mesh, extrude, union, intersection, difference, translate, rotate, scale, mirror, multmatrix, transform), got none")),
     ("node-is-array", {"objects__0__shape__difference__1": [1, 2]},
-     "objects[0].shape.difference[1]: a shape node must be a table with one key (sphere, truncus, cylinder, cone, box, "
-     "polyhedron, ellipsoid, elliptic_truncus, torus, mesh, extrude, union, intersection, difference, translate, rotate, scale, mirror, multmatrix, transform), "
-     "got an array"),
+     ("objects[0].shape.difference[1]: a shape node must be a table with one key (sphere, truncus, cylinder, cone, box, "
+      "polyhedron, ellipsoid, elliptic_truncus, torus, mesh, extrude, union, intersection, difference, translate, rotate, scale, mirror, multmatrix, transform), "
+      "got an array")),
     ("missing-shape", {"objects__0__shape": _DELETE}, "objects[0].shape: missing required field"),
     ("object-unknown-key", {"objects__0__colour": "red"},
      "objects[0]: unknown key 'colour' (expected shape, material, color, leaf_colors)"),

@@ -16,4 +16,6 @@ from .tree import (
     union_all,
 )
 
-__all__ = ["CSGNode", "Union", "Intersection", "Difference", "union", "intersection", "difference", "union_all", "leaves"]
+__all__ = [
+    "CSGNode", "Union", "Intersection", "Difference", "union", "intersection", "difference", "union_all", "leaves",
+]

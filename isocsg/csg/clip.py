@@ -127,7 +127,7 @@ def _clip_one(
     lamina: Any,
     leaf: int,
     polarity: int,
-    prims: list[Primitive],
+    prims: Sequence[Primitive],
     prog: Program,
     resolution: int,
 ) -> ClippedLamina:

@@ -28,7 +28,7 @@ from __future__ import annotations
 import functools
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
-from typing import Any
+from typing import Any, Literal, overload
 
 import numpy as np
 import shapely
@@ -503,6 +503,18 @@ def _pairwise_disjoint(geoms: list[BaseGeometry]) -> bool:
     tree = shapely.STRtree(geoms)
     pairs = tree.query(geoms, predicate="intersects")
     return pairs.shape[1] == len(geoms)
+
+
+@overload
+def combine_sections(
+    program: Program, leaf_geoms: Sequence[BaseGeometry], *, area_only: Literal[False] = ...
+) -> Polygon | MultiPolygon: ...
+
+
+@overload
+def combine_sections(
+    program: Program, leaf_geoms: Sequence[BaseGeometry], *, area_only: bool
+) -> Polygon | MultiPolygon | float: ...
 
 
 def combine_sections(

@@ -155,7 +155,8 @@ def _crossing_events(
     vi = np.nonzero(varying)[0]
     partners = np.nonzero(round_ | prism)[0]
     # candidate pairs: boxes overlapping
-    ov = np.all((boxes[vi, None, 0] < boxes[None, partners, 1]) & (boxes[None, partners, 0] < boxes[vi, None, 1]), axis=2)
+    lo_box, hi_box = boxes[:, 0], boxes[:, 1]
+    ov = np.all((lo_box[vi, None] < hi_box[None, partners]) & (lo_box[None, partners] < hi_box[vi, None]), axis=2)
     I, J = np.nonzero(ov)
     I, J = vi[I], partners[J]
     keep = I != J
@@ -168,12 +169,15 @@ def _crossing_events(
     if rr.any():  # circle and circle: outer and inner tangency
         d = np.linalg.norm(c2[I[rr]] - c2[J[rr]], axis=1)
         for mode in (1, 2, 3):
-            rows_i.append(I[rr]), rows_j.append(J[rr]), rows_d.append(d), rows_m.append(np.full(len(d), mode))
+            rows_i.append(I[rr])
+            rows_j.append(J[rr])
+            rows_d.append(d)
+            rows_m.append(np.full(len(d), mode))
     polys: dict[int, NDArray[np.float64]] = {}
     for a, b in zip(I[~rr].tolist(), J[~rr].tolist()):
         if b not in polys:
-            g = primitive_section(prog.leaves[b], plane_frame(0.5 * (lo[b] + hi[b]) * w, w))
-            polys[b] = np.asarray(g.exterior.coords)[:-1] if not g.is_empty else np.zeros((0, 2))
+            sec = primitive_section(prog.leaves[b], plane_frame(0.5 * (lo[b] + hi[b]) * w, w))
+            polys[b] = np.asarray(sec.exterior.coords)[:-1] if not sec.is_empty else np.zeros((0, 2))
         P = polys[b]
         if not len(P):
             continue
@@ -183,15 +187,20 @@ def _crossing_events(
         dl = np.abs(np.einsum("ij,ij->i", n, c2[a] - P))
         dv = np.linalg.norm(P - c2[a], axis=1)
         d = np.concatenate([dl, dv])
-        rows_i.append(np.full(len(d), a)), rows_j.append(np.full(len(d), -1)), rows_d.append(d), rows_m.append(np.zeros(len(d), np.int64))
+        rows_i.append(np.full(len(d), a))
+        rows_j.append(np.full(len(d), -1))
+        rows_d.append(d)
+        rows_m.append(np.zeros(len(d), np.int64))
     if not rows_i:
         return np.zeros(0)
-    Ii, Jj, D, M = (np.concatenate(x) for x in (rows_i, rows_j, rows_d, rows_m))
+    Ii, Jj, M = np.concatenate(rows_i), np.concatenate(rows_j), np.concatenate(rows_m)
+    D = np.concatenate(rows_d)
     Jc = np.where(Jj >= 0, Jj, Ii)
     z0 = np.maximum(lo[Ii], np.where(Jj >= 0, lo[Jc], -np.inf))
     z1 = np.minimum(hi[Ii], np.where(Jj >= 0, hi[Jc], np.inf))
     ok = z1 > z0
-    Ii, Jj, Jc, D, M, z0, z1 = (x[ok] for x in (Ii, Jj, Jc, D, M, z0, z1))
+    Ii, Jj, Jc, M = Ii[ok], Jj[ok], Jc[ok], M[ok]
+    D, z0, z1 = D[ok], z0[ok], z1[ok]
 
     def g(z: NDArray[np.float64]) -> NDArray[np.float64]:
         ri = _radii(tab, Ii[:, None] if z.ndim == 2 else Ii, z, w)
@@ -210,7 +219,8 @@ def _crossing_events(
     sel = r
     a, b = Z[r, c], Z[r, c + 1]
     ga = G[r, c]
-    Ii, Jj, Jc, D, M = (x[sel] for x in (Ii, Jj, Jc, D, M))
+    # g reads these names when called: from here on, the bracketed rows only
+    Ii, Jj, Jc, M, D = Ii[sel], Jj[sel], Jc[sel], M[sel], D[sel]
     for _ in range(60):
         m = 0.5 * (a + b)
         gm = g(m)

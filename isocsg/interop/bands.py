@@ -17,7 +17,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from ..errors import InvalidLightError, InvalidParameterError
-from ..kinds import Solid
+from ..kinds import Primitive, Solid
 from ..lighting.lights import DirectionalLight, Material, PointLight
 
 __all__ = ["ShadedSurface", "object_surface", "scene_surfaces"]
@@ -108,7 +108,7 @@ def object_surface(
     InvalidLightError
         If no point or directional light is given.
     InvalidParameterError
-        If ``shape`` is not a solid.
+        If ``shape`` is not a solid (a primitive or a CSG tree).
     InvalidGeometryError, ResourceLimitError
         From :func:`isocsg.csg.surface.surface_from_bands`, for a CSG tree
         whose bands do not close or whose surface exceeds the memory budget.
@@ -139,6 +139,8 @@ def object_surface(
             np.asarray(surf.value, np.float64), name,
             _triangle_colors(shape, color, leaf_colors, np.asarray(surf.leaf)),
         )
+    if not isinstance(shape, Primitive):  # a solid of a kind of its own, neither primitive nor tree
+        raise InvalidParameterError(f"shape must be a primitive or a CSG tree, got {type(shape).__name__}")
     b = build_laminae(shape, lights_t, mat, contours, eye=eye).bands
     return ShadedSurface(
         np.asarray(b.vertices, np.float64), np.asarray(b.triangles, np.int32), np.asarray(b.value_out, np.float64),

@@ -160,7 +160,9 @@ def gltf_document(item: Any, *, contours: int | None = None) -> tuple[dict[str, 
         "extensionsUsed": ["KHR_materials_unlit"],
         "materials": [{
             "name": "isoluminance bands (unlit, vertex colours)",
-            "pbrMetallicRoughness": {"baseColorFactor": [1.0, 1.0, 1.0, 1.0], "metallicFactor": 0.0, "roughnessFactor": 1.0},
+            "pbrMetallicRoughness": {
+                "baseColorFactor": [1.0, 1.0, 1.0, 1.0], "metallicFactor": 0.0, "roughnessFactor": 1.0,
+            },
             "extensions": {"KHR_materials_unlit": {}},
         }],
         "meshes": meshes,

@@ -82,7 +82,10 @@ def default_light(bounds: ArrayLike) -> PointLight:
 
 
 def png_bytes(image: ArrayLike) -> bytes:
-    """An intensity image (H, W) (NaN background) as 8-bit grey PNG bytes (see :func:`isocsg.rendering.image.to_uint8`)."""
+    """An intensity image (H, W) (NaN background) as 8-bit grey PNG bytes.
+
+    The grey levels are those of :func:`isocsg.rendering.image.to_uint8`.
+    """
     from PIL import Image
 
     from ..rendering.image import to_uint8
@@ -167,7 +170,10 @@ def mimebundle(obj: Any, include: Any = None, exclude: Any = None) -> dict[str, 
     from ..scene.model import Scene
 
     out: dict[str, Any] = {"text/plain": repr(obj)}
-    want = (lambda m: (include is None or m in include) and (exclude is None or m not in exclude))
+
+    def want(mime: str) -> bool:
+        return (include is None or mime in include) and (exclude is None or mime not in exclude)
+
     # A picture that cannot be made (a scene outside the limits, say) leaves the text repr alone.
     try:
         if isinstance(obj, Solid):

@@ -235,7 +235,8 @@ def to_pyvista(
         return to_pyvista(object_surface(obj, lights, material, 64 if contours is None else contours, eye=eye))
     if isinstance(obj, ShadowVolumes):
         b = _bounds(bounds, "shadow volume")
-        return _multiblock(pv, {"penumbra": to_pyvista(obj.penumbra, bounds=b), "umbra": to_pyvista(obj.umbra, bounds=b)})
+        parts = {"penumbra": to_pyvista(obj.penumbra, bounds=b), "umbra": to_pyvista(obj.umbra, bounds=b)}
+        return _multiblock(pv, parts)
     if isinstance(obj, ConvexVolume):
         tm = obj.to_trimesh(_bounds(bounds, "shadow volume"))
         return pv.PolyData() if tm is None else pv.wrap(tm)

@@ -132,6 +132,10 @@ class Solid:
 
     __slots__ = ()
 
+    if TYPE_CHECKING:  # what every subclass implements, declared for the type checker only
+
+        def to_trimesh(self, resolution: int = ...) -> trimesh.Trimesh: ...
+
     def __or__(self, other: Solid) -> Solid:
         return late("union")(self, other)
 

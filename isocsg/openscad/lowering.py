@@ -7,11 +7,11 @@ What each node becomes (``docs/openscad.md`` has the table and the reasons):
   cylinder, cone or frustum); a convex ``polyhedron(points, faces)`` ->
   :class:`~isocsg.ConvexPolyhedron`, a non-convex one -> :class:`~isocsg.TriangleMesh`;
   ``import(file)`` of an STL, OFF, OBJ, PLY or 3MF mesh (relative to the model file's directory)
-  and ``surface(file, center, invert)`` (OpenSCAD's height-map solid) -> a ``TriangleMesh``. Without ``$fn``, or with ``$fn`` above
-  :data:`~isocsg.openscad.flat.FN_MAX` (64), spheres, cylinders and circles are the exact round
-  solids; an explicit ``$fn`` from 1 to 64 makes OpenSCAD's own polygonal solid (a hexagonal
-  prism, a pyramid, OpenSCAD's polyhedral sphere) as a ``ConvexPolyhedron`` with OpenSCAD's
-  vertices.
+  and ``surface(file, center, invert)`` (OpenSCAD's height-map solid) -> a ``TriangleMesh``.
+  Without ``$fn``, or with ``$fn`` above :data:`~isocsg.openscad.flat.FN_MAX` (64), spheres,
+  cylinders and circles are the exact round solids; an explicit ``$fn`` from 1 to 64 makes
+  OpenSCAD's own polygonal solid (a hexagonal prism, a pyramid, OpenSCAD's polyhedral sphere) as
+  a ``ConvexPolyhedron`` with OpenSCAD's vertices.
 - ``multmatrix(m)``, and the hand-written ``translate``, ``rotate``, ``scale``, ``mirror``: maps
   composed on the way down and applied once per leaf, however deep they nest.
 - ``union``, ``group``, ``render``, ``color`` and the ``#`` modifier -> a union; a ``!`` (root)
@@ -45,9 +45,10 @@ from __future__ import annotations
 import math
 import warnings
 from collections import Counter
+from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Any
+from typing import Any, TypeVar
 
 import numpy as np
 from numpy.typing import NDArray
@@ -62,6 +63,8 @@ from .parser import CSGCall
 from .revolve import revolve
 
 __all__ = ["lower", "LoweredModel", "UNSUPPORTED_NODES"]
+
+_SolidT = TypeVar("_SolidT", bound=Solid)
 
 #: OpenSCAD modules that have no exact isocsg equivalent, with the reason given in errors.
 UNSUPPORTED_NODES: dict[str, str] = {
@@ -194,7 +197,7 @@ class _Lowerer:
             out.append(idx)
         return out
 
-    def make(self, call: CSGCall, factory: Any, *args: Any) -> Solid:
+    def make(self, call: CSGCall, factory: Callable[..., _SolidT], *args: Any) -> _SolidT:
         """Build a value type; its validation error names the node and line."""
         try:
             return factory(*args)
@@ -203,7 +206,7 @@ class _Lowerer:
 
     # ------------------------------------------------------------------ 3D leaves
 
-    def cube(self, call: CSGCall) -> Solid | None:
+    def cube(self, call: CSGCall) -> Box | None:
         size = self.vector(call, "size", self.arg(call, "size", 0, 1.0), 3)
         center = self.boolean(call, "center", self.arg(call, "center", 1, False))
         if np.any(size <= 0):
@@ -281,7 +284,8 @@ class _Lowerer:
             p = pts[f] - pts[0]  # about a point of the solid: no cancellation far from the origin
             enclosed += sum(float(np.dot(p[0], np.cross(p[i], p[i + 1]))) for i in range(1, len(f) - 1)) / 6.0
         used = pts[sorted({i for f in faces for i in f})]
-        planar = np.all(np.abs(used @ hull.face_normals.T - hull.face_offsets).min(axis=1) <= off + 1e-9 * max(scale, 1.0))
+        off_plane = np.abs(used @ hull.face_normals.T - hull.face_offsets).min(axis=1)
+        planar = np.all(off_plane <= off + 1e-9 * max(scale, 1.0))
         # a face off its plane by `off` encloses at most `off` x the hull's area (< 6 scale^2) more or less
         if not planar or abs(abs(enclosed) - hull.volume) > 6 * off * scale**2 + 1e-9 * max(hull.volume, scale**3):
             return self.make(call, polygon_mesh, pts, faces)  # non-convex: a closed triangle mesh
@@ -375,7 +379,8 @@ def _matrix(lw: _Lowerer, call: CSGCall) -> NDArray[np.float64]:
     if call.name != "multmatrix":
         return _hand_matrix(lw, call)
     value = lw.arg(call, "m", 0, None)
-    if not isinstance(value, list) or len(value) not in (3, 4) or not all(isinstance(r, list) and len(r) == 4 for r in value):
+    rows_ok = isinstance(value, list) and all(isinstance(r, list) and len(r) == 4 for r in value)
+    if not rows_ok or len(value) not in (3, 4):
         raise lw.fail(call, f"m must be a 4 x 4 (or 3 x 4) matrix, got {_show(value)}")
     m = np.eye(4)
     m[: len(value)] = [[lw.number(call, "m", x) for x in row] for row in value]
@@ -525,7 +530,8 @@ def _root_modified(calls: list[CSGCall]) -> list[CSGCall] | None:
     while todo:
         call = todo.pop()
         if "!" in call.modifiers:
-            return [CSGCall(call.name, call.args, call.kwargs, call.children, call.line, call.modifiers.replace("!", ""))]
+            modifiers = call.modifiers.replace("!", "")
+            return [CSGCall(call.name, call.args, call.kwargs, call.children, call.line, modifiers)]
         todo.extend(reversed(call.children))
     return None
 
@@ -634,7 +640,7 @@ def _hull_points(lw: _Lowerer, call: CSGCall) -> NDArray[np.float64] | None | ob
                 stack.append((child, kept(child), []))
             elif child.name == "cube":
                 box = lw.cube(child)
-                got.append(None if box is None else np.asarray(box.corners, dtype=np.float64))  # type: ignore[union-attr]
+                got.append(None if box is None else np.asarray(box.corners, dtype=np.float64))
             elif child.name == "polyhedron":
                 got.append(lw.polyhedron_points(child))
             elif child.name in ("sphere", "cylinder") and polygonal_sides(child) is not None:

@@ -3,10 +3,10 @@
 Every kind is written: spheres, cylinders, cones and frusta, boxes (turned ones,
 ellipsoids and elliptic trunci as a ``multmatrix`` of a cube, sphere or
 cylinder), convex polyhedra and Boolean trees. The text uses only the calls of
-OpenSCAD's flattened export (``multmatrix``,
-``cube``, ``sphere``, ``cylinder``, ``polyhedron``, ``union``, ``difference``,
-``intersection``, and ``hull`` for the exact form of a convex polyhedron), so it is both a ``.scad`` model and a ``.csg`` file that
-:func:`isocsg.openscad.loads_openscad` reads back without the ``openscad``
+OpenSCAD's flattened export (``multmatrix``, ``cube``, ``sphere``, ``cylinder``,
+``polyhedron``, ``union``, ``difference``, ``intersection``, and ``hull`` for the
+exact form of a convex polyhedron), so it is both a ``.scad`` model and a ``.csg``
+file that :func:`isocsg.openscad.loads_openscad` reads back without the ``openscad``
 program. Numbers are written with ``repr`` (the shortest text that reads back
 to the same float), so that round trip keeps every bit.
 

@@ -444,7 +444,8 @@ class Renderer:
         key_view, label_view = zkey.view(), gid.view()
         key_view.flags.writeable = False
         label_view.flags.writeable = False
-        return RenderResult(value, RenderTimings(build, t2 - t0 - build), cam, label_view, key_view, object_of, leaf_of_arr)
+        timings = RenderTimings(build, t2 - t0 - build)
+        return RenderResult(value, timings, cam, label_view, key_view, object_of, leaf_of_arr)
 
     def _draw_primitive(self, rp: RenderPass, obj: Any, base: int, contours: int, plain: list[Plain]) -> float:
         """A primitive object: its mesh queued for the front fills (at the requested count and the
@@ -518,7 +519,8 @@ class Renderer:
         else:
             sizes = csg.detail.sizes
             if csg.hidden is not None and csg.built is None and sizes is not None:  # level of detail, default builder
-                area = np.maximum(csg.rects[:, 2] - csg.rects[:, 0], 0) * np.maximum(csg.rects[:, 3] - csg.rects[:, 1], 0)
+                rects = csg.rects
+                area = np.maximum(rects[:, 2] - rects[:, 0], 0) * np.maximum(rects[:, 3] - rects[:, 1], 0)
                 csg.by_rays = (sizes <= policy.RAY_LEAF_SIZE) & (area <= policy.RAY_LEAF_PIXELS)
             spent, view_dependent = render_tiled(rp, csg)
         rp.grow(csg.rows)

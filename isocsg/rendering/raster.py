@@ -142,7 +142,9 @@ def rasterize(
     tf = np.full((H, W), -1, dtype=np.int32)
     zb = np.full((H, W) if do_back else (1, 1), -np.inf)
     vb = np.full(zb.shape, np.nan, dtype=np.float32)
-    fill_kernel(h[0], h[1], h[2], h[3], t, vo, vi, near_distance(h[3]), persp, bool(cull), do_back, 0, 0, 0, zf, vf, tf, zb, vb)
+    fill_kernel(
+        h[0], h[1], h[2], h[3], t, vo, vi, near_distance(h[3]), persp, bool(cull), do_back, 0, 0, 0, zf, vf, tf, zb, vb,
+    )
     key_to_depth(zf, persp, zf)
     if do_back:
         key_to_depth(zb, persp, zb)

@@ -279,21 +279,24 @@ def _material(r: _Reader, path: str, value: Any) -> Material:
 
 def _node(r: _Reader, path: str, value: Any) -> tuple[str, str, Any]:
     """Check one shape node ``{kind: body}``; returns ``(kind, path.kind, body)``."""
+    kinds = ", ".join(shape_kinds())
     if not isinstance(value, Mapping):
-        raise r.fail(path, f"a shape node must be a table with one key ({', '.join(shape_kinds())}), got {_type_name(value)}")
+        raise r.fail(path, f"a shape node must be a table with one key ({kinds}), got {_type_name(value)}")
     if len(value) != 1:
         keys = ", ".join(show(k, 40) for k in value)
         got = f"{len(value)} ({keys})" if value else "none"
-        raise r.fail(path, f"a shape node must have exactly one key ({', '.join(shape_kinds())}), got {got}")
+        raise r.fail(path, f"a shape node must have exactly one key ({kinds}), got {got}")
     ((kind, body),) = value.items()
     if not isinstance(kind, str) or kind not in shape_kinds():
-        raise r.fail(path, f"unknown shape {show(kind, 40)} (expected one of {', '.join(shape_kinds())})")
+        raise r.fail(path, f"unknown shape {show(kind, 40)} (expected one of {kinds})")
     return kind, _join(path, kind), body
 
 
 def _transform_matrix(r: _Reader, here: str, kind: str, t: Mapping[str, Any]) -> Any:
     """The 4x4 matrix of a transform node; errors name the node's field."""
-    field = {"translate": "v", "rotate": "a", "scale": "v", "mirror": "v", "multmatrix": "m", "transform": "matrix"}[kind]
+    field = {
+        "translate": "v", "rotate": "a", "scale": "v", "mirror": "v", "multmatrix": "m", "transform": "matrix",
+    }[kind]
     if kind == "rotate":
         a = t["a"]
         if isinstance(a, bool) or not isinstance(a, (int, float, list)):

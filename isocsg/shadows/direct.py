@@ -121,7 +121,10 @@ def _fallback_point(
             continue
         else:
             gstat[g] |= 3
-        polys = [vis] if vis.geom_type == "Polygon" else [g_ for g_ in getattr(vis, "geoms", []) if g_.geom_type == "Polygon"]
+        if vis.geom_type == "Polygon":
+            polys = [vis]
+        else:
+            polys = [g_ for g_ in getattr(vis, "geoms", []) if g_.geom_type == "Polygon"]
         total = 0.0
         q0, u, w = sources.q0[s], sources.u[s], sources.w[s]
         for poly in polys:
@@ -188,7 +191,10 @@ def illuminance_and_state(
     g_off, g_idx = [0], []
     for t, idx in enumerate(tiles):
         group[idx] = t
-        own = whole if len(tiles) == 1 else shadow_pieces(solids, p[idx], sources.verts, resolution=resolution, scale=scale)
+        if len(tiles) == 1:
+            own = whole
+        else:
+            own = shadow_pieces(solids, p[idx], sources.verts, resolution=resolution, scale=scale)
         for pc in own:
             g_idx.append(ids.setdefault(id(pc), len(pieces)))
             if g_idx[-1] == len(pieces):

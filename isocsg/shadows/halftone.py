@@ -36,7 +36,7 @@ from __future__ import annotations
 import time
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
-from typing import Any
+from typing import Any, Protocol
 
 import numpy as np
 from numpy.typing import NDArray
@@ -253,6 +253,12 @@ class _LightPlan:
     piece_vertices: tuple[NDArray[np.float64], ...]
 
 
+class _PointRegion(Protocol):
+    """What a light's plan needs of a shadow volume: which points it holds."""
+
+    def contains(self, points: NDArray[np.float64]) -> NDArray[np.bool_]: ...
+
+
 class _Everywhere:
     """A shadow volume holding every point (``contains`` is all True), or none of them."""
 
@@ -269,7 +275,10 @@ def _plan(lights: list[Any], pieces: list[Any], bounds: NDArray[np.float64]) -> 
     plans = []
     for light in lights:
         src = SourceGeometry.from_light(light)
-        idx, pen, umb, pv = [], [], [], []
+        idx: list[int] = []
+        pen: list[_PointRegion] = []
+        umb: list[_PointRegion] = []
+        pv: list[NDArray[np.float64]] = []
         for i, pc in enumerate(pieces):
             try:
                 sv = shadow_volumes(src, pc)
@@ -370,8 +379,9 @@ def _receivers(scene: Any, cam: Camera, lights: list[Any], resolution: int) -> _
     hits = first_hits(scene.objects, origins, dirs)
     vis = np.isfinite(hits.t)
     pts = origins + np.where(vis, hits.t, 0.0)[:, None] * dirs
-    allp = [pts[vis]] + [pc.vertices for pc in pieces] + [np.asarray(li.vertices, dtype=float).reshape(-1, 3) for li in lights]
-    allp = np.vstack([a for a in allp if len(a)])
+    light_pts = [np.asarray(li.vertices, dtype=float).reshape(-1, 3) for li in lights]
+    all_parts = [pts[vis]] + [pc.vertices for pc in pieces] + light_pts
+    allp = np.vstack([a for a in all_parts if len(a)])
     lo, hi = allp.min(axis=0), allp.max(axis=0)
     scale = max(float(np.max(hi - lo)), float(np.max(np.abs(allp))), 1e-300)
     bounds = np.stack([lo - 0.01 * scale - 1e-9, hi + 0.01 * scale + 1e-9])
@@ -432,7 +442,8 @@ def _exact_samples(
     for s in range(len(cols) - 1):
         a, b = cols[s], cols[s + 1]
         block = key_img[:, a:b + 1]
-        seg_ok[:, s] = np.all(block == block[:, :1], axis=1) & (block[:, 0] >= 0) & ~np.any(always_img[:, a:b + 1], axis=1)
+        one_key = np.all(block == block[:, :1], axis=1) & (block[:, 0] >= 0)
+        seg_ok[:, s] = one_key & ~np.any(always_img[:, a:b + 1], axis=1)
         want[~seg_ok[:, s], a:b + 1] = True
     want &= key_img >= 0
     return cols, want, seg_ok

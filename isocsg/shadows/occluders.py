@@ -88,7 +88,9 @@ class _Node:
     __slots__ = ("region", "pend", "tol", "_step")
 
     def __init__(self, region: _Convex, pend: tuple[_Convex, ...], tol: float) -> None:
-        self.region, self.tol, self._step = region, tol, None
+        self.region, self.tol = region, tol
+        # (None,) once expanded into a finished piece, (slabs, local) once split
+        self._step: tuple[None] | tuple[list[_Node], _Local | None] | None = None
         self.pend = tuple(d for d in pend if _overlap(region, d, -tol))
 
     def step(self) -> tuple[list[_Node], _Local | None] | None:
@@ -101,7 +103,8 @@ class _Node:
             else:
                 d, rest = self.pend[k], self.pend[k + 1 :]
                 slabs, local = _box_split(c, d, tol)
-                self._step = ([_Node(s, rest, tol) for s in slabs], None if local is None else _Local(local, d, rest, tol))
+                children = [_Node(s, rest, tol) for s in slabs]
+                self._step = (children, None if local is None else _Local(local, d, rest, tol))
         return None if self._step[0] is None else self._step
 
 
@@ -111,7 +114,8 @@ class _Local:
     __slots__ = ("region", "d", "rest", "tol", "_pieces")
 
     def __init__(self, region: _Convex, d: _Convex, rest: tuple[_Convex, ...], tol: float) -> None:
-        self.region, self.d, self.rest, self.tol, self._pieces = region, d, rest, tol, None
+        self.region, self.d, self.rest, self.tol = region, d, rest, tol
+        self._pieces: list[_Node] | None = None
 
     def pieces(self) -> list[_Node]:
         if self._pieces is None:
@@ -448,6 +452,7 @@ class _Hiding:
         pts = np.vstack([self.R, self.S])
         self.rlo, self.rhi = self.R.min(axis=0), self.R.max(axis=0)
         self.slo, self.shi = self.S.min(axis=0), self.S.max(axis=0)
+        self.hull: tuple[NDArray[np.float64], NDArray[np.float64]] | None
         try:
             eq = ConvexHull(pts).equations
             self.hull = (eq[:, :3], -eq[:, 3])

@@ -32,6 +32,18 @@ def _edge_key(i: int, j: int, e: int) -> tuple[int, int, int]:
     return {0: (i, j, 0), 1: (i + 1, j, 1), 2: (i, j + 1, 0), 3: (i, j, 1)}[e]
 
 
+def _edge_point(
+    Z: NDArray[np.float64], level: float, points: dict[tuple[int, int, int], NDArray[np.float64]], k: tuple[int, int, int]
+) -> tuple[int, int, int]:
+    """The edge ``k``'s crossing of ``level``, interpolated once and kept in ``points``; returns ``k``."""
+    if k not in points:
+        a0, a1 = (k[0], k[1]), ((k[0] + 1, k[1]) if k[2] == 0 else (k[0], k[1] + 1))
+        z0, z1 = Z[a0[1], a0[0]], Z[a1[1], a1[0]]
+        t = (level - z0) / (z1 - z0)
+        points[k] = np.array([a0[0] + t * (a1[0] - a0[0]), a0[1] + t * (a1[1] - a0[1])])
+    return k
+
+
 def marching_squares(E: ArrayLike, levels: ArrayLike) -> list[list[tuple[NDArray[np.float64], bool]]]:
     """Contour lines of a 2D field by marching squares.
 
@@ -61,16 +73,6 @@ def marching_squares(E: ArrayLike, levels: ArrayLike) -> list[list[tuple[NDArray
         cells = np.argwhere(ok & (case != 0) & (case != 15))
         points: dict[tuple[int, int, int], NDArray[np.float64]] = {}
         adj: dict[tuple[int, int, int], list[tuple[int, int, int]]] = {}
-
-        def point(i: int, j: int, e: int) -> tuple[int, int, int]:
-            k = _edge_key(i, j, e)
-            if k not in points:
-                a0, a1 = (k[0], k[1]), ((k[0] + 1, k[1]) if k[2] == 0 else (k[0], k[1] + 1))
-                z0, z1 = Z[a0[1], a0[0]], Z[a1[1], a1[0]]
-                t = (level - z0) / (z1 - z0)
-                points[k] = np.array([a0[0] + t * (a1[0] - a0[0]), a0[1] + t * (a1[1] - a0[1])])
-            return k
-
         for j, i in cells:
             cs = int(case[j, i])
             if cs in _SADDLES:
@@ -79,7 +81,8 @@ def marching_squares(E: ArrayLike, levels: ArrayLike) -> list[list[tuple[NDArray
             else:
                 segs = _SEGMENTS[cs]
             for e0, e1 in segs:
-                a, b = point(i, j, e0), point(i, j, e1)
+                a = _edge_point(Z, level, points, _edge_key(i, j, e0))
+                b = _edge_point(Z, level, points, _edge_key(i, j, e1))
                 adj.setdefault(a, []).append(b)
                 adj.setdefault(b, []).append(a)
         out.append(_chain(points, adj))
