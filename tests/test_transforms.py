@@ -363,7 +363,8 @@ def test_registry_table():
     )
 
     names = [k.name for k in registered_kinds()]
-    assert names == ["sphere", "truncus", "cylinder", "cone", "box", "polyhedron", "ellipsoid", "elliptic_truncus", "torus"]
+    assert names == ["sphere", "truncus", "cylinder", "cone", "box", "polyhedron", "ellipsoid", "elliptic_truncus", "torus",
+                     "mesh"]
     assert kind_of(Cylinder((0, 0, 0), (0, 0, 1), 1)).name == "cylinder"  # by the class's inheritance
     assert kind_named("elliptic_truncus").cls is EllipticTruncus
     # every kind provides its section, band surface, mesh and OpenSCAD form itself, the built-in
