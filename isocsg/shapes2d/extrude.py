@@ -97,8 +97,9 @@ def _round(leaf: Circle | Ellipse, z0: float, z1: float, s: tuple[float, float])
     return base.transform(A)
 
 
-def _combine(op: str, n: Shape2D, kids: list[Any]) -> Any:
-    """One 2D node's Boolean over its children's solids (None: empty)."""
+def combine_solids(op: str, n: Shape2D, kids: list[Any]) -> Any:
+    """One 2D node's Boolean over its children's solids (None: empty), for :func:`fold` (extrusions and
+    revolutions distribute over the 2D Booleans)."""
     from ..csg.tree import Difference, Intersection, Union
 
     if op == "union":
@@ -188,7 +189,7 @@ def linear_extrude(
 
         details = (number("linear_extrude.fn", fn, low=0.0, strict=False), number("linear_extrude.fs", fs, low=0.0),
                    number("linear_extrude.fa", fa, low=0.0))
-        solid = sliced_extrude(shape, z0, z1, tw, s, n, details, _combine)
+        solid = sliced_extrude(shape, z0, z1, tw, s, n, details, combine_solids)
     else:
         def leaf(l: Shape2D) -> Any:
             if isinstance(l, ConvexPolygon):
@@ -197,7 +198,7 @@ def linear_extrude(
                 return _round(l, z0, z1, s)
             raise InvalidGeometryError(f"linear_extrude.shape holds an unknown leaf {type(l).__name__}")
 
-        solid = fold(shape, leaf, _combine)
+        solid = fold(shape, leaf, combine_solids)
     if solid is None:
         raise InvalidGeometryError("linear_extrude.shape must not be empty")
     return solid

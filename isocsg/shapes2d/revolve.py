@@ -24,6 +24,7 @@ import numpy as np
 
 from ..errors import InvalidGeometryError
 from ._checks import MAX_ABS_COORD, number
+from .extrude import combine_solids
 from .leaves import Circle, ConvexPolygon, Ellipse
 from .measure import area
 from .shape import EMPTY, Shape2D, fold
@@ -138,7 +139,6 @@ def rotate_extrude(shape: Shape2D, angle: Any = 360.0, *, start: Any = None, seg
         revolved_polygon,
         sector_angles,
     )
-    from ..csg.tree import Difference, Intersection, Union
 
     if not isinstance(shape, Shape2D):
         raise InvalidGeometryError(f"rotate_extrude.shape must be a 2D shape, got {type(shape).__name__}")
@@ -167,20 +167,7 @@ def rotate_extrude(shape: Shape2D, angle: Any = 360.0, *, start: Any = None, seg
             return revolved_ellipse(l.center, l.matrix)
         raise InvalidGeometryError(f"rotate_extrude.shape holds an unknown leaf {type(l).__name__}")
 
-    def node(op: str, _n: Shape2D, kids: list[Any]) -> Any:
-        if op == "union":
-            real = [k for k in kids if k is not None]
-            return None if not real else real[0] if len(real) == 1 else Union(tuple(real))
-        if op == "intersection":
-            if any(k is None for k in kids):
-                return None
-            return kids[0] if len(kids) == 1 else Intersection(tuple(kids))
-        if kids[0] is None:
-            return None
-        rest = [k for k in kids[1:] if k is not None]
-        return kids[0] if not rest else Difference((kids[0], *rest))
-
-    solid = fold(shape, leaf, node)
+    solid = fold(shape, leaf, combine_solids)
     if solid is None:
         raise InvalidGeometryError("rotate_extrude.shape must not be empty")
     if full or angles is not None:
