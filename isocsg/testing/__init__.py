@@ -10,11 +10,16 @@
 - :mod:`isocsg.testing.plugin`: pytest fixtures.
 """
 
-from .area import AreaResult, boundary_volume, closed_form_area, surface_area
-from .compare import MeshComparison, Topology, compare_mesh, topology
-from .distance import DistanceResult, signed_distance
-from .reference import Reference, SectionReference, reference
-from .strategies import to_python
+from .._lazy import lazy_exports
+
+# Loaded on first use (the pytest plugin imports this package in every session of an install).
+_EXPORTS: dict[str, str] = {
+    **dict.fromkeys(["AreaResult", "boundary_volume", "closed_form_area", "surface_area"], ".area"),
+    **dict.fromkeys(["MeshComparison", "Topology", "compare_mesh", "topology"], ".compare"),
+    **dict.fromkeys(["DistanceResult", "signed_distance"], ".distance"),
+    **dict.fromkeys(["Reference", "SectionReference", "reference"], ".reference"),
+    "to_python": ".strategies",
+}
 
 __all__ = [
     "AreaResult",
@@ -32,3 +37,5 @@ __all__ = [
     "to_python",
     "topology",
 ]
+
+__getattr__, __dir__ = lazy_exports(globals(), _EXPORTS)

@@ -14,13 +14,14 @@ with isocsg), or by ``pytest_plugins = ["isocsg.testing.plugin"]`` in a ``confte
 from __future__ import annotations
 
 from collections.abc import Callable
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import pytest
 
-from ..kinds import Solid
-from .compare import MeshComparison, compare_mesh
-from .reference import Reference, reference
+if TYPE_CHECKING:  # the plugin loads with every pytest session: isocsg itself only when a fixture is used
+    from ..kinds import Solid
+    from .compare import MeshComparison
+    from .reference import Reference
 
 __all__ = ["isocsg_compare", "isocsg_reference"]
 
@@ -28,6 +29,8 @@ __all__ = ["isocsg_compare", "isocsg_reference"]
 @pytest.fixture(scope="session")
 def isocsg_reference() -> Callable[..., Reference]:
     """``isocsg_reference(solid, tol=1e-9)``: :func:`isocsg.testing.reference`, kept per solid for the session."""
+    from .reference import reference
+
     cache: dict[tuple[Solid, float], Reference] = {}
 
     def get(solid: Solid, tol: float = 1e-9) -> Reference:
@@ -42,6 +45,8 @@ def isocsg_reference() -> Callable[..., Reference]:
 @pytest.fixture(scope="session")
 def isocsg_compare(isocsg_reference: Callable[..., Reference]) -> Callable[..., MeshComparison]:
     """``isocsg_compare(mesh, solid, **kw)``: :func:`isocsg.testing.compare_mesh` with the session's references."""
+
+    from .compare import compare_mesh
 
     def run(mesh: Any, solid: Solid, **kw: Any) -> MeshComparison:
         return compare_mesh(mesh, solid, ref=isocsg_reference(solid), **kw)
