@@ -17,7 +17,7 @@ _EXPORTS: dict[str, str] = {
     **dict.fromkeys(["AreaResult", "boundary_volume", "closed_form_area", "surface_area"], ".area"),
     **dict.fromkeys(["MeshComparison", "Topology", "compare_mesh", "topology"], ".compare"),
     **dict.fromkeys(["DistanceResult", "signed_distance"], ".distance"),
-    **dict.fromkeys(["Reference", "SectionReference", "reference"], ".reference"),
+    **dict.fromkeys(["Reference", "SectionReference", "reference"], ".figures"),
     "to_python": ".strategies",
 }
 

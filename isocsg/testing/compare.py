@@ -7,7 +7,7 @@ combined by manifold3d's exact mesh Booleans). The tessellation reference's own 
 the tessellation alone explains; an engine whose errors exceed them (by the factor ``slack`` and
 a floor of 1e-9 of the solid's size) did something else, and the report says ``wrong``.
 
-- volume and area errors against :func:`~isocsg.testing.reference.reference`. The volume is
+- volume and area errors against :func:`~isocsg.testing.figures.reference`. The volume is
   judged against a bound that no Boolean engine computes: the volume of a Boolean of the
   tessellated leaves differs from the true one by at most the sum over the leaves of
   ``V(leaf) - V(leaf's mesh)`` (the symmetric difference of the results lies in the union of
@@ -42,7 +42,7 @@ from ..errors import InvalidParameterError
 from ..kinds import Solid
 from .area import _Tree
 from .distance import signed_distance
-from .reference import Reference, reference
+from .figures import Reference, reference
 
 __all__ = ["MeshComparison", "Topology", "as_trimesh", "compare_mesh", "distance_to_mesh", "topology"]
 
@@ -243,7 +243,7 @@ def compare_mesh(
     slack : float, default 1.5
         An error up to ``slack`` times the tessellation reference's (plus a floor) is "tessellation".
     ref : Reference, optional
-        Reuse the truth (:func:`~isocsg.testing.reference.reference` at ``tol=1e-9``).
+        Reuse the truth (:func:`~isocsg.testing.figures.reference` at ``tol=1e-9``).
     seed : int, default 0
         Seeds the surface sampling.
 

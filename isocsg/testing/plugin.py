@@ -21,7 +21,7 @@ import pytest
 if TYPE_CHECKING:  # the plugin loads with every pytest session: isocsg itself only when a fixture is used
     from ..kinds import Solid
     from .compare import MeshComparison
-    from .reference import Reference
+    from .figures import Reference
 
 __all__ = ["isocsg_compare", "isocsg_reference"]
 
@@ -29,7 +29,7 @@ __all__ = ["isocsg_compare", "isocsg_reference"]
 @pytest.fixture(scope="session")
 def isocsg_reference() -> Callable[..., Reference]:
     """``isocsg_reference(solid, tol=1e-9)``: :func:`isocsg.testing.reference`, kept per solid for the session."""
-    from .reference import reference
+    from .figures import reference
 
     cache: dict[tuple[Solid, float], Reference] = {}
 
