@@ -425,8 +425,9 @@ def _segment_box(p: Any, d: Any, lo: Any, hi: Any, node: Any) -> Any:
 @njit(cache=True, nogil=True)
 def _edge_crossings(V: Any, F: Any, E: Any, lo: Any, hi: Any, left: Any, start: Any, count: Any, order: Any,
                     tol: Any) -> Any:
-    """The first edge ``E[i] = (a, b)`` that passes through a face without either end (Moller-Trumbore,
-    ``tol < t < 1 - tol``, edges of the face inclusive): ``(i, face)``, or ``(-1, -1)``."""
+    """The first edge ``E[i] = (a, b)`` that passes through a face without either end, its ends more
+    than ``tol`` x its size off the face's plane on either side (Moller-Trumbore, edges of the face
+    inclusive): ``(i, face)``, or ``(-1, -1)``."""
     stack = np.empty(256, np.int64)
     d = np.empty(3)
     for i in range(E.shape[0]):
@@ -453,12 +454,24 @@ def _edge_crossings(V: Any, F: Any, E: Any, lo: Any, hi: Any, left: Any, start: 
                 v0, v1, v2 = V[F[f, 0]], V[F[f, 1]], V[F[f, 2]]
                 e1x, e1y, e1z = v1[0] - v0[0], v1[1] - v0[1], v1[2] - v0[2]
                 e2x, e2y, e2z = v2[0] - v0[0], v2[1] - v0[1], v2[2] - v0[2]
+                sx, sy, sz = p[0] - v0[0], p[1] - v0[1], p[2] - v0[2]
+                # The edge's ends must lie on opposite sides of the face's plane, each clearly off it:
+                # an edge in (or rounding-close to) the plane of a coplanar neighbour never crosses it.
+                nx, ny, nz = e1y * e2z - e1z * e2y, e1z * e2x - e1x * e2z, e1x * e2y - e1y * e2x
+                nn = np.sqrt(nx * nx + ny * ny + nz * nz)
+                if nn == 0.0:
+                    continue  # a degenerate face
+                s0 = (sx * nx + sy * ny + sz * nz) / nn
+                s1 = s0 + (d[0] * nx + d[1] * ny + d[2] * nz) / nn
+                scale = np.sqrt(max(d[0] * d[0] + d[1] * d[1] + d[2] * d[2],
+                                    e1x * e1x + e1y * e1y + e1z * e1z, e2x * e2x + e2y * e2y + e2z * e2z))
+                if not ((s0 < -tol * scale and s1 > tol * scale) or (s0 > tol * scale and s1 < -tol * scale)):
+                    continue
                 px, py, pz = d[1] * e2z - d[2] * e2y, d[2] * e2x - d[0] * e2z, d[0] * e2y - d[1] * e2x
                 det = e1x * px + e1y * py + e1z * pz
                 if det == 0.0:
                     continue  # the edge is parallel to the face's plane
                 inv = 1.0 / det
-                sx, sy, sz = p[0] - v0[0], p[1] - v0[1], p[2] - v0[2]
                 u = (sx * px + sy * py + sz * pz) * inv
                 if u < 0.0 or u > 1.0:
                     continue
