@@ -16,6 +16,7 @@ import shapely
 from numpy.typing import NDArray
 
 from ..kinds.base import LeafForm
+from .leaf_table import leaf_table
 from .program import (
     OP_DIFFERENCE,
     OP_INTERSECTION,
@@ -24,7 +25,6 @@ from .program import (
     Program,
     compile_program,
 )
-from .section import leaf_table
 
 __all__ = ["leaf_boxes", "lens_volume", "pairwise_union", "split_parts"]
 
