@@ -377,6 +377,21 @@ class Primitive(Solid):
         """The first depth interval of each ray and its normals; see :class:`RayHits`."""
         raise NotImplementedError
 
+    def first_interval_hits(self, origins: ArrayLike, directions: ArrayLike) -> RayHits:
+        """:meth:`intersect_rays` of a kind that has :meth:`ray_intervals` (a non-convex one): each
+        ray's first interval, with :meth:`normals_at` at its ends."""
+        o, d = _as_rays(origins, directions)
+        iv = self.ray_intervals(o, d)
+        hit = np.isfinite(iv[:, 0, 0])
+        t_in = np.where(hit, iv[:, 0, 0], np.inf)
+        t_out = np.where(hit, iv[:, 0, 1], -np.inf)
+        n_in = np.zeros((len(o), 3))
+        n_out = np.zeros((len(o), 3))
+        if hit.any():
+            n_in[hit] = self.normals_at(o[hit] + t_in[hit, None] * d[hit])
+            n_out[hit] = self.normals_at(o[hit] + t_out[hit, None] * d[hit])
+        return RayHits(t_in, t_out, n_in, n_out)
+
     def ray_intervals(self, origins: ArrayLike, directions: ArrayLike) -> NDArray[np.float64]:
         """Every depth interval of each ray in the solid.
 

@@ -331,18 +331,8 @@ class TriangleMesh(Primitive):
         return out
 
     def intersect_rays(self, origins: ArrayLike, directions: ArrayLike) -> RayHits:
-        """The first depth interval of each ray (:meth:`ray_intervals`) with the normals of the faces there."""
-        o, d = _as_rays(origins, directions)
-        iv = self.ray_intervals(o, d)
-        hit = np.isfinite(iv[:, 0, 0])
-        t_in = np.where(hit, iv[:, 0, 0], np.inf)
-        t_out = np.where(hit, iv[:, 0, 1], -np.inf)
-        n_in = np.zeros((len(o), 3))
-        n_out = np.zeros((len(o), 3))
-        if hit.any():
-            n_in[hit] = self.normals_at(o[hit] + t_in[hit, None] * d[hit])
-            n_out[hit] = self.normals_at(o[hit] + t_out[hit, None] * d[hit])
-        return RayHits(t_in, t_out, n_in, n_out)
+        """The first depth interval of each ray with the normals at its ends (:meth:`ray_intervals`)."""
+        return self.first_interval_hits(origins, directions)
 
     # ------------------------------------------------------------ sections
     def section(self, frame: NDArray[np.float64], resolution: int, area_exact: bool = False) -> Polygon:

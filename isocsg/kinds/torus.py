@@ -274,18 +274,8 @@ class Torus(Primitive):
         return out
 
     def intersect_rays(self, origins: ArrayLike, directions: ArrayLike) -> RayHits:
-        """The first depth interval of each ray with its normals (see :meth:`ray_intervals`)."""
-        o, d = _as_rays(origins, directions)
-        iv = self.ray_intervals(o, d)
-        hit = np.isfinite(iv[:, 0, 0])
-        t_in = np.where(hit, iv[:, 0, 0], np.inf)
-        t_out = np.where(hit, iv[:, 0, 1], -np.inf)
-
-        def normal(t: NDArray[np.float64]) -> NDArray[np.float64]:
-            n = self.normals_at(o + np.where(hit, t, 0.0)[:, None] * d)
-            return np.where(hit[:, None], n, 0.0)
-
-        return RayHits(t_in, t_out, normal(t_in), normal(t_out))
+        """The first depth interval of each ray with the normals at its ends (:meth:`ray_intervals`)."""
+        return self.first_interval_hits(origins, directions)
 
     # ------------------------------------------------------------ sections
     def leaf_row(self) -> LeafRow:
