@@ -26,8 +26,8 @@ Every operation is exact for the mesh:
   has positive winding;
 - sections: the plane cuts each face crossing it in one segment, polygonised (even-odd);
 - bands: the faces themselves (:mod:`~isocsg.kinds.mesh_bands`), each flat with its normal;
-- shadows: a convex mesh is its own occluder; a non-convex mesh is refused as an occluder
-  (:meth:`TriangleMesh.convex_pieces`: no exact convex decomposition is cheap).
+- shadows: a convex mesh is its own occluder; a non-convex mesh is cut into convex pieces by a
+  binary space partition along its own face planes (:mod:`~isocsg.kinds.mesh_convex`), exactly.
 """
 
 from __future__ import annotations
@@ -362,19 +362,31 @@ class TriangleMesh(Primitive):
         return abs(self.to_polyhedron().volume - self.volume) <= 1e-9 * self.volume
 
     def convex_pieces(self, resolution: int = DEFAULT_RESOLUTION) -> list[ConvexPolyhedron]:
-        """Itself when convex (its hull).
+        """Itself when convex (its hull); otherwise the inside cells of a binary space partition by
+        its own face planes (:func:`~isocsg.kinds.mesh_convex.convex_cells`): convex pieces whose
+        union is the mesh exactly, computed once per mesh.
 
         Raises
         ------
-        InvalidGeometryError
-            For a non-convex mesh: no exact convex decomposition is cheap, so such a mesh cannot be a
-            shadow occluder (render it without shadows, or model the occluder from convex kinds).
+        InvalidParameterError
+            For a non-convex mesh past the decomposition's documented size
+            (:data:`~isocsg.kinds.mesh_convex.MAX_DECOMPOSITION_FACES` faces).
         """
         if self.is_convex():
             return [self.to_polyhedron()]
-        raise InvalidGeometryError(
-            "a non-convex TriangleMesh cannot cast shadows: its convex pieces are not computed "
-            "(render without shadows, or build the occluder from convex kinds)")
+        cached = self.__dict__.get("_convex_pieces")
+        if cached is None:
+            from .mesh_convex import convex_cells
+
+            pieces = []
+            for cell in convex_cells(self.vertex_array, self.face_array, self.contains):
+                try:
+                    pieces.append(ConvexPolyhedron(cell))
+                except InvalidGeometryError:  # a cell flattened to rounding carries no volume
+                    continue
+            cached = tuple(pieces)
+            object.__setattr__(self, "_convex_pieces", cached)
+        return list(cached)
 
     def to_trimesh(self, resolution: int = DEFAULT_RESOLUTION) -> Any:
         """The mesh itself as a ``trimesh.Trimesh``."""
