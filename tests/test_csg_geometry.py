@@ -122,7 +122,7 @@ def manifold_slice(mesh: m3.Manifold, frame: np.ndarray) -> Polygon:
 
 @pytest.mark.parametrize("name", IDS, ids=IDS)
 def test_volume_matches_manifold3d(name):
-    v = volume(SCENES[name], tol=1e-4)
+    v = volume(SCENES[name], tol=1e-4, method="sections")  # independent of manifold3d
     ref = reference(name).volume()
     assert abs(v / ref - 1) < 5e-3
     # both are far better than the 0.5 % bar; the fine mesh is inscribed (a few 1e-5 small)

@@ -18,13 +18,13 @@ from ..errors import InvalidGeometryError, InvalidParameterError
 from ..kinds.base import Primitive, Solid
 from ..kinds.meshing import manifold3d_module as _manifold3d
 from ..kinds.meshing import rotation_to_axis
-from .program import OP_INTERSECTION, OP_UNION, compile_program
+from .program import OP_INTERSECTION, OP_UNION, Program, compile_program
 
 if TYPE_CHECKING:  # pragma: no cover
     import manifold3d
     import trimesh
 
-__all__ = ["to_manifold", "to_trimesh", "rotation_to_axis"]
+__all__ = ["to_manifold", "to_trimesh", "program_manifold", "rotation_to_axis"]
 
 
 def _leaf(prim: Primitive, resolution: int, shapes: dict[tuple[Any, ...], Any]) -> manifold3d.Manifold:
@@ -37,6 +37,12 @@ def _leaf(prim: Primitive, resolution: int, shapes: dict[tuple[Any, ...], Any]) 
 def _build(solid: Solid, resolution: int, path: str) -> manifold3d.Manifold:
     if not isinstance(solid, Solid):
         raise InvalidGeometryError(f"{path} must be a solid (primitive or CSG node), got {type(solid).__name__}")
+    return program_manifold(compile_program(solid), resolution)
+
+
+def program_manifold(prog: Program, resolution: int) -> manifold3d.Manifold:
+    """A compiled program as a manifold3d solid: each leaf through its kind's ``manifold``, the tree's
+    Booleans as manifold3d batch Booleans (exact mesh Booleans in double precision)."""
     m3 = _manifold3d()
     M = m3.Manifold
     add, sub, meet = m3.OpType.Add, m3.OpType.Subtract, m3.OpType.Intersect
@@ -53,7 +59,7 @@ def _build(solid: Solid, resolution: int, path: str) -> manifold3d.Manifold:
         return M.batch_boolean([parts[0], rest], sub)
 
     shapes: dict[tuple[Any, ...], Any] = {}
-    return compile_program(solid).evaluate(lambda _, p: _leaf(p, resolution, shapes), combine)
+    return prog.evaluate(lambda _, p: _leaf(p, resolution, shapes), combine)
 
 
 def to_manifold(solid: Solid, resolution: int = 64) -> manifold3d.Manifold:

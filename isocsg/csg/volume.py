@@ -26,7 +26,13 @@
    ``C``'s. Each part is a closed form or splits again (a work list, no
    recursion), or is integrated on its own, with its own breakpoints; the
    adaptive rule's ``tol`` then holds for each part.
-3. **Integration over sections.** The axis is split at every leaf's
+3. **Polyhedral parts.** A part whose leaves all have flat faces only (boxes, convex
+   polyhedra, triangle meshes: the kinds' ``polyhedral`` flag) is a polyhedron: its volume is
+   that of manifold3d's mesh Boolean of the leaves' exact meshes (double precision; exact to
+   rounding, about 1e-12 relative), in milliseconds where sections would need one at every
+   height where two faces cross (OpenSCAD's rotated Menger sponge: 221 leaves). With
+   ``method="sections"`` such parts are integrated as below instead (the tests compare the two).
+4. **Integration over sections.** The axis is split at every leaf's
    breakpoints (its extent, the heights of its vertices, end centres and end circles' lowest and highest points), so
    that no leaf starts, ends or turns a corner inside a piece. Each piece
    keeps only the leaves present in it (:meth:`Program.prune`):
@@ -62,6 +68,7 @@ from .._validation import integer, nonzero_vector3, scalar
 from ..errors import InvalidParameterError
 from ..kinds.base import LeafForm, Solid
 from ..kinds.planar import circle_ring
+from .mesh import program_manifold
 from .program import OP_DIFFERENCE, OP_LEAF, OP_UNION, Program
 from .section import (
     combine_sections,
@@ -430,8 +437,10 @@ def volume(
     axis: ArrayLike = (0.0, 0.0, 1.0),
     resolution: int | None = None,
     progress: Callable[[int, int], None] | None = None,
+    method: str = "auto",
 ) -> float:
-    """Volume of a primitive or CSG tree: closed forms, else exact-area sections.
+    """Volume of a primitive or CSG tree: closed forms, else exact mesh Booleans of polyhedral parts,
+    else exact-area sections.
 
     See the module docstring for the method. Closed-form trees (primitives,
     disjoint unions, differences of disjoint solids inside a convex one,
@@ -457,6 +466,9 @@ def volume(
         the tree splits into several (``total`` parts), else after each piece
         of the axis and while the adaptive rule refines (``total`` then
         grows); the last call has ``done == total``.
+    method : {"auto", "sections"}, default "auto"
+        ``"auto"`` takes a part whose leaves are all polyhedral from its exact mesh Boolean;
+        ``"sections"`` integrates every part that has no closed form over plane sections.
 
     Returns
     -------
@@ -468,7 +480,7 @@ def volume(
     InvalidGeometryError
         If ``solid`` is not a solid.
     InvalidParameterError
-        On a bad ``tol``, ``axis`` or ``resolution``.
+        On a bad ``tol``, ``axis``, ``resolution`` or ``method``.
 
     Examples
     --------
@@ -487,6 +499,8 @@ def volume(
         res = _resolution(tol_)
     else:
         res = integer("resolution", resolution, low=8, high=1_000_000, error=InvalidParameterError)
+    if method not in ("auto", "sections"):
+        raise InvalidParameterError(f'volume: method must be "auto" or "sections", got {method!r}')
     w = _unit(axis)
     prog = solid_program(solid)
     # a work list (no recursion): each program is a closed form, splits into signed parts, or is
@@ -505,7 +519,9 @@ def volume(
             total += sign * exact
             continue
         parts = split_parts(p)
-        if parts is None:
+        if parts is None and method == "auto" and all(type(leaf).polyhedral for leaf in p.leaves):
+            total += sign * program_manifold(p, 8).volume()
+        elif parts is None:
             integrals.append((p, sign))
         else:
             work.extend((q, sign * s) for q, s in parts)

@@ -312,12 +312,17 @@ class Primitive(Solid):
         The most depth intervals a ray can have in the solid (1 for convex kinds).
     convex : bool
         Whether the solid is convex (one convex piece, one interval per ray).
+    polyhedral : bool
+        Whether the surface is made of flat faces only, so that :meth:`manifold` is the solid
+        itself, not an inscribed tessellation (what lets ``isocsg.volume`` take a polyhedral
+        tree's volume from its exact mesh Boolean).
     """
 
     __slots__ = ()
     kind: ClassVar[str] = "primitive"
     max_intervals: ClassVar[int] = 1
     convex: ClassVar[bool] = True
+    polyhedral: ClassVar[bool] = False
 
     def _points(self, points: ArrayLike) -> NDArray[np.float64]:
         return points_array(f"{type(self).__name__}.contains(points)", points)

@@ -73,6 +73,7 @@ class Box(Primitive):
     size: Vec3
     orientation: tuple[Vec3, Vec3, Vec3] = IDENTITY3
     kind: ClassVar[str] = "box"
+    polyhedral: ClassVar[bool] = True
 
     if TYPE_CHECKING:  # the constructor as callers call it: array-likes, checked in __post_init__
         def __init__(self, center: ArrayLike, size: ArrayLike, orientation: ArrayLike = IDENTITY3) -> None: ...

@@ -157,6 +157,7 @@ class TriangleMesh(Primitive):
     face_normals: NDArray[np.float64] = field(init=False, repr=False)
     kind: ClassVar[str] = "mesh"
     convex: ClassVar[bool] = False
+    polyhedral: ClassVar[bool] = True
     #: The bound over every mesh; each mesh's own is ``len(faces) // 2``.
     max_intervals: ClassVar[int] = MAX_MESH_FACES // 2
 

@@ -120,6 +120,7 @@ class ConvexPolyhedron(Primitive):
     face_offsets: NDArray[np.float64] = field(init=False, repr=False, compare=False, hash=False)
     triangles: NDArray[np.int64] = field(init=False, repr=False, compare=False, hash=False)
     kind: ClassVar[str] = "polyhedron"
+    polyhedral: ClassVar[bool] = True
 
     if TYPE_CHECKING:  # the constructor as callers call it: array-likes, checked in __post_init__
         def __init__(self, vertices: ArrayLike) -> None: ...
