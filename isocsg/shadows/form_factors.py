@@ -66,7 +66,7 @@ from .._validation import points_array
 from ..errors import InvalidGeometryError
 from ..kinds import DEFAULT_RESOLUTION, Solid
 
-__all__ = ["point_form_factor", "polygon_form_factor", "pair_form_factors", "PARALLEL_TOL"]
+__all__ = ["point_form_factor", "polygon_form_factor", "pair_form_factors", "PARALLEL_TOL", "CLOSED_FORM_MIN_SIN"]
 
 #: Two edges are treated as parallel when the sine of their angle is below this.
 PARALLEL_TOL = 1e-9
@@ -234,7 +234,7 @@ def _graded(a0: np.ndarray, ea: np.ndarray, lo: float, hi: float, toward_lo: boo
 @numba.njit(cache=True)
 def _edge_pair(a0: np.ndarray, a1: np.ndarray, b0: np.ndarray, b1: np.ndarray,
                gx: np.ndarray, gw: np.ndarray, closed: bool = True) -> float:
-    """(e_a . e_b) times the integral of ln r over two segments."""
+    """(e_a . e_b) times the integral of ln r over two segments (``closed=False``: quadrature at every angle)."""
     ea = a1 - a0
     eb = b1 - b0
     la = math.sqrt(ea[0] ** 2 + ea[1] ** 2 + ea[2] ** 2)
