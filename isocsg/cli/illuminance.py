@@ -13,7 +13,8 @@ The grid lies on a plane given on the command line (``--origin``, ``--u``,
 
 or, by default, the scene's floor: the top face of the box with the largest
 horizontal footprint (else the bottom of the scene's bounding box).
-Only the scene's area and polyhedron lights count; its objects occlude.
+Only the scene's area and polyhedron lights count, and the luminaires of a
+``[study]`` table (as ``isocsg report`` reads them); its objects occlude.
 
 With ``--room CX CY CZ SX SY SZ`` (or a scene table ``[interreflections]``
 with ``room_center``, ``room_size``, ``floor``, ``walls``, ``ceiling``,
