@@ -13,7 +13,8 @@ The grid lies on a plane given on the command line (``--origin``, ``--u``,
 
 or, by default, the scene's floor: the top face of the box with the largest
 horizontal footprint (else the bottom of the scene's bounding box).
-Only the scene's area and polyhedron lights count; its objects occlude.
+Only the scene's area and polyhedron lights count, and the luminaires of a
+``[study]`` table (as ``isocsg report`` reads them); its objects occlude.
 
 With ``--room CX CY CZ SX SY SZ`` (or a scene table ``[interreflections]``
 with ``room_center``, ``room_size``, ``floor``, ``walls``, ``ceiling``,
@@ -146,14 +147,16 @@ def load_scene_and_grid(path: str | Path) -> tuple[Scene, dict[str, Any] | None]
 
     See :func:`load_scene_grid_and_interreflections`.
     """
-    scene, table, _ = load_scene_grid_and_interreflections(path)
+    scene, table, *_ = load_scene_grid_and_interreflections(path)
     return scene, table
 
 
-def load_scene_grid_and_interreflections(path: str | Path) -> tuple[Scene, dict[str, Any] | None, Any]:
-    """Read a scene file, its optional ``[illuminance]`` table and its ``[interreflections]`` table.
+def load_scene_grid_and_interreflections(path: str | Path) -> tuple[Scene, dict[str, Any] | None, Any, list[Any]]:
+    """Read a scene file, its optional ``[illuminance]`` table, ``[interreflections]`` table and luminaires.
 
-    The last is an :class:`~isocsg.shadows.radiosity.Interreflections` or None.
+    The third is an :class:`~isocsg.shadows.radiosity.Interreflections` or
+    None, the last the lights of a ``[study]`` table's luminaires (read as
+    ``isocsg report`` reads them: :func:`isocsg.interop.study.pop_lighting_tables`).
 
     The file is read as :func:`isocsg.scene.load_scene` reads it: ``.toml``
     or ``.json`` only, a regular UTF-8 file of at most 16 MiB; ``-`` reads
@@ -196,15 +199,11 @@ def load_scene_grid_and_interreflections(path: str | Path) -> tuple[Scene, dict[
         except InvalidParameterError as exc:
             field, _, rest = str(exc).partition(" ")
             raise SceneFileError(f"{p}: {field}: {rest}") from None
-    inter = None
-    if isinstance(doc, dict) and "interreflections" in doc:
-        from ..shadows.radiosity import Interreflections
+    from ..interop.study import pop_lighting_tables
 
-        try:
-            inter = Interreflections.from_dict(doc.pop("interreflections"))
-        except InvalidParameterError as exc:
-            raise SceneFileError(f"{p}: {exc}") from None
-    return scene_from_dict(doc, source=p if isinstance(p, str) else p.name), table, inter
+    tables = pop_lighting_tables(doc, base=Path.cwd() if isinstance(p, str) else p.parent, source=_name(path))
+    scene = scene_from_dict(doc, source=p if isinstance(p, str) else p.name)
+    return scene, table, tables.interreflections, tables.luminaire_lights()
 
 
 def _interreflections(args: argparse.Namespace, inter: Any) -> Any:
@@ -299,11 +298,11 @@ def run(args: argparse.Namespace) -> int:
     if args.levels is not None:
         _levels("--levels", args.levels)
     res = resolution("--resolution", args.resolution)
-    scene, table, inter = load_scene_grid_and_interreflections(args.scene)
+    scene, table, inter, luminaires = load_scene_grid_and_interreflections(args.scene)
     inter = _interreflections(args, inter)
-    lights = [li for li in scene.lights if isinstance(li, (AreaLight, PolyhedronLight))]
+    lights = [li for li in scene.lights if isinstance(li, (AreaLight, PolyhedronLight))] + luminaires
     if not lights:
-        raise InvalidLightError(f"{_name(args.scene)} has no area or polyhedron light")
+        raise InvalidLightError(f"{_name(args.scene)} has no area or polyhedron light nor a [study] luminaire")
     if all(given):
         nodes_x = DEFAULT_NODES if nx is None else nx
         nodes_y = DEFAULT_NODES if ny is None else ny

@@ -1,5 +1,8 @@
 """``isocsg report SCENE -o REPORT.html|.pdf``: a lighting study report from a scene file's ``[study]`` table.
 
+An ``[interreflections]`` table in the file adds the reflected light, as for
+``isocsg illuminance``.
+
 See :mod:`isocsg.interop.study` for the table (room, working plane, task
 areas, luminaires from IES or EULUMDAT files) and :mod:`isocsg.interop.report`
 for what the report holds.
@@ -17,6 +20,8 @@ Compute a lighting study (EN 12464-1 grids with points at cell centres, maintain
 U0 and Emin/Emax per area, cylindrical illuminance, exact direct light with shadows) from the scene
 file's [study] table and write the report as HTML or PDF: plan view with lux map, colour bar in lx and
 isolux lines, the grid table, the figures against the required values, the luminaire schedule.
+An [interreflections] table in the scene file adds the light reflected by the room and the objects
+(see docs/interreflections.md).
 """
 
 
@@ -45,6 +50,10 @@ def run(args: argparse.Namespace) -> int:
     res = DEFAULT_RESOLUTION if args.resolution is None else resolution("--resolution", args.resolution)
     scene, spec = load_study(args.scene)
     result = run_study(spec, scene, resolution=res)
+    if result.radiosity is not None:
+        sol = result.radiosity
+        print(f"interreflections: {len(sol.patches)} patches, {sol.shots} shots, "
+              f"residual {sol.residuals[-1] if sol.shots else 0.0:.2g}")
     for f in result.figures:
         req = "" if f.required is None else f"  (required Em {f.required.em:g} lx, U0 {f.required.u0:g})"
         print(f"{f.name}: Ebar {f.e_mean:.4g} lx  Emin {f.e_min:.4g} lx  Emax {f.e_max:.4g} lx  "

@@ -31,6 +31,11 @@ ignored here)::
     multiplier = 1.0
     model = "point"                    # or "opening": the luminous opening as a Lambertian area source
 
+An ``[interreflections]`` table (docs/interreflections.md) adds the light
+reflected by the room and the objects to every figure and to the plan view;
+both ``isocsg report`` and ``isocsg illuminance`` read it, and both light the
+scene with the study's luminaires (:func:`pop_lighting_tables`).
+
 Every error is a :class:`~isocsg.errors.SceneFileError` naming the file and the field
 (``scene.toml: study.luminaires[0].file: ...``).
 """
@@ -40,7 +45,7 @@ from __future__ import annotations
 import math
 import os
 from collections.abc import Mapping
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Any
 
@@ -67,8 +72,10 @@ from ..shadows.en12464 import (
     vertical_illuminance,
 )
 from ..shadows.luxmap import LuxGrid, LuxMap, illuminance_map
+from ..shadows.radiosity import Interreflections, RadiositySolution, solve_radiosity
 
-__all__ = ["Task", "Luminaire", "StudySpec", "StudyResult", "load_study", "study_from_table", "run_study"]
+__all__ = ["Task", "Luminaire", "StudySpec", "StudyResult", "LightingTables", "load_study", "study_from_table",
+           "pop_lighting_tables", "run_study"]
 
 _STUDY_FIELDS = {"title", "room", "height", "maintenance_factor", "wall_band", "cylindrical_height", "map_spacing",
                  "tasks", "luminaires", "vertical"}
@@ -116,6 +123,7 @@ class StudySpec:
     vertical_azimuths: tuple[float, ...] = ()
     map_spacing: float | None = None
     title: str = "Lighting study"
+    interreflections: Interreflections | None = None
 
 
 @dataclass(frozen=True, slots=True, eq=False)
@@ -130,6 +138,19 @@ class StudyResult:
     cylindrical: AreaFigures | None = None
     scene_lights: int = 0
     vertical: tuple[AreaFigures, ...] = ()
+    radiosity: RadiositySolution | None = field(default=None, repr=False)
+
+
+@dataclass(frozen=True, slots=True)
+class LightingTables:
+    """A scene file's ``[study]`` and ``[interreflections]`` tables, read (either may be absent)."""
+
+    study: StudySpec | None = None
+    interreflections: Interreflections | None = None
+
+    def luminaire_lights(self) -> list[PhotometricLight | AreaLight]:
+        """The study's luminaires as the computation uses them (points or openings)."""
+        return [lu.source() for lu in self.study.luminaires] if self.study is not None else []
 
 
 def _fail(source: str, path: str, message: str) -> SceneFileError:
@@ -259,23 +280,50 @@ def study_from_table(table: Any, *, base: str | os.PathLike[str] = ".", source: 
     return StudySpec(**kw)
 
 
-def load_study(path: str | os.PathLike[str]) -> tuple[Scene, StudySpec]:
-    """Read a scene file with a ``[study]`` table.
+def pop_lighting_tables(doc: Any, *, base: str | os.PathLike[str] = ".", source: str = "<scene>") -> LightingTables:
+    """Take the ``[study]`` and ``[interreflections]`` tables out of a decoded scene document and read them.
+
+    What is left is the scene itself (for :func:`~isocsg.scene.io.scene_from_dict`).
 
     Raises
     ------
     SceneFileError
-        On an unreadable scene file, a missing or malformed ``[study]`` table.
+        On a malformed table, naming ``source`` and the field.
+    """
+    if not isinstance(doc, dict):
+        return LightingTables()
+    study = study_from_table(doc.pop("study"), base=base, source=source) if "study" in doc else None
+    inter = None
+    if "interreflections" in doc:
+        try:
+            inter = Interreflections.from_dict(doc.pop("interreflections"))
+        except InvalidParameterError as exc:
+            raise SceneFileError(f"{source}: {exc}") from None
+    if study is not None and inter is not None:
+        study = replace(study, interreflections=inter)
+    return LightingTables(study, inter)
+
+
+def load_study(path: str | os.PathLike[str]) -> tuple[Scene, StudySpec]:
+    """Read a scene file with a ``[study]`` table (and an optional ``[interreflections]`` table).
+
+    Raises
+    ------
+    SceneFileError
+        On an unreadable scene file, a missing or malformed ``[study]`` or
+        ``[interreflections]`` table.
     """
     p = Path(path)
     text, fmt = read_scene_file(p)
     doc = decode_scene_text(text, format=fmt, source=p)
     if not isinstance(doc, dict) or "study" not in doc:
         raise SceneFileError(f"{p.name}: study: missing (a lighting study needs a [study] table)")
-    table = doc.pop("study")
+    tables = pop_lighting_tables(doc, base=p.parent, source=p.name)
     doc.pop("illuminance", None)  # the illuminance command's table: not used here
     scene = scene_from_dict(doc, source=p.name)
-    return scene, study_from_table(table, base=p.parent, source=p.name)
+    if tables.study is None:  # not reached: the table was there
+        raise SceneFileError(f"{p.name}: study: missing")
+    return scene, tables.study
 
 
 def run_study(
@@ -285,7 +333,10 @@ def run_study(
 
     The lights are the study's luminaires and the scene's area and polyhedron
     lights; the scene's objects occlude. Maintained values: every
-    illuminance times ``spec.maintenance_factor``.
+    illuminance times ``spec.maintenance_factor``. With
+    ``spec.interreflections`` the radiosity is solved once and its indirect
+    illuminance added everywhere (the indirect part of the cylindrical
+    illuminance is the mean over :data:`INDIRECT_AZIMUTHS` azimuths).
 
     Raises
     ------
@@ -299,6 +350,8 @@ def run_study(
         raise InvalidParameterError("a study needs at least one luminaire or area light")
     occ = [o.shape for o in scene.objects] if scene else []
     mf = spec.maintenance_factor
+    sol = None if spec.interreflections is None else solve_radiosity(lights, occ, spec.interreflections,
+                                                                      resolution=resolution)
     areas: list[StudyArea] = [room_area(spec.room, spec.height, band=spec.wall_band,
                                         required=None if spec.tasks else REQUIREMENTS["unknown_task"])]
     for task in spec.tasks:
@@ -306,20 +359,24 @@ def run_study(
     figs, grids = [], []
     for a in areas:
         f, E = area_figures(a, lights, occ, maintenance_factor=mf, resolution=resolution)
+        if sol is not None:
+            f, E = _add_indirect(a, f, E, sol, mf)
         figs.append(f)
         grids.append(E)
     cyl = None
     if spec.cylindrical_height is not None:
         ca = room_area(spec.room, spec.cylindrical_height, band=spec.wall_band)
         cyl = _point_figures(f"room, cylindrical Ez at {spec.cylindrical_height:g} m", "cylindrical", ca, occ, mf,
-                             lambda q: cylindrical_illuminance(q, lights, occ, resolution=resolution))
+                             lambda q: cylindrical_illuminance(q, lights, occ, resolution=resolution)
+                             + _indirect_cylindrical(sol, q))
     vert = []
     if spec.vertical_height is not None:
         va = room_area(spec.room, spec.vertical_height, band=spec.wall_band)
         for az in spec.vertical_azimuths:
             vert.append(_point_figures(f"room, vertical Ev {az:g} deg at {spec.vertical_height:g} m", "vertical", va,
                                        occ, mf,
-                                       lambda q, a=az: vertical_illuminance(q, a, lights, occ, resolution=resolution)))
+                                       lambda q, a=az: vertical_illuminance(q, a, lights, occ, resolution=resolution)
+                                       + _indirect_at(sol, q, _azimuth_normal(a))))
     x0, y0, x1, y1 = spec.room
     if spec.map_spacing is not None:
         nx = int(min(4096, max(2, round((x1 - x0) / spec.map_spacing) + 1)))
@@ -329,8 +386,53 @@ def run_study(
         nx, ny = max(2, round((x1 - x0) * k) + 1), max(2, round((y1 - y0) * k) + 1)
     grid = LuxGrid.from_bounds(x0, y0, x1, y1, spec.height, nx, ny)
     m0 = illuminance_map(grid, lights, occ, resolution=resolution)
-    plan = LuxMap(grid, mf * m0.E, m0.occluded)
-    return StudyResult(spec, tuple(areas), tuple(figs), tuple(grids), plan, cyl, len(scene_lights), tuple(vert))
+    e_map = m0.E
+    if sol is not None:
+        ind = _indirect_at(sol, grid.points().reshape(-1, 3), grid.normal).reshape(e_map.shape)
+        e_map = e_map + np.where(np.asarray(m0.occluded, dtype=bool), 0.0, ind)
+    plan = LuxMap(grid, mf * e_map, m0.occluded)
+    return StudyResult(spec, tuple(areas), tuple(figs), tuple(grids), plan, cyl, len(scene_lights), tuple(vert), sol)
+
+
+#: Azimuths over which the indirect part of the cylindrical illuminance is averaged.
+INDIRECT_AZIMUTHS = 16
+
+
+def _azimuth_normal(azimuth: float) -> NDArray[np.float64]:
+    a = math.radians(azimuth)
+    return np.array([math.cos(a), math.sin(a), 0.0])
+
+
+def _indirect_at(sol: RadiositySolution | None, pts: NDArray[np.float64], normal: Any) -> Any:
+    """Indirect illuminance at points facing ``normal`` (0 without a radiosity solve)."""
+    if sol is None or len(pts) == 0:
+        return 0.0
+    return sol.indirect_illuminance(pts, np.broadcast_to(np.asarray(normal, dtype=np.float64), pts.shape))
+
+
+def _indirect_cylindrical(sol: RadiositySolution | None, pts: NDArray[np.float64]) -> Any:
+    """Mean indirect vertical illuminance over :data:`INDIRECT_AZIMUTHS` azimuths (0 without a solve)."""
+    if sol is None or len(pts) == 0:
+        return 0.0
+    az = [360.0 * (k + 0.5) / INDIRECT_AZIMUTHS for k in range(INDIRECT_AZIMUTHS)]
+    nrm = np.repeat(np.stack([_azimuth_normal(a) for a in az]), len(pts), axis=0)
+    e = sol.indirect_illuminance(np.tile(pts, (INDIRECT_AZIMUTHS, 1)), nrm)
+    return e.reshape(INDIRECT_AZIMUTHS, len(pts)).mean(axis=0)
+
+
+def _add_indirect(area: StudyArea, f: AreaFigures, E: NDArray[np.float64], sol: RadiositySolution,
+                  mf: float) -> tuple[AreaFigures, NDArray[np.float64]]:
+    """An area's figures and grid with the maintained indirect illuminance added (grid points facing up)."""
+    g = area.grid
+    e = E[g.keep]
+    use = np.isfinite(e)
+    e[use] += mf * _indirect_at(sol, g.kept_points()[use], (0.0, 0.0, 1.0))
+    E = E.copy()
+    E[g.keep] = e
+    v = e[use]
+    m, lo, hi = float(v.mean()), float(v.min()), float(v.max())
+    return replace(f, e_mean=m, e_min=lo, e_max=hi, u0=lo / m if m > 0 else math.nan,
+                   min_max=lo / hi if hi > 0 else math.nan), E
 
 
 def _point_figures(name: str, kind: str, area: StudyArea, occ: list[Any], mf: float, fn: Any) -> AreaFigures:

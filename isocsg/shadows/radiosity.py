@@ -52,9 +52,10 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from .._validation import integer, scalar
-from ..errors import InvalidParameterError, ResourceLimitError
+from ..errors import InvalidLightError, InvalidParameterError, ResourceLimitError
 from ..kinds import DEFAULT_RESOLUTION, Solid
 from ..lighting.area import AreaLight, PolyhedronLight, as_light_list
+from ..lighting.luminaire import PhotometricLight
 from .direct import _fallback_point, illuminance, shadow_state
 from .form_factors import pair_form_factors
 from .lambert import _prepare
@@ -63,6 +64,9 @@ from .patches import PatchSet, Room, surface_patches
 from .visibility import PieceArrays, SourceArrays, visible_illuminance
 
 __all__ = ["Interreflections", "RadiositySolution", "solve_radiosity", "indirect_illuminance"]
+
+#: What lights a radiosity solve: area and polyhedron sources, and point luminaires.
+SolveLight = AreaLight | PolyhedronLight | PhotometricLight
 
 #: Default budget for cached form-factor columns (bytes).
 DEFAULT_MEMORY = 256 * 2**20
@@ -286,7 +290,7 @@ class _Blockers:
         return ok
 
 
-def _refined(patches: PatchSet, interre: Interreflections, lights: list[AreaLight | PolyhedronLight],
+def _refined(patches: PatchSet, interre: Interreflections, lights: list[SolveLight],
              solids: list[Solid], resolution: int) -> PatchSet:
     for _ in range(interre.refine):
         pts, _, idx = patches.samples(interre.order)
@@ -316,7 +320,7 @@ def _check_count(n: int, interre: Interreflections) -> None:
             "(raise patch_size or lower refine)")
 
 
-def _direct_means(patches: PatchSet, lights: list[AreaLight | PolyhedronLight], solids: list[Solid],
+def _direct_means(patches: PatchSet, lights: list[SolveLight], solids: list[Solid],
                   blockers: _Blockers, order: int, resolution: int) -> NDArray[np.float64]:
     """Mean direct illuminance of each patch: closed form where unoccluded, else Gauss points."""
     n = len(patches)
@@ -324,6 +328,10 @@ def _direct_means(patches: PatchSet, lights: list[AreaLight | PolyhedronLight], 
     lo, hi = patches.bounds()
     pts, wts, idx = patches.samples(order)
     for light in lights:
+        if isinstance(light, PhotometricLight):  # a point: exact at the Gauss points, hard shadows
+            e = illuminance(pts, patches.normal[idx], [light], solids, resolution=resolution)
+            out += np.bincount(idx, weights=wts * e, minlength=n) / patches.area
+            continue
         for q in light.emitting_polygons():
             src = AreaLight(q, radiance=light.radiance)
             clear = blockers.clear(np.minimum(lo, q.min(axis=0)), np.maximum(hi, q.max(axis=0)),
@@ -403,7 +411,7 @@ class _Columns:
 
 
 def solve_radiosity(
-    lights: Sequence[AreaLight | PolyhedronLight] | AreaLight | PolyhedronLight,
+    lights: Sequence[SolveLight] | SolveLight,
     occluders: Sequence[Solid] | Solid = (),
     interreflections: Interreflections | None = None,
     *,
@@ -414,7 +422,9 @@ def solve_radiosity(
 
     Parameters
     ----------
-    lights : AreaLight, PolyhedronLight or a sequence of them
+    lights : AreaLight, PolyhedronLight, PhotometricLight or a sequence of them
+        A point luminaire's mean over a patch comes from its exact
+        illuminance at the patch's Gauss points (no closed form).
     occluders : Solid or sequence of Solid, optional
         As for :func:`~isocsg.shadows.direct.illuminance`; those given a
         reflectance in ``interreflections`` also reflect.
@@ -452,14 +462,15 @@ def solve_radiosity(
     interre = interreflections if interreflections is not None else Interreflections()
     if not isinstance(interre, Interreflections):
         raise InvalidParameterError(f"interreflections must be an Interreflections, got {type(interre).__name__}")
-    light_list = as_light_list(lights)
+    light_list = _solve_lights(lights)
     solids = occluder_list(occluders, resolution)
     patches = surface_patches(interre.room, solids, interre.reflectance_list(len(solids)), interre.patch_size)
     _check_count(len(patches), interre)
     if len(patches) and light_list:
         patches = _refined(patches, interre, light_list, solids, resolution)
     ext = [patches.verts] + [np.asarray(o.bounds, dtype=np.float64) for o in solids]
-    ext += [q for li in light_list for q in li.emitting_polygons()]
+    ext += [np.asarray([li.position]) if isinstance(li, PhotometricLight) else np.vstack(li.emitting_polygons())
+            for li in light_list]
     allpts = np.vstack(ext) if ext else np.zeros((1, 3))
     scale = float(max(np.max(np.ptp(allpts, axis=0)), np.max(np.abs(allpts)), 1e-300))
     blockers = _Blockers(solids, scale)
@@ -489,6 +500,21 @@ def solve_radiosity(
         if progress is not None:
             progress(len(residuals), residuals[-1])
     return RadiositySolution(patches, B, direct, np.asarray(residuals), tuple(solids), resolution)
+
+
+def _solve_lights(lights: Any) -> list[SolveLight]:
+    """Area and polyhedron lights as :func:`~isocsg.lighting.area.as_light_list` takes them, and point luminaires."""
+    if isinstance(lights, PhotometricLight):
+        return [lights]
+    if isinstance(lights, (list, tuple)):
+        others = [li for li in lights if not isinstance(li, PhotometricLight)]
+        for i, li in enumerate(lights):
+            if not isinstance(li, (AreaLight, PolyhedronLight, PhotometricLight)):
+                raise InvalidLightError(f"lights[{i}] must be an AreaLight, a PolyhedronLight or a PhotometricLight, "
+                                        f"got {type(li).__name__}")
+        as_light_list(others)
+        return list(lights)
+    return list(as_light_list(lights))
 
 
 def indirect_illuminance(
