@@ -57,6 +57,7 @@ from ..kinds import (
     Truncus,
 )
 from ..kinds.affine import similarity_factor
+from .hull_balls import ball_hull, disc_hull_prism
 from .hull_grow import grow_ball, grow_disc, polytope
 from .tree import CSGNode, Union
 
@@ -188,19 +189,81 @@ def hull_pieces(*solids: Solid) -> list[Primitive]:
     rounds = [c for c in parts if c.round is not None]
     if not rounds:
         return _polyhedron(np.vstack([c.points for c in parts]))
-    if len(rounds) < len(parts):
-        kinds = ", ".join(sorted({_name(p) for p in leaves}))
-        raise NotExactError(f"hull: a hull of polytopes and round solids ({kinds}) is no exact union of isocsg kinds")
     first = rounds[0]
-    if all(c.round == first.round and _same(_gram(c), _gram(first)) for c in rounds):
+    if len(rounds) == len(parts) and all(c.round == first.round and _same(_gram(c), _gram(first)) for c in rounds):
         return _grown(np.vstack([c.points for c in rounds]), first)
-    if all(isinstance(p, Sphere) for p in leaves):
-        return _sphere_hull([p for p in leaves if isinstance(p, Sphere)])
+    pieces = _balls_hull(parts)
+    if pieces is None:
+        pieces = _cylinders_hull(parts)
+    if pieces is not None:
+        return pieces
     shown = ", ".join(sorted({_name(p) for p in leaves}))
     raise NotExactError(
-        f"hull: a hull of {shown} of different shapes or directions is not an exact union of isocsg kinds (only balls "
-        "of one shape, parallel cylinders of one radius, or spheres whose centres lie on one line are)"
+        f"hull: a hull of {shown} of different shapes or directions is not an exact union of isocsg kinds (only "
+        "polytopes with spheres of any radii or ellipsoids of one shape, parallel cylinders of one radius or of any "
+        "radii between the same two planes, and trunci on one axis are)"
     )
+
+
+def _balls_hull(parts: list[_Convex]) -> list[Primitive] | None:
+    """The hull of balls of one shape up to size (spheres of any radii, or ellipsoids ``s_k L B``)
+    and polytopes' corners (balls of radius 0), through :func:`ball_hull` in ``L``'s frame; None
+    when an operand is a disc or the balls' shapes differ."""
+    if any(c.round == "disc" for c in parts):
+        return None
+    balls = [c for c in parts if c.round == "ball"]
+    g1 = _gram(balls[0])
+    scales = [float(np.trace(_gram(c)) / np.trace(g1)) for c in balls]
+    if not all(_same(_gram(c), k * g1) for c, k in zip(balls, scales)):
+        return None
+    lin = balls[0].linear
+    assert lin is not None
+    corners = [c.points for c in parts if c.round is None]
+    if corners:  # only the corners of the polytopes' hull matter
+        corners = [polytope(np.vstack(corners)).vertices]
+    centres = np.vstack([c.points for c in balls] + corners)
+    radii = np.concatenate([np.sqrt(scales), np.zeros(len(centres) - len(balls))])
+    r1 = similarity_factor(lin)
+    if r1 is not None:
+        return ball_hull(centres, radii * r1)
+    origin = centres[0]
+    m = np.eye(4)
+    m[:3, :3], m[:3, 3] = lin, origin
+    local = np.linalg.solve(lin, (centres - origin).T).T
+    return [p.transform(m) for p in ball_hull(local, radii)]  # type: ignore[misc]
+
+
+def _cylinders_hull(parts: list[_Convex]) -> list[Primitive] | None:
+    """The hull of right circular cylinders on one axis direction whose ends lie on the same two
+    planes (any radii): the prism over the 2D hull of their discs; None otherwise."""
+    if any(c.round != "disc" for c in parts):
+        return None
+    axis = parts[0].linear[:, 2]  # type: ignore[index]
+    frame = np.column_stack([*_plane_frame(axis), axis])
+    radii, feet, heights = [], [], []
+    for c in parts:
+        lin = c.linear
+        assert lin is not None
+        g = lin[:, :2].T @ lin[:, :2]
+        if abs(abs(float(lin[:, 2] @ axis)) - 1) > SHAPE_TOLERANCE or not _same(g, g[0, 0] * np.eye(2)):
+            return None
+        local = c.points @ frame
+        if np.abs(local[0, :2] - local[1, :2]).max() > SHAPE_TOLERANCE * abs(local[0, 2] - local[1, 2]):
+            return None  # an oblique cylinder
+        radii.append(math.sqrt(g[0, 0]))
+        feet.append(local[0, :2])
+        heights.append(sorted(local[:, 2]))
+    span = np.array(heights)
+    if np.ptp(span, axis=0).max() > SHAPE_TOLERANCE * float(np.ptp(span) + max(radii)):
+        return None
+    return disc_hull_prism(np.array(feet), np.array(radii), frame, float(span[:, 0].min()), float(span[:, 1].max()))
+
+
+def _plane_frame(axis: NDArray[np.float64]) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+    helper = np.eye(3)[int(np.argmin(np.abs(axis)))]
+    u = np.cross(axis, helper)
+    u /= np.linalg.norm(u)
+    return u, np.cross(axis, u)
 
 
 def _coaxial_hull(trunci: list[Truncus]) -> list[Primitive] | None:
@@ -240,49 +303,6 @@ def _coaxial_hull(trunci: list[Truncus]) -> list[Primitive] | None:
 def _turn(o: tuple[float, float], a: tuple[float, float], b: tuple[float, float]) -> float:
     """The cross product of ``a - o`` and ``b - o``: > 0 for a left (counter-clockwise) turn."""
     return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0])
-
-
-def _sphere_hull(spheres: list[Sphere]) -> list[Primitive]:
-    """The hull of spheres whose centres lie on one line: the spheres on the meridian's hull of
-    discs, joined by the frusta of their common tangent cones."""
-    c = np.array([s.center_array for s in spheres])
-    r = np.array([s.radius for s in spheres])
-    gap = np.linalg.norm(c[:, None] - c[None], axis=2)
-    inside = (gap + r[:, None] <= r[None, :]) & ~np.eye(len(r), dtype=bool)
-    inside &= ~(inside.T & (np.arange(len(r))[:, None] > np.arange(len(r))[None, :]))  # equal ones: keep the first
-    keep = ~inside.any(axis=1)
-    c, r = c[keep], r[keep]
-    if len(r) == 1:
-        return [Sphere(c[0], r[0])]
-    axis = c[int(np.argmax(np.linalg.norm(c - c[0], axis=1)))] - c[0]
-    axis /= np.linalg.norm(axis)
-    t = (c - c[0]) @ axis
-    off = np.linalg.norm(c - c[0] - t[:, None] * axis, axis=1)
-    if off.max() > SHAPE_TOLERANCE * (np.ptp(t) + r.max()):
-        raise NotExactError(
-            f"hull: a hull of spheres of radii {', '.join(f'{x:g}' for x in r)} whose centres are not on one line "
-            "is not an exact union of isocsg kinds (only one radius, or centres on one line, are)"
-        )
-    order = np.argsort(t)
-    t, r, c = t[order], r[order], c[order]
-    pieces: list[Primitive] = []
-    used = np.zeros(len(r), dtype=bool)
-    reach = float(np.ptp(t) + r.max())
-    for i, j in itertools.combinations(range(len(r)), 2):
-        # the common tangent above both discs (t_i, 0, r_i), (t_j, 0, r_j): unit normal (nu_t, nu_r)
-        nu_t = (r[i] - r[j]) / (t[j] - t[i])
-        nu_r = math.sqrt(max(0.0, 1.0 - nu_t * nu_t))
-        support = nu_t * t[i] + r[i]
-        if np.any(nu_t * t + r > support + SHAPE_TOLERANCE * reach):
-            continue  # another sphere reaches beyond this cone: not on the hull
-        used[[i, j]] = True
-        ends = [c[k] + r[k] * nu_t * axis for k in (i, j)]
-        if r[i] == r[j]:
-            pieces.append(Cylinder((ends[0] + ends[1]) / 2, ends[0] - ends[1], r[i]))
-        else:
-            pieces.append(Truncus((ends[0] + ends[1]) / 2, ends[0] - ends[1], r[i] * nu_r, r[j] * nu_r))
-    pieces.extend(Sphere(c[k], r[k]) for k in np.nonzero(used)[0])
-    return pieces
 
 
 def hull(*solids: Solid) -> Solid:
