@@ -1,22 +1,23 @@
 """Membership of the convex hull of balls, with certificates, independent of the library.
 
-``x`` is in the hull of balls ``B(c_k, r_k)`` iff some convex weights ``w`` give
-``phi(w) = |x - sum w_k c_k| - sum w_k r_k <= 0`` (then ``x = sum w_k (c_k + r_k v)`` with one
-``v``). ``phi`` is convex on the simplex, and by minimax its minimum equals
-``max_{|u| = 1} (u . x - h(u))`` with ``h(u) = max_k (c_k . u + r_k)`` the support function. So:
+The hull ``H`` of balls ``B(c_k, r_k)`` (``r_k >= 0``) has the support function
+``h(u) = max_k (c_k . u + r_k)``. Two one-sided certificates:
 
-- weights with ``phi(w) <= -eps`` certify ``x`` inside;
-- a unit ``u`` with ``u . x - h(u) >= eps`` certifies ``x`` outside (``u`` from the weights'
-  residual ``x - sum w c``, and from a dense set of directions);
-- neither: too close to the boundary to tell, reported as such.
+- **inside**: ``x`` inside the convex hull (scipy's Qhull) of points *on* the spheres (every
+  ball's sphere sampled, plus the centres) by at least ``eps``: those points are in ``H``, so
+  their hull is too;
+- **outside**: a unit ``u`` (from a dense set of directions) with ``u . x - h(u) >= eps``: the
+  plane ``u . y = h(u)`` separates ``x`` from ``H``.
 
-The weights come from Frank-Wolfe iterations (vectorised over the points).
+A point with neither is too close to the boundary to tell (the sampling's gap, a few thousandths
+of the radius), and reported so.
 """
 
 from __future__ import annotations
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
+from scipy.spatial import ConvexHull, QhullError
 
 F64 = NDArray[np.float64]
 
@@ -33,34 +34,25 @@ def fibonacci_directions(n: int) -> F64:
 
 
 def ball_hull_membership(
-    centres: ArrayLike, radii: ArrayLike, xs: ArrayLike, eps: float, iterations: int = 600,
+    centres: ArrayLike, radii: ArrayLike, xs: ArrayLike, eps: float, samples: int = 1200, directions: int = 6000,
 ) -> tuple[NDArray[np.bool_], NDArray[np.bool_]]:
     """``(inside, certain)`` for each of ``xs`` (m, 3): ``certain`` where a certificate holds."""
-    c = np.asarray(centres, dtype=np.float64)
-    r = np.asarray(radii, dtype=np.float64)
-    x = np.asarray(xs, dtype=np.float64)
-    m, n = len(x), len(r)
-    w = np.full((m, n), 1.0 / n)
-    best = np.full(m, np.inf)
-    for t in range(iterations):
-        centre = w @ c
-        res = x - centre
-        norm = np.linalg.norm(res, axis=1)
-        best = np.minimum(best, norm - w @ r)
-        unit = res / np.where(norm > 0, norm, 1.0)[:, None]
-        grad = -unit @ c.T - r[None, :]  # d phi / d w_k
-        vertex = np.argmin(grad, axis=1)
-        step = 2.0 / (t + 2.0)
-        w *= 1 - step
-        w[np.arange(m), vertex] += step
-    inside = best <= -eps
-    h = lambda u: (u @ c.T + r[None, :]).max(axis=1)  # noqa: E731
-    res = x - w @ c
-    norm = np.linalg.norm(res, axis=1)
-    unit = res / np.where(norm > 0, norm, 1.0)[:, None]
-    gap = np.einsum("ij,ij->i", unit, x) - h(unit)
-    dirs = fibonacci_directions(4000)
-    gap = np.maximum(gap, (x @ dirs.T - (dirs @ c.T + r[None, :]).max(axis=1)[None, :]).max(axis=1))
+    c = np.asarray(centres, dtype=np.float64).reshape(-1, 3)
+    r = np.asarray(radii, dtype=np.float64).reshape(-1)
+    x = np.asarray(xs, dtype=np.float64).reshape(-1, 3)
+    sphere = fibonacci_directions(samples)
+    on = np.vstack([c] + [ck + rk * sphere for ck, rk in zip(c, r) if rk > 0])
+    try:
+        inner = ConvexHull(on)
+        inside = (x @ inner.equations[:, :3].T + inner.equations[:, 3]).max(axis=1) <= -eps
+    except QhullError:  # flat: no interior to certify (only corners on a plane)
+        inside = np.zeros(len(x), dtype=bool)
+    dirs = fibonacci_directions(directions)
+    support = (dirs @ c.T + r[None, :]).max(axis=1)
+    gap = np.full(len(x), -np.inf)
+    for start in range(0, len(x), 256):
+        block = x[start:start + 256]
+        gap[start:start + 256] = (block @ dirs.T - support[None, :]).max(axis=1)
     outside = gap >= eps
     assert not np.any(inside & outside), "contradictory certificates"
     return inside, inside | outside
