@@ -234,3 +234,30 @@ def test_too_many_corners_with_balls_is_a_resource_limit() -> None:
             hull(ConvexPolyhedron(points), Sphere((0, 0, 2), 0.5))
     finally:
         hb.MAX_HULL_WORK = old
+
+
+@SETTINGS
+@given(
+    spans=st.lists(st.tuples(st.floats(-3, 3), st.floats(0.2, 2), st.floats(0.05, 2), st.just(0.0) | st.floats(0.05, 2)),
+                   min_size=1, max_size=3),
+    balls=st.lists(st.tuples(st.floats(-3, 3), st.floats(0.1, 2)), min_size=1, max_size=3),
+    axis=st.tuples(st.floats(-1, 1), st.floats(-1, 1), st.floats(0.2, 1)),
+    seed=st.integers(0, 2**16),
+)
+def test_trunci_and_spheres_on_one_axis_hull_as_a_revolved_meridian(spans, balls, axis, seed) -> None:
+    """The meridian is the 2D hull of the ends' rims (both sides) and the spheres' discs."""
+    a = np.array(axis) / np.linalg.norm(axis)
+    origin = np.array([0.5, -0.3, 0.2])
+    trunci = [Truncus(origin + (s0 + h / 2) * a, h * a, r1, r2) for s0, h, r1, r2 in spans]
+    spheres = [Sphere(origin + s * a, r) for s, r in balls]
+    solid = hull(*trunci, *spheres)
+    rims = [(s0 + h, r1) for s0, h, r1, _ in spans] + [(s0, r2) for s0, h, _, r2 in spans]
+    centres = [(s, side * r, 0.0) for s, r in rims for side in (1, -1)] + [(s, 0.0, 0.0) for s, _ in balls]
+    radii = [0.0] * (2 * len(rims)) + [r for _, r in balls]
+    xs = _around(solid, 400, seed)
+    s = (xs - origin) @ a
+    rho = np.linalg.norm(xs - origin - s[:, None] * a, axis=1)
+    inside, certain = ball_hull_membership(np.array(centres), np.array(radii), np.column_stack([s, rho, 0 * s]), EPS)
+    got = solid.contains(xs)
+    assert certain.mean() > 0.9
+    assert not np.any((got != inside) & certain)

@@ -57,7 +57,7 @@ from ..kinds import (
     Truncus,
 )
 from ..kinds.affine import similarity_factor
-from .hull_balls import ball_hull, disc_hull_prism
+from .hull_balls import ball_hull, disc_hull_prism, upper_disc_hull
 from .hull_grow import grow_ball, grow_disc, polytope
 from .tree import CSGNode, Union
 
@@ -185,6 +185,11 @@ def hull_pieces(*solids: Solid) -> list[Primitive]:
         coaxial = _coaxial_hull(leaves)  # type: ignore[arg-type]
         if coaxial is not None:
             return coaxial
+    elif all(type(p) in (Truncus, Cylinder, Cone, Sphere) for p in leaves) and any(type(p) is not Sphere
+                                                                                   for p in leaves):
+        coaxial = _coaxial_with_spheres(leaves)  # type: ignore[arg-type]
+        if coaxial is not None:
+            return coaxial
     parts = [_convex(p, "hull") for p in leaves]
     rounds = [c for c in parts if c.round is not None]
     if not rounds:
@@ -297,6 +302,34 @@ def _coaxial_hull(trunci: list[Truncus]) -> list[Primitive] | None:
         if max(r0, r1) > 0:
             a, b = origin + s0 * axis, origin + s1 * axis
             pieces.append(Cylinder((a + b) / 2, b - a, r1) if r0 == r1 else Truncus((a + b) / 2, b - a, r1, r0))
+    return pieces
+
+
+def _coaxial_with_spheres(leaves: list[Truncus | Sphere]) -> list[Primitive] | None:
+    """The hull of trunci on one axis and spheres centred on it (a dome on a cylinder, a cone
+    with a ball): a solid of revolution whose meridian is the upper hull of the ends' rims
+    (points) and the spheres' discs; frusta under its straight edges, spheres under its arcs.
+    None when they are not on one axis."""
+    trunci = [p for p in leaves if isinstance(p, Truncus)]
+    axis, origin = trunci[0].unit_axis, trunci[0].center_array
+    balls = [p for p in leaves if isinstance(p, Sphere)]
+    centres = np.array([e for t in trunci for e in t.end_centers] + [p.center_array for p in balls])
+    radii = np.array([r for t in trunci for r in (t.r1, t.r2)] + [p.radius for p in balls])
+    s = (centres - origin) @ axis
+    off_line = np.linalg.norm(centres - origin - s[:, None] * axis, axis=1)
+    if off_line.max() > SHAPE_TOLERANCE * float(np.ptp(s) + radii.max()):
+        return None
+    rims = 2 * len(trunci)
+    points = np.column_stack([s, np.where(np.arange(len(s)) < rims, radii, 0.0)])
+    edges, discs = upper_disc_hull(points, np.where(np.arange(len(s)) < rims, 0.0, radii))
+    pieces: list[Primitive] = []
+    for (s0, r0), (s1, r1) in edges:
+        a, b = origin + s0 * axis, origin + s1 * axis
+        try:
+            pieces.append(Cylinder((a + b) / 2, b - a, r1) if r0 == r1 else Truncus((a + b) / 2, b - a, r1, r0))
+        except InvalidGeometryError:
+            pass  # no length (a flat end) or too thin a sliver to be a kind
+    pieces.extend(Sphere(centres[k], radii[k]) for k in discs if k >= rims)
     return pieces
 
 

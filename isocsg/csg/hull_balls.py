@@ -49,7 +49,7 @@ from ..errors import InvalidGeometryError, ResourceLimitError
 from ..kinds import Cylinder, Primitive, Sphere, Truncus
 from .hull_grow import polytope
 
-__all__ = ["ball_hull", "disc_hull_prism", "MAX_HULL_WORK", "TIE_TOLERANCE"]
+__all__ = ["ball_hull", "disc_hull_prism", "upper_disc_hull", "MAX_HULL_WORK", "TIE_TOLERANCE"]
 
 #: The most work (triples of balls times balls) a hull may take: its faces are found over every
 #: triple holding a ball, so ``m`` balls and ``p`` corners cost about ``m p^3 / 2``.
@@ -261,3 +261,37 @@ def disc_hull_prism(
         centre = frame[:, :2] @ c2[k] + mid * axis
         pieces.append(Cylinder(centre, height * axis, float(r[k])))
     return pieces
+
+
+def upper_disc_hull(
+    points: NDArray[np.float64], radii: NDArray[np.float64],
+) -> tuple[list[tuple[NDArray[np.float64], NDArray[np.float64]]], list[int]]:
+    """The upper side (``y > 0`` normals) of the 2D hull of discs ``(points[k], radii[k])``
+    (radius 0: a point): its straight edges as pairs of tangent points, and the discs it touches.
+
+    A meridian of a solid of revolution: the discs are spheres centred on the axis, the points
+    the rims of trunci; under each edge lies a frustum's meridian, under each arc the disc's.
+    """
+    p = np.asarray(points, dtype=np.float64).reshape(-1, 2)
+    r = np.asarray(radii, dtype=np.float64).reshape(-1)
+    tol = TIE_TOLERANCE * float(np.ptp(p, axis=0).max() + r.max())
+    edges: list[tuple[NDArray[np.float64], NDArray[np.float64]]] = []
+    used: set[int] = set()
+    for i, j in itertools.combinations(range(len(r)), 2):
+        w = p[j] - p[i]
+        dist = float(np.linalg.norm(w))
+        if dist == 0.0:
+            continue
+        nu = (r[i] - r[j]) / dist
+        if abs(nu) >= 1.0:
+            continue
+        e, q = w / dist, np.array([-w[1], w[0]]) / dist
+        for sign in (1.0, -1.0):
+            u = nu * e + sign * math.sqrt(1.0 - nu * nu) * q
+            reach = p @ u + r
+            if u[1] > 0 and reach.max() <= reach[i] + tol:
+                edges.append((p[i] + r[i] * u, p[j] + r[j] * u))
+                used.update(k for k in (i, j) if r[k] > 0)
+    if not edges:
+        used = {int(np.argmax(r))}  # one disc holds everything
+    return edges, sorted(used)
