@@ -13,11 +13,12 @@ one shape (spheres of one radius, or ellipsoids of one shape and orientation), o
 whose discs are one ellipse (parallel cylinders of one radius), is the hull of the centres or
 segments grown by that ball or disc (:mod:`isocsg.csg.hull_grow`, mapped by ``L`` when it is not
 a similarity). A hull of polytopes is the :class:`~isocsg.ConvexPolyhedron` of their corners.
-Spheres of different radii are exact when their centres lie on one line (two spheres always
-do): the hull is then a solid of revolution whose meridian is the hull of discs, so it is the
-spheres on that hull joined by the frusta of their common tangent cones. Cylinders, cones and
-frusta on one axis are likewise the frusta between consecutive vertices of the upper hull of
-their ends' (position, radius) points.
+Balls of any radii (spheres, or ellipsoids of one shape and any size) with any polytopes'
+corners (balls of radius 0) are exact through :mod:`isocsg.csg.hull_balls`: a polyhedron, the
+frusta of the tangent cones between balls and the spheres. Cylinders, cones and frusta on one
+axis, with spheres centred on it or not, are the frusta under the straight edges of their
+meridian's hull and the spheres under its arcs. Parallel cylinders of any radii between the
+same two planes are the prism over the 2D hull of their discs and the cylinders.
 
 **minkowski**: sums of corners add (the sum of two polytopes is the hull of the pairwise sums
 of their corners), centres add, balls of one shape add (``L1 B + k L1 B = (1 + k) L1 B``) and so
@@ -27,8 +28,9 @@ tori (:class:`~isocsg.Torus`, which needs the cylinder's radius above the sphere
 operand distributes, ``(A u B) + K = (A + K) u (B + K)``; a difference or an intersection does
 not and is refused.
 
-Anything else (a hull of spheres of different radii off one line, of a sphere and a box, of
-cones; a sum of a sphere and an ellipsoid; non-parallel cylinders; a torus) raises
+Anything else (a hull of a sphere and a cylinder off its axis, of cylinders of different radii
+not between two planes, of cones off one axis; a sum of a sphere and an ellipsoid;
+non-parallel cylinders; a torus) raises
 :class:`~isocsg.errors.NotExactError` naming what stops it. Radii and shapes count as equal to
 1e-9, relatively.
 """
@@ -344,9 +346,10 @@ def hull(*solids: Solid) -> Solid:
     Parameters
     ----------
     *solids : Solid
-        Primitives or unions of them: polytopes (boxes, convex polyhedra), spheres of one radius
-        (or ellipsoids of one shape), parallel cylinders of one radius, cylinders and cones on
-        one axis, or spheres whose centres lie on one line (see :mod:`isocsg.csg.hull`).
+        Primitives or unions of them: polytopes (boxes, convex polyhedra) with spheres of any
+        radii (or ellipsoids of one shape), parallel cylinders of one radius or of any radii
+        between two planes, cylinders and cones on one axis with spheres centred on it (see
+        :mod:`isocsg.csg.hull`).
 
     Returns
     -------
@@ -357,8 +360,11 @@ def hull(*solids: Solid) -> Solid:
     Raises
     ------
     NotExactError
-        When the hull is no exact union of isocsg kinds (spheres of different radii off one line,
-        a sphere with a box, cones, a difference); the message names what stops it.
+        When the hull is no exact union of isocsg kinds (a sphere with a cylinder off its axis,
+        cones off one axis, a difference); the message names what stops it.
+    ResourceLimitError
+        When the balls and corners make too many planes to test
+        (:data:`~isocsg.csg.hull_balls.MAX_HULL_WORK`).
     InvalidGeometryError
         When the hull has no volume (flat polytopes), or on no operand.
 
