@@ -261,3 +261,20 @@ def test_trunci_and_spheres_on_one_axis_hull_as_a_revolved_meridian(spans, balls
     got = solid.contains(xs)
     assert certain.mean() > 0.9
     assert not np.any((got != inside) & certain)
+
+
+@pytest.mark.parametrize(
+    "centres, radii",
+    [
+        ([[x, y, z] for x in (0, 4) for y in (0, 3) for z in (0, 2)], [2.0 if z == 0 else 1.0 for _ in (0, 4)
+                                                                      for _ in (0, 3) for z in (0, 2)]),
+        ([[0, 0, 0], [4, 0, 0], [2, 0, 0], [2, 3, 0]], [1.0, 1.0, 1.0, 0.5]),  # three on a line, one off it
+        ([[0, 0, 0], [1e-7, 0, 0], [3, 1, 0], [1, 2, 2]], [1.0, 1.0 - 1e-7, 0.5, 0.7]),  # nearly internally tangent
+        ([[0, 0, 0], [3, 0, 0], [0, 3, 0], [0, 0, 3]], [1.0, 1.0, 1.0, 1.0 + 1e-12]),  # equal to rounding
+    ],
+    ids=["two_layers", "line_and_one", "nearly_nested", "nearly_equal"],
+)
+def test_degenerate_sets_of_balls(centres, radii) -> None:
+    c, r = np.array(centres, dtype=float), np.array(radii)
+    solid = hull(*[Sphere(p, q) for p, q in zip(c, r)])
+    _assert_agrees(solid, c, r, _around(solid, 1500, 11))
