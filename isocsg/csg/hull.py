@@ -60,6 +60,7 @@ from ..kinds import (
 )
 from ..kinds.affine import similarity_factor
 from .hull_balls import ball_hull, disc_hull_prism, upper_disc_hull
+from .hull_discs import parallel_disc_hull
 from .hull_grow import grow_ball, grow_disc, polytope
 from .tree import CSGNode, Union
 
@@ -192,7 +193,13 @@ def hull_pieces(*solids: Solid) -> list[Primitive]:
         coaxial = _coaxial_with_spheres(leaves)  # type: ignore[arg-type]
         if coaxial is not None:
             return coaxial
-    parts = [_convex(p, "hull") for p in leaves]
+    try:
+        parts = [_convex(p, "hull") for p in leaves]
+    except NotExactError:
+        parallel = _parallel_hull(leaves)  # cones and frusta on parallel axes
+        if parallel is None:
+            raise
+        return parallel
     rounds = [c for c in parts if c.round is not None]
     if not rounds:
         return _polyhedron(np.vstack([c.points for c in parts]))
@@ -202,13 +209,15 @@ def hull_pieces(*solids: Solid) -> list[Primitive]:
     pieces = _balls_hull(parts)
     if pieces is None:
         pieces = _cylinders_hull(parts)
+    if pieces is None:
+        pieces = _parallel_hull(leaves)
     if pieces is not None:
         return pieces
     shown = ", ".join(sorted({_name(p) for p in leaves}))
     raise NotExactError(
         f"hull: a hull of {shown} of different shapes or directions is not an exact union of isocsg kinds (only "
-        "polytopes with spheres of any radii or ellipsoids of one shape, parallel cylinders of one radius or of any "
-        "radii between the same two planes, and trunci on one axis are)"
+        "polytopes with spheres of any radii or ellipsoids of one shape, polytopes with cylinders and cones on "
+        "parallel axes, and trunci with spheres on one axis are)"
     )
 
 
@@ -264,6 +273,31 @@ def _cylinders_hull(parts: list[_Convex]) -> list[Primitive] | None:
     if np.ptp(span, axis=0).max() > SHAPE_TOLERANCE * float(np.ptp(span) + max(radii)):
         return None
     return disc_hull_prism(np.array(feet), np.array(radii), frame, float(span[:, 0].min()), float(span[:, 1].max()))
+
+
+def _parallel_hull(leaves: list[Primitive]) -> list[Primitive] | None:
+    """The hull of cylinders, cones and frusta on parallel axes (any radii, any heights) and
+    polytopes' corners, as the hull of their end discs (:mod:`isocsg.csg.hull_discs`); None
+    when another kind is there or the axes are not parallel."""
+    trunci = [p for p in leaves if type(p) in (Truncus, Cylinder, Cone)]
+    if not trunci:
+        return None
+    axis = trunci[0].unit_axis  # type: ignore[attr-defined]
+    centres: list[NDArray[np.float64]] = []
+    radii: list[float] = []
+    for p in leaves:
+        if p in trunci:
+            t: Truncus = p  # type: ignore[assignment]
+            if np.linalg.norm(np.cross(t.unit_axis, axis)) > SHAPE_TOLERANCE:
+                return None
+            centres.extend(t.end_centers)
+            radii.extend((t.r1, t.r2))
+        elif (corners := p.hull_points()) is not None:
+            centres.extend(np.asarray(corners, dtype=np.float64))
+            radii.extend([0.0] * len(corners))
+        else:
+            return None
+    return parallel_disc_hull(np.array(centres), np.array(radii), axis)
 
 
 def _plane_frame(axis: NDArray[np.float64]) -> tuple[NDArray[np.float64], NDArray[np.float64]]:

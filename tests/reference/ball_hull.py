@@ -21,7 +21,7 @@ from scipy.spatial import ConvexHull, QhullError
 
 F64 = NDArray[np.float64]
 
-__all__ = ["ball_hull_membership", "fibonacci_directions"]
+__all__ = ["ball_hull_membership", "disc_hull_membership", "fibonacci_directions"]
 
 
 def fibonacci_directions(n: int) -> F64:
@@ -49,6 +49,41 @@ def ball_hull_membership(
         inside = np.zeros(len(x), dtype=bool)
     dirs = fibonacci_directions(directions)
     support = (dirs @ c.T + r[None, :]).max(axis=1)
+    gap = np.full(len(x), -np.inf)
+    for start in range(0, len(x), 256):
+        block = x[start:start + 256]
+        gap[start:start + 256] = (block @ dirs.T - support[None, :]).max(axis=1)
+    outside = gap >= eps
+    assert not np.any(inside & outside), "contradictory certificates"
+    return inside, inside | outside
+
+
+def disc_hull_membership(
+    centres: ArrayLike, radii: ArrayLike, axis: ArrayLike, xs: ArrayLike, eps: float,
+    samples: int = 1500, directions: int = 6000,
+) -> tuple[NDArray[np.bool_], NDArray[np.bool_]]:
+    """The same certificates for the hull of discs across the unit ``axis`` (radius 0: a point):
+    inside the hull of points sampled on the rims, or beyond a support plane, the support of a
+    disc being ``p . u + r |u - (u . a) a|``."""
+    c = np.asarray(centres, dtype=np.float64).reshape(-1, 3)
+    r = np.asarray(radii, dtype=np.float64).reshape(-1)
+    a = np.asarray(axis, dtype=np.float64) / np.linalg.norm(axis)
+    x = np.asarray(xs, dtype=np.float64).reshape(-1, 3)
+    helper = np.eye(3)[int(np.argmin(np.abs(a)))]
+    u = np.cross(a, helper)
+    u /= np.linalg.norm(u)
+    v = np.cross(a, u)
+    angle = 2 * np.pi * np.arange(samples) / samples
+    ring = np.outer(np.cos(angle), u) + np.outer(np.sin(angle), v)
+    on = np.vstack([c] + [ck + rk * ring for ck, rk in zip(c, r) if rk > 0])
+    try:
+        inner = ConvexHull(on)
+        inside = (x @ inner.equations[:, :3].T + inner.equations[:, 3]).max(axis=1) <= -eps
+    except QhullError:
+        inside = np.zeros(len(x), dtype=bool)
+    dirs = fibonacci_directions(directions)
+    across = np.linalg.norm(dirs - np.outer(dirs @ a, a), axis=1)
+    support = (dirs @ c.T + np.outer(across, r)).max(axis=1)
     gap = np.full(len(x), -np.inf)
     for start in range(0, len(x), 256):
         block = x[start:start + 256]
