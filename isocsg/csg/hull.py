@@ -18,7 +18,9 @@ corners (balls of radius 0) are exact through :mod:`isocsg.csg.hull_balls`: a po
 frusta of the tangent cones between balls and the spheres. Cylinders, cones and frusta on one
 axis, with spheres centred on it or not, are the frusta under the straight edges of their
 meridian's hull and the spheres under its arcs. Parallel cylinders of any radii between the
-same two planes are the prism over the 2D hull of their discs and the cylinders.
+same two planes are the prism over the 2D hull of their discs and the cylinders; cylinders,
+cones and frusta on parallel axes in general, with polytopes' corners, are the hull of their
+end discs (:mod:`isocsg.csg.hull_discs`: a polyhedron and oblique frusta).
 
 **minkowski**: sums of corners add (the sum of two polytopes is the hull of the pairwise sums
 of their corners), centres add, balls of one shape add (``L1 B + k L1 B = (1 + k) L1 B``) and so
@@ -28,8 +30,8 @@ tori (:class:`~isocsg.Torus`, which needs the cylinder's radius above the sphere
 operand distributes, ``(A u B) + K = (A + K) u (B + K)``; a difference or an intersection does
 not and is refused.
 
-Anything else (a hull of a sphere and a cylinder off its axis, of cylinders of different radii
-not between two planes, of cones off one axis; a sum of a sphere and an ellipsoid;
+Anything else (a hull of a sphere and a cylinder off its axis, of cylinders or cones on axes
+that are not parallel; a sum of a sphere and an ellipsoid;
 non-parallel cylinders; a torus) raises
 :class:`~isocsg.errors.NotExactError` naming what stops it. Radii and shapes count as equal to
 1e-9, relatively.
