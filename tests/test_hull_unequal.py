@@ -191,12 +191,20 @@ def test_a_plate_with_different_corner_radii_is_a_prism_and_cylinders() -> None:
     assert volume(plate, tol=1e-6) == pytest.approx(3 * discs.convex_hull.area, rel=1e-5)
 
 
-def test_a_hull_of_unequal_spheres_renders_like_the_reference() -> None:
+@pytest.mark.parametrize(
+    "solid",
+    [
+        hull(Sphere((0, 0, 0), 0.9), Sphere((1.8, 0.4, 0.3), 0.4), Sphere((0.6, 1.5, -0.2), 0.6),
+             Box((0.8, 0.6, -0.9), (1.6, 1.2, 0.2))),
+        hull(Cylinder((0, 0, -0.5), (0, 0, 0.6), 0.8), Truncus((1.7, 0.3, 0.2), (0, 0, 1.4), 0.2, 0.5),
+             Box((0.6, 1.3, -0.3), (0.8, 0.4, 1.0))),
+    ],
+    ids=["spheres_and_a_box", "cylinder_frustum_box"],
+)
+def test_a_hull_renders_like_the_reference(solid) -> None:
     from reference import compare, raycast_scene
     from scenes import make_scene, render_image
 
-    solid = hull(Sphere((0, 0, 0), 0.9), Sphere((1.8, 0.4, 0.3), 0.4), Sphere((0.6, 1.5, -0.2), 0.6),
-                 Box((0.8, 0.6, -0.9), (1.6, 1.2, 0.2)))
     scene = make_scene((3.0, -4.0, 2.5), [solid], [PointLight((3, -4, 5))], target=(0.8, 0.5, 0.0), size=96)
     result = compare(render_image(scene), raycast_scene(scene))
     assert result.iou >= 0.99 and result.fraction >= 0.98, result.summary()
