@@ -312,3 +312,27 @@ def test_cylinders_and_cones_on_parallel_axes_agree_with_the_certificates(spans,
     assert certain.mean() > 0.9
     bad = np.nonzero((got != inside) & certain)[0]
     assert bad.size == 0, f"{bad.size} of {certain.sum()} points disagree, e.g. {xs[bad[:3]]}"
+
+
+@SETTINGS
+@given(
+    shear=st.lists(st.floats(-0.4, 0.4), min_size=9, max_size=9),
+    count=st.integers(2, 3),
+    box=st.booleans(),
+    seed=st.integers(0, 2**16),
+)
+def test_parallel_trunci_under_one_map_hull_through_the_map(shear, count, box, seed) -> None:
+    """Mapped cylinders and cones are elliptic trunci; their hull is the map of the hull."""
+    a = np.eye(3) + np.array(shear).reshape(3, 3)
+    m = np.eye(4)
+    m[:3, :3], m[:3, 3] = a, (0.3, -0.2, 0.5)
+    spans = [(0, 0, 0, 1, 1, 1), (3, 0, 0.5, 2, 0.5, 0.5), (1, 2, -1, 1.5, 0.8, 0.0)][:count]
+    trunci = [Truncus((x, y, z + h / 2), (0, 0, h), r1, r2) for x, y, z, h, r1, r2 in spans]
+    extra = [Box((1, 0, 0.5), (1, 0.5, 0.5))] if box else []
+    solid = hull(*[t.transform(m) for t in trunci], *[b.transform(m) for b in extra])
+    centres = [e for t in trunci for e in t.end_centers] + [np.array(q) for b in extra for q in b.hull_points()]
+    radii = [q for t in trunci for q in (t.r1, t.r2)] + [0.0] * (8 * len(extra))
+    xs = _around(solid, 400, seed)
+    local = np.linalg.solve(a, (xs - m[:3, 3]).T).T
+    inside, certain = disc_hull_membership(np.array(centres), np.array(radii), [0, 0, 1], local, EPS)
+    assert certain.mean() > 0.9 and not np.any((solid.contains(xs) != inside) & certain)

@@ -278,28 +278,52 @@ def _cylinders_hull(parts: list[_Convex]) -> list[Primitive] | None:
 
 
 def _parallel_hull(leaves: list[Primitive]) -> list[Primitive] | None:
-    """The hull of cylinders, cones and frusta on parallel axes (any radii, any heights) and
-    polytopes' corners, as the hull of their end discs (:mod:`isocsg.csg.hull_discs`); None
-    when another kind is there or the axes are not parallel."""
-    trunci = [p for p in leaves if type(p) in (Truncus, Cylinder, Cone)]
-    if not trunci:
+    """The hull of cylinders, cones and frusta whose end discs lie in parallel planes (any radii,
+    any heights; right ones, or elliptic ones under one map) and polytopes' corners, as the hull
+    of their end discs (:mod:`isocsg.csg.hull_discs`); None when another kind is there or the
+    discs are not parallel circles (in the frame of the first elliptic one's map)."""
+    rounds = [p for p in leaves if isinstance(p, (Truncus, EllipticTruncus))]
+    if not rounds:
         return None
-    axis = trunci[0].unit_axis  # type: ignore[attr-defined]
+    first = next((p for p in rounds if isinstance(p, EllipticTruncus)), None)
+    m = np.eye(3) if first is None else np.asarray(first.matrix, dtype=np.float64).copy()
+    m[:, 2] = np.cross(m[:, 0], m[:, 1])  # the discs' frame; their normal in the world when a similarity
+    origin = np.zeros(3) if first is None else first.center_array
+    inverse = np.linalg.inv(m)
+    axis = inverse @ (rounds[0].unit_axis if first is None else m[:, 2])  # type: ignore[union-attr]
+    axis /= np.linalg.norm(axis)
     centres: list[NDArray[np.float64]] = []
     radii: list[float] = []
     for p in leaves:
-        if p in trunci:
-            t: Truncus = p  # type: ignore[assignment]
-            if np.linalg.norm(np.cross(t.unit_axis, axis)) > SHAPE_TOLERANCE:
+        if isinstance(p, (Truncus, EllipticTruncus)):
+            lin = p.linear if isinstance(p, EllipticTruncus) else _truncus_matrix(p)
+            local = inverse @ lin
+            disc = local[:, :2] - np.outer(axis, axis @ local[:, :2])
+            g = disc.T @ disc
+            tilted = np.abs(axis @ local[:, :2]).max() > SHAPE_TOLERANCE * math.sqrt(g[0, 0])
+            if tilted or not _same(g, g[0, 0] * np.eye(2)):
                 return None
-            centres.extend(t.end_centers)
-            radii.extend((t.r1, t.r2))
+            c = inverse @ (p.center_array - origin)
+            centres.extend((c + local[:, 2] / 2, c - local[:, 2] / 2))
+            radii.extend((p.r1 * math.sqrt(g[0, 0]), p.r2 * math.sqrt(g[0, 0])))
         elif (corners := p.hull_points()) is not None:
-            centres.extend(np.asarray(corners, dtype=np.float64))
+            centres.extend((np.asarray(corners, dtype=np.float64) - origin) @ inverse.T)
             radii.extend([0.0] * len(corners))
         else:
             return None
-    return parallel_disc_hull(np.array(centres), np.array(radii), axis)
+    pieces = parallel_disc_hull(np.array(centres), np.array(radii), axis)
+    if first is None:
+        return pieces
+    back = np.eye(4)
+    back[:3, :3], back[:3, 3] = m, origin
+    return [p.transform(back) for p in pieces]  # type: ignore[misc]
+
+
+def _truncus_matrix(t: Truncus) -> NDArray[np.float64]:
+    """A right truncus's frame: two unit vectors across its axis and the axis (E2 to E1)."""
+    u, v = _plane_frame(t.unit_axis)
+    e1, e2 = t.end_centers
+    return np.column_stack([u, v, e1 - e2])
 
 
 def _plane_frame(axis: NDArray[np.float64]) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
