@@ -60,7 +60,7 @@ def ball_hull_membership(
 
 def disc_hull_membership(
     centres: ArrayLike, radii: ArrayLike, axis: ArrayLike, xs: ArrayLike, eps: float,
-    samples: int = 1500, directions: int = 6000,
+    samples: int = 720, directions: int = 6000,
 ) -> tuple[NDArray[np.bool_], NDArray[np.bool_]]:
     """The same certificates for the hull of discs across the unit ``axis`` (radius 0: a point):
     inside the hull of points sampled on the rims, or beyond a support plane, the support of a
