@@ -39,6 +39,8 @@ from .hull_grow import polytope
 
 __all__ = ["parallel_disc_hull"]
 
+_TRIPLE_CHUNK = 8192
+
 
 def _frame(axis: NDArray[np.float64]) -> NDArray[np.float64]:
     helper = np.eye(3)[int(np.argmin(np.abs(axis)))]
@@ -61,8 +63,18 @@ def _triple_points(p: NDArray[np.float64], r: NDArray[np.float64], a: NDArray[np
         raise ResourceLimitError(
             f"hull: {len(t)} triples of discs to test, over MAX_HULL_WORK = {MAX_HULL_WORK:g} / {n}"
         )
-    if len(t) == 0:
-        return t, np.zeros((0, 3))
+    out_t: list[NDArray[np.int64]] = [np.zeros((0, 3), dtype=np.int64)]
+    out_m: list[NDArray[np.float64]] = [np.zeros((0, 3))]
+    for start in range(0, len(t), _TRIPLE_CHUNK):  # bounded memory: a chunk's reaches at a time
+        got_t, got_m = _chunk_planes(p, r, a, tol, t[start:start + _TRIPLE_CHUNK])
+        out_t.extend(got_t)
+        out_m.extend(got_m)
+    return np.concatenate(out_t), np.concatenate(out_m)
+
+
+def _chunk_planes(p: NDArray[np.float64], r: NDArray[np.float64], a: NDArray[np.float64], tol: float,
+                  t: NDArray[np.int64]) -> tuple[list[NDArray[np.int64]], list[NDArray[np.float64]]]:
+    """The supporting tangent planes of the triples ``t`` (see :func:`_triple_points`)."""
     e1, e2 = p[t[:, 1]] - p[t[:, 0]], p[t[:, 2]] - p[t[:, 0]]
     g1, g2 = r[t[:, 0]] - r[t[:, 1]], r[t[:, 0]] - r[t[:, 2]]
     d = np.cross(e1, e2)
@@ -77,7 +89,8 @@ def _triple_points(p: NDArray[np.float64], r: NDArray[np.float64], a: NDArray[np
     disc = qb * qb - qa * qc
     ok &= disc >= 0
     qa = np.where(ok, qa, 1.0)
-    out_t, out_m = [], []
+    out_t: list[NDArray[np.int64]] = []
+    out_m: list[NDArray[np.float64]] = []
     for sign in (1.0, -1.0):
         lam = (-qb + sign * np.sqrt(np.clip(disc, 0.0, None))) / qa
         normal = n0 + lam[:, None] * d
@@ -87,7 +100,7 @@ def _triple_points(p: NDArray[np.float64], r: NDArray[np.float64], a: NDArray[np
         m = normal - np.outer(normal @ a, a)
         out_t.append(t[keep])
         out_m.append(m[keep] / np.linalg.norm(m[keep], axis=1)[:, None])
-    return np.concatenate(out_t), np.concatenate(out_m)
+    return out_t, out_m
 
 
 def _level_points(p: NDArray[np.float64], r: NDArray[np.float64], a: NDArray[np.float64], tol: float,
