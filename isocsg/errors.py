@@ -35,8 +35,8 @@ class InvalidGeometryError(IsocsgError, ValueError):
 class NotExactError(InvalidGeometryError):
     """An operation (``hull``, ``minkowski``) whose result is no exact union of isocsg kinds.
 
-    The message names the operation and the operands that stop it, e.g. ``hull: spheres of
-    radii 1 and 2 whose centres are not on one line: ...``.
+    The message names the operation and the operands that stop it, e.g. ``hull: a hull of
+    Cylinder, Sphere of different shapes or directions is not an exact union ...``.
     """
 
 

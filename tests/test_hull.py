@@ -264,17 +264,17 @@ def test_hull_of_boxes_is_one_polyhedron() -> None:
 @pytest.mark.parametrize(
     "solids, message",
     [
-        ((Sphere((0, 0, 0), 1), Box((2, 0, 0), (1, 1, 1))),
-         "hull: a hull of polytopes and round solids (Box, Sphere) is no exact union of isocsg kinds"),
-        ((Sphere((0, 0, 0), 1), Sphere((2, 0, 0), 0.5), Sphere((0, 2, 0), 0.7)),
-         "hull: a hull of spheres of radii 1, 0.5, 0.7 whose centres are not on one line"),
+        ((Sphere((0, 0, 0), 1), Cylinder((2, 0, 0), (0, 0, 1), 0.5)),
+         "hull: a hull of Cylinder, Sphere of different shapes or directions is not an exact union of isocsg kinds"),
+        ((Cylinder((0, 0, 0), (0, 0, 1), 1), Cylinder((3, 0, 0.5), (0, 1, 1), 0.5)),
+         "hull: a hull of Cylinder of different shapes or directions is not an exact union"),
         ((Cylinder((0, 0, 0), (0, 0, 1), 1), Cylinder((3, 0, 0), (0, 1, 0), 1)),
          "hull: a hull of Cylinder of different shapes or directions is not an exact union"),
-        ((Cone((0, 0, 0), (0, 0, 1), 1), Cone((1, 0, 0), (0, 0, 1), 1)), "hull: a hull of a cone or frustum is not an exact union"),
+        ((Cone((0, 0, 0), (0, 0, 1), 1), Cone((3, 0, 0), (0, 1, 0), 1)), "hull: a hull of a cone or frustum is not an exact union"),
         ((Torus((0, 0, 0), (0, 0, 1), 2, 0.5),), "hull: a hull of a Torus is not an exact union"),
         ((Box((0, 0, 0), (2, 2, 2)) - Sphere((1, 1, 1), 1),), "hull: a hull of a difference is not supported"),
     ],
-    ids=["sphere_box", "off_line", "crossed_cylinders", "cone", "torus", "difference"],
+    ids=["sphere_cylinder", "unequal_cylinders_crossed", "crossed_cylinders", "cone", "torus", "difference"],
 )
 def test_refusals_name_what_stops_them(solids, message: str) -> None:
     with pytest.raises(NotExactError, match=re.escape(message)):

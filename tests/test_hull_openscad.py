@@ -78,8 +78,8 @@ def test_a_hull_of_one_sphere_is_the_sphere_and_a_minkowski_of_one_child_the_chi
 def test_a_hull_that_is_not_exact_names_the_node_and_line() -> None:
     text = (
         "cube(size = 1);\nhull() {\n  sphere(r = 1);\n  multmatrix([[1, 0, 0, 3], [0, 1, 0, 1], [0, 0, 1, 0], [0, 0, 0, 1]]) "
-        "{ sphere(r = 2); }\n  multmatrix([[1, 0, 0, 0], [0, 1, 0, 4], [0, 0, 1, 0], [0, 0, 0, 1]]) { sphere(r = 0.5); }\n}"
+        "{ cylinder(h = 2, r1 = 1, r2 = 1, center = false); }\n}"
     )
     with pytest.raises(UnsupportedOpenSCADError, match=re.escape(
-            "m.csg:2: hull() is not supported (a hull of spheres of radii 1, 2, 0.5 whose centres are not on one line")):
+            "m.csg:2: hull() is not supported (a hull of Cylinder, Sphere of different shapes or directions")):
         loads_openscad(text, source="m.csg")

@@ -13,11 +13,14 @@ one shape (spheres of one radius, or ellipsoids of one shape and orientation), o
 whose discs are one ellipse (parallel cylinders of one radius), is the hull of the centres or
 segments grown by that ball or disc (:mod:`isocsg.csg.hull_grow`, mapped by ``L`` when it is not
 a similarity). A hull of polytopes is the :class:`~isocsg.ConvexPolyhedron` of their corners.
-Spheres of different radii are exact when their centres lie on one line (two spheres always
-do): the hull is then a solid of revolution whose meridian is the hull of discs, so it is the
-spheres on that hull joined by the frusta of their common tangent cones. Cylinders, cones and
-frusta on one axis are likewise the frusta between consecutive vertices of the upper hull of
-their ends' (position, radius) points.
+Balls of any radii (spheres, or ellipsoids of one shape and any size) with any polytopes'
+corners (balls of radius 0) are exact through :mod:`isocsg.csg.hull_balls`: a polyhedron, the
+frusta of the tangent cones between balls and the spheres. Cylinders, cones and frusta on one
+axis, with spheres centred on it or not, are the frusta under the straight edges of their
+meridian's hull and the spheres under its arcs. Parallel cylinders of any radii between the
+same two planes are the prism over the 2D hull of their discs and the cylinders; cylinders,
+cones and frusta on parallel axes in general, with polytopes' corners, are the hull of their
+end discs (:mod:`isocsg.csg.hull_discs`: a polyhedron and oblique frusta).
 
 **minkowski**: sums of corners add (the sum of two polytopes is the hull of the pairwise sums
 of their corners), centres add, balls of one shape add (``L1 B + k L1 B = (1 + k) L1 B``) and so
@@ -27,8 +30,9 @@ tori (:class:`~isocsg.Torus`, which needs the cylinder's radius above the sphere
 operand distributes, ``(A u B) + K = (A + K) u (B + K)``; a difference or an intersection does
 not and is refused.
 
-Anything else (a hull of spheres of different radii off one line, of a sphere and a box, of
-cones; a sum of a sphere and an ellipsoid; non-parallel cylinders; a torus) raises
+Anything else (a hull of a sphere and a cylinder off its axis, of cylinders or cones on axes
+that are not parallel; a sum of a sphere and an ellipsoid;
+non-parallel cylinders; a torus) raises
 :class:`~isocsg.errors.NotExactError` naming what stops it. Radii and shapes count as equal to
 1e-9, relatively.
 """
@@ -57,6 +61,8 @@ from ..kinds import (
     Truncus,
 )
 from ..kinds.affine import similarity_factor
+from .hull_balls import ball_hull, disc_hull_prism, upper_disc_hull
+from .hull_discs import parallel_disc_hull
 from .hull_grow import grow_ball, grow_disc, polytope
 from .tree import CSGNode, Union
 
@@ -184,23 +190,147 @@ def hull_pieces(*solids: Solid) -> list[Primitive]:
         coaxial = _coaxial_hull(leaves)  # type: ignore[arg-type]
         if coaxial is not None:
             return coaxial
-    parts = [_convex(p, "hull") for p in leaves]
+    elif all(type(p) in (Truncus, Cylinder, Cone, Sphere) for p in leaves) and any(type(p) is not Sphere
+                                                                                   for p in leaves):
+        coaxial = _coaxial_with_spheres(leaves)  # type: ignore[arg-type]
+        if coaxial is not None:
+            return coaxial
+    try:
+        parts = [_convex(p, "hull") for p in leaves]
+    except NotExactError:
+        parallel = _parallel_hull(leaves)  # cones and frusta on parallel axes
+        if parallel is None:
+            raise
+        return parallel
     rounds = [c for c in parts if c.round is not None]
     if not rounds:
         return _polyhedron(np.vstack([c.points for c in parts]))
-    if len(rounds) < len(parts):
-        kinds = ", ".join(sorted({_name(p) for p in leaves}))
-        raise NotExactError(f"hull: a hull of polytopes and round solids ({kinds}) is no exact union of isocsg kinds")
     first = rounds[0]
-    if all(c.round == first.round and _same(_gram(c), _gram(first)) for c in rounds):
+    if len(rounds) == len(parts) and all(c.round == first.round and _same(_gram(c), _gram(first)) for c in rounds):
         return _grown(np.vstack([c.points for c in rounds]), first)
-    if all(isinstance(p, Sphere) for p in leaves):
-        return _sphere_hull([p for p in leaves if isinstance(p, Sphere)])
+    pieces = _balls_hull(parts)
+    if pieces is None:
+        pieces = _cylinders_hull(parts)
+    if pieces is None:
+        pieces = _parallel_hull(leaves)
+    if pieces is not None:
+        return pieces
     shown = ", ".join(sorted({_name(p) for p in leaves}))
     raise NotExactError(
-        f"hull: a hull of {shown} of different shapes or directions is not an exact union of isocsg kinds (only balls "
-        "of one shape, parallel cylinders of one radius, or spheres whose centres lie on one line are)"
+        f"hull: a hull of {shown} of different shapes or directions is not an exact union of isocsg kinds (only "
+        "polytopes with spheres of any radii or ellipsoids of one shape, polytopes with cylinders and cones on "
+        "parallel axes, and trunci with spheres on one axis are)"
     )
+
+
+def _balls_hull(parts: list[_Convex]) -> list[Primitive] | None:
+    """The hull of balls of one shape up to size (spheres of any radii, or ellipsoids ``s_k L B``)
+    and polytopes' corners (balls of radius 0), through :func:`ball_hull` in ``L``'s frame; None
+    when an operand is a disc or the balls' shapes differ."""
+    if any(c.round == "disc" for c in parts):
+        return None
+    balls = [c for c in parts if c.round == "ball"]
+    g1 = _gram(balls[0])
+    scales = [float(np.trace(_gram(c)) / np.trace(g1)) for c in balls]
+    if not all(_same(_gram(c), k * g1) for c, k in zip(balls, scales)):
+        return None
+    lin = balls[0].linear
+    assert lin is not None
+    corners = [c.points for c in parts if c.round is None]
+    if corners:  # only the corners of the polytopes' hull matter
+        corners = [polytope(np.vstack(corners)).vertices]
+    centres = np.vstack([c.points for c in balls] + corners)
+    radii = np.concatenate([np.sqrt(scales), np.zeros(len(centres) - len(balls))])
+    r1 = similarity_factor(lin)
+    if r1 is not None:
+        return ball_hull(centres, radii * r1)
+    origin = centres[0]
+    m = np.eye(4)
+    m[:3, :3], m[:3, 3] = lin, origin
+    local = np.linalg.solve(lin, (centres - origin).T).T
+    return [p.transform(m) for p in ball_hull(local, radii)]  # type: ignore[misc]
+
+
+def _cylinders_hull(parts: list[_Convex]) -> list[Primitive] | None:
+    """The hull of right circular cylinders on one axis direction whose ends lie on the same two
+    planes (any radii): the prism over the 2D hull of their discs; None otherwise."""
+    if any(c.round != "disc" for c in parts):
+        return None
+    axis = parts[0].linear[:, 2]  # type: ignore[index]
+    frame = np.column_stack([*_plane_frame(axis), axis])
+    radii, feet, heights = [], [], []
+    for c in parts:
+        lin = c.linear
+        assert lin is not None
+        g = lin[:, :2].T @ lin[:, :2]
+        if abs(abs(float(lin[:, 2] @ axis)) - 1) > SHAPE_TOLERANCE or not _same(g, g[0, 0] * np.eye(2)):
+            return None
+        local = c.points @ frame
+        if np.abs(local[0, :2] - local[1, :2]).max() > SHAPE_TOLERANCE * abs(local[0, 2] - local[1, 2]):
+            return None  # an oblique cylinder
+        radii.append(math.sqrt(g[0, 0]))
+        feet.append(local[0, :2])
+        heights.append(sorted(local[:, 2]))
+    span = np.array(heights)
+    if np.ptp(span, axis=0).max() > SHAPE_TOLERANCE * float(np.ptp(span) + max(radii)):
+        return None
+    return disc_hull_prism(np.array(feet), np.array(radii), frame, float(span[:, 0].min()), float(span[:, 1].max()))
+
+
+def _parallel_hull(leaves: list[Primitive]) -> list[Primitive] | None:
+    """The hull of cylinders, cones and frusta whose end discs lie in parallel planes (any radii,
+    any heights; right ones, or elliptic ones under one map) and polytopes' corners, as the hull
+    of their end discs (:mod:`isocsg.csg.hull_discs`); None when another kind is there or the
+    discs are not parallel circles (in the frame of the first elliptic one's map)."""
+    rounds = [p for p in leaves if isinstance(p, (Truncus, EllipticTruncus))]
+    if not rounds:
+        return None
+    first = next((p for p in rounds if isinstance(p, EllipticTruncus)), None)
+    m = np.eye(3) if first is None else np.asarray(first.matrix, dtype=np.float64).copy()
+    m[:, 2] = np.cross(m[:, 0], m[:, 1])  # the discs' frame; their normal in the world when a similarity
+    origin = np.zeros(3) if first is None else first.center_array
+    inverse = np.linalg.inv(m)
+    axis = inverse @ (rounds[0].unit_axis if first is None else m[:, 2])  # type: ignore[union-attr]
+    axis /= np.linalg.norm(axis)
+    centres: list[NDArray[np.float64]] = []
+    radii: list[float] = []
+    for p in leaves:
+        if isinstance(p, (Truncus, EllipticTruncus)):
+            lin = p.linear if isinstance(p, EllipticTruncus) else _truncus_matrix(p)
+            local = inverse @ lin
+            disc = local[:, :2] - np.outer(axis, axis @ local[:, :2])
+            g = disc.T @ disc
+            tilted = np.abs(axis @ local[:, :2]).max() > SHAPE_TOLERANCE * math.sqrt(g[0, 0])
+            if tilted or not _same(g, g[0, 0] * np.eye(2)):
+                return None
+            c = inverse @ (p.center_array - origin)
+            centres.extend((c + local[:, 2] / 2, c - local[:, 2] / 2))
+            radii.extend((p.r1 * math.sqrt(g[0, 0]), p.r2 * math.sqrt(g[0, 0])))
+        elif (corners := p.hull_points()) is not None:
+            centres.extend((np.asarray(corners, dtype=np.float64) - origin) @ inverse.T)
+            radii.extend([0.0] * len(corners))
+        else:
+            return None
+    pieces = parallel_disc_hull(np.array(centres), np.array(radii), axis)
+    if first is None:
+        return pieces
+    back = np.eye(4)
+    back[:3, :3], back[:3, 3] = m, origin
+    return [p.transform(back) for p in pieces]  # type: ignore[misc]
+
+
+def _truncus_matrix(t: Truncus) -> NDArray[np.float64]:
+    """A right truncus's frame: two unit vectors across its axis and the axis (E2 to E1)."""
+    u, v = _plane_frame(t.unit_axis)
+    e1, e2 = t.end_centers
+    return np.column_stack([u, v, e1 - e2])
+
+
+def _plane_frame(axis: NDArray[np.float64]) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+    helper = np.eye(3)[int(np.argmin(np.abs(axis)))]
+    u = np.cross(axis, helper)
+    u /= np.linalg.norm(u)
+    return u, np.cross(axis, u)
 
 
 def _coaxial_hull(trunci: list[Truncus]) -> list[Primitive] | None:
@@ -237,52 +367,37 @@ def _coaxial_hull(trunci: list[Truncus]) -> list[Primitive] | None:
     return pieces
 
 
+def _coaxial_with_spheres(leaves: list[Truncus | Sphere]) -> list[Primitive] | None:
+    """The hull of trunci on one axis and spheres centred on it (a dome on a cylinder, a cone
+    with a ball): a solid of revolution whose meridian is the upper hull of the ends' rims
+    (points) and the spheres' discs; frusta under its straight edges, spheres under its arcs.
+    None when they are not on one axis."""
+    trunci = [p for p in leaves if isinstance(p, Truncus)]
+    axis, origin = trunci[0].unit_axis, trunci[0].center_array
+    balls = [p for p in leaves if isinstance(p, Sphere)]
+    centres = np.array([e for t in trunci for e in t.end_centers] + [p.center_array for p in balls])
+    radii = np.array([r for t in trunci for r in (t.r1, t.r2)] + [p.radius for p in balls])
+    s = (centres - origin) @ axis
+    off_line = np.linalg.norm(centres - origin - s[:, None] * axis, axis=1)
+    if off_line.max() > SHAPE_TOLERANCE * float(np.ptp(s) + radii.max()):
+        return None
+    rims = 2 * len(trunci)
+    points = np.column_stack([s, np.where(np.arange(len(s)) < rims, radii, 0.0)])
+    edges, discs = upper_disc_hull(points, np.where(np.arange(len(s)) < rims, 0.0, radii))
+    pieces: list[Primitive] = []
+    for (s0, r0), (s1, r1) in edges:
+        a, b = origin + s0 * axis, origin + s1 * axis
+        try:
+            pieces.append(Cylinder((a + b) / 2, b - a, r1) if r0 == r1 else Truncus((a + b) / 2, b - a, r1, r0))
+        except InvalidGeometryError:
+            pass  # no length (a flat end) or too thin a sliver to be a kind
+    pieces.extend(Sphere(centres[k], radii[k]) for k in discs if k >= rims)
+    return pieces
+
+
 def _turn(o: tuple[float, float], a: tuple[float, float], b: tuple[float, float]) -> float:
     """The cross product of ``a - o`` and ``b - o``: > 0 for a left (counter-clockwise) turn."""
     return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0])
-
-
-def _sphere_hull(spheres: list[Sphere]) -> list[Primitive]:
-    """The hull of spheres whose centres lie on one line: the spheres on the meridian's hull of
-    discs, joined by the frusta of their common tangent cones."""
-    c = np.array([s.center_array for s in spheres])
-    r = np.array([s.radius for s in spheres])
-    gap = np.linalg.norm(c[:, None] - c[None], axis=2)
-    inside = (gap + r[:, None] <= r[None, :]) & ~np.eye(len(r), dtype=bool)
-    inside &= ~(inside.T & (np.arange(len(r))[:, None] > np.arange(len(r))[None, :]))  # equal ones: keep the first
-    keep = ~inside.any(axis=1)
-    c, r = c[keep], r[keep]
-    if len(r) == 1:
-        return [Sphere(c[0], r[0])]
-    axis = c[int(np.argmax(np.linalg.norm(c - c[0], axis=1)))] - c[0]
-    axis /= np.linalg.norm(axis)
-    t = (c - c[0]) @ axis
-    off = np.linalg.norm(c - c[0] - t[:, None] * axis, axis=1)
-    if off.max() > SHAPE_TOLERANCE * (np.ptp(t) + r.max()):
-        raise NotExactError(
-            f"hull: a hull of spheres of radii {', '.join(f'{x:g}' for x in r)} whose centres are not on one line "
-            "is not an exact union of isocsg kinds (only one radius, or centres on one line, are)"
-        )
-    order = np.argsort(t)
-    t, r, c = t[order], r[order], c[order]
-    pieces: list[Primitive] = []
-    used = np.zeros(len(r), dtype=bool)
-    reach = float(np.ptp(t) + r.max())
-    for i, j in itertools.combinations(range(len(r)), 2):
-        # the common tangent above both discs (t_i, 0, r_i), (t_j, 0, r_j): unit normal (nu_t, nu_r)
-        nu_t = (r[i] - r[j]) / (t[j] - t[i])
-        nu_r = math.sqrt(max(0.0, 1.0 - nu_t * nu_t))
-        support = nu_t * t[i] + r[i]
-        if np.any(nu_t * t + r > support + SHAPE_TOLERANCE * reach):
-            continue  # another sphere reaches beyond this cone: not on the hull
-        used[[i, j]] = True
-        ends = [c[k] + r[k] * nu_t * axis for k in (i, j)]
-        if r[i] == r[j]:
-            pieces.append(Cylinder((ends[0] + ends[1]) / 2, ends[0] - ends[1], r[i]))
-        else:
-            pieces.append(Truncus((ends[0] + ends[1]) / 2, ends[0] - ends[1], r[i] * nu_r, r[j] * nu_r))
-    pieces.extend(Sphere(c[k], r[k]) for k in np.nonzero(used)[0])
-    return pieces
 
 
 def hull(*solids: Solid) -> Solid:
@@ -291,9 +406,10 @@ def hull(*solids: Solid) -> Solid:
     Parameters
     ----------
     *solids : Solid
-        Primitives or unions of them: polytopes (boxes, convex polyhedra), spheres of one radius
-        (or ellipsoids of one shape), parallel cylinders of one radius, cylinders and cones on
-        one axis, or spheres whose centres lie on one line (see :mod:`isocsg.csg.hull`).
+        Primitives or unions of them: polytopes (boxes, convex polyhedra) with spheres of any
+        radii (or ellipsoids of one shape), parallel cylinders of one radius or of any radii
+        between two planes, cylinders and cones on one axis with spheres centred on it (see
+        :mod:`isocsg.csg.hull`).
 
     Returns
     -------
@@ -304,8 +420,11 @@ def hull(*solids: Solid) -> Solid:
     Raises
     ------
     NotExactError
-        When the hull is no exact union of isocsg kinds (spheres of different radii off one line,
-        a sphere with a box, cones, a difference); the message names what stops it.
+        When the hull is no exact union of isocsg kinds (a sphere with a cylinder off its axis,
+        cones off one axis, a difference); the message names what stops it.
+    ResourceLimitError
+        When the balls and corners make too many planes to test
+        (:data:`~isocsg.csg.hull_balls.MAX_HULL_WORK`).
     InvalidGeometryError
         When the hull has no volume (flat polytopes), or on no operand.
 

@@ -22,8 +22,8 @@ What each node becomes (``docs/openscad.md`` has the table and the reasons):
   OpenSCAD's warning (:class:`~isocsg.openscad.flat.MixedDimensionsWarning`).
 - ``hull`` of polyhedral children (cubes, polyhedra, polygonal spheres and cylinders, under maps
   and groups) -> the :class:`~isocsg.ConvexPolyhedron` of all their corners, exactly; ``hull`` of
-  round children and ``minkowski`` -> the exact unions of :mod:`isocsg.csg.hull` (spheres of one
-  radius, parallel cylinders of one radius, two spheres, ...), or refused naming what stops them.
+  round children and ``minkowski`` -> the exact unions of :mod:`isocsg.csg.hull` (spheres of any
+  radii with polytopes, parallel cylinders, ...), or refused naming what stops them.
 - ``linear_extrude(height, center, scale)`` of any 2D subtree (:mod:`isocsg.openscad.flat`,
   through :mod:`isocsg.shapes2d`): ``square``, ``circle``, ``polygon`` (non-convex, holes),
   ``text``, ``offset``, 2D Booleans, transforms and hulls of polygons; ``rotate_extrude(angle)``
