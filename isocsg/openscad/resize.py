@@ -146,7 +146,8 @@ def _meets(turned: Any, z: float) -> bool:
     from ..shapes2d.projection import section_at
 
     cut = section_at(turned, z)
-    return cut is not EMPTY and to_shapely(cut, resolution=256, circumscribed=True).area > 0
+    # inscribed polygons: a cut no deeper than their sagitta (3e-7 of a radius) reads as empty
+    return cut is not EMPTY and to_shapely(cut, resolution=4096).area > 0
 
 
 def _refine(turned: Any, start: float, outward: float, reach: float, step: float) -> float:
@@ -239,8 +240,8 @@ def _arguments(lw: Any, call: Any, dim: int) -> tuple[list[float], list[bool]]:
     if isinstance(flag, list):
         for i, v in enumerate(flag[:3]):
             auto[i] = bool(v)
-    elif isinstance(flag, (bool, int, float)):
-        auto = [bool(flag)] * 3
+    elif isinstance(flag, bool):  # a number is neither (OpenSCAD reads auto = 3 as false)
+        auto = [flag] * 3
     return newsize[:dim], auto[:dim]
 
 
@@ -257,9 +258,21 @@ def resize_solid(lw: Any, call: Any, solid: Any) -> Any:
     scale = resize_scale(newsize, auto, box[1] - box[0])
     if np.all(scale == 1.0):
         return solid
+    from ..errors import InvalidGeometryError, InvalidParameterError
+    from ..kinds import Box
+
+    if isinstance(solid, Box) and solid.orientation == ((1.0, 0.0, 0.0), (0.0, 1.0, 0.0), (0.0, 0.0, 1.0)):
+        # a box of any aspect stays one (a map of that aspect would be refused as ill-conditioned)
+        return lw.make(call, Box, tuple(np.asarray(solid.center) * scale), tuple(np.asarray(solid.size) * scale))
     m = np.eye(4)
     m[:3, :3] = np.diag(scale)
-    return solid.transform(m)
+    try:
+        return solid.transform(m)
+    except InvalidParameterError as exc:
+        lw.unsupported(call, f"its image is not an exact isocsg solid: {exc}")
+        return None
+    except InvalidGeometryError as exc:
+        raise lw.fail(call, str(exc)) from None
 
 
 def resize_shape(lw: Any, call: Any, shape: Any) -> Any:
