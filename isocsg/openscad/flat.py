@@ -118,6 +118,13 @@ def _empty_leaf(name: str, args: dict[str, Any]) -> bool:
     return False
 
 
+def _disc_hull(centres: NDArray[np.float64], radii: NDArray[np.float64]) -> Any:
+    """The exact hull of discs (:func:`isocsg.shapes2d.hull2d.disc_hull`)."""
+    from ..shapes2d.hull2d import disc_hull
+
+    return disc_hull(centres, radii)
+
+
 def _hull2d(lw: _Lowerer, call: CSGCall, body: Any) -> Any:
     """``hull()`` of 2D shapes: polygons and circles exactly (:func:`_disc_hull`); ellipses are refused."""
     from ..shapes2d import EMPTY, Circle, ConvexPolygon
@@ -149,9 +156,7 @@ def _hull2d(lw: _Lowerer, call: CSGCall, body: Any) -> Any:
         return polygon(np.asarray(hull.exterior.coords)[:-1].tolist())
     c = np.vstack([np.array(centres, dtype=np.float64), points])
     r = np.concatenate([np.array(radii, dtype=np.float64), np.zeros(len(points))])
-    from ..shapes2d.hull2d import disc_hull
-
-    return disc_hull(c, r)
+    return _disc_hull(c, r)
 
 
 def drawing_path(lw: _Lowerer, call: CSGCall) -> Path:
@@ -167,15 +172,26 @@ def drawing_path(lw: _Lowerer, call: CSGCall) -> Path:
 
 
 def import_drawing(lw: _Lowerer, call: CSGCall) -> Any:
-    """``import("drawing.dxf", layer, origin, scale)`` in 2D: the drawing's region as OpenSCAD reads
-    it (:func:`isocsg.shapes2d.drawings.import_dxf`); other 2D formats are refused by name."""
+    """``import("drawing.dxf", layer, origin, scale)`` or ``import("drawing.svg", dpi, center)`` in
+    2D: the drawing's region as OpenSCAD reads it (:func:`isocsg.shapes2d.drawings.import_dxf`,
+    :func:`isocsg.shapes2d.svg.import_svg`); other 2D formats are refused by name."""
     from ..shapes2d.drawings import import_dxf
 
     path = drawing_path(lw, call)
-    if path.suffix.lower() != ".dxf":
-        lw.unsupported(call, f"2D drawings in {path.suffix or 'unnamed'} files are not read (DXF is)")
-        return None
     args = _named(lw, call)
+    if path.suffix.lower() == ".svg":
+        from ..shapes2d.svg import import_svg
+
+        dpi = args.get("dpi", 72.0)
+        center = args.get("center", False)
+        try:
+            return import_svg(path, dpi=dpi if isinstance(dpi, (int, float)) and dpi >= 0.001 else 72.0,
+                              center=center is True)
+        except InvalidGeometryError as exc:
+            raise lw.fail(call, str(exc)) from None
+    if path.suffix.lower() != ".dxf":
+        lw.unsupported(call, f"2D drawings in {path.suffix or 'unnamed'} files are not read (DXF and SVG are)")
+        return None
     origin = args.get("origin", [0, 0])
     scale = args.get("scale", 1.0)
     if isinstance(scale, list) and scale:

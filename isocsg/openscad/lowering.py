@@ -29,8 +29,13 @@ What each node becomes (``docs/openscad.md`` has the table and the reasons):
   ``text``, ``offset``, 2D Booleans, transforms and hulls of polygons; ``rotate_extrude(angle)``
   of the same subtrees (:mod:`isocsg.openscad.revolve`).
 
-Nodes without an exact equivalent (the ``hull`` and ``minkowski`` that are not exact, 2D ``import`` of
-SVG drawings, ``projection``, ``resize`` and unknown modules) raise
+- ``projection(cut)`` in 2D (:func:`isocsg.shapes2d.projection.projection`: exact sections at z = 0,
+  exact outlines of unions, through holes and flat-faced trees); ``resize(newsize, auto)`` in 2D
+  and 3D (:mod:`isocsg.openscad.resize`, from the exact bounds); 2D ``import`` of DXF and SVG
+  drawings.
+
+Nodes without an exact equivalent (the ``hull`` and ``minkowski`` that are not exact, outlines of
+differences of curved solids that are not through holes, SVG strokes and unknown modules) raise
 :class:`~isocsg.errors.UnsupportedOpenSCADError` naming the node and its
 line, or are skipped when ``skip_unsupported=True``: :attr:`LoweredModel.skipped` counts them
 and :attr:`LoweredModel.left_out` names each (line and reason). Objects that OpenSCAD itself
