@@ -219,10 +219,9 @@ UNSUPPORTED = [
     ("hull", "hull() {\n  sphere(r = 1);\n  cube(size = 1);\n}"),
     ("minkowski", "minkowski() {\n  cube(size = 1);\n  cylinder(h = 1, r1 = 0.1, r2 = 0);\n}"),
     ("roof", "linear_extrude(height = 1) {\n  roof() {\n    square(size = 1);\n  }\n}"),
-    ("import", "linear_extrude(height = 1) {\n  import(file = \"part.svg\", layer = \"\", origin = [0, 0], scale = 1);\n}"),
-    ("projection", "linear_extrude(height = 1) {\n  projection(cut = false) {\n    sphere(r = 1);\n  }\n}"),
+    ("import", "linear_extrude(height = 1) {\n  import(file = \"part.eps\", layer = \"\", origin = [0, 0], scale = 1);\n}"),
+    ("projection", "linear_extrude(height = 1) {\n  projection(cut = false) {\n    difference() {\n      sphere(r = 1);\n      sphere(r = 0.5);\n    }\n  }\n}"),
     ("fill", "fill() {\n  cube(size = 1);\n}"),
-    ("resize", "resize(newsize = [2, 2, 2]) {\n  sphere(r = 1);\n}"),
     ("frobnicate", "frobnicate(size = 3);"),
 ]
 

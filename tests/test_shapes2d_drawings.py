@@ -164,8 +164,11 @@ def test_openscad_models_extrude_imported_drawings(doc, tmp_path: Path) -> None:
     model.write_text('linear_extrude(height = 1) import(file = "parts/missing.dxf");\n')
     with pytest.raises(OpenSCADError, match="missing.dxf"):
         load_openscad(model)
-    model.write_text('linear_extrude(height = 1) import(file = "parts/base.svg");\n')
-    with pytest.raises(UnsupportedOpenSCADError, match="svg"):
+    model.write_text('linear_extrude(height = 1) import(file = "parts/base.svg");\n')  # SVG is read: missing here
+    with pytest.raises(OpenSCADError, match="base.svg: not a readable SVG file"):
+        load_openscad(model)
+    model.write_text('linear_extrude(height = 1) import(file = "parts/base.eps");\n')
+    with pytest.raises(UnsupportedOpenSCADError, match="eps"):
         load_openscad(model)
 
 

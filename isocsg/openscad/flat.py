@@ -119,29 +119,10 @@ def _empty_leaf(name: str, args: dict[str, Any]) -> bool:
 
 
 def _disc_hull(centres: NDArray[np.float64], radii: NDArray[np.float64]) -> Any:
-    """The convex hull of discs (radius 0: points), exactly: the discs together with the convex
-    polygon of the points where the hull's outer tangent lines touch them."""
-    import shapely
+    """The exact hull of discs (:func:`isocsg.shapes2d.hull2d.disc_hull`)."""
+    from ..shapes2d.hull2d import disc_hull
 
-    from ..shapes2d import EMPTY, circle, polygon, union2d
-
-    size = float(np.ptp(centres, axis=0).max() + 2 * radii.max())
-    touch = []
-    for i in range(len(centres)):
-        d = centres - centres[i]
-        length = np.hypot(d[:, 0], d[:, 1])
-        for j in np.nonzero(length > np.abs(radii[i] - radii))[0]:
-            u = d[j] / length[j]
-            a = (radii[i] - radii[j]) / length[j]
-            n = a * u - math.sqrt(max(0.0, 1.0 - a * a)) * np.array([-u[1], u[0]])  # outward, on the right
-            if np.all(centres @ n + radii <= centres[i] @ n + radii[i] + 1e-12 * size):
-                touch += [centres[i] + radii[i] * n, centres[j] + radii[j] * n]
-    hull = shapely.convex_hull(shapely.multipoints(np.array(touch))) if touch else None
-    discs = [circle(float(r)).translate(c.tolist()) for c, r in zip(centres, radii) if r > 0]
-    parts = list(discs)
-    if hull is not None and hull.geom_type == "Polygon" and hull.area > 0:
-        parts.append(polygon(np.asarray(hull.exterior.coords)[:-1].tolist()))
-    return union2d(*parts) if parts else EMPTY
+    return disc_hull(centres, radii)
 
 
 def _hull2d(lw: _Lowerer, call: CSGCall, body: Any) -> Any:
@@ -191,15 +172,26 @@ def drawing_path(lw: _Lowerer, call: CSGCall) -> Path:
 
 
 def import_drawing(lw: _Lowerer, call: CSGCall) -> Any:
-    """``import("drawing.dxf", layer, origin, scale)`` in 2D: the drawing's region as OpenSCAD reads
-    it (:func:`isocsg.shapes2d.drawings.import_dxf`); other 2D formats are refused by name."""
+    """``import("drawing.dxf", layer, origin, scale)`` or ``import("drawing.svg", dpi, center)`` in
+    2D: the drawing's region as OpenSCAD reads it (:func:`isocsg.shapes2d.drawings.import_dxf`,
+    :func:`isocsg.shapes2d.svg.import_svg`); other 2D formats are refused by name."""
     from ..shapes2d.drawings import import_dxf
 
     path = drawing_path(lw, call)
-    if path.suffix.lower() != ".dxf":
-        lw.unsupported(call, f"2D drawings in {path.suffix or 'unnamed'} files are not read (DXF is)")
-        return None
     args = _named(lw, call)
+    if path.suffix.lower() == ".svg":
+        from ..shapes2d.svg import import_svg
+
+        dpi = args.get("dpi", 72.0)
+        center = args.get("center", False)
+        try:
+            return import_svg(path, dpi=dpi if isinstance(dpi, (int, float)) and dpi >= 0.001 else 72.0,
+                              center=center is True)
+        except InvalidGeometryError as exc:
+            raise lw.fail(call, str(exc)) from None
+    if path.suffix.lower() != ".dxf":
+        lw.unsupported(call, f"2D drawings in {path.suffix or 'unnamed'} files are not read (DXF and SVG are)")
+        return None
     origin = args.get("origin", [0, 0])
     scale = args.get("scale", 1.0)
     if isinstance(scale, list) and scale:
@@ -237,6 +229,10 @@ def _node(lw: _Lowerer, call: CSGCall, kids: list[Any], polygonal: bool = False)
         return import_drawing(lw, call)
     if name == "hull":
         return _hull2d(lw, call, union2d(*kids) if kids else EMPTY)
+    if name == "resize":
+        from .resize import resize_shape
+
+        return resize_shape(lw, call, union2d(*kids) if kids else EMPTY)
     args = _named(lw, call)
     if _empty_leaf(name, args):
         return EMPTY
@@ -262,6 +258,27 @@ def _node(lw: _Lowerer, call: CSGCall, kids: list[Any], polygonal: bool = False)
         raise lw.fail(call, str(exc)) from None
 
 
+def project(lw: _Lowerer, call: CSGCall) -> Any:
+    """``projection(cut)``: the node's 3D children lowered to one solid
+    (:meth:`~isocsg.openscad.lowering._Lowerer.solid_of`), projected onto the xy plane exactly
+    (:func:`isocsg.shapes2d.projection.projection`); None when skipped."""
+    from ..errors import NotExactError
+    from ..shapes2d import EMPTY
+    from ..shapes2d.projection import projection
+
+    cut = lw.boolean(call, "cut", call.kwargs.get("cut", False))
+    solid = lw.solid_of(call)
+    if solid is None:
+        return EMPTY  # no 3D child (a 2D one is ignored, as OpenSCAD does): nothing to project
+    try:
+        return projection(solid, cut=cut)
+    except NotExactError as exc:
+        lw.unsupported(call, str(exc).removeprefix("projection: "))
+        return None
+    except InvalidGeometryError as exc:
+        raise lw.fail(call, str(exc)) from None
+
+
 def _kept(lw: _Lowerer, call: CSGCall) -> list[CSGCall]:
     """The children that count in 2D: ``%``/``*`` ones are left out, 3D ones ignored with a warning."""
     from ..shapes2d.openscad import NODES_2D
@@ -275,7 +292,7 @@ def _kept(lw: _Lowerer, call: CSGCall) -> list[CSGCall]:
             warnings.warn(MixedDimensionsWarning(
                 f"{lw.where(c)}ignoring the 3D object {c.name}() in a 2D operation, as OpenSCAD does"), stacklevel=2)
             continue
-        if c.name not in NODES_2D and c.name not in _PASS and c.name != "import":
+        if c.name not in NODES_2D and c.name not in _PASS and c.name not in ("import", "projection", "resize"):
             lw.unsupported(c, lw.reason(c.name, "2D"))
             continue
         out.append(c)
@@ -292,7 +309,10 @@ def shape_of(lw: _Lowerer, call: CSGCall, polygonal: bool = False) -> Any:
         node, kids, done = stack[-1]
         if len(done) < len(kids):
             child = kids[len(done)]
-            stack.append((child, _kept(lw, child), []))
+            if child.name == "projection":  # 3D children: lowered as solids, then projected
+                done.append(project(lw, child))
+            else:
+                stack.append((child, _kept(lw, child), []))
             continue
         stack.pop()
         shapes = [s for s in done if s is not None]  # skipped children are absent

@@ -29,8 +29,13 @@ What each node becomes (``docs/openscad.md`` has the table and the reasons):
   ``text``, ``offset``, 2D Booleans, transforms and hulls of polygons; ``rotate_extrude(angle)``
   of the same subtrees (:mod:`isocsg.openscad.revolve`).
 
-Nodes without an exact equivalent (the ``hull`` and ``minkowski`` that are not exact, 2D ``import`` of
-SVG drawings, ``projection``, ``resize`` and unknown modules) raise
+- ``projection(cut)`` in 2D (:func:`isocsg.shapes2d.projection.projection`: exact sections at z = 0,
+  exact outlines of unions, through holes and flat-faced trees); ``resize(newsize, auto)`` in 2D
+  and 3D (:mod:`isocsg.openscad.resize`, from the exact bounds); 2D ``import`` of DXF and SVG
+  drawings.
+
+Nodes without an exact equivalent (the ``hull`` and ``minkowski`` that are not exact, outlines of
+differences of curved solids that are not through holes, SVG strokes and unknown modules) raise
 :class:`~isocsg.errors.UnsupportedOpenSCADError` naming the node and its
 line, or are skipped when ``skip_unsupported=True``: :attr:`LoweredModel.skipped` counts them
 and :attr:`LoweredModel.left_out` names each (line and reason). Objects that OpenSCAD itself
@@ -68,8 +73,6 @@ _SolidT = TypeVar("_SolidT", bound=Solid)
 
 #: OpenSCAD modules that have no exact isocsg equivalent, with the reason given in errors.
 UNSUPPORTED_NODES: dict[str, str] = {
-    "projection": "projections to 2D are not solids",
-    "resize": "resize depends on the tessellated bounds",
     "roof": "roofs are not supported",
     "fill": "fill is not supported",
 }
@@ -119,6 +122,12 @@ class _Lowerer:
         self.skipped: Counter[str] = Counter()
         self.left_out: list[str] = []
         self.colors: dict[int, tuple[float, float, float]] = {}  # by id() of a leaf
+        self.resize_maps: dict[int, NDArray[np.float64] | None] = {}  # the map above each open resize node
+
+    def solid_of(self, call: CSGCall) -> Solid | None:
+        """The union of a node's children lowered as 3D objects (for ``projection``), None when empty."""
+        value = _run(self, CSGCall("union", children=list(call.children), line=call.line))
+        return None if value is _DROP else value  # type: ignore[no-any-return]
 
     # ------------------------------------------------------------------ errors
 
@@ -472,6 +481,15 @@ def lower(calls: list[CSGCall], *, source: str | None = None, skip_unsupported: 
     """
     lw = _Lowerer(source, skip_unsupported)
     root = CSGCall("union", children=_root_modified(calls) or list(calls), line=1)
+    result = _run(lw, root)
+    if result is None or result is _DROP:
+        what = f" (skipped: {_counts(lw.skipped)})" if lw.skipped else ""
+        raise OpenSCADError(f"{source or 'model'}: the model is empty: nothing of it has a volume{what}")
+    return LoweredModel(result, dict(lw.skipped), tuple(lw.left_out), _leaf_colors(lw, result))
+
+
+def _run(lw: _Lowerer, root: CSGCall) -> Any:
+    """The solid of ``root`` (a union of its children; None or ``_DROP`` when nothing is left)."""
     # Frames: (call, the map accumulated from the root or None, results of the children so far).
     # Maps compose on the way down and are applied once per leaf, however deep they nest.
     stack: list[tuple[CSGCall, NDArray[np.float64] | None, list[Any]]] = [(root, None, [])]
@@ -492,10 +510,7 @@ def lower(calls: list[CSGCall], *, source: str | None = None, skip_unsupported: 
             stack[-1][2].append(value)
         else:
             result = value
-    if result is None or result is _DROP:
-        what = f" (skipped: {_counts(lw.skipped)})" if lw.skipped else ""
-        raise OpenSCADError(f"{source or 'model'}: the model is empty: nothing of it has a volume{what}")
-    return LoweredModel(result, dict(lw.skipped), tuple(lw.left_out), _leaf_colors(lw, result))
+    return result
 
 
 def _color(lw: _Lowerer, call: CSGCall, solid: Any) -> None:
@@ -544,7 +559,7 @@ def _counts(skipped: Counter[str]) -> str:
 #: an empty child (None), it does not empty an intersection nor stand first in a difference.
 _DROP: Any = object()
 _TRANSFORMS = {"multmatrix", "translate", "rotate", "scale", "mirror"}
-_DIM2 = {"square", "circle", "polygon", "text", "offset"}
+_DIM2 = {"square", "circle", "polygon", "text", "offset", "projection"}
 
 
 def _placed(lw: _Lowerer, call: CSGCall, solid: Solid | None, m: NDArray[np.float64] | None) -> Solid | None:
@@ -581,6 +596,9 @@ def _enter(lw: _Lowerer, call: CSGCall, m: NDArray[np.float64] | None) -> tuple[
             return _hull_of(pts), None, False  # type: ignore[arg-type]
     if name in _BOOLEANS:
         return None, m, True
+    if name == "resize":  # its children in its own frame: the map above applies to the resized solid
+        lw.resize_maps[id(call)] = m
+        return None, None, True
     if name in _TRANSFORMS:
         local = _matrix(lw, call)
         if _singular(local):
@@ -610,6 +628,10 @@ def _leave(lw: _Lowerer, call: CSGCall, m: NDArray[np.float64] | None, parts: li
         return _hull(lw, call, kept)
     if name == "minkowski":
         return _minkowski(lw, call, m, kept)
+    if name == "resize":
+        from .resize import resize_solid
+
+        return _placed(lw, call, resize_solid(lw, call, _combine("union", kept)), lw.resize_maps.pop(id(call)))
     combined = _combine("union", kept)
     if name == "color":
         _color(lw, call, combined)
