@@ -43,6 +43,7 @@ receivers' bounding box, about ``TILE_POINTS`` points each.
 from __future__ import annotations
 
 import itertools
+from typing import Any
 
 import numba
 import numpy as np
@@ -98,10 +99,10 @@ def _separating_planes(S: NDArray[np.float64], V: NDArray[np.float64], edges: ND
     Se = np.stack([S, np.roll(S, -1, axis=0)], axis=1)  # (m, 2, 3) source edges
     Ve = V[edges]  # (e, 2, 3)
     # a source vertex with an edge of V; a vertex of V with an edge of S
-    n1 = np.cross(Ve[None, :, 0] - S[:, None], Ve[None, :, 1] - S[:, None]).reshape(-1, 3)
-    d1 = np.einsum("sej,sj->se", np.cross(Ve[None, :, 0] - S[:, None], Ve[None, :, 1] - S[:, None]), S).ravel()
-    n2 = np.cross(Se[None, :, 0] - V[:, None], Se[None, :, 1] - V[:, None]).reshape(-1, 3)
-    d2 = np.einsum("vej,vj->ve", np.cross(Se[None, :, 0] - V[:, None], Se[None, :, 1] - V[:, None]), V).ravel()
+    c1 = np.cross(Ve[None, :, 0] - S[:, None], Ve[None, :, 1] - S[:, None])
+    n1, d1 = c1.reshape(-1, 3), np.einsum("sej,sj->se", c1, S).ravel()
+    c2 = np.cross(Se[None, :, 0] - V[:, None], Se[None, :, 1] - V[:, None])
+    n2, d2 = c2.reshape(-1, 3), np.einsum("vej,vj->ve", c2, V).ravel()
     nn = np.vstack([n1, n2, fn])
     dd = np.concatenate([d1, d2, fo])
     ln = np.linalg.norm(nn, axis=1)
@@ -128,6 +129,20 @@ def _separating_planes(S: NDArray[np.float64], V: NDArray[np.float64], edges: ND
     return nn[first], dd[first]
 
 
+_PLANES: dict[tuple, tuple[NDArray[np.float64], NDArray[np.float64]]] = {}
+
+
+def _planes_cached(S: NDArray[np.float64], pc: Any, scale: float) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+    """:func:`_separating_planes`, kept for the same source and piece (by content: repeated grids reuse them)."""
+    key = (S.tobytes(), pc.vertices.tobytes(), pc.edges.tobytes(), pc.normals.tobytes(), pc.offsets.tobytes(), scale)
+    hit = _PLANES.get(key)
+    if hit is None:
+        if len(_PLANES) > 4096:
+            _PLANES.clear()
+        hit = _PLANES[key] = _separating_planes(S, pc.vertices, pc.edges, pc.normals, pc.offsets, scale)
+    return hit
+
+
 class _PairTables:
     """Per (source polygon, piece): the separating planes, and the piece's half-spaces for the hiding test."""
 
@@ -148,7 +163,7 @@ class _PairTables:
                     self.kind[s, j] = 2
                     nn, dd = np.zeros((0, 3)), np.zeros(0)
                 else:
-                    nn, dd = _separating_planes(S, pc.vertices, pc.edges, pc.normals, pc.offsets, scale)
+                    nn, dd = _planes_cached(S, pc, scale)
                 planes_n.append(nn)
                 planes_d.append(dd)
                 self.poff[s * npc + j + 1] = self.poff[s * npc + j] + len(dd)
