@@ -1,16 +1,30 @@
-"""Exact illuminance (Lambert over the visible source) against Monte Carlo, in a room.
+"""Exact illuminance (Lambert over the visible source) against Monte Carlo and Mitsuba 3, in a room.
 
 The scene: a 4 x 4 m floor at z = 0, a 1.2 x 0.6 m luminaire at 2.8 m facing
-down, a table of five boxes (top and four legs). Floor grids of 41 x 41 and
-201 x 201 points.
+down, a table of five boxes (top and four legs). Floor grids of 41 x 41,
+201 x 201 and (without ``--quick``) 1001 x 1001 points.
 
-For each grid the script measures points per second of the exact method and
-of a compiled Monte Carlo estimator (jittered stratified samples over the
-source, exact ray-box occlusion) at the sample counts that reach 1 % and
-0.1 % RMS error against the exact values (RMS of the error over the RMS of the
-exact values, averaged over seeds; the count is searched over k x k grids),
-and the points per second where the source is fully visible (no occluders, and
-the lit points of the room).
+For each grid the script measures points per second of the exact method, of
+a compiled Monte Carlo estimator (jittered stratified samples over the
+source, exact ray-box occlusion) and of Mitsuba 3 (``llvm_ad_rgb``: the
+same room as Mitsuba shapes, each floor point's irradiance by Mitsuba's own
+emitter sampling with its visibility rays, its ``independent`` sampler; the
+``[bench]`` extra), at the sample counts that reach 1 % (Monte Carlo also
+0.1 %) RMS error against the exact values (RMS of the error over the RMS of
+the exact values, averaged over seeds), median times over repeats, and the
+ratios. Mitsuba's times include its kernel launches (its kernels are
+compiled by a first call that is not timed). Without Mitsuba (not
+installed, or its LLVM back end failing) its rows say why.
+
+Then the exact method class by class: the receivers the shadow volumes
+prove lit (Lambert's formula alone), in umbra (zero) and the rest
+(penumbra: the source clipped by the silhouettes), each timed on its own,
+with CPU time per point; and the points per second where the source is
+fully visible (no occluders).
+
+``--big``: a 10^7-point floor grid (3163 x 3163), its time and the process's
+peak memory (the receivers go through in chunks: the memory beyond the
+points and the results stays bounded).
 
 With ``--scale``: the same room whose table carries a CSG plate (a box with
 six spherical pockets, spheres at resolution 64) over the 201 x 201 floor,
@@ -20,14 +34,16 @@ reused), the convex pieces the receivers need (over all receiver groups), and
 points per second; and the plate alone (no table to hide it). ``--full`` adds
 the full convex decomposition of the plate (every piece, nothing left out).
 
-Run: ``python benchmarks/illuminance.py [--quick] [--scale [--full]]``.
+Run: ``python benchmarks/illuminance.py [--quick] [--big] [--scale [--full]]``.
 """
 
 from __future__ import annotations
 
 import argparse
 import math
+import resource
 import sys
+import time
 from pathlib import Path
 
 import numba
@@ -40,7 +56,7 @@ from _common import fmt_rate, fmt_seconds, median_time, print_table  # noqa: E40
 import isocsg  # noqa: E402
 from isocsg.shadows import AreaLight, illuminance, illuminance_and_state  # noqa: E402
 from isocsg.shadows import occluders as occluder_module  # noqa: E402
-from isocsg.shadows.direct import FEW_PIECES, receiver_tiles  # noqa: E402
+from isocsg.shadows.direct import CHUNK_POINTS, FEW_PIECES, receiver_tiles  # noqa: E402
 
 RADIANCE = 1000.0
 
@@ -140,6 +156,78 @@ def search_k(P, lamp, boxes, exact, target, seeds):
     return None, None
 
 
+def mitsuba_scene(lamp, boxes):
+    """The room as a Mitsuba 3 scene (llvm_ad_rgb), or the reason it cannot run here."""
+    try:
+        import drjit as dr
+        import mitsuba as mi
+
+        mi.set_variant("llvm_ad_rgb")
+    except (ImportError, AttributeError, RuntimeError) as exc:  # not installed, or no LLVM for its JIT
+        return None, f"Mitsuba 3 unavailable: {type(exc).__name__}: {exc}"
+    T = mi.ScalarTransform4f
+    v = lamp.vertices_array
+    c, half = v.mean(axis=0), 0.5 * (v.max(axis=0) - v.min(axis=0))
+    # Mitsuba's rectangle: [-1, 1]^2 in z = 0 emitting along +z; turned over to face down
+    d = {"type": "scene", "lamp": {
+        "type": "rectangle",
+        "to_world": T().translate(c.tolist()) @ T().scale([half[0], half[1], 1.0]) @ T().rotate([1, 0, 0], 180),
+        "emitter": {"type": "area", "radiance": {"type": "rgb", "value": float(lamp.radiance)}}}}
+    for k, b in enumerate(boxes):
+        lo, hi = np.asarray(b.bounds)
+        to_world = T().translate(((lo + hi) / 2).tolist()) @ T().scale(((hi - lo) / 2).tolist())
+        d[f"box{k}"] = {"type": "cube", "to_world": to_world}
+    try:
+        scene = mi.load_dict(d)
+        out = (scene, mi, dr)
+        mitsuba_irradiance(out, floor(3), 4, 0)
+    except (RuntimeError, ValueError, TypeError) as exc:
+        return None, f"Mitsuba 3 failed: {type(exc).__name__}: {exc}"
+    return out, ""
+
+
+def mitsuba_irradiance(ms, P, spp, seed, chunk_lanes=1 << 22):
+    """Irradiance at floor points (normal +z) by Mitsuba's emitter sampling, ``spp`` samples a point."""
+    scene, mi, dr = ms
+    out = np.empty(len(P))
+    step = max(1, chunk_lanes // spp)
+    for c0 in range(0, len(P), step):
+        Q = P[c0:c0 + step].astype(np.float32)
+        n = len(Q)
+        sampler = mi.load_dict({"type": "independent", "sample_count": spp})
+        sampler.seed(seed + c0, n * spp)
+        idx = dr.arange(mi.UInt32, n * spp) // spp
+        it = dr.zeros(mi.SurfaceInteraction3f)
+        it.p = dr.gather(mi.Point3f, mi.Point3f(Q[:, 0], Q[:, 1], Q[:, 2]), idx)
+        it.n = mi.Normal3f(0, 0, 1)
+        it.sh_frame = mi.Frame3f(it.n)
+        it.wi = mi.Vector3f(0, 0, 1)
+        ds, w = scene.sample_emitter_direction(it, sampler.next_2d(), True)
+        tot = dr.zeros(mi.Float, n)
+        dr.scatter_reduce(dr.ReduceOp.Add, tot, w.x * dr.maximum(ds.d.z, 0.0), idx)
+        out[c0:c0 + n] = np.array(tot, dtype=np.float64) / spp
+    return out
+
+
+def search_spp(ms, P, exact, target, seeds):
+    """Smallest sample count (powers of 2 and 1.5 x them) whose mean RMS error over seeds is <= target."""
+    for spp in sorted({int(b * 2**j) for j in range(0, 16) for b in (1, 1.5)}):
+        err = np.mean([rms_rel(mitsuba_irradiance(ms, P, spp, s), exact) for s in seeds])
+        if err <= target:
+            return spp, err
+    return None, None
+
+
+def cpu_time(fn, repeats):
+    """Median process CPU seconds of fn() (all threads)."""
+    ts = []
+    for _ in range(max(1, repeats)):
+        c0 = time.process_time()
+        fn()
+        ts.append(time.process_time() - c0)
+    return float(np.median(ts))
+
+
 def run(quick: bool) -> None:
     lamp, boxes = room()
     repeats = 3 if quick else 5
@@ -147,46 +235,91 @@ def run(quick: bool) -> None:
     # compile once
     illuminance(floor(3), [0, 0, 1], [lamp], boxes)
     mc(floor(3), lamp, boxes, 2, 0)
+    ms, why = mitsuba_scene(lamp, boxes)
     rows, ratio_rows = [], []
-    for m in (41, 201):
+    for m in (41, 201) if quick else (41, 201, 1001):
         P = floor(m)
         n = len(P)
+        grid = f"{m}x{m}"
         t_ex, (E, S) = median_time(lambda: illuminance_and_state(P, [0, 0, 1], [lamp], boxes), repeats)
-        rows.append((f"{m}x{m}", "exact", "-", "-", fmt_seconds(t_ex), fmt_rate(n, t_ex)))
-        for target in (1e-2, 1e-3):
+        c_ex = cpu_time(lambda: illuminance_and_state(P, [0, 0, 1], [lamp], boxes), repeats)
+        rows.append((grid, "exact (isocsg)", "-", "-", fmt_seconds(t_ex), fmt_rate(n, t_ex), fmt_rate(n, c_ex)))
+        for target in (1e-2,) if m > 201 else (1e-2, 1e-3):
             k, err = search_k(P, lamp, boxes, E, target, seeds)
             if k is None:
-                rows.append((f"{m}x{m}", f"MC {target:.1%}", "not reached", "-", "-", "-"))
+                rows.append((grid, f"MC {target:.1%}", "not reached", "-", "-", "-", "-"))
                 continue
             t_mc, _ = median_time(lambda: mc(P, lamp, boxes, k, 99), repeats)
-            rows.append((f"{m}x{m}", f"MC {target:.1%}", f"{k * k}", f"{err:.2%}",
-                         fmt_seconds(t_mc), fmt_rate(n, t_mc)))
-            ratio_rows.append((f"{m}x{m}", f"{target:.1%}", f"{t_mc / t_ex:.3g}x"))
+            c_mc = cpu_time(lambda: mc(P, lamp, boxes, k, 99), 1)
+            rows.append((grid, f"MC {target:.1%}", f"{k * k}", f"{err:.2%}",
+                         fmt_seconds(t_mc), fmt_rate(n, t_mc), fmt_rate(n, c_mc)))
+            ratio_rows.append((grid, f"Monte Carlo {target:.1%}", f"{t_mc / t_ex:.3g}x"))
+        if ms is None:
+            rows.append((grid, "Mitsuba 3 1.0%", why, "-", "-", "-", "-"))
+        else:
+            spp, err = search_spp(ms, P, E, 1e-2, seeds)
+            if spp is None:
+                rows.append((grid, "Mitsuba 3 1.0%", "not reached", "-", "-", "-", "-"))
+            else:
+                mitsuba_irradiance(ms, P, spp, 98)  # its kernels for this size compiled
+                t_mi, _ = median_time(lambda: mitsuba_irradiance(ms, P, spp, 99), repeats)
+                c_mi = cpu_time(lambda: mitsuba_irradiance(ms, P, spp, 99), 1)
+                rows.append((grid, "Mitsuba 3 1.0%", f"{spp}", f"{err:.2%}", fmt_seconds(t_mi), fmt_rate(n, t_mi),
+                             fmt_rate(n, c_mi)))
+                ratio_rows.append((grid, "Mitsuba 3 (llvm) 1.0%", f"{t_mi / t_ex:.3g}x"))
         counts = np.bincount(S, minlength=3)
-        rows.append((f"{m}x{m}", f"states lit/pen/umb {counts[0]}/{counts[1]}/{counts[2]}", "", "", "", ""))
+        rows.append((grid, f"states lit/pen/umb {counts[0]}/{counts[1]}/{counts[2]}", "", "", "", "", ""))
     print_table(
-        "Room: floor illuminance, exact vs Monte Carlo (median times)",
-        ["grid", "method", "samples", "RMS error", "time", "points/s"],
+        "Room: floor illuminance, exact vs Monte Carlo and Mitsuba 3 (median times; CPU: all threads)",
+        ["grid", "method", "samples", "RMS error", "time", "points/s", "points/CPU s"],
         rows,
     )
-    print_table("Speed-up of the exact method over Monte Carlo", ["grid", "MC accuracy", "MC time / exact time"],
+    print_table("Speed-up of the exact method", ["grid", "other method, accuracy", "its time / exact time"],
                 ratio_rows)
+    run_classes(lamp, boxes, repeats, quick)
 
-    # fully visible source
+
+def run_classes(lamp, boxes, repeats, quick):
+    """The exact method on the receivers of each class, and with no occluders."""
+    P = floor(1001 if not quick else 401)
+    _, S = illuminance_and_state(P, [0, 0, 1], [lamp], boxes)
+    rows = []
+    for label, sel in (("lit", S == 0), ("umbra", S == 2), ("penumbra", S == 1)):
+        Q = P[sel]
+        t, _ = median_time(lambda: illuminance_and_state(Q, [0, 0, 1], [lamp], boxes), repeats)
+        c = cpu_time(lambda: illuminance_and_state(Q, [0, 0, 1], [lamp], boxes), repeats)
+        rows.append((f"{label} floor points of the room", len(Q), fmt_seconds(t), fmt_rate(len(Q), t),
+                     f"{c / len(Q) * 1e9:.0f}"))
     nfull = 200_000 if quick else 1_000_000
-    P = np.c_[np.random.default_rng(0).uniform(-2, 2, (nfull, 2)), np.zeros(nfull)]
-    t_free, _ = median_time(lambda: illuminance(P, [0, 0, 1], [lamp]), repeats)
-    P201 = floor(201)
-    _, S = illuminance_and_state(P201, [0, 0, 1], [lamp], boxes)
-    lit = P201[S == 0]
-    t_lit, _ = median_time(lambda: illuminance(lit, [0, 0, 1], [lamp], boxes), repeats)
+    Q = np.c_[np.random.default_rng(0).uniform(-2, 2, (nfull, 2)), np.zeros(nfull)]
+    t, _ = median_time(lambda: illuminance(Q, [0, 0, 1], [lamp]), repeats)
+    c = cpu_time(lambda: illuminance(Q, [0, 0, 1], [lamp]), repeats)
+    rows.append(("no occluders", nfull, fmt_seconds(t), fmt_rate(nfull, t), f"{c / nfull * 1e9:.0f}"))
     print_table(
-        "Fully visible source",
-        ["case", "points", "time", "points/s"],
-        [
-            ("no occluders", nfull, fmt_seconds(t_free), fmt_rate(nfull, t_free)),
-            ("lit floor points of the room (table present)", len(lit), fmt_seconds(t_lit), fmt_rate(len(lit), t_lit)),
-        ],
+        f"Exact method by class ({int(math.sqrt(len(P)))}^2 floor; states as the exact method reports them)",
+        ["receivers", "points", "time", "points/s", "CPU ns/point"],
+        rows,
+    )
+
+
+def run_big() -> None:
+    """A 10^7-point floor grid: time and peak memory (the receivers go through in chunks)."""
+    lamp, boxes = room()
+    illuminance(floor(3), [0, 0, 1], [lamp], boxes)
+    m = 3163
+    P = floor(m)
+    rss0 = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024
+    t0, c0 = time.perf_counter(), time.process_time()
+    E, S = illuminance_and_state(P, [0, 0, 1], [lamp], boxes)
+    t, c = time.perf_counter() - t0, time.process_time() - c0
+    rss1 = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024
+    arrays = (P.nbytes + E.nbytes + S.nbytes) / 2**20
+    print_table(
+        "10^7 receivers (floor grid 3163 x 3163)",
+        ["points", "time", "points/s", "points/CPU s", "peak RSS before", "peak RSS after",
+         "points + results", "chunk"],
+        [(len(P), fmt_seconds(t), fmt_rate(len(P), t), fmt_rate(len(P), c), f"{rss0:.0f} MiB", f"{rss1:.0f} MiB",
+          f"{arrays:.0f} MiB", f"{CHUNK_POINTS} points")],
     )
 
 
@@ -213,8 +346,6 @@ def pieces_used(P, lamp, occluders, resolution):
 
 
 def run_scale(quick: bool, full: bool) -> None:
-    import time
-
     lamp, boxes = room()
     plate = pocket_plate()
     res = 64
@@ -255,8 +386,11 @@ def main(argv: list[str] | None = None) -> None:
     ap.add_argument("--quick", action="store_true", help="fewer repeats and seeds")
     ap.add_argument("--scale", action="store_true", help="the room with a CSG plate on the table (201 x 201 floor)")
     ap.add_argument("--full", action="store_true", help="with --scale: also the full decomposition of the plate")
+    ap.add_argument("--big", action="store_true", help="a 10^7-point floor grid: time and peak memory")
     args = ap.parse_args(argv)
-    if args.scale:
+    if args.big:
+        run_big()
+    elif args.scale:
         run_scale(args.quick, args.full)
     else:
         run(args.quick)

@@ -33,12 +33,14 @@ from typing import Any, Protocol
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from .._validation import normalize_rows, points_array
 from ..errors import InvalidParameterError
 from ..kinds import DEFAULT_RESOLUTION, Solid
 from ..lighting.area import AreaLight, PolyhedronLight, as_light_list
 from ..lighting.luminaire import PhotometricLight
 from .lambert import _prepare, edge_terms
 from .occluders import ConvexPiece, occluder_list, shadow_pieces
+from .tiles import CLASS_EXACT, CLASS_LIT, CLASS_UMBRA, bounding_box, classify_receivers, lit_illuminance
 from .visibility import UMBRA_TOL, PieceArrays, SourceArrays, blockers_single, visible_illuminance
 
 
@@ -58,6 +60,7 @@ PENUMBRA = 1
 UMBRA = 2
 
 FEW_PIECES = 32  # up to this many pieces every receiver sees them all
+CHUNK_POINTS = 1 << 20  # receivers evaluated together (bounds the memory beyond the results)
 TILE_POINTS = 2500  # otherwise receivers per group that gets its own occluder pieces
 MAX_TILES = 16
 
@@ -70,6 +73,36 @@ def _sources(lights: list[AreaLight | PolyhedronLight]) -> SourceArrays:
             rads.append(light.radiance)
             groups.append(g)
     return SourceArrays(polys, rads, groups)
+
+
+class _Normals:
+    """The receivers' normals, one for all or one a row, normalised chunk by chunk (no full copy)."""
+
+    def __init__(self, raw: NDArray[np.float64], count: int) -> None:
+        self.raw, self.count = raw, count
+
+    def chunk(self, sl: slice) -> NDArray[np.float64]:
+        """Unit normals of the receivers ``sl``: one row for all of them when a single normal was given."""
+        if len(self.raw) == 1 and self.count != 1:
+            return normalize_rows(self.raw)
+        return normalize_rows(np.ascontiguousarray(self.raw[sl]))
+
+
+def _rows(n: NDArray[np.float64], idx: NDArray[np.int64]) -> NDArray[np.float64]:
+    """The normals of receivers ``idx`` (``n`` has a row a receiver, or one row for all)."""
+    return np.ascontiguousarray(np.broadcast_to(n, (len(idx), 3))) if len(n) == 1 else n[idx]
+
+
+def _receivers(points: ArrayLike, normals: ArrayLike) -> tuple[NDArray[np.float64], _Normals]:
+    """Points and normals validated as :func:`~isocsg.shadows.lambert._prepare` does, normals kept lazy."""
+    p = points_array("points", points, error=InvalidParameterError)
+    n = points_array("normals", normals, error=InvalidParameterError)
+    if n.shape != p.shape and not (n.shape[0] == 1 and p.shape[0] != 1):
+        raise InvalidParameterError(f"normals must have the shape of points {p.shape}, got {n.shape}")
+    zero = np.linalg.norm(n, axis=1) <= 1e-300
+    if np.any(zero):
+        raise InvalidParameterError(f"normals must be non-zero, row {int(np.argmax(zero))} is zero")
+    return p, _Normals(n, len(p))
 
 
 def _split_lights(lights: Any) -> tuple[list[AreaLight | PolyhedronLight], list[PhotometricLight]]:
@@ -161,10 +194,12 @@ def illuminance_and_state(
     >>> np.round(e, 4).tolist(), s.tolist()
     ([0.0, 0.0326], [2, 0])
     """
-    p, n = _prepare(points, normals)
+    p, n = _receivers(points, normals)
     light_list, luminaires = _split_lights(lights)
     solids = occluder_list(occluders, resolution)
-    if luminaires:  # point luminaires: hard shadows (shadows/pointsource.py), added to the area sources
+    if luminaires:
+        # point luminaires: hard shadows (shadows/pointsource.py), added to the area sources
+        p, nfull = _prepare(points, normals)
         from .pointsource import point_illuminance_and_state
 
         ext0 = [p, *(np.asarray(lu.position)[None, :] for lu in luminaires)]
@@ -172,40 +207,78 @@ def illuminance_and_state(
         ext0 += [np.asarray(q) for li in light_list for q in li.emitting_polygons()]
         all0 = np.vstack(ext0)
         scale0 = float(max(np.max(np.ptp(all0, axis=0)), np.max(np.abs(all0)), 1e-300))
-        E_pt, s_pt = point_illuminance_and_state(p, n, luminaires, solids, resolution=resolution, scale=scale0)
+        E_pt, s_pt = point_illuminance_and_state(p, nfull, luminaires, solids, resolution=resolution, scale=scale0)
         if not light_list:
             return E_pt, s_pt
-        E_ar, s_ar = illuminance_and_state(p, n, light_list, solids, resolution=resolution)
+        E_ar, s_ar = illuminance_and_state(p, nfull, light_list, solids, resolution=resolution)
         return E_pt + E_ar, np.maximum(s_pt, s_ar)
     sources = _sources(light_list)
-    ext = [p, sources.verts] + [np.asarray(o.bounds, dtype=np.float64) for o in solids]
+    ext = [np.vstack(bounding_box(p)) if len(p) else p, sources.verts]
+    ext += [np.asarray(o.bounds, dtype=np.float64) for o in solids]
     allpts = np.vstack(ext)
     scale = float(max(np.max(np.ptp(allpts, axis=0)), np.max(np.abs(allpts)), 1e-300))
+    E = np.zeros(len(p))
+    state = np.zeros(len(p), dtype=np.int8)
+    # Chunks of receivers, each on its own: the memory beyond the results stays bounded.
+    for c0 in range(0, max(len(p), 1), CHUNK_POINTS):
+        sl = slice(c0, c0 + CHUNK_POINTS)
+        E[sl], state[sl] = _area_sources(p[sl], n.chunk(sl), sources, solids, resolution, scale)
+    return E, state
+
+
+def _area_sources(
+    p: NDArray[np.float64], n: NDArray[np.float64], sources: SourceArrays, solids: list[Solid], resolution: int,
+    scale: float,
+) -> tuple[NDArray[np.float64], NDArray[np.int8]]:
+    """Illuminance and state of one chunk of receivers from the area and polyhedron sources.
+
+    ``n`` has a row a receiver, or a single row for all.
+    """
     # The pieces the receivers' bounding box needs; when they are many, each group of nearby
-    # receivers gets its own (fewer) pieces. One compiled pass for all.
-    whole = shadow_pieces(solids, p, sources.verts, resolution=resolution, scale=scale) if solids else []
-    tiles = receiver_tiles(p) if len(whole) > FEW_PIECES else [np.arange(len(p), dtype=np.int64)]
+    # receivers gets its own (fewer) pieces.
+    box = np.vstack(bounding_box(p)) if len(p) else p
+    whole = shadow_pieces(solids, box, sources.verts, resolution=resolution, scale=scale) if solids and len(p) else []
+    groups = receiver_tiles(p) if len(whole) > FEW_PIECES else [np.arange(len(p), dtype=np.int64)]
     ids: dict[int, int] = {}
     pieces: list[ConvexPiece] = []
-    group = np.zeros(len(p), dtype=np.int64)
-    g_off, g_idx = [0], []
-    for t, idx in enumerate(tiles):
-        group[idx] = t
-        if len(tiles) == 1:
-            own = whole
-        else:
-            own = shadow_pieces(solids, p[idx], sources.verts, resolution=resolution, scale=scale)
+    own_ids = []
+    for idx in groups:
+        own = whole if len(groups) == 1 else shadow_pieces(
+            solids, np.vstack(bounding_box(p[idx])), sources.verts, resolution=resolution, scale=scale)
+        own_ids.append(np.array([ids.setdefault(id(pc), len(ids)) for pc in own], dtype=np.int64))
         for pc in own:
-            g_idx.append(ids.setdefault(id(pc), len(pieces)))
-            if g_idx[-1] == len(pieces):
+            if ids[id(pc)] == len(pieces):
                 pieces.append(pc)
-        g_off.append(len(g_idx))
-    pa = PieceArrays(pieces)
-    groups = (group, np.asarray(g_off, dtype=np.int64), np.asarray(g_idx, dtype=np.int64))
-    E, state, overflow = visible_illuminance(p, n, sources, pa, scale, groups)
-    for i in np.nonzero(overflow)[0]:
-        sel = groups[2][groups[1][group[i]] : groups[1][group[i] + 1]]
-        E[i], state[i] = _fallback_point(p[i], n[i], sources, pa, scale, sel)
+    E = np.zeros(len(p))
+    state = np.zeros(len(p), dtype=np.int8)
+    if len(p) == 0 or len(sources.radiance) == 0:
+        return E, state
+    # Receivers classified by the shadow volumes (shadows/tiles.py): lit ones take Lambert's
+    # formula alone, umbra ones nothing; the rest are clipped against the pieces their tile needs.
+    lit_parts, exact_parts, tile_of, t_off, t_idx = [], [], [], [0], []
+    for idx, own_idx in zip(groups, own_ids):
+        rc = classify_receivers(p if len(groups) == 1 else p[idx], sources, [pieces[k] for k in own_idx], scale)
+        lit_parts.append(idx[rc.cls == CLASS_LIT])
+        state[idx[rc.cls == CLASS_UMBRA]] = UMBRA
+        ex = rc.cls == CLASS_EXACT
+        if not np.any(ex):
+            continue
+        tiles_used, local = np.unique(rc.tile[ex], return_inverse=True)
+        exact_parts.append(idx[ex])
+        tile_of.append(local + len(t_off) - 1)
+        for t in tiles_used:
+            t_idx.extend(own_idx[rc.needed[t]].tolist())
+            t_off.append(len(t_idx))
+    lit_illuminance(p, n, np.concatenate(lit_parts), sources, scale, E, state)
+    if exact_parts:
+        ex_idx = np.concatenate(exact_parts)
+        pa = PieceArrays(pieces)
+        tiles = (np.concatenate(tile_of), np.asarray(t_off, dtype=np.int64), np.asarray(t_idx, dtype=np.int64))
+        Ex, Sx, overflow = visible_illuminance(p[ex_idx], _rows(n, ex_idx), sources, pa, scale, tiles)
+        for i in np.nonzero(overflow)[0]:
+            sel = tiles[2][tiles[1][tiles[0][i]] : tiles[1][tiles[0][i] + 1]]
+            Ex[i], Sx[i] = _fallback_point(p[ex_idx[i]], n[0 if len(n) == 1 else ex_idx[i]], sources, pa, scale, sel)
+        E[ex_idx], state[ex_idx] = Ex, Sx
     return E, state
 
 

@@ -183,15 +183,13 @@ def _cross(o0: float, o1: float, a0: float, a1: float, b0: float, b1: float) -> 
 
 
 @numba.njit(cache=True)
-def _order_xy(pts: np.ndarray, n: int) -> np.ndarray:
+def _order_xy(pts: np.ndarray, n: int, o: np.ndarray, t: np.ndarray) -> np.ndarray:
     """Indices of pts[:n] by x, then y, then index: a stable bottom-up merge sort.
 
     The order of two stable argsorts (by y, then by x), written out: numba's
     generic argsort took 2 s of the kernel's compilation.
     """
-    o = np.empty(n, dtype=np.int64)
-    t = np.empty(n, dtype=np.int64)
-    for k in range(n):
+    for k in range(n):  # o and t: scratch of at least n entries (allocating them per call cost 10 % of the kernel)
         o[k] = k
     width = 1
     while width < n:
@@ -215,11 +213,11 @@ def _order_xy(pts: np.ndarray, n: int) -> np.ndarray:
 
 
 @numba.njit(cache=True)
-def _hull(pts: np.ndarray, n: int, hull: np.ndarray) -> int:
+def _hull(pts: np.ndarray, n: int, hull: np.ndarray, order: np.ndarray) -> int:
     """Counter-clockwise convex hull (Andrew's monotone chain) of pts[:n]; returns its size."""
     if n < 3:
         return 0
-    o = _order_xy(pts, n)
+    o = _order_xy(pts, n, order[0], order[1])
     k = 0
     for ii in range(n):
         i = o[ii]
@@ -299,7 +297,7 @@ def _source_polygon(p, nr, s, s_verts, s_off, s_normal, s_u, s_w, s_q0, scale, P
 
 @numba.njit(cache=True)
 def _blockers(p, nr, s, h, P2, n2, A0, s_normal, s_u, s_w, s_q0,
-              v_verts, v_voff, v_edges, v_eoff, v_center, v_radius, sel, pts, hull, tmp, blk, blk_n):
+              v_verts, v_voff, v_edges, v_eoff, v_center, v_radius, sel, pts, hull, order, tmp, blk, blk_n):
     """Blocked convex pieces (of the pieces listed in ``sel``) C_V = S_p n B_V.
 
     Returns their count (-1 when more than MAXB).
@@ -388,7 +386,7 @@ def _blockers(p, nr, s, h, P2, n2, A0, s_normal, s_u, s_w, s_q0,
                     pts[npt, 0] = px + (xu - px) * f
                     pts[npt, 1] = py + (xw - py) * f
                     npt += 1
-        nh = _hull(pts, npt, hull)
+        nh = _hull(pts, npt, hull, order)
         if nh < 3:
             continue
         if nb >= blk.shape[0]:
@@ -405,7 +403,7 @@ def _blockers(p, nr, s, h, P2, n2, A0, s_normal, s_u, s_w, s_q0,
 @numba.njit(cache=True)
 def _evaluate(p, nr, s, s_verts, s_off, s_normal, s_u, s_w, s_q0, scale,
               v_verts, v_voff, v_edges, v_eoff, v_center, v_radius, sel,
-              P2, pts, hull, tmp, blk, blk_n, stk, stk_n, stk_next):
+              P2, pts, hull, order, tmp, blk, blk_n, stk, stk_n, stk_next):
     """(edge sum of the visible part, status) for one point and one source polygon."""
     n2, h, A0 = _source_polygon(p, nr, s, s_verts, s_off, s_normal, s_u, s_w, s_q0, scale, P2)
     if n2 == 0 or A0 <= 0.0:
@@ -415,7 +413,7 @@ def _evaluate(p, nr, s, s_verts, s_off, s_normal, s_u, s_w, s_q0, scale,
     w = s_w[s]
     efull = _lambert2(P2, n2, p, nr, q0, u, w)
     nb = _blockers(p, nr, s, h, P2, n2, A0, s_normal, s_u, s_w, s_q0,
-                   v_verts, v_voff, v_edges, v_eoff, v_center, v_radius, sel, pts, hull, tmp, blk, blk_n)
+                   v_verts, v_voff, v_edges, v_eoff, v_center, v_radius, sel, pts, hull, order, tmp, blk, blk_n)
     if nb < 0:
         return 0.0, ST_OVERFLOW
     if nb == 0:
@@ -470,6 +468,7 @@ def _kernel(P, NR, s_verts, s_off, s_normal, s_u, s_w, s_q0, s_L, s_group, ngrou
     P2 = np.empty((vmax, 2))
     pts = np.empty((maxpts, 2))
     hull = np.empty((maxpts + 1, 2))
+    order = np.empty((2, maxpts), dtype=np.int64)
     tmp = np.empty((vmax, 2))
     blk = np.empty((MAXB, vmax, 2))
     blk_n = np.empty(MAXB, dtype=np.int64)
@@ -488,7 +487,7 @@ def _kernel(P, NR, s_verts, s_off, s_normal, s_u, s_w, s_q0, s_L, s_group, ngrou
             for s in range(ns):
                 val, st = _evaluate(p, nr, s, s_verts, s_off, s_normal, s_u, s_w, s_q0, scale,
                                     v_verts, v_voff, v_edges, v_eoff, v_center, v_radius, sel,
-                                    P2, pts, hull, tmp, blk, blk_n, stk, stk_n, stk_next)
+                                    P2, pts, hull, order, tmp, blk, blk_n, stk, stk_n, stk_next)
                 if st == ST_OVERFLOW:
                     overflow[i] = True
                     continue
@@ -633,6 +632,7 @@ def _single(p, nr, s, s_verts, s_off, s_normal, s_u, s_w, s_q0, scale,
     P2 = np.empty((vmax, 2))
     pts = np.empty((maxpts, 2))
     hull = np.empty((maxpts + 1, 2))
+    order = np.empty((2, maxpts), dtype=np.int64)
     tmp = np.empty((vmax, 2))
     blk = np.empty((maxb, vmax, 2))
     blk_n = np.zeros(maxb, dtype=np.int64)
@@ -640,7 +640,7 @@ def _single(p, nr, s, s_verts, s_off, s_normal, s_u, s_w, s_q0, scale,
     if n2 == 0 or A0 <= 0.0:
         return P2[:0].copy(), blk[:0].copy(), blk_n[:0].copy()
     nb = _blockers(p, nr, s, h, P2, n2, A0, s_normal, s_u, s_w, s_q0,
-                   v_verts, v_voff, v_edges, v_eoff, v_center, v_radius, sel, pts, hull, tmp, blk, blk_n)
+                   v_verts, v_voff, v_edges, v_eoff, v_center, v_radius, sel, pts, hull, order, tmp, blk, blk_n)
     return P2[:n2].copy(), blk[:max(nb, 0)].copy(), blk_n[:max(nb, 0)].copy()
 
 
