@@ -25,12 +25,6 @@ import numpy as np
 from .._cache import ByteCache
 from .._workers import Cancelled, background, checkpoint, raise_if_cancelled
 from ..csg.program import Program
-from ..csg.surface import (
-    BYTES_PER_BOOLEAN_TRIANGLE,
-    _release_freed_memory,
-    surface_from_bands,
-    untrimmed_groups,
-)
 from ..errors import InvalidGeometryError, ResourceLimitError
 from ..kinds import Primitive
 from ..laminae.model import BandMesh
@@ -168,6 +162,8 @@ class SurfaceBuilds:
         self, key: Hashable, program: Program, bands: tuple[BandMesh, ...], view_dependent: bool = False,
     ) -> Parts | None:
         """Build (and keep, for view-independent bands) one clipped surface."""
+        from ..csg.surface import surface_from_bands  # manifold3d's side: loaded by the first surface only
+
         try:
             raise_if_cancelled()  # (a build on the view's own path must not wait for views)
             try:
@@ -213,6 +209,8 @@ class SurfaceBuilds:
     def _build_large_locked(
         self, key: Hashable, program: Program, lights: Sequence[Any], material: Any, detail: TreeDetail, eye: Any,
     ) -> None:
+        from ..csg.surface import _release_freed_memory, surface_from_bands
+
         try:
             bands, held = self._large_bands(program, lights, material, detail, eye)
             checkpoint()
@@ -242,6 +240,8 @@ class SurfaceBuilds:
     ) -> tuple[list[BandMesh], int]:
         """A large tree's bands for its trimmed surface and their bytes, or
         :class:`~isocsg.errors.ResourceLimitError` as soon as they are bound to pass the share."""
+        from ..csg.surface import BYTES_PER_BOOLEAN_TRIANGLE, untrimmed_groups
+
         leaves = program.leaves
         # Leaves that no trim can shrink first, Boolean by Boolean: a tree whose
         # untrimmable part alone is over the bound (a union of many overlapping
