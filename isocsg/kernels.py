@@ -383,7 +383,6 @@ def render_path(path: str) -> None:
     from dataclasses import replace
 
     from ._jit import use
-
     from .scene.io import builtin_scene_path, load_scene
 
     path_kernels(path)
