@@ -74,8 +74,9 @@ def mode() -> str:
 def use(choice: str) -> Iterator[None]:
     """Run the block with kernels chosen as ``choice`` (one of ``auto``, ``numba``, ``python``).
 
-    Tests compare the two paths in one process: ``python`` runs no compiled
-    kernel, ``numba`` no Python one.
+    Tests compare the paths in one process: ``python`` runs no compiled kernel, ``numba`` no
+    Python one, and ``auto`` starts as a new process does (no kernel compiled yet: small inputs
+    run as Python until a large one compiles its kernel).
 
     Examples
     --------
@@ -86,13 +87,16 @@ def use(choice: str) -> Iterator[None]:
     if choice not in MODES:
         raise InvalidParameterError(f"choice must be one of {', '.join(MODES)}, got {choice!r}")
     with _LOCK:
-        before = mode()
+        before, was_engaged = mode(), _state["engaged"]
         _state["mode"] = choice
+        if choice == "auto":
+            _state["engaged"] = False
     try:
         yield
     finally:
         with _LOCK:
             _state["mode"] = before
+            _state["engaged"] = was_engaged or _state["engaged"]
 
 
 def engaged() -> bool:
@@ -110,6 +114,8 @@ def on_first_compile(hook: Callable[[], object]) -> None:
 
 
 def _engage() -> None:
+    if _state["engaged"]:
+        return
     with _LOCK:
         if _state["engaged"]:
             return
@@ -159,8 +165,8 @@ class LazyKernel:
     @property
     def dispatcher(self) -> Any:
         """numba's dispatcher of this kernel (imports numba; the first one in a process runs the hooks)."""
+        _engage()
         if self._dispatcher is None:
-            _engage()
             with _LOCK:
                 if self._dispatcher is None:
                     import numba
@@ -191,14 +197,9 @@ class LazyKernel:
         return work <= (JIT_TWIN_WORK if self._twin is not None else JIT_PYTHON_WORK)
 
     def __call__(self, *args: Any) -> Any:
-        if self._dispatcher is not None or _state["engaged"]:
-            choice = _state["mode"] or mode()
-            if choice != "python":
-                return self.dispatcher(*args)
-        else:
-            choice = _state["mode"] or mode()
-            if choice == "numba" or (choice == "auto" and not self.small(*args)):
-                return self.dispatcher(*args)
+        choice = _state["mode"] or mode()
+        if choice == "numba" or (choice == "auto" and (_state["engaged"] or not self.small(*args))):
+            return self.dispatcher(*args)
         return self.python(*args)
 
     def compile(self, signature: Any) -> Any:

@@ -18,7 +18,7 @@ from __future__ import annotations
 import threading
 from collections.abc import Callable, Hashable, Sequence
 from concurrent.futures import Future, wait
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
@@ -34,6 +34,9 @@ from .detail import LeafDetail, TreeDetail
 from .meshes import PreparedMesh, SurfaceRuns, mesh_bytes, prepare_mesh
 from .tiles import hidden_box, leaf_geometry
 
+if TYPE_CHECKING:
+    from ..csg.surface import CSGSurface
+
 __all__ = ["SurfaceBuilds", "PENDING"]
 
 #: What :meth:`SurfaceBuilds.surface` returns while a surface is built in the background.
@@ -47,6 +50,14 @@ BandsOf = Callable[[Primitive, Sequence[Any], Any, LeafDetail, Any, Any], tuple[
 # (each may take its share of the budget).
 _SURFACE_LOCK = threading.Lock()
 _LARGE_LOCK = threading.Lock()
+
+
+def surface_from_bands(program: Program, bands: Sequence[BandMesh], **options: Any) -> CSGSurface:
+    """:func:`isocsg.csg.surface.surface_from_bands`, its package imported by the first clipped surface
+    (a render without one loads none of it)."""
+    from ..csg.surface import surface_from_bands as build
+
+    return build(program, bands, **options)
 
 
 class SurfaceBuilds:
@@ -162,8 +173,6 @@ class SurfaceBuilds:
         self, key: Hashable, program: Program, bands: tuple[BandMesh, ...], view_dependent: bool = False,
     ) -> Parts | None:
         """Build (and keep, for view-independent bands) one clipped surface."""
-        from ..csg.surface import surface_from_bands  # manifold3d's side: loaded by the first surface only
-
         try:
             raise_if_cancelled()  # (a build on the view's own path must not wait for views)
             try:
@@ -209,7 +218,7 @@ class SurfaceBuilds:
     def _build_large_locked(
         self, key: Hashable, program: Program, lights: Sequence[Any], material: Any, detail: TreeDetail, eye: Any,
     ) -> None:
-        from ..csg.surface import _release_freed_memory, surface_from_bands
+        from ..csg.surface import _release_freed_memory
 
         try:
             bands, held = self._large_bands(program, lights, material, detail, eye)
