@@ -19,7 +19,10 @@ Calling it runs, in this order of choice:
    :data:`isocsg.limits.JIT_PYTHON_WORK`, or :data:`isocsg.limits.JIT_TWIN_WORK`
    for a twin;
 3. else numba is imported and the kernel compiled (or read from numba's disk
-   cache), and every later call of every kernel takes path 1.
+   cache), and every later call of every kernel takes path 1. So it is too once
+   the process has spent :data:`isocsg.limits.JIT_PYTHON_SECONDS` of CPU time in
+   Python runs of kernels (a model of many small leaves: each call is small, their
+   sum is not).
 
 A new process drawing a small model therefore never imports numba: numba's
 import and its first dispatch cost about a second of CPU time, OpenSCAD's whole
@@ -40,12 +43,13 @@ from __future__ import annotations
 import functools
 import os
 import threading
+import time
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager
 from typing import Any, TypeVar
 
 from .errors import InvalidParameterError
-from .limits import JIT_PYTHON_WORK, JIT_TWIN_WORK
+from .limits import JIT_PYTHON_SECONDS, JIT_PYTHON_WORK, JIT_TWIN_WORK
 
 __all__ = ["LazyKernel", "njit", "prange", "use", "mode", "engaged", "on_first_compile"]
 
@@ -57,7 +61,8 @@ prange = range
 MODES = ("auto", "numba", "python")
 _LOCK = threading.RLock()
 _HOOKS: list[Callable[[], object]] = []
-_state = {"engaged": False, "mode": ""}
+_state: dict[str, Any] = {"engaged": False, "mode": "", "spent": 0.0}
+_local = threading.local()  # how deep in Python runs of kernels this thread is
 
 
 def mode() -> str:
@@ -87,16 +92,17 @@ def use(choice: str) -> Iterator[None]:
     if choice not in MODES:
         raise InvalidParameterError(f"choice must be one of {', '.join(MODES)}, got {choice!r}")
     with _LOCK:
-        before, was_engaged = mode(), _state["engaged"]
+        before, was_engaged, spent = mode(), _state["engaged"], _state["spent"]
         _state["mode"] = choice
         if choice == "auto":
-            _state["engaged"] = False
+            _state["engaged"], _state["spent"] = False, 0.0
     try:
         yield
     finally:
         with _LOCK:
             _state["mode"] = before
             _state["engaged"] = was_engaged or _state["engaged"]
+            _state["spent"] = max(spent, _state["spent"])
 
 
 def engaged() -> bool:
@@ -182,14 +188,23 @@ class LazyKernel:
         return types.Dispatcher(self.dispatcher)
 
     def python(self, *args: Any) -> Any:
-        """Run the NumPy twin, or else the Python function, whatever the input's size."""
+        """Run the NumPy twin, or else the Python function, whatever the input's size; the CPU
+        time of outermost runs is added to the process's Python time (``JIT_PYTHON_SECONDS``)."""
         func = self._twin if self._twin is not None else self.py_func
-        if self._quiet:  # numba's error_model="numpy": a division by zero gives inf, silently
-            import numpy as np
+        depth = getattr(_local, "depth", 0)
+        _local.depth = depth + 1
+        start = time.thread_time()
+        try:
+            if self._quiet:  # numba's error_model="numpy": a division by zero gives inf, silently
+                import numpy as np
 
-            with np.errstate(all="ignore"):
-                return func(*args)
-        return func(*args)
+                with np.errstate(all="ignore"):
+                    return func(*args)
+            return func(*args)
+        finally:
+            _local.depth = depth
+            if depth == 0:
+                _state["spent"] += time.thread_time() - start
 
     def small(self, *args: Any) -> bool:
         """Whether ``args`` are small enough to run without numba."""
@@ -198,7 +213,8 @@ class LazyKernel:
 
     def __call__(self, *args: Any) -> Any:
         choice = _state["mode"] or mode()
-        if choice == "numba" or (choice == "auto" and (_state["engaged"] or not self.small(*args))):
+        if choice == "numba" or (choice == "auto" and (
+                _state["engaged"] or _state["spent"] > JIT_PYTHON_SECONDS or not self.small(*args))):
             return self.dispatcher(*args)
         return self.python(*args)
 
