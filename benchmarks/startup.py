@@ -5,25 +5,32 @@ gives one)::
 
     xvfb-run -a python benchmarks/startup.py             # 5 repeats of each
     xvfb-run -a python benchmarks/startup.py --repeats 9
+    xvfb-run -a python benchmarks/startup.py --root /tmp/old   # another checkout's isocsg (before / after)
     python benchmarks/startup.py --import-only           # isocsg's imports only (python -X importtime)
 
-Each contender draws ``cube(1)`` at 512 x 512 to a PNG in a new process, the way a user's
-command does:
+Each contender draws a model at 512 x 512 to a PNG in a new process, the way a user's command
+does: ``cube(1)``, then OpenSCAD's own small examples (``examples/Basics/*.scad`` of its
+installation, those isocsg loads):
 
-- ``isocsg render cube.csg -o out.png`` (the command line; kernels already in numba's cache);
-- ``openscad --preview -o out.png cube.scad`` (OpenSCAD's preview: OpenCSG, no CGAL);
-- manifold3d + pyvista: a Python process that imports both, builds the cube and saves an
-  off-screen render.
+- ``isocsg render model.scad -o out.png`` (the command line, which runs ``openscad`` to read a
+  ``.scad`` file; kernels already in numba's cache, bytecode already written as an installed
+  package has it: ``PYTHONDONTWRITEBYTECODE`` is dropped for the child);
+- the same with ``ISOCSG_JIT=numba`` (every kernel compiled, as before :mod:`isocsg._jit`);
+- ``openscad --preview -o out.png model.scad`` (OpenSCAD's preview: OpenCSG, no CGAL);
+- for the cube, manifold3d + pyvista: a Python process that imports both, builds the cube and
+  saves an off-screen render.
 
 Printed: medians over the repeats of wall-clock and CPU seconds (user + system of the child
-process), and isocsg's ratio to each of the others (> 1: isocsg is slower). The machine's load
-shows in wall-clock times; CPU seconds are steadier. ``--import-only`` prints the modules that
-take most of isocsg's import time for the command (self time, from ``-X importtime``).
+process and its children), and isocsg's ratio to each of the others (> 1: isocsg is slower).
+The machine's load shows in wall-clock times; CPU seconds are steadier. ``--import-only`` prints
+the modules that take most of isocsg's import time for the command (self time, from
+``-X importtime``).
 """
 
 from __future__ import annotations
 
 import argparse
+import glob
 import os
 import resource
 import shutil
@@ -40,6 +47,7 @@ ROOT = Path(__file__).resolve().parent.parent
 
 CSG = "group() {\n  cube(size = [1, 1, 1], center = false);\n}\n"
 SCAD = "cube(1);\n"
+EXAMPLES = "/usr/share/openscad/examples/Basics"
 PEER = """
 import sys
 import manifold3d
@@ -55,11 +63,11 @@ plotter.close()
 """
 
 
-def timed(argv: list[str], env: dict[str, str]) -> tuple[float, float]:
-    """Wall-clock and CPU seconds (user + system) of one child process; raises if it fails."""
+def timed(argv: list[str], env: dict[str, str], cwd: str | None = None) -> tuple[float, float]:
+    """Wall-clock and CPU seconds (user + system) of one child process and its children; raises if it fails."""
     before = resource.getrusage(resource.RUSAGE_CHILDREN)
     t0 = time.perf_counter()
-    proc = subprocess.run(argv, env=env, capture_output=True, text=True)
+    proc = subprocess.run(argv, env=env, capture_output=True, text=True, cwd=cwd)
     wall = time.perf_counter() - t0
     after = resource.getrusage(resource.RUSAGE_CHILDREN)
     if proc.returncode != 0:
@@ -68,10 +76,10 @@ def timed(argv: list[str], env: dict[str, str]) -> tuple[float, float]:
     return wall, cpu
 
 
-def medians(argv: list[str], env: dict[str, str], repeats: int) -> tuple[float, float]:
+def medians(argv: list[str], env: dict[str, str], repeats: int, cwd: str | None = None) -> tuple[float, float]:
     """Median wall-clock and CPU seconds over ``repeats`` runs (after one run that warms disk caches)."""
-    timed(argv, env)
-    runs = [timed(argv, env) for _ in range(repeats)]
+    timed(argv, env, cwd)
+    runs = [timed(argv, env, cwd) for _ in range(repeats)]
     return statistics.median(r[0] for r in runs), statistics.median(r[1] for r in runs)
 
 
@@ -92,12 +100,48 @@ def import_profile(workdir: Path, env: dict[str, str], top: int = 25) -> None:
                 [[name, fmt_seconds(own / 1e6), fmt_seconds(total / 1e6)] for own, total, name in rows[:top]])
 
 
+def models(work: Path, env: dict[str, str], only: str | None) -> dict[str, Path]:
+    """``cube(1)`` and the examples isocsg loads (each tried once), by name."""
+    found = {"cube": work / "cube.scad"}
+    for path in sorted(glob.glob(os.path.join(EXAMPLES, "*.scad"))):
+        name = Path(path).stem
+        if only and name not in only.split(","):
+            continue
+        argv = [sys.executable, "-m", "isocsg", "render", path, "-o", str(work / "try.png"), "--no-progress"]
+        proc = subprocess.run(argv, env=env, capture_output=True, text=True, cwd=EXAMPLES)
+        if proc.returncode == 0:
+            found[name] = Path(path)
+        else:
+            print(f"{name}: left out ({(proc.stderr.strip().splitlines() or ['?'])[-1]})")
+    return found
+
+
+def contenders(model: Path, work: Path, cube: bool) -> dict[str, tuple[list[str], dict[str, str]]]:
+    """Command lines (and extra environment) that draw ``model``."""
+    isocsg = [sys.executable, "-m", "isocsg", "render", str(model), "-o", str(work / "isocsg.png"), "--no-progress"]
+    found = {"isocsg render": (isocsg, {}), "isocsg render, ISOCSG_JIT=numba": (isocsg, {"ISOCSG_JIT": "numba"})}
+    openscad = shutil.which("openscad")
+    display = bool(os.environ.get("DISPLAY"))
+    if openscad and display:
+        found["openscad --preview"] = ([openscad, "--preview", "--imgsize=512,512", "-o", str(work / "openscad.png"),
+                                        str(model)], {})
+    if display and cube:
+        found["manifold3d + pyvista"] = ([sys.executable, str(work / "peer.py"), str(work / "peer.png")], {})
+    return found
+
+
 def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--repeats", type=int, default=5)
     parser.add_argument("--import-only", action="store_true")
+    parser.add_argument("--root", type=Path, default=ROOT, help="the checkout whose isocsg is timed")
+    parser.add_argument("--models", help="comma-separated example names (default: every one that loads)")
     args = parser.parse_args()
-    env = dict(os.environ, PYTHONPATH=str(ROOT) + os.pathsep + os.environ.get("PYTHONPATH", ""))
+    env = {k: v for k, v in os.environ.items() if k not in ("PYTHONDONTWRITEBYTECODE", "ISOCSG_JIT")}
+    env["PYTHONPATH"] = str(args.root) + os.pathsep + os.environ.get("PYTHONPATH", "")
+    if not os.environ.get("DISPLAY"):
+        print("no display (DISPLAY unset): OpenSCAD's preview and pyvista not measured; run under xvfb-run -a\n")
+    rows = []
     with tempfile.TemporaryDirectory() as tmp:
         work = Path(tmp)
         (work / "cube.csg").write_text(CSG)
@@ -106,32 +150,20 @@ def main() -> int:
         import_profile(work, env)
         if args.import_only:
             return 0
-        contenders = {
-            "isocsg render (CLI)": [sys.executable, "-m", "isocsg", "render", str(work / "cube.csg"),
-                                    "-o", str(work / "isocsg.png"), "--no-progress"],
-        }
-        openscad = shutil.which("openscad")
-        display = bool(os.environ.get("DISPLAY"))
-        if openscad and display:
-            contenders["openscad --preview"] = [openscad, "--preview", "--imgsize=512,512", "-o",
-                                                str(work / "openscad.png"), str(work / "cube.scad")]
-        if display:
-            contenders["manifold3d + pyvista"] = [sys.executable, str(work / "peer.py"), str(work / "peer.png")]
-        results = {}
-        for name, argv in contenders.items():
-            try:
-                results[name] = medians(argv, env, args.repeats)
-            except (RuntimeError, OSError) as exc:
-                print(f"{name}: not measured ({exc})")
-        if not display:
-            print("no display (DISPLAY unset): OpenSCAD's preview and pyvista not measured; run under xvfb-run -a\n")
-    ours = results.get("isocsg render (CLI)")
-    rows = []
-    for name, (wall, cpu) in results.items():
-        ratio = "" if ours is None or name.startswith("isocsg") else f"{ours[0] / wall:.2f}x / {ours[1] / cpu:.2f}x"
-        rows.append([name, fmt_seconds(wall), fmt_seconds(cpu), ratio])
-    print_table(f"cube(1) at 512 x 512, first image of a new process (medians of {args.repeats})",
-                ["contender", "wall", "CPU", "isocsg / it (wall / CPU)"], rows)
+        for name, model in models(work, env, args.models).items():
+            results = {}
+            for who, (argv, extra) in contenders(model, work, name == "cube").items():
+                try:
+                    results[who] = medians(argv, {**env, **extra}, args.repeats, cwd=str(model.parent))
+                except (RuntimeError, OSError) as exc:
+                    print(f"{name}, {who}: not measured ({exc})")
+            ours = results.get("isocsg render")
+            for who, (wall, cpu) in results.items():
+                mine = ours is None or who == "isocsg render"
+                ratio = "" if mine else f"{ours[0] / wall:.2f}x / {ours[1] / cpu:.2f}x"
+                rows.append([name, who, fmt_seconds(wall), fmt_seconds(cpu), ratio])
+    print_table(f"first image of a new process at 512 x 512 (medians of {args.repeats}; isocsg from {args.root})",
+                ["model", "contender", "wall", "CPU", "isocsg / it (wall / CPU)"], rows)
     return 0
 
 

@@ -75,8 +75,9 @@ class Kernel:
         return f"{self.module}.{self.name}"
 
     def dispatcher(self) -> Any:
-        """The numba dispatcher (imports its module)."""
-        return getattr(importlib.import_module(self.module), self.name)
+        """The numba dispatcher (imports its module; a kernel declared with :func:`isocsg._jit.njit` gives its own)."""
+        found = getattr(importlib.import_module(self.module), self.name)
+        return getattr(found, "dispatcher", found)
 
     def signature(self) -> tuple[Any, ...]:
         """The argument types as numba types."""
@@ -195,6 +196,8 @@ def _callees(dispatcher: Any) -> set[str]:
     """``module.name`` of a kernel and of every compiled kernel it may call, read from the names its code uses."""
     from numba.core.registry import CPUDispatcher
 
+    from ._jit import LazyKernel
+
     seen: set[str] = set()
     todo = [dispatcher]
     while todo:
@@ -204,7 +207,11 @@ def _callees(dispatcher: Any) -> set[str]:
         if name in seen:
             continue
         seen.add(name)
-        todo.extend(g for g in (f.__globals__.get(n) for n in f.__code__.co_names) if isinstance(g, CPUDispatcher))
+        for g in (f.__globals__.get(n) for n in f.__code__.co_names):
+            if isinstance(g, LazyKernel):
+                todo.append(g.dispatcher)
+            elif isinstance(g, CPUDispatcher):
+                todo.append(g)
     return seen
 
 
@@ -371,26 +378,29 @@ def _record(path: str) -> list[dict[str, Any]]:
 
 
 def render_path(path: str) -> None:
-    """Render the built-in scene of ``path`` as the kernel listing was recorded (the demo at full size, or tiny)."""
+    """Render the built-in scene of ``path`` as the kernel listing was recorded (the demo at full size, or tiny),
+    every kernel compiled (:func:`isocsg._jit.use`: ``"numba"``), as a large model's render compiles them."""
     from dataclasses import replace
 
+    from ._jit import use
     from .scene.io import builtin_scene_path, load_scene
 
     path_kernels(path)
-    if path == "halftone":
-        from .shadows.halftone import render_halftone
+    with use("numba"):
+        if path == "halftone":
+            from .shadows.halftone import render_halftone
 
-        s = load_scene(builtin_scene_path("halftone"))
-        render_halftone(replace(s, camera=replace(s.camera, width=24, height=18)))
-        return
-    from .rendering import Renderer
+            s = load_scene(builtin_scene_path("halftone"))
+            render_halftone(replace(s, camera=replace(s.camera, width=24, height=18)))
+            return
+        from .rendering import Renderer
 
-    s = load_scene(builtin_scene_path("demo"))
-    if path == "surface":
-        small = replace(s, camera=replace(s.camera, width=48, height=36), render=replace(s.render, contours=8))
-        Renderer(csg="surface").render(small)
-    else:
-        Renderer().render(s)
+        s = load_scene(builtin_scene_path("demo"))
+        if path == "surface":
+            small = replace(s, camera=replace(s.camera, width=48, height=36), render=replace(s.render, contours=8))
+            Renderer(csg="surface").render(small)
+        else:
+            Renderer().render(s)
 
 
 def _main(argv: Sequence[str]) -> int:

@@ -97,3 +97,15 @@ def check_memory(what: str, nbytes: float) -> None:
             f"{what} needs about {nbytes / 1e9:.2f} GB, over the memory budget of {budget / 1e9:.2f} GB "
             "(isocsg.limits.set_memory_budget or ISOCSG_MEMORY_BUDGET)"
         )
+
+
+#: Kernels (:mod:`isocsg._jit`) run as plain Python, without numba, for inputs of at most this
+#: much work (loop iterations, about a microsecond each as Python): a small model's first image
+#: then never imports numba, whose import and first dispatch cost about a second of CPU time.
+JIT_PYTHON_WORK = 2048
+#: CPU seconds a process may spend running kernels as Python (each call small, many calls: a model of
+#: many leaves) before later calls compile; numba's import and first dispatch cost a second or more.
+JIT_PYTHON_SECONDS = 0.3
+#: The same bound for kernels with a vectorised NumPy twin (work: the elements the twin touches,
+#: tens of nanoseconds each).
+JIT_TWIN_WORK = 1 << 20

@@ -32,12 +32,14 @@ def _python(code: str, **env: str) -> str:
 _OBSERVE = """
 import json, sys
 from numba.core.registry import CPUDispatcher
+from isocsg._jit import LazyKernel
 from isocsg.kernels import render_path
 render_path({path!r})
 seen = {{}}
 for name, mod in list(sys.modules.items()):
     if name.startswith("isocsg"):
         for attr, d in vars(mod).items():
+            d = d._dispatcher if isinstance(d, LazyKernel) else d
             if isinstance(d, CPUDispatcher) and d.py_func.__module__ == name and d.signatures:
                 seen[name + "." + attr] = sorted(repr(tuple(s)) for s in d.signatures)
 print(json.dumps(seen))

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import argparse
 import dataclasses
+import functools
 import sys
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager
@@ -186,8 +187,16 @@ def compile_notice(kind: str, *, file: IO[str] | None = None) -> bool:
 
 
 def render_scene(scene: Scene, *, progress: ProgressCallback | None = None) -> Any:
-    """Render with the method the scene asks for (``render.mode``)."""
-    compile_notice("halftone" if scene.render.mode == "halftone" else "isoluminance")
+    """Render with the method the scene asks for (``render.mode``).
+
+    The kernels a new install lacks are compiled (:func:`compile_notice`) only when the render
+    first needs a compiled kernel: a small model's render runs its kernels without numba
+    (:mod:`isocsg._jit`) and compiles nothing.
+    """
+    from .._jit import on_first_compile
+
+    kind = "halftone" if scene.render.mode == "halftone" else "isoluminance"
+    on_first_compile(functools.partial(compile_notice, kind))
     if scene.render.mode == "halftone":
         from ..shadows.halftone import render_halftone
 

@@ -35,8 +35,9 @@ import os
 from typing import Any
 
 import numpy as np
-from numba import njit
 from numpy.typing import NDArray
+
+from .._jit import njit
 
 __all__ = ["BOX_PADDING", "LEAF_SIZE", "bvh_edge_crossing", "build_bvh", "bvh_ray_intervals", "bvh_nearest",
            "bvh_winding_parity"]

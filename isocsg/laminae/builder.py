@@ -31,10 +31,10 @@ from collections.abc import Sequence
 from typing import Any
 
 import numpy as np
-from numba import njit
 from numpy.typing import ArrayLike, NDArray
 
 from .._cache import ByteCache
+from .._jit import njit
 from .._validation import integer, vector3
 from ..bands.families import GRAZING, FieldFamily, diffuse_family, incidence, specular_families
 from ..bands.lights import light_axis

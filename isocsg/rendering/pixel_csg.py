@@ -13,9 +13,9 @@ from __future__ import annotations
 import functools
 
 import numpy as np
-from numba import njit
 from numpy.typing import NDArray
 
+from .._jit import njit
 from ..csg.program import evaluate_mask
 from . import policy
 from .jit import RAW

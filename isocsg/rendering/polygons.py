@@ -13,9 +13,9 @@ import math
 from typing import Any
 
 import numpy as np
-from numba import njit
 from numpy.typing import NDArray
 
+from .._jit import njit
 from .jit import RAW
 from .triangles import _fill_one
 
@@ -117,6 +117,24 @@ def _fill_span(
                 zr[j] = q
                 vr[j] = value32
             q += gx
+
+
+@_fill_span.twin
+def _fill_span_numpy(
+    zr: NDArray[np.float64], vr: NDArray[np.float32], tr: NDArray[np.int32], j0: int, j1: int, q: float, gx: float,
+    value32: np.float32, tag32: np.int32, front: bool,
+) -> None:
+    """:func:`_fill_span` vectorised (for small renders without numba): the keys summed one step
+    at a time as the loop does (``np.add.accumulate`` is sequential), so the same bits."""
+    steps = np.full(j1 - j0, gx)
+    steps[0] = q
+    keys = np.add.accumulate(steps)
+    old = zr[j0:j1]
+    hit = keys < old if front else keys > old
+    old[hit] = keys[hit]
+    vr[j0:j1][hit] = value32
+    if front and tag32 >= 0:
+        tr[j0:j1][hit] = tag32
 
 
 @njit(**RAW, error_model="numpy", inline="always")

@@ -5,9 +5,9 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from numba import njit
 from numpy.typing import ArrayLike, NDArray
 
+from .._jit import njit
 from ..errors import InvalidGeometryError, InvalidParameterError
 from ..laminae.halfedges import sorted_half_edges
 

@@ -18,19 +18,13 @@ from __future__ import annotations
 import threading
 from collections.abc import Callable, Hashable, Sequence
 from concurrent.futures import Future, wait
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
 from .._cache import ByteCache
 from .._workers import Cancelled, background, checkpoint, raise_if_cancelled
 from ..csg.program import Program
-from ..csg.surface import (
-    BYTES_PER_BOOLEAN_TRIANGLE,
-    _release_freed_memory,
-    surface_from_bands,
-    untrimmed_groups,
-)
 from ..errors import InvalidGeometryError, ResourceLimitError
 from ..kinds import Primitive
 from ..laminae.model import BandMesh
@@ -39,6 +33,9 @@ from . import policy
 from .detail import LeafDetail, TreeDetail
 from .meshes import PreparedMesh, SurfaceRuns, mesh_bytes, prepare_mesh
 from .tiles import hidden_box, leaf_geometry
+
+if TYPE_CHECKING:
+    from ..csg.surface import CSGSurface
 
 __all__ = ["SurfaceBuilds", "PENDING"]
 
@@ -53,6 +50,14 @@ BandsOf = Callable[[Primitive, Sequence[Any], Any, LeafDetail, Any, Any], tuple[
 # (each may take its share of the budget).
 _SURFACE_LOCK = threading.Lock()
 _LARGE_LOCK = threading.Lock()
+
+
+def surface_from_bands(program: Program, bands: Sequence[BandMesh], **options: Any) -> CSGSurface:
+    """:func:`isocsg.csg.surface.surface_from_bands`, its package imported by the first clipped surface
+    (a render without one loads none of it)."""
+    from ..csg.surface import surface_from_bands as build
+
+    return build(program, bands, **options)
 
 
 class SurfaceBuilds:
@@ -213,6 +218,8 @@ class SurfaceBuilds:
     def _build_large_locked(
         self, key: Hashable, program: Program, lights: Sequence[Any], material: Any, detail: TreeDetail, eye: Any,
     ) -> None:
+        from ..csg.surface import _release_freed_memory
+
         try:
             bands, held = self._large_bands(program, lights, material, detail, eye)
             checkpoint()
@@ -242,6 +249,8 @@ class SurfaceBuilds:
     ) -> tuple[list[BandMesh], int]:
         """A large tree's bands for its trimmed surface and their bytes, or
         :class:`~isocsg.errors.ResourceLimitError` as soon as they are bound to pass the share."""
+        from ..csg.surface import BYTES_PER_BOOLEAN_TRIANGLE, untrimmed_groups
+
         leaves = program.leaves
         # Leaves that no trim can shrink first, Boolean by Boolean: a tree whose
         # untrimmable part alone is over the bound (a union of many overlapping

@@ -25,9 +25,9 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 
 import numpy as np
-from numba import njit
 from numpy.typing import NDArray
 
+from .._jit import njit
 from ..camera import Camera
 from ..csg.program import combine_rects, prune_arrays
 from ..errors import InvalidGeometryError

@@ -13,9 +13,9 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from numba import njit
 from numpy.typing import NDArray
 
+from .._jit import njit
 from .jit import RAW
 
 __all__ = ["fill_kernel", "project_vertices"]

@@ -8,9 +8,9 @@ only closed meshes.
 from __future__ import annotations
 
 import numpy as np
-from numba import njit
 from numpy.typing import NDArray
 
+from ..._jit import njit
 from ...laminae.split import mesh_edges
 
 # Relative distance (to the mesh size) within which a vertex lies on an open edge.

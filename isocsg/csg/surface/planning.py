@@ -16,9 +16,9 @@ from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
-from numba import njit
 from numpy.typing import ArrayLike, NDArray
 
+from ..._jit import njit
 from ...errors import InvalidParameterError
 from ...laminae.model import BandMesh
 from ..program import OP_DIFFERENCE, OP_INTERSECTION, OP_UNION, Program
