@@ -68,7 +68,7 @@ FORMATS = (".stl", ".off", ".obj", ".3mf", ".dxf", ".dat", ".png")
 #: every node issue 22 added, each used by at least one model
 NEW_NODES = {
     "offset", "text", "hull", "minkowski", "rotate_extrude", "linear_extrude", "import", "surface", "polyhedron",
-    "color", "%", "*", "multmatrix", "polygon",
+    "color", "%", "*", "multmatrix", "polygon", "translate", "rotate", "scale", "mirror",
 }
 
 

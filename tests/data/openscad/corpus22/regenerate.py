@@ -48,6 +48,7 @@ CLASSES = {
     },
 }
 _NODE = re.compile(r"^\s*([%*!#]?)\s*([A-Za-z_]\w*)\s*\(")
+_CALL = re.compile(r"(?<![\w$\"])([A-Za-z_]\w*)\s*\(")
 _FN = re.compile(r"\$fn\s*=\s*([0-9.]+)")
 _MODIFIER = re.compile(r"(?:^|[;{}])\s*([%*])\s*[A-Za-z_]", re.M)
 
@@ -80,18 +81,19 @@ def nodes_and_class(model: Path) -> tuple[list[str], str]:
     """The ``.csg``'s node names and modifiers, and the tolerance class they imply."""
     names: set[str] = set()
     polygonal = True
-    for line in _csg_of(model).read_text().splitlines():
+    for line in _strip_comments(_csg_of(model).read_text()).splitlines():
         m = _NODE.match(line)
         if m is None:
             continue
-        name = m.group(2)
         if m.group(1) in "%*" and m.group(1):
             names.add(m.group(1))
-        names.add(name)
+        # a hand-written line may chain nodes: translate(...) rotate(...) cylinder(...)
         fn = _FN.search(line)
-        is_round = name in ROUND_NODES or (name == "offset" and re.search(r"\br\s*=", line) is not None)
-        if name == "text" or (is_round and (fn is None or not 3 <= float(fn.group(1)) <= FN_MAX)):
-            polygonal = False
+        for name in _CALL.findall(line):
+            names.add(name)
+            is_round = name in ROUND_NODES or (name == "offset" and re.search(r"\br\s*=", line) is not None)
+            if name == "text" or (is_round and (fn is None or not 3 <= float(fn.group(1)) <= FN_MAX)):
+                polygonal = False
     names.update(m.group(1) for m in _MODIFIER.finditer(_strip_comments(model.read_text())))
     names.discard("group")
     return sorted(names), "polygonal" if polygonal else "round"
