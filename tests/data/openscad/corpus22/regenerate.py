@@ -14,7 +14,9 @@ entries may also name models of the per-feature folders (``"file": "../revolve/d
 whose ``.csg`` exports those folders' own scripts keep. For each entry the script records:
 
 - ``stl_volume``: the volume (trimesh) of ``openscad --render -D '$fn=96' -o model.stl model``
-  (an explicit ``$fn`` in the model wins over ``-D``), and ``command``, that command;
+  (an explicit ``$fn`` in the model wins over ``-D``), and ``command``, that command; an entry's
+  ``"define_fn": false`` leaves ``-D`` out, for a model meant for OpenSCAD's default ``$fa`` and
+  ``$fs`` polygons (which isocsg then builds, such as a scaled extrusion of a default circle);
 - ``nodes``: the node names of the ``.csg`` (without ``group``), with the modifiers ``%`` and
   ``*`` of the model's text;
 - ``class``: ``polygonal`` when every round node (circle, sphere, cylinder, rotate_extrude,
@@ -58,16 +60,17 @@ def openscad_version() -> str:
     return (out.stdout + out.stderr).strip()
 
 
-def _command(model: Path) -> list[str]:
-    return ["openscad", "--render", "-D", f"$fn={FN}", "-o", f"{model.stem}.stl", model.name]
+def _command(model: Path, define_fn: bool = True) -> list[str]:
+    fn = ["-D", f"$fn={FN}"] if define_fn else []
+    return ["openscad", "--render", *fn, "-o", f"{model.stem}.stl", model.name]
 
 
-def _stl_volume(model: Path) -> float:
+def _stl_volume(model: Path, define_fn: bool = True) -> float:
     import trimesh
 
     with tempfile.TemporaryDirectory() as tmp:
         stl = Path(tmp) / f"{model.stem}.stl"
-        cmd = _command(model)
+        cmd = _command(model, define_fn)
         cmd[-2] = str(stl)
         subprocess.run(cmd, cwd=model.parent, capture_output=True, check=True, timeout=1800)
         return float(trimesh.load(stl, force="mesh").volume)
@@ -128,8 +131,9 @@ def regenerate(entry: dict[str, object], version: str) -> None:
         entry["command"] = f"trimesh.load({Path(str(ref)).name!r}).volume (OpenSCAD 2021.01 cannot import this format)"
         entry["class"] = "polygonal"
     else:
-        entry["stl_volume"] = _stl_volume(model)
-        entry["command"] = " ".join(c if c != f"$fn={FN}" else f"'$fn={FN}'" for c in _command(model))
+        define_fn = bool(entry.get("define_fn", True))
+        entry["stl_volume"] = _stl_volume(model, define_fn)
+        entry["command"] = " ".join(c if c != f"$fn={FN}" else f"'$fn={FN}'" for c in _command(model, define_fn))
     entry["openscad"] = version
 
 
