@@ -216,7 +216,7 @@ def test_extrusion_maps_the_plane() -> None:
 # ----------------------------------------------------------------------------- unsupported nodes
 
 UNSUPPORTED = [
-    ("hull", "hull() {\n  sphere(r = 1);\n  cube(size = 1);\n}"),
+    ("hull", "hull() {\n  sphere(r = 1);\n  multmatrix([[1, 0, 0, 3], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) cylinder(h = 2, r1 = 1, r2 = 1);\n}"),
     ("minkowski", "minkowski() {\n  cube(size = 1);\n  cylinder(h = 1, r1 = 0.1, r2 = 0);\n}"),
     ("roof", "linear_extrude(height = 1) {\n  roof() {\n    square(size = 1);\n  }\n}"),
     ("import", "linear_extrude(height = 1) {\n  import(file = \"part.eps\", layer = \"\", origin = [0, 0], scale = 1);\n}"),
@@ -271,7 +271,7 @@ def read_openscad_text(text: str):
 
 def test_skip_counts_add_up(tmp_path) -> None:
     text = (
-        "difference() {\n  cube(size = [3, 3, 3]);\n  hull() { sphere(r = 1); cube(size = 2); }\n  hull() { cube(size = 1); sphere(r = 0.5); }\n"
+        "difference() {\n  cube(size = [3, 3, 3]);\n  hull() { sphere(r = 1); multmatrix([[1, 0, 0, 2], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) cylinder(h = 1, r1 = 1, r2 = 1); }\n  hull() { sphere(r = 0.5); multmatrix([[1, 0, 0, 3], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) cylinder(h = 2, r1 = 1, r2 = 1); }\n"
         "  minkowski() { cube(size = 1); cylinder(h = 1, r1 = 1, r2 = 0); }\n}\n"
         "linear_extrude(height = 1, twist = 5) { multmatrix([[2, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) circle(r = 1); }\n"
     )
@@ -283,7 +283,7 @@ def test_skip_counts_add_up(tmp_path) -> None:
     with pytest.warns(OpenSCADSkipWarning, match=re.escape("skipped 4 unsupported OpenSCAD nodes: 2 hull, 1 linear_extrude, 1 minkowski")):
         isocsg.load_openscad(path, skip_unsupported=True)
     with pytest.raises(OpenSCADError, match=re.escape("the model is empty: nothing of it has a volume (skipped: 1 hull)")):
-        load("hull() { sphere(r = 1); cube(size = 1); }", skip_unsupported=True)
+        load("hull() { sphere(r = 1); multmatrix([[1, 0, 0, 3], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) cylinder(h = 2, r1 = 1, r2 = 1); }", skip_unsupported=True)
 
 
 # ----------------------------------------------------------------------------- files and the program
@@ -489,7 +489,7 @@ def test_cli_reports_unsupported_nodes(tmp_path, capsys) -> None:
     from isocsg.cli import main
 
     model = tmp_path / "part.csg"
-    model.write_text("cube(size = 1);\nhull() { sphere(r = 1); cube(size = 1); }\n")
+    model.write_text("cube(size = 1);\nhull() { sphere(r = 1); multmatrix([[1, 0, 0, 3], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) cylinder(h = 2, r1 = 1, r2 = 1); }\n")
     assert main(["render", str(model), "-o", str(tmp_path / "o.png"), "--no-progress"]) == 2
     assert f"isocsg render: error: {model}:2: hull() is not supported" in capsys.readouterr().err
     args = ["render", str(model), "-o", str(tmp_path / "o.png"), "--size", "32x32", "--no-progress", "--skip-unsupported"]
