@@ -553,3 +553,22 @@ def test_transforms():
     assert isinstance(t.mirror((1.0, 0.0, 0.0)), Torus)
     with pytest.raises(InvalidGeometryError, match="non-uniform scale"):
         t.scale((1.0, 2.0, 1.0))
+
+
+def test_openscad_six_digit_turns_keep_a_torus() -> None:
+    """OpenSCAD's .csg export writes rotate([0, 0, 30]) as a matrix of 6 digits (orthogonal to ~1e-6):
+    the torus under it loads, its volume Pappus' 2 pi^2 R r^2, its axis the turned one; a real
+    shear is still refused."""
+    import math as _math
+
+    import isocsg as _isocsg
+
+    c, s = 0.866025, 0.5  # as OpenSCAD 2021.01 prints cos 30 and sin 30
+    text = (f"multmatrix([[1, 0, 0, 0], [0, {c}, -{s}, 0], [0, {s}, {c}, 0], [0, 0, 0, 1]]) "
+            "rotate_extrude($fn = 0, $fa = 12, $fs = 2) translate([10, 0, 0]) circle(r = 2);")
+    solid = _isocsg.loads_openscad(text)
+    assert _math.isclose(_isocsg.volume(solid), 2 * _math.pi**2 * 10 * 2**2, rel_tol=1e-5)
+    assert np.allclose(solid.axis_array, [0, -0.5, 0.866025], atol=1e-6)
+    with pytest.raises(_isocsg.errors.OpenSCADError, match="non-uniform scale or shear"):
+        _isocsg.loads_openscad("multmatrix([[1, 0.001, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) "
+                               "rotate_extrude() translate([10, 0, 0]) circle(r = 2);")

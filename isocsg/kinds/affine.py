@@ -40,6 +40,7 @@ __all__ = [
     "mirror_matrix",
     "rotation_array",
     "similarity_factor",
+    "SIMILARITY_TOL_DIGITS",
 ]
 
 #: Largest accepted condition number (ratio of largest to smallest singular value) of the linear
@@ -49,6 +50,10 @@ MAX_CONDITION = 1e6
 #: Relative tolerance under which a linear map counts as a similarity (rotation, reflection,
 #: uniform scale) and a 3x3 matrix as a rotation.
 SIMILARITY_TOL = 1e-9
+#: The looser tolerance of kinds that only a similarity keeps (a torus): OpenSCAD writes matrices
+#: with 6 significant digits, so its turns are orthogonal only to about 1e-6; such a map is taken as
+#: the similarity it was meant to be (the solid moves by about 1e-6 of its size, OpenSCAD's own digits).
+SIMILARITY_TOL_DIGITS = 1e-5
 
 
 def _array(name: str, value: Any, shape: tuple[int, ...] | None = None) -> NDArray[np.float64]:
@@ -188,17 +193,18 @@ def mirror_matrix(normal: ArrayLike) -> NDArray[np.float64]:
     return m
 
 
-def similarity_factor(A: NDArray[np.float64]) -> float | None:
-    """The scale ``s`` when ``A = s Q`` with ``Q`` orthogonal (rotation or reflection), else None."""
-    return _similarity(np.ascontiguousarray(A, dtype=np.float64).tobytes())
+def similarity_factor(A: NDArray[np.float64], tol: float = SIMILARITY_TOL) -> float | None:
+    """The scale ``s`` when ``A = s Q`` with ``Q`` orthogonal (rotation or reflection) within the
+    relative tolerance ``tol`` (on ``A^T A``), else None."""
+    return _similarity(np.ascontiguousarray(A, dtype=np.float64).tobytes(), float(tol))
 
 
 @functools.lru_cache(maxsize=64)
-def _similarity(key: bytes) -> float | None:
+def _similarity(key: bytes, tol: float) -> float | None:
     # one transform maps every leaf of a tree with the same matrix: decided once
     A = np.frombuffer(key, dtype=np.float64).reshape(3, 3)
     g = A.T @ A
     s2 = float(np.trace(g)) / 3.0
-    if np.max(np.abs(g - s2 * np.eye(3))) <= SIMILARITY_TOL * s2:
+    if np.max(np.abs(g - s2 * np.eye(3))) <= tol * s2:
         return math.sqrt(s2)
     return None

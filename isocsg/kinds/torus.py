@@ -447,10 +447,12 @@ class Torus(Primitive):
         return f"multmatrix({mat(m)}) {{ {body} }}"
 
     def _affine(self, A: NDArray[np.float64], t: NDArray[np.float64]) -> Primitive:
-        """Rigid maps and uniform scales (with reflections) keep a torus; other maps are refused."""
-        from .affine import similarity_factor
+        """Rigid maps and uniform scales (with reflections) keep a torus; other maps are refused. A map
+        within :data:`~isocsg.kinds.affine.SIMILARITY_TOL_DIGITS` of a similarity (an OpenSCAD
+        ``multmatrix`` of a turn, written with 6 digits) counts as one."""
+        from .affine import SIMILARITY_TOL_DIGITS, similarity_factor
 
-        k = similarity_factor(A)
+        k = similarity_factor(A, SIMILARITY_TOL_DIGITS)
         if k is None:
             raise InvalidGeometryError(
                 "a Torus can only be moved, turned, mirrored or scaled uniformly: a non-uniform scale or shear "
