@@ -103,3 +103,13 @@ def test_manifold_fuzz_draws_trees():
         assert 1 <= solid_program(tree).n_leaves <= 4
 
     check()
+
+
+def test_empty_mesh_of_a_turned_cube_minus_itself():
+    # A - A: the reference's volume is rounding (about 1e-17); an engine's empty mesh is right
+    from isocsg.testing.strategies import manifold_cube
+
+    a = manifold_cube([("rotate", (10.0, 20.0, 30.0)), ("translate", (0.1, 0.2, 0.3))])
+    empty = to_manifold(a - a, 8)
+    c = compare_mesh(empty, a - a, samples=100)
+    assert c.ok and c.hausdorff_mesh_to_true == 0.0, c.summary()
