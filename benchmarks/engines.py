@@ -22,11 +22,14 @@ The distributions are printed, and every case judged wrong is listed with its re
 from __future__ import annotations
 
 import argparse
+import json
+import os
+import pickle
 import signal
 import sys
 import time
 import warnings
-from collections import Counter, defaultdict
+from collections import Counter
 from typing import Any
 
 import numpy as np
@@ -36,10 +39,10 @@ from isocsg.csg.program import OP_INTERSECTION, OP_UNION
 from isocsg.csg.section import solid_program
 from isocsg.testing import compare_mesh, reference, to_python
 from isocsg.testing.compare import as_trimesh
-from isocsg.testing.strategies import cube_fuzz, trees
+from isocsg.testing.strategies import manifold_fuzz, trees
 
 
-def draw_trees(n: int, seed: int, fuzz: float, max_cubes: int, max_leaves: int) -> list[Any]:
+def draw_trees(n: int, seed: int, fuzz: float, max_cubes: int, max_leaves: int, max_transforms: int = 3) -> list[Any]:
     """``n`` distinct trees drawn by hypothesis (a seeded generate phase: the same list every run)."""
     from hypothesis import HealthCheck, Phase, given, settings
     from hypothesis import seed as hseed
@@ -47,26 +50,35 @@ def draw_trees(n: int, seed: int, fuzz: float, max_cubes: int, max_leaves: int) 
     out: list[Any] = []
     seen: set[Any] = set()
 
+    class Enough(Exception):
+        """Raised once ``count`` trees are in: hypothesis would otherwise draw all its examples."""
+
     def collect(strategy: Any, count: int, s: int) -> None:
         before = len(out)
         if count <= 0:
             return
+
         @hseed(s)
         @settings(max_examples=count * 3, database=None, phases=[Phase.generate], deadline=None,
                   suppress_health_check=list(HealthCheck))
         @given(strategy)
         def run(t: Any) -> None:
-            if t not in seen and len(out) < before + count and solid_program(t).n_leaves > 1:
+            if t not in seen and solid_program(t).n_leaves > 1:
                 seen.add(t)
                 out.append(t)
+            if len(out) >= before + count:
+                raise Enough
 
-        run()
+        try:
+            run()
+        except Enough:
+            pass
         del out[before + count:]
 
     n_fuzz = int(round(n * fuzz))
     collect(trees(max_leaves=max_leaves), n - n_fuzz, seed)
     if n_fuzz:
-        collect(cube_fuzz(max_cubes=max_cubes), n_fuzz, seed + 1)
+        collect(manifold_fuzz(max_ops=max_cubes, max_transforms=max_transforms), n_fuzz, seed + 1)
     return out
 
 
@@ -136,13 +148,15 @@ def isolated(fn: Any, *args: Any, timeout: float = 120.0) -> Any:
         except Exception as exc:  # noqa: BLE001 - handed to the parent
             send.send(("raised", f"{type(exc).__name__}: {exc}"))
 
-    proc = ctx.Process(target=target)
+    proc = ctx.Process(target=target, daemon=True)  # never keeps the run from ending
     proc.start()
-    res = recv.recv() if recv.poll(timeout) else None
-    proc.join(5)
-    if proc.is_alive():
-        proc.kill()
-        proc.join()
+    try:
+        res = recv.recv() if recv.poll(timeout) else None
+        proc.join(5)
+    finally:  # also when the tree's time budget interrupts the wait: no process left behind
+        if proc.is_alive():
+            proc.kill()
+            proc.join()
     if res is None:
         raise EngineCrash(f"crashed (exit code {proc.exitcode})" if proc.exitcode else f"hung over {timeout:.0f} s")
     if res[0] == "raised":
@@ -152,114 +166,156 @@ def isolated(fn: Any, *args: Any, timeout: float = 120.0) -> Any:
     return trimesh.Trimesh(res[1][0], res[1][1], process=False)
 
 
+def judge_tree(k: int, tree: Any, args: Any, engines: list[str]) -> tuple[dict[str, Any], list[str]]:
+    """One tree: its reference, every engine's result and its comparison; the record written to
+    the results file and the findings (reproducers) of the cases judged wrong, raised or crashed."""
+    import pyvista as pv
+
+    t0 = time.time()
+    ref = reference(tree, tol=args.tol)
+    rec: dict[str, Any] = {"k": k, "leaves": solid_program(tree).n_leaves, "ref_seconds": time.time() - t0,
+                           "engines": {}}
+    notes: list[str] = []
+    prog = solid_program(tree)
+    mf = [to_manifold(p, args.segments) for p in prog.leaves]
+    size = float(np.max(ref.bounds[1] - ref.bounds[0]))
+    if not size > 0:  # an empty result's box: the leaves' scale
+        size = max(float(np.max(np.asarray(p.bounds)[1] - np.asarray(p.bounds)[0])) for p in prog.leaves)
+    for eng in engines:
+        t1 = time.time()
+        try:
+            if eng == "manifold3d":
+                mesh = run_manifold(tree, mf)
+                mesh.num_tri()  # manifold3d evaluates lazily: time the Booleans, not the tree
+            elif eng.startswith("trimesh-"):
+                mesh = run_trimesh(tree, [as_trimesh(m) for m in mf], eng.split("-", 1)[1])
+            else:
+                mesh = isolated(run_pyvista, tree, [pv.wrap(as_trimesh(m)) for m in mf])
+        except TimeoutError:
+            raise  # the tree's time budget, not the engine
+        except Exception as exc:  # noqa: BLE001 - an engine's failure is a finding
+            crashed = isinstance(exc, EngineCrash)
+            what = str(exc) if crashed else f"raised {type(exc).__name__}: {exc}"
+            rec["engines"][eng] = {"status": "crashed" if crashed else "raised", "what": what[:300]}
+            notes.append(f"# case {k}, {eng}: {what}\n{to_python(tree)}\n")
+            continue
+        dt = time.time() - t1
+        c = compare_mesh(mesh, tree, segments=args.segments, samples=args.samples, ref=ref, seed=k)
+        vol_rel = abs(c.volume_error) / ref.volume if ref.volume > 0 else abs(c.volume_error) / size**3
+        area_rel = abs(c.area_error) / ref.area if ref.area > 0 else abs(c.area_error) / size**2
+        rec["engines"][eng] = {
+            "status": "ok" if c.ok else "wrong", "verdicts": dict(c.verdicts), "volume": vol_rel,
+            "area": area_rel, "hausdorff": max(c.hausdorff_mesh_to_true, c.hausdorff_true_to_mesh) / size,
+            "seconds": dt,
+        }
+        if not c.ok:
+            notes.append(f"# case {k}, {eng}: wrong {', '.join(c.wrong)}\n# "
+                         + c.summary().replace("\n", "\n# ") + f"\n{to_python(tree)}\n")
+    rec["seconds"] = time.time() - t0
+    return rec, notes
+
+
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--n", type=int, default=20, help="number of trees (1000 for the full run)")
     ap.add_argument("--seed", type=int, default=1)
     ap.add_argument("--segments", type=int, default=32)
-    ap.add_argument("--fuzz", type=float, default=0.2, help="share of trees from manifold's cube fuzz domain")
-    ap.add_argument("--max-cubes", type=int, default=20)
+    ap.add_argument("--fuzz", type=float, default=0.2, help="share of trees from manifold's fuzz domain")
+    ap.add_argument("--max-cubes", type=int, default=100, help="most cube operations of a fuzz tree")
+    ap.add_argument("--max-transforms", type=int, default=3, help="most transforms of a fuzz cube (manifold: 20)")
     ap.add_argument("--max-leaves", type=int, default=5)
     ap.add_argument("--samples", type=int, default=1500)
     ap.add_argument("--tol", type=float, default=1e-5, help="relative accuracy of the reference figures")
     ap.add_argument("--engines", default="manifold3d,trimesh-manifold,pyvista")
-    ap.add_argument("--budget", type=int, default=60, help="seconds for one tree's reference")
-    ap.add_argument("--findings", default=None, help="write every wrong case with its reproducer here")
+    ap.add_argument("--budget", type=int, default=60, help="seconds for one tree (reference and comparisons)")
+    ap.add_argument("--findings", default=None, help="append every wrong case with its reproducer here")
+    ap.add_argument("--results", default=None,
+                    help="append one JSON line per tree here; trees already in it are skipped (a run resumes)")
+    ap.add_argument("--cases", default=None,
+                    help="keep the drawn trees in this pickle (drawing 1000 takes minutes): shards share them")
+    ap.add_argument("--shard", default="0/1", help="i/n: judge only the trees k with k %% n == i")
+    ap.add_argument("--report", nargs="*", default=None, help="only print the tables of these results files")
     args = ap.parse_args()
+    if args.report is not None:
+        records = [json.loads(line) for f in args.report for line in open(f) if line.strip()]
+        report(args.engines.split(","), records, f"{len(records)} trees from {', '.join(args.report)}")
+        return
     warnings.simplefilter("ignore")
     import faulthandler
 
     faulthandler.enable()  # an engine that crashes the process says where
-    import pyvista as pv
-
+    shard, shards = (int(x) for x in args.shard.split("/"))
     t0 = time.time()
-    cases = draw_trees(args.n, args.seed, args.fuzz, args.max_cubes, args.max_leaves)
-    print(f"{len(cases)} trees drawn in {time.time() - t0:.1f} s; segments {args.segments}")
+    if args.cases and os.path.exists(args.cases):
+        with open(args.cases, "rb") as fh:
+            cases = pickle.load(fh)
+    else:
+        cases = draw_trees(args.n, args.seed, args.fuzz, args.max_cubes, args.max_leaves, args.max_transforms)
+        if args.cases:
+            with open(args.cases, "wb") as fh:
+                pickle.dump(cases, fh)
+    print(f"{len(cases)} trees drawn in {time.time() - t0:.1f} s; segments {args.segments}", flush=True)
     engines = args.engines.split(",")
-    checks: dict[str, Counter[str]] = defaultdict(Counter)
-    rel: dict[str, dict[str, list[float]]] = defaultdict(lambda: defaultdict(list))
-    findings: list[str] = []
+    done: set[int] = set()
+    if args.results and os.path.exists(args.results):
+        done = {json.loads(line)["k"] for line in open(args.results) if line.strip()}
+    records: list[dict[str, Any]] = []
 
-    def note(text: str) -> None:  # written as found: a run stopped early keeps its findings
-        findings.append(text)
-        if args.findings:
-            with open(args.findings, "a") as fh:
+    def write(path: str | None, text: str) -> None:  # written as found: a stopped run keeps its work
+        if path:
+            with open(path, "a") as fh:
                 fh.write(text + "\n")
-    skipped = 0
 
     def alarm(*_: Any) -> None:
         raise TimeoutError
 
     signal.signal(signal.SIGALRM, alarm)
     for k, tree in enumerate(cases):
-        signal.alarm(args.budget)  # the reference's integration, not an engine, is what may run long
-        try:
-            ref = reference(tree, tol=args.tol)
-        except TimeoutError:
-            skipped += 1
-            findings.append(f"# case {k}: reference over {args.budget} s, skipped\n{to_python(tree)}\n")
+        if k % shards != shard or k in done:
             continue
+        signal.alarm(args.budget)
+        try:
+            rec, notes = judge_tree(k, tree, args, engines)
+        except TimeoutError:
+            rec, notes = {"k": k, "skipped": f"over {args.budget} s"}, [
+                f"# case {k}: over {args.budget} s, skipped\n{to_python(tree)}\n"]
+        except Exception as exc:  # noqa: BLE001 - the reference or the comparison failed: a finding on isocsg
+            rec, notes = {"k": k, "skipped": f"{type(exc).__name__}: {exc}"[:300]}, [
+                f"# case {k}: isocsg raised {type(exc).__name__}: {exc}\n{to_python(tree)}\n"]
         finally:
             signal.alarm(0)
-        prog = solid_program(tree)
-        mf = [to_manifold(p, args.segments) for p in prog.leaves]
-        size = float(np.max(ref.bounds[1] - ref.bounds[0]))
-        for eng in engines:
-            t1 = time.time()
-            try:
-                if eng == "manifold3d":
-                    mesh = run_manifold(tree, mf)
-                    mesh.num_tri()  # manifold3d evaluates lazily: time the Booleans, not the tree
-                elif eng.startswith("trimesh-"):
-                    mesh = run_trimesh(tree, [as_trimesh(m) for m in mf], eng.split("-", 1)[1])
-                else:
-                    mesh = isolated(run_pyvista, tree, [pv.wrap(as_trimesh(m)) for m in mf])
-            except Exception as exc:  # noqa: BLE001 - an engine's failure is a finding
-                crashed = isinstance(exc, EngineCrash)
-                checks[eng]["crashed" if crashed else "raised"] += 1
-                what = str(exc) if crashed else f"raised {type(exc).__name__}: {exc}"
-                note(f"# case {k}, {eng}: {what}\n{to_python(tree)}\n")
-                continue
-            dt = time.time() - t1
-            c = compare_mesh(mesh, tree, segments=args.segments, samples=args.samples, ref=ref, seed=k)
-            checks[eng]["cases"] += 1
-            checks[eng]["ok" if c.ok else "wrong"] += 1
-            for name in c.wrong:
-                checks[eng][f"wrong {name}"] += 1
-            vol_rel = abs(c.volume_error) / ref.volume if ref.volume > 0 else abs(c.volume_error)
-            rel[eng]["volume"].append(vol_rel)
-            rel[eng]["area"].append(abs(c.area_error) / max(ref.area, 1e-300) if ref.area > 0 else abs(c.area_error))
-            rel[eng]["hausdorff"].append(max(c.hausdorff_mesh_to_true, c.hausdorff_true_to_mesh) / size)
-            rel[eng]["seconds"].append(dt)
-            if not c.ok:
-                note(f"# case {k}, {eng}: wrong {', '.join(c.wrong)}\n# "
-                                + c.summary().replace("\n", "\n# ") + f"\n{to_python(tree)}\n")
-        if (k + 1) % 20 == 0:
-            report(engines, checks, rel, f"after {k + 1}/{len(cases)} trees, {time.time() - t0:.0f} s")
+        records.append(rec)
+        write(args.results, json.dumps(rec))
+        for text in notes:
+            write(args.findings, text)
+            if not args.findings:
+                print(text)
+        if len(records) % 20 == 0:
+            report(engines, records, f"after {len(records)} trees, {time.time() - t0:.0f} s")
             sys.stdout.flush()
-    took = time.time() - t0
-    report(engines, checks, rel, f"{len(cases)} trees in {took:.0f} s ({skipped} skipped: reference over budget)")
-    print(f"\n{len(findings)} findings")
-    if not args.findings:
-        for f in findings:
-            print(f)
+    report(engines, records, f"{len(records)} trees in {time.time() - t0:.0f} s")
 
 
-def report(engines: list[str], checks: Any, rel: Any, title: str) -> None:
-    print(f"\n{title}\n")
+def report(engines: list[str], records: list[dict[str, Any]], title: str) -> None:
+    skipped = sum(1 for r in records if "skipped" in r or any(
+        e.get("what", "").startswith("raised TimeoutError") for e in r.get("engines", {}).values()))
+    print(f"\n{title} ({skipped} over the time budget: skipped, or an engine stopped)\n")
     print("| engine | judged | raised | crashed | OK | wrong | wrong volume | wrong area | wrong hausdorff "
-          "| wrong topology |")
-    print("|---|---|---|---|---|---|---|---|---|---|")
+          "| wrong topology | topology not comparable |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|")
     for eng in engines:
-        c = checks[eng]
-        print(f"| {eng} | {c['cases']} | {c['raised']} | {c['crashed']} | {c['ok']} | {c['wrong']} | "
-              f"{c['wrong volume']} | "
-              f"{c['wrong area']} | {c['wrong hausdorff']} | {c['wrong topology']} |")
+        rs = [r["engines"][eng] for r in records if eng in r.get("engines", {})]
+        st = Counter("budget" if r.get("what", "").startswith("raised TimeoutError") else r["status"] for r in rs)
+        bad = Counter(name for r in rs for name, v in r.get("verdicts", {}).items() if v == "wrong")
+        nc = sum(1 for r in rs if r.get("verdicts", {}).get("topology") == "not comparable")
+        print(f"| {eng} | {st['ok'] + st['wrong']} | {st['raised']} | {st['crashed']} | {st['ok']} | {st['wrong']} | "
+              f"{bad['volume']} | {bad['area']} | {bad['hausdorff']} | {bad['topology']} | {nc} |")
     print("\n| engine | figure | median | 90 % | 99 % | max |")
     print("|---|---|---|---|---|---|")
     for eng in engines:
+        rs = [r["engines"][eng] for r in records if eng in r.get("engines", {})]
         for fig in ("volume", "area", "hausdorff", "seconds"):
-            v = np.asarray(rel[eng][fig])
+            v = np.asarray([r[fig] for r in rs if fig in r], dtype=np.float64)
             if len(v):
                 q = np.quantile(v, [0.5, 0.9, 0.99, 1.0], method="higher")
                 print(f"| {eng} | {fig} | " + " | ".join(f"{x:.2e}" for x in q) + " |")

@@ -257,14 +257,22 @@ def _curved_crossings(
     u = np.linspace(0.0, 1.0, samples + 1)
     T = rings.t0[:, None] + (rings.t1 - rings.t0)[:, None] * u
     speed = np.linalg.norm(rings.A, axis=1) + (np.linalg.norm(rings.B, axis=1) if rings.trig else 0.0)
-    ring0 = np.repeat(np.arange(k), samples)
+    lo_r, hi_r = _ring_boxes(rings)
     out_r: list[NDArray[np.int64]] = []
     out_t: list[F64] = []
     for j in leaves:
         prim = tree.leaves[j]
-        f = np.asarray(prim.signed_distance(rings.points(np.repeat(np.arange(k), samples + 1), T.ravel())))
-        f = f.reshape(k, samples + 1)
-        r, ta, tb = ring0, T[:, :-1].ravel(), T[:, 1:].ravel()
+        # a ring outside the leaf's box cannot cross its surface: most rings, most leaves
+        box = np.asarray(prim.bounds, dtype=np.float64)
+        pad = 1e-9 * (1.0 + float(np.max(np.abs(box)))) + tree.tol
+        sel = np.flatnonzero(np.all((hi_r >= box[0] - pad) & (lo_r <= box[1] + pad), axis=1))
+        if len(sel) == 0:
+            continue
+        n_sel = len(sel)
+        Ts = T[sel]
+        f = np.asarray(prim.signed_distance(rings.points(np.repeat(sel, samples + 1), Ts.ravel())))
+        f = f.reshape(n_sel, samples + 1)
+        r, ta, tb = np.repeat(sel, samples), Ts[:, :-1].ravel(), Ts[:, 1:].ravel()
         fa, fb = f[:, :-1].ravel(), f[:, 1:].ravel()
         found_r, found_a, found_b, found_s = [], [], [], []
         for _ in range(30):
@@ -299,6 +307,17 @@ def _curved_crossings(
     if not out_r:
         return np.zeros(0, np.int64), np.zeros(0)
     return np.concatenate(out_r), np.concatenate(out_t)
+
+
+def _ring_boxes(rings: Rings) -> tuple[F64, F64]:
+    """Boxes containing each ring: ``c + A cos t + B sin t`` lies within ``c +- sqrt(A^2 + B^2)``
+    per coordinate; a segment ``c + A t`` between its ends."""
+    if rings.trig:
+        half = np.sqrt(rings.A**2 + rings.B**2)
+        return rings.c - half, rings.c + half
+    a = rings.c + rings.A * rings.t0[:, None]
+    b = rings.c + rings.A * rings.t1[:, None]
+    return np.minimum(a, b), np.maximum(a, b)
 
 
 def _state(sd: F64, tol: float) -> NDArray[np.int8]:

@@ -6,19 +6,24 @@ hypothesis is an optional dependency (the ``testing`` extra), imported when a st
   ellipsoids and tori with centres and sizes on a coarse grid (so that faces coincide and touch
   often), with an optional share of near-degenerate ones (thin rods and discs, nearly flat boxes);
 - :func:`trees`: nested unions, intersections and differences of them;
-- :func:`cube_fuzz`: manifold's fuzz domain, up to 100 unit cubes turned and moved at random,
-  combined by unions and differences;
+- :func:`cube_fuzz`: up to 100 unit cubes turned and moved at random, combined by unions and
+  differences (a simple form of manifold's fuzz domain);
+- :func:`manifold_fuzz`: manifold's own fuzz domain (its ``ManifoldFuzz.SimpleCube`` test);
 - :func:`to_python`: a tree as code that rebuilds it (``repr`` of every primitive is exact).
 """
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from typing import Any
+
+import numpy as np
+from numpy.typing import NDArray
 
 from ..csg.tree import CSGNode, Difference, Intersection, Union
 from ..kinds import Box, Cone, Cylinder, Ellipsoid, Primitive, Solid, Sphere, Torus, Truncus
 
-__all__ = ["cube_fuzz", "primitives", "to_python", "trees"]
+__all__ = ["cube_fuzz", "manifold_cube", "manifold_fuzz", "primitives", "to_python", "trees"]
 
 
 def _hyp() -> Any:
@@ -63,11 +68,12 @@ def trees(*, max_leaves: int = 6, grid: float = 0.25, degenerate: bool = True) -
     """A strategy for CSG trees of 1 .. ``max_leaves`` primitives (see :func:`primitives`)."""
     st = _hyp()
     ops = [Union, Intersection, Difference]
+    leaf = primitives(grid=grid, degenerate=degenerate)  # built once: hypothesis validates it on first use
 
     @st.composite
     def build(draw: Any) -> Solid:
         n = draw(st.integers(1, max_leaves))
-        parts: list[Solid] = [draw(primitives(grid=grid, degenerate=degenerate)) for _ in range(n)]
+        parts: list[Solid] = [draw(leaf) for _ in range(n)]
         while len(parts) > 1:  # join two neighbours at a time: any binary shape
             k = draw(st.integers(0, len(parts) - 2))
             op = draw(st.sampled_from(ops))
@@ -90,6 +96,79 @@ def cube_fuzz(*, max_cubes: int = 100) -> Any:
     @st.composite
     def build(draw: Any) -> Solid:
         n = draw(st.integers(2, max_cubes))
+        out: Solid = draw(cube)
+        for _ in range(n - 1):
+            c = draw(cube)
+            out = (out | c) if draw(st.booleans()) else (out - c)
+        return out
+
+    return build()
+
+
+def manifold_cube(transforms: Sequence[tuple[str, Sequence[float]]]) -> Solid:
+    """manifold's ``Manifold::Cube()`` (the unit cube ``[0, 1]^3``) moved by ``transforms`` in
+    order, each ``("translate" | "rotate" | "scale", (x, y, z))`` as manifold's ``Translate``,
+    ``Rotate`` (Euler angles in degrees, about x, then y, then z) and ``Scale``.
+
+    Raises
+    ------
+    InvalidParameterError
+        On an unknown transform name (the message names it).
+    InvalidGeometryError
+        When the result is degenerate or too thin (see :meth:`isocsg.kinds.Primitive.transform`).
+
+    Examples
+    --------
+    >>> c = manifold_cube([("scale", (2.0, 1.0, 1.0)), ("translate", (1.0, 0.0, 0.0))])
+    >>> round(float(c.volume), 12), float(c.bounds[0][0]), float(c.bounds[1][0])
+    (2.0, 1.0, 3.0)
+    """
+    m = _fuzz_matrix(transforms)
+    unit = Box((0.5, 0.5, 0.5), (1.0, 1.0, 1.0))
+    return unit if np.array_equal(m, np.eye(4)) else unit.transform(m)
+
+
+def _fuzz_matrix(transforms: Sequence[tuple[str, Sequence[float]]]) -> NDArray[np.float64]:
+    from ..errors import InvalidParameterError
+    from ..kinds.affine import rotation_matrix, scale_matrix, translation_matrix
+
+    make = {"translate": translation_matrix, "rotate": rotation_matrix, "scale": scale_matrix}
+    m = np.eye(4)
+    for kind, v in transforms:  # each transform applies to the cube as moved so far
+        if kind not in make:
+            raise InvalidParameterError(f"transforms: unknown transform {kind!r} (translate, rotate or scale)")
+        m = np.asarray(make[kind](v), dtype=np.float64) @ m
+    return m
+
+
+def manifold_fuzz(*, max_ops: int = 100, max_transforms: int = 20) -> Any:
+    """manifold's fuzz domain (``test/manifold_fuzz.cpp``, ``ManifoldFuzz.SimpleCube``): up to
+    ``max_ops`` cubes ``[0, 1]^3``, each moved by up to ``max_transforms`` translations, rotations
+    (Euler angles in degrees) and scalings (:func:`manifold_cube`), every number in ``[0.1, 10]``
+    or ``[-10, -0.1]``, each added to or subtracted from the running result.
+
+    manifold's running result starts empty, so operations before the first union change nothing:
+    here the first operation is a union. A cube scaled unevenly after a turn is a parallelepiped
+    (a :class:`~isocsg.kinds.ConvexPolyhedron`); chains whose linear part has a condition number
+    over :data:`isocsg.kinds.affine.MAX_CONDITION` (slivers isocsg refuses) are not drawn.
+    """
+    from ..kinds.affine import MAX_CONDITION
+
+    st = _hyp()
+    mag = st.floats(0.1, 10.0, allow_nan=False, allow_infinity=False)
+    good = st.one_of(mag, mag.map(lambda x: -x))
+    step = st.tuples(st.sampled_from(["rotate", "scale", "translate"]), st.tuples(good, good, good))
+
+    def sane(steps: list[tuple[str, tuple[float, float, float]]]) -> bool:
+        m = _fuzz_matrix(steps)
+        sv = np.linalg.svd(m[:3, :3], compute_uv=False)
+        return bool(np.all(np.isfinite(m)) and sv[-1] > 0 and sv[0] / sv[-1] <= MAX_CONDITION)
+
+    cube = st.lists(step, max_size=max_transforms).filter(sane).map(manifold_cube)
+
+    @st.composite
+    def build(draw: Any) -> Solid:
+        n = draw(st.integers(1, max_ops))
         out: Solid = draw(cube)
         for _ in range(n - 1):
             c = draw(cube)
