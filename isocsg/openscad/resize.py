@@ -65,8 +65,6 @@ def _children(s: Any) -> tuple[Any, ...] | None:
 def solid_bounds(solid: Any) -> NDArray[np.float64]:
     """The exact bounding box ``[[x0, y0, z0], [x1, y1, z1]]`` of a solid (module docs)."""
     from ..csg import Difference, Intersection
-    from ..kinds import Box, ConvexPolyhedron
-    from ..kinds.mesh import TriangleMesh
 
     done: dict[int, NDArray[np.float64] | None] = {}
     stack: list[tuple[Any, bool]] = [(solid, False)]
@@ -81,7 +79,7 @@ def solid_bounds(solid: Any) -> NDArray[np.float64]:
         if isinstance(s, (Difference, Intersection)):
             from ..csg.tree import leaves
 
-            if all(isinstance(leaf, (Box, ConvexPolyhedron, TriangleMesh)) for leaf in leaves(s)):
+            if all(type(leaf).polyhedral for leaf in leaves(s)):
                 done[id(s)] = _manifold_bounds(s)
             else:
                 done[id(s)] = _probed_bounds(s)

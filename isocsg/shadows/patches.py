@@ -36,7 +36,7 @@ from numpy.typing import NDArray
 
 from .._validation import Vec3, scalar, vector3
 from ..errors import InvalidParameterError
-from ..kinds import Box, ConvexPolyhedron, Solid
+from ..kinds import Primitive, Solid
 
 __all__ = ["Room", "PatchSet", "surface_patches", "reflector_faces", "ROOM_OWNER"]
 
@@ -121,8 +121,8 @@ def reflector_faces(solid: Solid, index: int) -> list[NDArray[np.float64]]:
     InvalidParameterError
         If the occluder is not a box or a convex polyhedron.
     """
-    if isinstance(solid, Box | ConvexPolyhedron):
-        return [np.asarray(f, dtype=np.float64) for f in solid.face_polygons()]
+    if isinstance(solid, Primitive) and type(solid).polyhedral and solid.convex:  # its hull is itself
+        return [np.asarray(f, dtype=np.float64) for f in solid.to_polyhedron().face_polygons()]
     raise InvalidParameterError(
         f"occluders[{index}] is a {type(solid).__name__}: only boxes and convex polyhedra reflect "
         "(give it reflectance 0 to keep it as a black occluder)"

@@ -421,7 +421,7 @@ def outline(solid: Solid) -> Shape2D:
 
 
 def _flat_faced(s: Any) -> bool:
-    return all(isinstance(leaf, (Box, ConvexPolyhedron, TriangleMesh)) for leaf in _leaves(s))
+    return all(type(leaf).polyhedral for leaf in _leaves(s))
 
 
 def _manifold_outline(s: Any) -> Shape2D:
