@@ -134,7 +134,7 @@ def test_hull_of_polyhedral_children_loads_as_a_convex_polyhedron() -> None:
             "a hull of a difference is not supported (only unions split into convex pieces exactly: "
             "a hull does not distribute over it)")),
     ):
-        with pytest.raises(UnsupportedOpenSCADError, match=re.escape(f"m.csg:1: hull() is not supported ({reason})")):
+        with pytest.raises(UnsupportedOpenSCADError, match=re.escape(f"m.csg:1: hull() is not supported ({reason}")):
             loads_openscad(f"hull() {{ cube(size = 1); {child} }}", source="m.csg")
     with pytest.raises(UnsupportedOpenSCADError, match=re.escape("m.csg:1: hull() is not supported (a 2D hull of ellipses")):
         loads_openscad("linear_extrude(height = 1) { hull() { square(size = 1); "
