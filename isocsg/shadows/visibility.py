@@ -166,11 +166,15 @@ def _clip_convex(P: np.ndarray, n: int, Q: np.ndarray, nq: int, out: np.ndarray,
     for k in range(n):
         out[k, 0] = P[k, 0]
         out[k, 1] = P[k, 1]
+    a = out  # the passes go back and forth between the two buffers
+    b = tmp
     for e in range(nq):
         e1 = e + 1 if e + 1 < nq else 0
-        m = _clip_halfplane(out, m, Q[e, 0], Q[e, 1], Q[e1, 0], Q[e1, 1], tmp)
+        m = _clip_halfplane(a, m, Q[e, 0], Q[e, 1], Q[e1, 0], Q[e1, 1], b)
         if m <= 0:
             return m
+        a, b = b, a
+    if nq % 2 == 1:
         for k in range(m):
             out[k, 0] = tmp[k, 0]
             out[k, 1] = tmp[k, 1]
@@ -294,6 +298,20 @@ def _source_polygon(p, nr, s, s_verts, s_off, s_normal, s_u, s_w, s_q0, scale, P
 
 
 @numba.njit(cache=True)
+def _in_wider_cone(cang: float, cosmin: float, sin2: float, sa: float) -> bool:
+    """Whether the angle acos(cang) is surely below acos(cosmin) + asin(sa), by a margin far above rounding.
+
+    cos(theta + alpha) = cos theta cos alpha - sin theta sin alpha, without the arc
+    functions; only for cones narrower than a right angle whose sine is not tiny
+    (there the rounding of the sines is well below the margin). False means "not proved".
+    """
+    if cosmin <= 0.0 or sin2 < 1e-6 or sa >= 1.0:
+        return False
+    c = cosmin * math.sqrt(1.0 - sa * sa) - math.sqrt(sin2) * sa
+    return cang >= c + 1e-12
+
+
+@numba.njit(cache=True)
 def _piece_tables(s_normal, s_u, s_w, s_q0, v_verts, v_voff, v_edges, v_eoff):
     """What :func:`_blockers` needs of each piece that does not depend on the point, per source polygon.
 
@@ -371,6 +389,7 @@ def _blockers(p, nr, s, h, P2, n2, A0, s_normal, s_u, s_w, s_q0,
             cosmin = c
     cosmin = min(1.0, max(-1.0, cosmin))
     theta_s = -1.0  # acos(cosmin), taken when a piece's centre lies outside the cone
+    sin2 = 1.0 - cosmin * cosmin
     htop = h * SLAB_TOP
     # 2D coordinates of p's foot on the source plane
     px = (p[0] - q0[0]) * u[0] + (p[1] - q0[1]) * u[1] + (p[2] - q0[2]) * u[2]
@@ -390,7 +409,7 @@ def _blockers(p, nr, s, h, P2, n2, A0, s_normal, s_u, s_w, s_q0,
         if dist > r:
             cang = min(1.0, max(-1.0, (dx * ax + dy * ay + dz * az) / dist))
             # a centre inside the cone (cang >= cosmin: its angle is at most theta_s) is never skipped
-            if cang < cosmin:
+            if cang < cosmin and not _in_wider_cone(cang, cosmin, sin2, r / dist):
                 if theta_s < 0.0:
                     theta_s = math.acos(cosmin)
                 if math.acos(cang) - math.asin(r / dist) > theta_s + 1e-9:
