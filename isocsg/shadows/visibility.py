@@ -28,7 +28,10 @@ All of it runs compiled (numba): one serial kernel that releases the GIL,
 over strided chunks of the points, on this thread and a small thread pool
 (numba's ``NUMBA_NUM_THREADS`` threads in all). An occluder piece is skipped
 cheaply when its bounding sphere lies outside the cone of directions from p
-to S_p.
+to S_p. What does not depend on p (each piece vertex's level over the source
+plane and its source-frame coordinates, the crossings of the source plane)
+is computed once per kernel call with the arithmetic the projection used per
+point, so the values are bit for bit the same.
 """
 
 from __future__ import annotations
