@@ -249,15 +249,22 @@ def _lambert2(P: np.ndarray, n: int, p: np.ndarray, nr: np.ndarray, q0: np.ndarr
               w: np.ndarray) -> float:
     """Edge sum of a 2D polygon of the source frame (counter-clockwise seen from the lit side)."""
     s = 0.0
+    if n == 0:
+        return s
+    # each vertex rebuilt once: an edge's end is the next edge's start
+    ax = q0[0] + P[0, 0] * u[0] + P[0, 1] * w[0]
+    ay = q0[1] + P[0, 0] * u[1] + P[0, 1] * w[1]
+    az = q0[2] + P[0, 0] * u[2] + P[0, 1] * w[2]
+    fx, fy, fz = ax, ay, az
     for k in range(n):
-        k1 = k + 1 if k + 1 < n else 0
-        ax = q0[0] + P[k, 0] * u[0] + P[k, 1] * w[0]
-        ay = q0[1] + P[k, 0] * u[1] + P[k, 1] * w[1]
-        az = q0[2] + P[k, 0] * u[2] + P[k, 1] * w[2]
-        bx = q0[0] + P[k1, 0] * u[0] + P[k1, 1] * w[0]
-        by = q0[1] + P[k1, 0] * u[1] + P[k1, 1] * w[1]
-        bz = q0[2] + P[k1, 0] * u[2] + P[k1, 1] * w[2]
+        if k + 1 < n:
+            bx = q0[0] + P[k + 1, 0] * u[0] + P[k + 1, 1] * w[0]
+            by = q0[1] + P[k + 1, 0] * u[1] + P[k + 1, 1] * w[1]
+            bz = q0[2] + P[k + 1, 0] * u[2] + P[k + 1, 1] * w[2]
+        else:
+            bx, by, bz = fx, fy, fz
         s += edge_term_nb(p[0], p[1], p[2], nr[0], nr[1], nr[2], ax, ay, az, bx, by, bz)
+        ax, ay, az = bx, by, bz
     return s
 
 
