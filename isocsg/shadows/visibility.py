@@ -28,7 +28,10 @@ All of it runs compiled (numba): one serial kernel that releases the GIL,
 over strided chunks of the points, on this thread and a small thread pool
 (numba's ``NUMBA_NUM_THREADS`` threads in all). An occluder piece is skipped
 cheaply when its bounding sphere lies outside the cone of directions from p
-to S_p.
+to S_p. What does not depend on p (each piece vertex's level over the source
+plane and its source-frame coordinates, the crossings of the source plane)
+is computed once per kernel call with the arithmetic the projection used per
+point, so the values are bit for bit the same.
 """
 
 from __future__ import annotations
@@ -166,11 +169,15 @@ def _clip_convex(P: np.ndarray, n: int, Q: np.ndarray, nq: int, out: np.ndarray,
     for k in range(n):
         out[k, 0] = P[k, 0]
         out[k, 1] = P[k, 1]
+    a = out  # the passes go back and forth between the two buffers
+    b = tmp
     for e in range(nq):
         e1 = e + 1 if e + 1 < nq else 0
-        m = _clip_halfplane(out, m, Q[e, 0], Q[e, 1], Q[e1, 0], Q[e1, 1], tmp)
+        m = _clip_halfplane(a, m, Q[e, 0], Q[e, 1], Q[e1, 0], Q[e1, 1], b)
         if m <= 0:
             return m
+        a, b = b, a
+    if nq % 2 == 1:
         for k in range(m):
             out[k, 0] = tmp[k, 0]
             out[k, 1] = tmp[k, 1]
@@ -183,33 +190,31 @@ def _cross(o0: float, o1: float, a0: float, a1: float, b0: float, b1: float) -> 
 
 
 @numba.njit(cache=True)
-def _order_xy(pts: np.ndarray, n: int, o: np.ndarray, t: np.ndarray) -> np.ndarray:
-    """Indices of pts[:n] by x, then y, then index: a stable bottom-up merge sort.
+def _sort_xy(pts: np.ndarray, n: int, o: np.ndarray) -> np.ndarray:
+    """Indices of pts[:n] by x, then y, then index (into ``o``, scratch of at least n entries): a stable
+    insertion sort.
 
     The order of two stable argsorts (by y, then by x), written out: numba's
-    generic argsort took 2 s of the kernel's compilation.
+    generic argsort took 2 s of the kernel's compilation. Every stable sort gives
+    this one order; insertion sort is the quickest for the few points (a few
+    dozen at most) of a silhouette.
     """
-    for k in range(n):  # o and t: scratch of at least n entries (allocating them per call cost 10 % of the kernel)
-        o[k] = k
-    width = 1
-    while width < n:
-        for lo in range(0, n, 2 * width):
-            mid = min(lo + width, n)
-            hi = min(lo + 2 * width, n)
-            a = lo
-            b = mid
-            for k in range(lo, hi):
-                # take from the right run only when strictly before: ties keep their order
-                if a < mid and (b >= hi or not (pts[o[b], 0] < pts[o[a], 0]
-                                                or (pts[o[b], 0] == pts[o[a], 0] and pts[o[b], 1] < pts[o[a], 1]))):
-                    t[k] = o[a]
-                    a += 1
-                else:
-                    t[k] = o[b]
-                    b += 1
-        o, t = t, o
-        width *= 2
+    for k in range(n):
+        x = pts[k, 0]
+        y = pts[k, 1]
+        j = k - 1
+        # move left past the entries strictly after it: ties keep their order
+        while j >= 0 and (x < pts[o[j], 0] or (x == pts[o[j], 0] and y < pts[o[j], 1])):
+            o[j + 1] = o[j]
+            j -= 1
+        o[j + 1] = k
     return o
+
+
+@numba.njit(cache=True)
+def _order_xy(pts: np.ndarray, n: int) -> np.ndarray:
+    """:func:`_sort_xy` into a new array."""
+    return _sort_xy(pts, n, np.empty(n, dtype=np.int64))
 
 
 @numba.njit(cache=True)
@@ -217,7 +222,7 @@ def _hull(pts: np.ndarray, n: int, hull: np.ndarray, order: np.ndarray) -> int:
     """Counter-clockwise convex hull (Andrew's monotone chain) of pts[:n]; returns its size."""
     if n < 3:
         return 0
-    o = _order_xy(pts, n, order[0], order[1])
+    o = _sort_xy(pts, n, order)
     k = 0
     for ii in range(n):
         i = o[ii]
@@ -244,15 +249,22 @@ def _lambert2(P: np.ndarray, n: int, p: np.ndarray, nr: np.ndarray, q0: np.ndarr
               w: np.ndarray) -> float:
     """Edge sum of a 2D polygon of the source frame (counter-clockwise seen from the lit side)."""
     s = 0.0
+    if n == 0:
+        return s
+    # each vertex rebuilt once: an edge's end is the next edge's start
+    ax = q0[0] + P[0, 0] * u[0] + P[0, 1] * w[0]
+    ay = q0[1] + P[0, 0] * u[1] + P[0, 1] * w[1]
+    az = q0[2] + P[0, 0] * u[2] + P[0, 1] * w[2]
+    fx, fy, fz = ax, ay, az
     for k in range(n):
-        k1 = k + 1 if k + 1 < n else 0
-        ax = q0[0] + P[k, 0] * u[0] + P[k, 1] * w[0]
-        ay = q0[1] + P[k, 0] * u[1] + P[k, 1] * w[1]
-        az = q0[2] + P[k, 0] * u[2] + P[k, 1] * w[2]
-        bx = q0[0] + P[k1, 0] * u[0] + P[k1, 1] * w[0]
-        by = q0[1] + P[k1, 0] * u[1] + P[k1, 1] * w[1]
-        bz = q0[2] + P[k1, 0] * u[2] + P[k1, 1] * w[2]
+        if k + 1 < n:
+            bx = q0[0] + P[k + 1, 0] * u[0] + P[k + 1, 1] * w[0]
+            by = q0[1] + P[k + 1, 0] * u[1] + P[k + 1, 1] * w[1]
+            bz = q0[2] + P[k + 1, 0] * u[2] + P[k + 1, 1] * w[2]
+        else:
+            bx, by, bz = fx, fy, fz
         s += edge_term_nb(p[0], p[1], p[2], nr[0], nr[1], nr[2], ax, ay, az, bx, by, bz)
+        ax, ay, az = bx, by, bz
     return s
 
 
@@ -296,11 +308,67 @@ def _source_polygon(p, nr, s, s_verts, s_off, s_normal, s_u, s_w, s_q0, scale, P
 
 
 @numba.njit(cache=True)
+def _in_wider_cone(cang: float, cosmin: float, sin2: float, sa: float) -> bool:
+    """Whether the angle acos(cang) is surely below acos(cosmin) + asin(sa), by a margin far above rounding.
+
+    cos(theta + alpha) = cos theta cos alpha - sin theta sin alpha, without the arc
+    functions; only for cones narrower than a right angle whose sine is not tiny
+    (there the rounding of the sines is well below the margin). False means "not proved".
+    """
+    if cosmin <= 0.0 or sin2 < 1e-6 or sa >= 1.0:
+        return False
+    c = cosmin * math.sqrt(1.0 - sa * sa) - math.sqrt(sin2) * sa
+    return cang >= c + 1e-12
+
+
+@numba.njit(cache=True)
+def _piece_tables(s_normal, s_u, s_w, s_q0, v_verts, v_voff, v_edges, v_eoff):
+    """What :func:`_blockers` needs of each piece that does not depend on the point, per source polygon.
+
+    ``tv[s, k]``: vertex k's level N . (x - q0) over the source plane and its (u, w) coordinates;
+    ``te[s, e]``: the (u, w) coordinates of edge e's crossing of the source plane (where it crosses).
+    The same arithmetic as the projection at each point, done once.
+    """
+    ns = s_q0.shape[0]
+    nv = v_verts.shape[0]
+    tv = np.empty((ns, nv, 3))
+    te = np.zeros((ns, v_edges.shape[0], 2))
+    for s in range(ns):
+        N = s_normal[s]
+        q0 = s_q0[s]
+        u = s_u[s]
+        w = s_w[s]
+        for k in range(nv):
+            x = v_verts[k]
+            tv[s, k, 0] = N[0] * (x[0] - q0[0]) + N[1] * (x[1] - q0[1]) + N[2] * (x[2] - q0[2])
+            x0 = x[0] - q0[0]
+            x1 = x[1] - q0[1]
+            x2 = x[2] - q0[2]
+            tv[s, k, 1] = x0 * u[0] + x1 * u[1] + x2 * u[2]
+            tv[s, k, 2] = x0 * w[0] + x1 * w[1] + x2 * w[2]
+        for j in range(v_voff.shape[0] - 1):
+            vb = v_voff[j]
+            for e in range(v_eoff[j], v_eoff[j + 1]):
+                sa = tv[s, vb + v_edges[e, 0], 0]
+                sb = tv[s, vb + v_edges[e, 1], 0]
+                if (sa < 0.0 and sb > 0.0) or (sa > 0.0 and sb < 0.0):
+                    xa = v_verts[vb + v_edges[e, 0]]
+                    xb = v_verts[vb + v_edges[e, 1]]
+                    t = (0.0 - sa) / (sb - sa)
+                    x0 = xa[0] + t * (xb[0] - xa[0]) - q0[0]
+                    x1 = xa[1] + t * (xb[1] - xa[1]) - q0[1]
+                    x2 = xa[2] + t * (xb[2] - xa[2]) - q0[2]
+                    te[s, e, 0] = x0 * u[0] + x1 * u[1] + x2 * u[2]
+                    te[s, e, 1] = x0 * w[0] + x1 * w[1] + x2 * w[2]
+    return tv, te
+
+
+@numba.njit(cache=True)
 def _blockers(p, nr, s, h, P2, n2, A0, s_normal, s_u, s_w, s_q0,
-              v_verts, v_voff, v_edges, v_eoff, v_center, v_radius, sel, pts, hull, order, tmp, blk, blk_n):
+              v_verts, v_voff, v_edges, v_eoff, v_center, v_radius, sel, tv, te, pts, hull, order, tmp, blk, blk_n):
     """Blocked convex pieces (of the pieces listed in ``sel``) C_V = S_p n B_V.
 
-    Returns their count (-1 when more than MAXB).
+    ``tv`` and ``te``: :func:`_piece_tables` for source ``s``. Returns their count (-1 when more than MAXB).
     """
     N = s_normal[s]
     q0 = s_q0[s]
@@ -329,7 +397,9 @@ def _blockers(p, nr, s, h, P2, n2, A0, s_normal, s_u, s_w, s_q0,
         c = (x0 * ax + x1 * ay + x2 * az) / math.sqrt(x0 * x0 + x1 * x1 + x2 * x2)
         if c < cosmin:
             cosmin = c
-    theta_s = math.acos(min(1.0, max(-1.0, cosmin)))
+    cosmin = min(1.0, max(-1.0, cosmin))
+    theta_s = -1.0  # acos(cosmin), taken when a piece's centre lies outside the cone
+    sin2 = 1.0 - cosmin * cosmin
     htop = h * SLAB_TOP
     # 2D coordinates of p's foot on the source plane
     px = (p[0] - q0[0]) * u[0] + (p[1] - q0[1]) * u[1] + (p[2] - q0[2]) * u[2]
@@ -347,42 +417,44 @@ def _blockers(p, nr, s, h, P2, n2, A0, s_normal, s_u, s_w, s_q0,
         dz = c[2] - p[2]
         dist = math.sqrt(dx * dx + dy * dy + dz * dz)
         if dist > r:
-            cang = (dx * ax + dy * ay + dz * az) / dist
-            ang = math.acos(min(1.0, max(-1.0, cang)))
-            if ang - math.asin(r / dist) > theta_s + 1e-9:
-                continue
+            cang = min(1.0, max(-1.0, (dx * ax + dy * ay + dz * az) / dist))
+            # a centre inside the cone (cang >= cosmin: its angle is at most theta_s) is never skipped
+            if cang < cosmin and not _in_wider_cone(cang, cosmin, sin2, r / dist):
+                if theta_s < 0.0:
+                    theta_s = math.acos(cosmin)
+                if math.acos(cang) - math.asin(r / dist) > theta_s + 1e-9:
+                    continue
         # project the vertices of V n slab
         npt = np.int64(0)  # (as cnt in _source_polygon)
         vb = v_voff[j]
         ve = v_voff[j + 1]
         for k in range(vb, ve):
-            x = v_verts[k]
-            sk = N[0] * (x[0] - q0[0]) + N[1] * (x[1] - q0[1]) + N[2] * (x[2] - q0[2])
+            sk = tv[k, 0]
             if sk >= 0.0 and sk <= htop:
                 f = h / (h - sk)
-                x0 = x[0] - q0[0]
-                x1 = x[1] - q0[1]
-                x2 = x[2] - q0[2]
-                xu = x0 * u[0] + x1 * u[1] + x2 * u[2]
-                xw = x0 * w[0] + x1 * w[1] + x2 * w[2]
-                pts[npt, 0] = px + (xu - px) * f
-                pts[npt, 1] = py + (xw - py) * f
+                pts[npt, 0] = px + (tv[k, 1] - px) * f
+                pts[npt, 1] = py + (tv[k, 2] - py) * f
                 npt += 1
         for e in range(v_eoff[j], v_eoff[j + 1]):
-            xa = v_verts[vb + v_edges[e, 0]]
-            xb = v_verts[vb + v_edges[e, 1]]
-            sa = N[0] * (xa[0] - q0[0]) + N[1] * (xa[1] - q0[1]) + N[2] * (xa[2] - q0[2])
-            sb = N[0] * (xb[0] - q0[0]) + N[1] * (xb[1] - q0[1]) + N[2] * (xb[2] - q0[2])
+            sa = tv[vb + v_edges[e, 0], 0]
+            sb = tv[vb + v_edges[e, 1], 0]
             for side in range(2):  # the two slab planes
                 lev = 0.0 if side == 0 else htop
                 if (sa < lev and sb > lev) or (sa > lev and sb < lev):
+                    f = h / (h - lev)
+                    if side == 0:  # the crossing of the source plane does not depend on p
+                        pts[npt, 0] = px + (te[e, 0] - px) * f
+                        pts[npt, 1] = py + (te[e, 1] - py) * f
+                        npt += 1
+                        continue
+                    xa = v_verts[vb + v_edges[e, 0]]
+                    xb = v_verts[vb + v_edges[e, 1]]
                     t = (lev - sa) / (sb - sa)
                     x0 = xa[0] + t * (xb[0] - xa[0]) - q0[0]
                     x1 = xa[1] + t * (xb[1] - xa[1]) - q0[1]
                     x2 = xa[2] + t * (xb[2] - xa[2]) - q0[2]
                     xu = x0 * u[0] + x1 * u[1] + x2 * u[2]
                     xw = x0 * w[0] + x1 * w[1] + x2 * w[2]
-                    f = h / (h - lev)
                     pts[npt, 0] = px + (xu - px) * f
                     pts[npt, 1] = py + (xw - py) * f
                     npt += 1
@@ -402,7 +474,7 @@ def _blockers(p, nr, s, h, P2, n2, A0, s_normal, s_u, s_w, s_q0,
 
 @numba.njit(cache=True)
 def _evaluate(p, nr, s, s_verts, s_off, s_normal, s_u, s_w, s_q0, scale,
-              v_verts, v_voff, v_edges, v_eoff, v_center, v_radius, sel,
+              v_verts, v_voff, v_edges, v_eoff, v_center, v_radius, sel, tv, te,
               P2, pts, hull, order, tmp, blk, blk_n, stk, stk_n, stk_next):
     """(edge sum of the visible part, status) for one point and one source polygon."""
     n2, h, A0 = _source_polygon(p, nr, s, s_verts, s_off, s_normal, s_u, s_w, s_q0, scale, P2)
@@ -413,7 +485,8 @@ def _evaluate(p, nr, s, s_verts, s_off, s_normal, s_u, s_w, s_q0, scale,
     w = s_w[s]
     efull = _lambert2(P2, n2, p, nr, q0, u, w)
     nb = _blockers(p, nr, s, h, P2, n2, A0, s_normal, s_u, s_w, s_q0,
-                   v_verts, v_voff, v_edges, v_eoff, v_center, v_radius, sel, pts, hull, order, tmp, blk, blk_n)
+                   v_verts, v_voff, v_edges, v_eoff, v_center, v_radius, sel, tv[s], te[s], pts, hull, order, tmp, blk,
+                   blk_n)
     if nb < 0:
         return 0.0, ST_OVERFLOW
     if nb == 0:
@@ -468,7 +541,7 @@ def _kernel(P, NR, s_verts, s_off, s_normal, s_u, s_w, s_q0, s_L, s_group, ngrou
     P2 = np.empty((vmax, 2))
     pts = np.empty((maxpts, 2))
     hull = np.empty((maxpts + 1, 2))
-    order = np.empty((2, maxpts), dtype=np.int64)
+    order = np.empty(maxpts, dtype=np.int64)
     tmp = np.empty((vmax, 2))
     blk = np.empty((MAXB, vmax, 2))
     blk_n = np.empty(MAXB, dtype=np.int64)
@@ -476,6 +549,7 @@ def _kernel(P, NR, s_verts, s_off, s_normal, s_u, s_w, s_q0, s_L, s_group, ngrou
     stk_n = np.empty(MAXB + 1, dtype=np.int64)
     stk_next = np.empty(MAXB + 1, dtype=np.int64)
     gstat = np.empty(ngroups, dtype=np.int64)
+    tv, te = _piece_tables(s_normal, s_u, s_w, s_q0, v_verts, v_voff, v_edges, v_eoff)
     for c in range(c0, c1):
         for i in range(c, n, nchunk):
             p = P[i]
@@ -486,7 +560,7 @@ def _kernel(P, NR, s_verts, s_off, s_normal, s_u, s_w, s_q0, s_L, s_group, ngrou
             e = 0.0
             for s in range(ns):
                 val, st = _evaluate(p, nr, s, s_verts, s_off, s_normal, s_u, s_w, s_q0, scale,
-                                    v_verts, v_voff, v_edges, v_eoff, v_center, v_radius, sel,
+                                    v_verts, v_voff, v_edges, v_eoff, v_center, v_radius, sel, tv, te,
                                     P2, pts, hull, order, tmp, blk, blk_n, stk, stk_n, stk_next)
                 if st == ST_OVERFLOW:
                     overflow[i] = True
@@ -632,15 +706,17 @@ def _single(p, nr, s, s_verts, s_off, s_normal, s_u, s_w, s_q0, scale,
     P2 = np.empty((vmax, 2))
     pts = np.empty((maxpts, 2))
     hull = np.empty((maxpts + 1, 2))
-    order = np.empty((2, maxpts), dtype=np.int64)
+    order = np.empty(maxpts, dtype=np.int64)
     tmp = np.empty((vmax, 2))
     blk = np.empty((maxb, vmax, 2))
     blk_n = np.zeros(maxb, dtype=np.int64)
     n2, h, A0 = _source_polygon(p, nr, s, s_verts, s_off, s_normal, s_u, s_w, s_q0, scale, P2)
     if n2 == 0 or A0 <= 0.0:
         return P2[:0].copy(), blk[:0].copy(), blk_n[:0].copy()
+    tv, te = _piece_tables(s_normal, s_u, s_w, s_q0, v_verts, v_voff, v_edges, v_eoff)
     nb = _blockers(p, nr, s, h, P2, n2, A0, s_normal, s_u, s_w, s_q0,
-                   v_verts, v_voff, v_edges, v_eoff, v_center, v_radius, sel, pts, hull, order, tmp, blk, blk_n)
+                   v_verts, v_voff, v_edges, v_eoff, v_center, v_radius, sel, tv[s], te[s], pts, hull, order, tmp, blk,
+                   blk_n)
     return P2[:n2].copy(), blk[:max(nb, 0)].copy(), blk_n[:max(nb, 0)].copy()
 
 
