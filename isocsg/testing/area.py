@@ -333,7 +333,11 @@ def _ring_measure(
     k = len(s)
     u = np.linspace(0.0, 1.0, RING_GRID)
     rs = [np.repeat(np.arange(k), RING_GRID)]
-    ts = [(rings.t0[:, None] + (rings.t1 - rings.t0)[:, None] * u).ravel()]
+    grid = rings.t0[:, None] + (rings.t1 - rings.t0)[:, None] * u
+    # the ends exactly: t0 + (t1 - t0) can round above t1, and the filter below would then drop
+    # the ring's last piece (a sixteenth of it) at random rings
+    grid[:, 0], grid[:, -1] = rings.t0, rings.t1
+    ts = [grid.ravel()]
     if planes is not None:
         r, t = _plane_crossings(rings, *planes)
         rs.append(r)
