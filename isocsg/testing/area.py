@@ -416,7 +416,7 @@ def _arrangement_heights(tree: _Tree, patch: Patch, rel: NDArray[np.int64]) -> F
     reach = (side.min(axis=0) <= tree.tol) & (side.max(axis=0) >= -tree.tol) & (np.abs(N @ n) < 1 - 1e-12)
     N, D, leaf = N[reach], D[reach], leaf[reach]
     a, b = np.triu_indices(len(D), 1)
-    if len(a) == 0 or len(a) > 2_000_000:
+    if len(a) == 0 or len(a) > 200_000:  # (a face crossed by hundreds of planes: left to the bisection)
         return np.zeros(0)
     M = np.stack([np.broadcast_to(n, (len(a), 3)), N[a], N[b]], axis=1)
     det = np.linalg.det(M)
