@@ -21,20 +21,22 @@ curved leaves by sampling ``samples`` points per ring and bisecting each sign ch
 signed distance to machine precision), every piece between crossings is classified at its
 midpoint and its area density integrated (Gauss-Legendre), giving the ring's measure ``m(s)``.
 ``m`` is integrated over the sweep parameter by adaptive Gauss-Kronrod (7-15), split first at
-the heights where other leaves start, end or have vertices, until the Kronrod-Gauss differences
-add up to less than ``tol`` times the patch's contribution (at least 1e-6 of its whole area).
+the heights where other leaves start, end or have vertices (on a planar face also where two
+other planes meet on it, each on its leaf's surface: the ring measure's kinks), until the
+Kronrod-Gauss differences add up to less than ``tol`` times the patch's contribution (at least 1e-6 of its whole area).
 The reported error is that sum plus the area of pieces that could not be decided (a midpoint
 on another surface at an angle).
 
 Coincident faces
 ----------------
 Where another leaf ``j``'s surface passes through ``p`` (within 1e-11 of the scene's size)
-with the same or the opposite normal, ``j`` takes the side its normal says (in on the side
-its interior is), so two boxes stacked in a union lose their shared face and a face common to
-``A`` and ``B`` in ``A - B`` is removed. A face shared by several leaves is counted once, by
-the leaf of lowest index (the others skip it), and only where the CSG rule keeps it. The split
-test assumes signed distances that are 1-Lipschitz (exact ones are); two crossings closer than
-2**-30 of a ring (tangencies) are not in the error estimate.
+with the same or the opposite normal (a planar leaf's normal is that of its face through
+``p``, the one most parallel to ``i``'s where ``p`` is on an edge), ``j`` takes the side its
+normal says (in on the side its interior is), so two boxes stacked in a union lose their
+shared face and a face common to ``A`` and ``B`` in ``A - B`` is removed. A face shared by
+several leaves is counted once, by the leaf of lowest index (the others skip it), and only
+where the CSG rule keeps it. The split test assumes signed distances that are 1-Lipschitz
+(exact ones are); two crossings closer than 2**-30 of a ring (tangencies) are not in the error estimate.
 """
 
 from __future__ import annotations
@@ -175,10 +177,19 @@ class _Tree:
         meet[i] = False
         return np.flatnonzero(meet)
 
-    def normals(self, j: int, p: F64) -> F64:
-        """Leaf ``j``'s outward unit normals at points on its surface (central differences of its
-        signed distance: exact for planes, O(step^2) on curved surfaces)."""
+    def normals(self, j: int, p: F64, toward: F64 | None = None) -> F64:
+        """Leaf ``j``'s outward unit normals at points on its surface. On a planar leaf, the
+        normal of a face the point is on (within the tolerance), of those the one most parallel
+        to ``toward`` (at an edge, the face that may coincide with the point's own); without
+        ``toward`` or off a planar leaf, central differences of its signed distance (O(step^2) on
+        curved surfaces; within a step of an edge they would mix two faces)."""
         prim = self.leaves[j]
+        faces = self.planes[j]
+        if toward is not None and self.planar[j] and faces is not None:
+            N, D = faces
+            dist = np.abs(p @ N.T - D)
+            fit = np.where(dist <= self.tol, np.abs(toward @ N.T), -1.0 - dist)  # else the nearest
+            return N[np.argmax(fit, axis=1)]  # type: ignore[no-any-return]
         h = self.step
         g = np.empty_like(p)
         for k in range(3):
@@ -205,7 +216,7 @@ class _Tree:
             pl, mi = ins.copy(), ins.copy()
             on = np.flatnonzero(np.abs(sd) <= self.tol)
             if len(on):
-                d = np.einsum("ij,ij->i", self.normals(j, p[on]), n[on])
+                d = np.einsum("ij,ij->i", self.normals(j, p[on], n[on]), n[on])
                 same, opp = d > 1 - 1e-6, d < -(1 - 1e-6)
                 pl[on] = opp
                 mi[on] = same
@@ -333,7 +344,11 @@ def _ring_measure(
     k = len(s)
     u = np.linspace(0.0, 1.0, RING_GRID)
     rs = [np.repeat(np.arange(k), RING_GRID)]
-    ts = [(rings.t0[:, None] + (rings.t1 - rings.t0)[:, None] * u).ravel()]
+    grid = rings.t0[:, None] + (rings.t1 - rings.t0)[:, None] * u
+    # the ends exactly: t0 + (t1 - t0) can round above t1, and the filter below would then drop
+    # the ring's last piece (a sixteenth of it) at random rings
+    grid[:, 0], grid[:, -1] = rings.t0, rings.t1
+    ts = [grid.ravel()]
     if planes is not None:
         r, t = _plane_crossings(rings, *planes)
         rs.append(r)
@@ -370,9 +385,54 @@ def _sweep_breaks(tree: _Tree, patch: Patch, rel: NDArray[np.int64]) -> F64:
     if patch.direction is not None and patch.s_of_height is not None:
         for j in rel.tolist():
             br.append(patch.s_of_height(np.asarray(tree.leaves[j].breakpoints(patch.direction), dtype=np.float64)))
+    if tree.planar[patch.leaf] and patch.s_of_height is not None and patch.direction is not None:
+        br.append(patch.s_of_height(_arrangement_heights(tree, patch, rel)))
     b = np.unique(np.concatenate(br))
     b = b[(b >= patch.s_lo) & (b <= patch.s_hi)]
     return np.unique(np.concatenate([[patch.s_lo, patch.s_hi], b]))
+
+
+def _arrangement_heights(tree: _Tree, patch: Patch, rel: NDArray[np.int64]) -> F64:
+    """Heights along the sweep direction of the points where two other planes meet on a planar
+    face, each on its leaf's surface: where the lines that cut the face cross each other or the
+    face's edges. The ring measure has kinks there (and only there, between leaves' vertices,
+    when every leaf is planar); a Gauss-Kronrod interval across a kink converges slowly and its
+    Kronrod-Gauss difference can understate its error."""
+    i = patch.leaf
+    own = tree.planes[i]
+    assert own is not None
+    n = patch.normal(np.zeros(1), np.zeros(1))[0]
+    c = patch.rings(np.array([0.5 * (patch.s_lo + patch.s_hi)])).c[0]
+    d = float(n @ c)
+    owners = [j for j in [i, *rel.tolist()] if tree.planes[j] is not None]
+    N = np.concatenate([tree.planes[j][0] for j in owners])  # type: ignore[index]
+    D = np.concatenate([tree.planes[j][1] for j in owners])  # type: ignore[index]
+    leaf = np.concatenate([np.full(len(tree.planes[j][1]), j) for j in owners])  # type: ignore[index]
+    # only planes that reach the face (its vertices on both sides, or on the plane), not parallel to it
+    r = patch.rings(np.asarray(patch.breaks, dtype=np.float64))
+    m = len(r.c)
+    corners = r.points(np.concatenate([np.arange(m), np.arange(m)]), np.concatenate([r.t0, r.t1]))
+    side = corners @ N.T - D
+    reach = (side.min(axis=0) <= tree.tol) & (side.max(axis=0) >= -tree.tol) & (np.abs(N @ n) < 1 - 1e-12)
+    N, D, leaf = N[reach], D[reach], leaf[reach]
+    a, b = np.triu_indices(len(D), 1)
+    if len(a) == 0 or len(a) > 200_000:  # (a face crossed by hundreds of planes: left to the bisection)
+        return np.zeros(0)
+    M = np.stack([np.broadcast_to(n, (len(a), 3)), N[a], N[b]], axis=1)
+    det = np.linalg.det(M)
+    ok = np.abs(det) > 1e-12
+    a, b, M = a[ok], b[ok], M[ok]
+    rhs = np.stack([np.full(len(a), d), D[a], D[b]], axis=1)
+    x = np.linalg.solve(M, rhs[:, :, None])[:, :, 0]
+    near = 1e-9 * max(float(np.max(tree.hi - tree.lo)), 1.0)
+    on = np.abs(np.asarray(tree.leaves[i].signed_distance(x))) <= near
+    for j in np.unique(np.concatenate([leaf[a], leaf[b]])).tolist():
+        if j == i:
+            continue
+        sel = np.flatnonzero(on & ((leaf[a] == j) | (leaf[b] == j)))
+        if len(sel):
+            on[sel] &= np.abs(np.asarray(tree.leaves[j].signed_distance(x[sel]))) <= near
+    return x[on] @ patch.direction  # type: ignore[no-any-return]
 
 
 def _patch_area(
