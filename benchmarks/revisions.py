@@ -25,6 +25,7 @@ import argparse
 import json
 import os
 import shutil
+import signal
 import statistics
 import subprocess
 import sys
@@ -172,6 +173,7 @@ def main() -> None:
         parser.error(f"unknown workloads {unknown}; known: {sorted(WORKLOADS)}")
 
     tmp = Path(tempfile.mkdtemp(prefix="isocsg-revisions-"))
+    signal.signal(signal.SIGTERM, lambda *_: sys.exit(143))  # a stopped run still removes its worktrees
     try:
         old, new = _checkout(args.old, tmp), _checkout(args.new, tmp)
         rows = []
