@@ -396,6 +396,7 @@ def outline(solid: Solid) -> Shape2D:
     >>> round(area(outline(Cylinder((0, 0, 0), (0, 0, 2), 1))) / math.pi, 12)
     1.0
     """
+    flat = _flat_faced(solid)
     done: dict[int, Shape2D] = {}
     stack: list[tuple[Any, bool]] = [(solid, False)]
     while stack:
@@ -407,7 +408,7 @@ def outline(solid: Solid) -> Shape2D:
             done[id(s)] = leaf_outline(s)
             continue
         op = _op(s)
-        if op != "union" and _flat_faced(s):
+        if op != "union" and flat[id(s)]:
             done[id(s)] = _manifold_outline(s)
             continue
         need = list(kids) if op == "union" else [_core(s, op, kids)]
@@ -420,8 +421,24 @@ def outline(solid: Solid) -> Shape2D:
     return done[id(solid)]
 
 
-def _flat_faced(s: Any) -> bool:
-    return all(type(leaf).polyhedral for leaf in _leaves(s))
+def _flat_faced(solid: Any) -> dict[int, bool]:
+    """Whether each node's leaves are all flat-faced, by node id: one post-order pass, so that a
+    chain of 100 000 differences is not walked once per level."""
+    flat: dict[int, bool] = {}
+    stack: list[tuple[Any, bool]] = [(solid, False)]
+    while stack:
+        s, expanded = stack.pop()
+        if id(s) in flat:
+            continue
+        kids = _children(s)
+        if kids is None:
+            flat[id(s)] = bool(type(s).polyhedral)
+        elif expanded:
+            flat[id(s)] = all(flat[id(c)] for c in kids)
+        else:
+            stack.append((s, True))
+            stack.extend((c, False) for c in kids)
+    return flat
 
 
 def _manifold_outline(s: Any) -> Shape2D:
