@@ -29,6 +29,8 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from isocsg import AreaLight, Box, PolyhedronLight, illuminance
+from isocsg.lighting.luminaire import PhotometricLight
+from isocsg.lighting.photometry import Photometry
 from isocsg.shadows.patches import Room
 from isocsg.shadows.radiosity import Interreflections, solve_radiosity
 
@@ -147,7 +149,7 @@ def _face_index(patches):
         n = patches.normal[k]
         a = int(np.argmax(np.abs(n)))
         out.append(FACES.index((a, 0 if n[a] > 0 else 1)))
-    return np.array(out)
+    return np.array(out, dtype=np.int64)
 
 
 def _room_and_rho(size, rho_floor, rho_walls, rho_ceiling):
@@ -330,3 +332,167 @@ def test_case_5_8_cube_sumpner_relation(rho):
     assert float(a @ sol.direct) == pytest.approx(phi, rel=1e-9)
     indirect = float(a @ (sol.incident - sol.direct))
     assert indirect / 96.0 == pytest.approx(rho * phi / (96.0 * (1 - rho)), rel=1e-9)
+
+
+# ---------------------------------------------------------------------------
+# 5.1 / 5.2: point sources, direct illuminance (isotropic and Lambertian distributions).
+# ---------------------------------------------------------------------------
+
+
+def _angles_on_floor(h, thetas_deg, azimuth_deg=0.0):
+    """Floor points seen from a source at height h at these angles from the vertical (one azimuth)."""
+    t = np.radians(np.asarray(thetas_deg, dtype=float))
+    a = math.radians(azimuth_deg)
+    r = h * np.tan(t)
+    return np.c_[r * math.cos(a), r * math.sin(a), np.zeros(len(t))]
+
+
+@pytest.mark.parametrize("azimuth", [0.0, 37.0])
+def test_case_5_1_isotropic_point_source(azimuth):
+    """CIE 171:2006 case 5.1 (point source): E = I cos^3(theta) / h^2 on the floor, I cos^2 sin / h^2 on a wall.
+
+    An isotropic source of 1000 cd at h = 3 m; floor points at theta = 0 ..
+    80 degrees from the vertical; points on a vertical plane facing the
+    source's foot (normal pointing back to the source's vertical): E_v =
+    I cos^2(theta) sin(theta) / h^2, theta measured from the vertical.
+    """
+    I, h = 1000.0, 3.0
+    lamp = PhotometricLight.isotropic((0.0, 0.0, h), I)
+    thetas = np.arange(0.0, 81.0, 5.0)
+    pts = _angles_on_floor(h, thetas, azimuth)
+    t = np.radians(thetas)
+    assert illuminance(pts, [0, 0, 1], [lamp]) == pytest.approx(I * np.cos(t) ** 3 / h**2, rel=1e-12)
+    # a vertical receiver at the same points, its normal pointing horizontally back towards the source
+    a = math.radians(azimuth)
+    vert = np.array([-math.cos(a), -math.sin(a), 0.0])
+    ev = illuminance(pts[1:], vert, [lamp])
+    assert ev == pytest.approx(I * np.cos(t[1:]) ** 2 * np.sin(t[1:]) / h**2, rel=1e-12)
+
+
+@settings(max_examples=25, deadline=None)
+@given(st.floats(0.1, 10), st.floats(1.0, 1e4), st.floats(-20, 20), st.floats(-20, 20))
+def test_case_5_1_any_height_and_point(h, I, x, y):
+    """Case 5.1 across the configuration space: E = I h / r^3 = I cos^3(theta) / h^2."""
+    e = illuminance([[x, y, 0.0]], [0, 0, 1], [PhotometricLight.isotropic((0.0, 0.0, h), I)])[0]
+    cos = h / math.sqrt(x * x + y * y + h * h)
+    assert e == pytest.approx(I * cos**3 / h**2, rel=1e-12)
+
+
+@pytest.mark.parametrize("tilt", [0.0, 30.0])
+def test_case_5_2_lambertian_point_source(tilt):
+    """CIE 171:2006 case 5.2 (point source with a cosine distribution): E = I0 cos(gamma) cos(theta) / r^2.
+
+    I(gamma) = I0 cos(gamma), gamma from the luminaire's axis, tabulated every
+    degree (the file's table; between its nodes the standards' linear
+    interpolation applies, so the comparison is at the nodes, where it is
+    exact). Straight down: E = I0 cos^4(theta) / h^2. Tilted by 30 degrees
+    towards +x: floor points in the tilt's plane at theta = 30 + k degrees from
+    the vertical lie at gamma = k, so E = I0 cos(k) cos(theta)^3 / h^2.
+    """
+    I0, h = 800.0, 2.5
+    lamp = PhotometricLight((0.0, 0.0, h), Photometry.lambertian(I0, steps=90), tilt=tilt)
+    k = np.arange(0.0, 56.0, 1.0)
+    thetas = tilt + k
+    pts = _angles_on_floor(h, thetas)
+    t, g = np.radians(thetas), np.radians(k)
+    assert illuminance(pts, [0, 0, 1], [lamp]) == pytest.approx(I0 * np.cos(g) * np.cos(t) ** 3 / h**2, rel=1e-12)
+    # between the nodes: within the linear interpolation's bound I0 (1 deg)^2 / 8 of the cosine
+    mid = _angles_on_floor(h, thetas[:-1] + 0.5)
+    tm, gm = np.radians(thetas[:-1] + 0.5), np.radians(k[:-1] + 0.5)
+    exact = I0 * np.cos(gm) * np.cos(tm) ** 3 / h**2
+    bound = I0 * math.radians(1.0) ** 2 / 8 * np.cos(tm) ** 3 / h**2
+    assert np.all(np.abs(illuminance(mid, [0, 0, 1], [lamp]) - exact) <= bound * (1 + 1e-9))
+
+
+# ---------------------------------------------------------------------------
+# 5.5 / 5.6: a point source's light reflected by diffuse surfaces (one surface; two and four exchanging).
+# ---------------------------------------------------------------------------
+
+
+def rect_solid_angle(x0, x1, y0, y1, h):
+    """Solid angle of the rectangle [x0, x1] x [y0, y1] at distance h from the point (foot at 0, 0).
+
+    Corner form atan(a b / (h sqrt(a^2 + b^2 + h^2))), odd in a and in b, by superposition.
+    """
+    def g(a, b):
+        return math.atan(a * b / (h * math.sqrt(a * a + b * b + h * h)))
+    return g(x1, y1) - g(x0, y1) - g(x1, y0) + g(x0, y0)
+
+
+def face_solid_angle(size, p, face):
+    """Solid angle of a face of the room [0, size] seen from an interior point p."""
+    fa, fs = face
+    h = abs(fs * size[fa] - p[fa])
+    u, v = [k for k in range(3) if k != fa]
+    return rect_solid_angle(-p[u], size[u] - p[u], -p[v], size[v] - p[v], h)
+
+
+def _point_source_reference(size, rho, I, P):
+    """Exact one-patch-per-face radiosity of a room lit by an isotropic point source at P."""
+    F = face_factor_matrix(size)
+    area = np.array([size[1] * size[2]] * 2 + [size[0] * size[2]] * 2 + [size[0] * size[1]] * 2)
+    E = np.array([I * face_solid_angle(size, P, f) for f in FACES]) / area
+    B = np.linalg.solve(np.eye(6) - rho[:, None] * F, rho * E)
+    return E, B
+
+
+RECEIVERS = [((0.5, 0.5, 0.0), (2, 1)), ((0.1, 0.8, 0.0), (2, 1)), ((0.5, 0.5, 0.4), (2, 1)),
+             ((0.3, 0.6, 1.0), (2, -1)), ((0.0, 0.3, 0.6), (0, 1)), ((0.7, 0.0, 0.2), (1, 1)),
+             ((0.3, 0.6, 0.5), (0, -1))]
+
+
+def _check_point_source_room(size, rhos, I, P):
+    room, rho = _room_and_rho(size, *rhos)
+    E, B = _point_source_reference(size, rho, I, np.asarray(P))
+    lamp = PhotometricLight.isotropic(P, I)
+    inter = Interreflections(room=room, patch_size=max(size) + 1, refine=0, tolerance=1e-13)
+    sol = solve_radiosity([lamp], (), inter)
+    idx = _face_index(sol.patches)
+    assert sol.direct == pytest.approx(E[idx], rel=1e-12)
+    assert sol.radiosity == pytest.approx(B[idx], rel=1e-9, abs=1e-12 * I)
+    pts = np.array([[u * size[0], v * size[1], w * size[2]] for (u, v, w), _ in RECEIVERS])
+    nrm = np.zeros((len(pts), 3))
+    for k, (_, (a, s)) in enumerate(RECEIVERS):
+        nrm[k, a] = s
+    ind = [sum(B[j] * point_to_face(size, p, ax, FACES[j]) for j in range(6)) for p, (_, ax) in zip(pts, RECEIVERS)]
+    d = pts - np.asarray(P)
+    r = np.linalg.norm(d, axis=1)
+    direct = I * np.maximum(0.0, -np.einsum("ij,ij->i", nrm, d)) / r**3
+    total = illuminance(pts, nrm, [lamp], interreflections=inter)
+    assert total == pytest.approx(direct + np.array(ind), rel=1e-9)
+    return B
+
+
+def test_case_5_5_point_source_over_one_diffuse_surface():
+    """CIE 171:2006 case 5.5 (diffuse reflection): one reflecting floor under an isotropic point source.
+
+    A 4 m x 4 m x 3 m room, only the floor reflecting (rho = 0.5), 1000 cd at
+    (1.5, 2.2, 2.4). In the one-patch model the floor's exitance is
+    B = rho I Omega / A (Omega its solid angle from the source, corner
+    formula); every other point receives E_ind = B F(x -> floor) (Howell B-3,
+    the perpendicular form on walls). The total at the receivers is that plus
+    I cos / r^2.
+    """
+    B = _check_point_source_room((4.0, 4.0, 3.0), (0.5, 0.0, 0.0), 1000.0, (1.5, 2.2, 2.4))
+    assert np.count_nonzero(B) == 1
+
+
+@pytest.mark.parametrize("rhos", [(0.6, 0.0, 0.8), (0.0, 0.7, 0.0), (0.3, 0.5, 0.7)])
+def test_case_5_6_point_source_interreflection(rhos):
+    """CIE 171:2006 case 5.6 (diffuse interreflection): surfaces exchanging a point source's light.
+
+    The floor and the ceiling (a parallel pair, Howell C-11), the four walls
+    (perpendicular pairs C-14 and parallel ones C-11), all six faces: the
+    one-patch system B = rho (I Omega / A + F B) solved here, the receivers'
+    indirect light sum_j B_j F(x -> j).
+    """
+    _check_point_source_room((5.0, 3.5, 2.8), rhos, 650.0, (3.1, 1.2, 1.9))
+
+
+@settings(max_examples=5, deadline=None)
+@given(st.tuples(st.floats(1.5, 8.0), st.floats(1.5, 8.0), st.floats(1.5, 5.0)),
+       st.tuples(st.floats(0.0, 0.9), st.floats(0.0, 0.9), st.floats(0.0, 0.9)),
+       st.tuples(st.floats(0.05, 0.95), st.floats(0.05, 0.95), st.floats(0.05, 0.95)), st.floats(1.0, 1e4))
+def test_case_5_6_any_room_and_point(size, rhos, where, I):
+    """Cases 5.5 and 5.6 across rooms, reflectances, source positions and intensities."""
+    _check_point_source_room(size, rhos, I, tuple(w * s for w, s in zip(where, size)))

@@ -120,10 +120,9 @@ def test_illuminance_command_lights_the_scene_with_the_study_luminaires(tmp_path
 def test_point_luminaire_in_a_closed_room_keeps_sumpners_relation(rho):
     """Sumpner's relation with a point luminaire: the reflected flux is rho / (1 - rho) of the direct flux.
 
-    The direct flux on the walls is the luminaire's flux 4 pi I up to the
-    quadrature of the patches' means (Gauss points, no closed form for a point
-    source; the lamp is 0.6 m or more from every wall): measured 1.3e-7 at
-    3 x 3 points and 6e-16 at 8 x 8 on 0.5 m patches.
+    The direct flux on the walls is the luminaire's flux 4 pi I: an isotropic
+    luminaire's patch means are closed forms (the patches' solid angles; the
+    Gauss points' mean, used before, was off by 1.3e-7 at 3 x 3 points).
     """
     room = Room((1.5, 1.0, 1.25), (3.0, 2.0, 2.5), floor=rho, walls=rho, ceiling=rho)
     lamp = PhotometricLight((1.2, 1.0, 1.6), Photometry.isotropic(100.0))

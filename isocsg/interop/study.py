@@ -24,7 +24,8 @@ ignored here)::
 
     [[study.luminaires]]
     name = "D1"
-    file = "downlight.ldt"             # .ies or .ldt, relative to the scene file
+    file = "downlight.ldt"             # .ies or .ldt, relative to the scene file;
+    # or: intensity = 250.0            #   a plain isotropic point source of 250 cd
     position = [1.5, 1.0, 2.8]
     rotation = 0.0                     # optional; or aim = [x, y, z]
     tilt = 0.0
@@ -56,7 +57,7 @@ from ..errors import InvalidLightError, InvalidParameterError, SceneFileError
 from ..kinds import DEFAULT_RESOLUTION
 from ..lighting.area import AreaLight, PolyhedronLight
 from ..lighting.luminaire import PhotometricLight
-from ..lighting.photometry import read_photometry
+from ..lighting.photometry import Photometry, read_photometry
 from ..scene.io import decode_scene_text, read_scene_file, scene_from_dict
 from ..scene.model import Scene
 from ..shadows.en12464 import (
@@ -80,7 +81,7 @@ __all__ = ["Task", "Luminaire", "StudySpec", "StudyResult", "LightingTables", "l
 _STUDY_FIELDS = {"title", "room", "height", "maintenance_factor", "wall_band", "cylindrical_height", "map_spacing",
                  "tasks", "luminaires", "vertical"}
 _TASK_FIELDS = {"name", "rect", "requirement", "em", "u0", "source"}
-_LUM_FIELDS = {"name", "file", "position", "rotation", "tilt", "aim", "multiplier", "model"}
+_LUM_FIELDS = {"name", "file", "intensity", "position", "rotation", "tilt", "aim", "multiplier", "model"}
 #: Largest number of luminaires and task areas in a study.
 MAX_LUMINAIRES = 1000
 MAX_TASKS = 100
@@ -207,15 +208,22 @@ def _task(source: str, path: str, t: Any) -> Task:
 
 
 def _luminaire(source: str, path: str, t: Any, base: Path, cache: dict[Path, Any]) -> Luminaire:
-    t = _check_keys(source, path, t, _LUM_FIELDS, ("file", "position"))
-    if not isinstance(t["file"], str):
-        raise _fail(source, f"{path}.file", f"must be a string, got {t['file']!r}")
-    f = (base / t["file"]).resolve()
-    if f not in cache:
-        try:
-            cache[f] = read_photometry(f)
-        except InvalidLightError as exc:
-            raise _fail(source, f"{path}.file", str(exc)) from None
+    t = _check_keys(source, path, t, _LUM_FIELDS, ("position",))
+    if ("file" in t) == ("intensity" in t):
+        raise _fail(source, path, "give either file (a photometric file) or intensity (an isotropic point, cd)")
+    if "intensity" in t:
+        photometry = Photometry.isotropic(_number(source, f"{path}.intensity", t["intensity"], 0.0, 1e6,
+                                                  lo_incl=True))
+    else:
+        if not isinstance(t["file"], str):
+            raise _fail(source, f"{path}.file", f"must be a string, got {t['file']!r}")
+        f = (base / t["file"]).resolve()
+        if f not in cache:
+            try:
+                cache[f] = read_photometry(f)
+            except InvalidLightError as exc:
+                raise _fail(source, f"{path}.file", str(exc)) from None
+        photometry = cache[f]
     model = t.get("model", "point")
     if model not in ("point", "opening"):
         raise _fail(source, f"{path}.model", f"must be 'point' or 'opening', got {model!r}")
@@ -226,7 +234,7 @@ def _luminaire(source: str, path: str, t: Any, base: Path, cache: dict[Path, Any
     if "aim" in t:
         kw["aim"] = _vec(source, f"{path}.aim", t["aim"], 3)
     try:
-        light = PhotometricLight(photometry=cache[f], **kw)
+        light = PhotometricLight(photometry=photometry, **kw)
         lum = Luminaire(str(t.get("name", f"L{path}")), light, model)
         if model == "opening":
             lum.source()  # the file must give a luminous opening

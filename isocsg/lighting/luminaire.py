@@ -130,6 +130,25 @@ class PhotometricLight:
                    error=err),
         )
 
+    @classmethod
+    def isotropic(cls, position: ArrayLike, intensity: float) -> PhotometricLight:
+        """A plain point light: ``intensity`` cd in every direction (flux ``4 pi I``), hard shadows.
+
+        Raises
+        ------
+        InvalidLightError
+            On a non-finite position or a negative or non-finite intensity.
+
+        Examples
+        --------
+        >>> lamp = PhotometricLight.isotropic((0, 0, 2), 100.0)
+        >>> float(lamp.intensity_towards([[1.0, 0.0, 0.0]])[0]), round(lamp.flux, 6) == round(400 * math.pi, 6)
+        (100.0, True)
+        """
+        candela = scalar("PhotometricLight.intensity", intensity, low=0.0, low_inclusive=True, high=MAX_INTENSITY,
+                         error=InvalidLightError)
+        return cls(position, Photometry.isotropic(candela))  # type: ignore[arg-type]
+
     @property
     def matrix(self) -> NDArray[np.float64]:
         """Luminaire frame to world (3x3, columns: C0 axis, C90 axis, zenith)."""

@@ -34,9 +34,10 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from .._validation import normalize_rows, points_array
-from ..errors import InvalidParameterError
+from ..errors import InvalidLightError, InvalidParameterError
 from ..kinds import DEFAULT_RESOLUTION, Solid
 from ..lighting.area import AreaLight, PolyhedronLight, as_light_list
+from ..lighting.lights import PointLight
 from ..lighting.luminaire import PhotometricLight
 from .lambert import _prepare, edge_terms
 from .occluders import ConvexPiece, occluder_list, shadow_pieces
@@ -49,7 +50,8 @@ class IndirectLight(Protocol):
 
     def indirect_illuminance(
         self, points: NDArray[np.float64], normals: NDArray[np.float64],
-        lights: Sequence[AreaLight | PolyhedronLight], occluders: Sequence[Solid], *, resolution: int,
+        lights: Sequence[AreaLight | PolyhedronLight | PhotometricLight], occluders: Sequence[Solid], *,
+        resolution: int,
     ) -> NDArray[np.float64]: ...
 
 
@@ -115,6 +117,11 @@ def _split_lights(lights: Any) -> tuple[list[AreaLight | PolyhedronLight], list[
             seq = list(lights)
         except TypeError:
             seq = None
+    for i, li in enumerate(seq or [lights]):
+        if isinstance(li, PointLight):
+            raise InvalidLightError(
+                f"lights[{i}] is a PointLight, a rendering light without photometric units; an isotropic point "
+                f"source of I cd is PhotometricLight.isotropic(position, I)")
     if seq is not None and any(isinstance(li, PhotometricLight) for li in seq):
         return (as_light_list([li for li in seq if not isinstance(li, PhotometricLight)]),
                 [li for li in seq if isinstance(li, PhotometricLight)])
@@ -380,8 +387,9 @@ def illuminance(
         raise InvalidParameterError(
             f"interreflections must be an Interreflections, got {type(interreflections).__name__}")
     p, n = _prepare(points, normals)
+    areas, luminaires = _split_lights(lights)
     return direct + interreflections.indirect_illuminance(
-        p, n, as_light_list(lights), occluder_list(occluders, resolution), resolution=resolution)
+        p, n, [*areas, *luminaires], occluder_list(occluders, resolution), resolution=resolution)
 
 
 def shadow_state(

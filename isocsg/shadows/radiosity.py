@@ -61,6 +61,7 @@ from .form_factors import pair_form_factors
 from .lambert import _prepare
 from .occluders import occluder_list, shadow_pieces
 from .patches import PatchSet, Room, surface_patches
+from .pointflux import signed_solid_angles
 from .visibility import PieceArrays, SourceArrays, visible_illuminance
 
 __all__ = ["Interreflections", "RadiositySolution", "solve_radiosity", "indirect_illuminance"]
@@ -191,7 +192,7 @@ class Interreflections:
 
     def indirect_illuminance(
         self, points: ArrayLike, normals: ArrayLike,
-        lights: Sequence[AreaLight | PolyhedronLight] | AreaLight | PolyhedronLight,
+        lights: Sequence[SolveLight] | SolveLight,
         occluders: Sequence[Solid] | Solid = (), *, resolution: int = DEFAULT_RESOLUTION,
     ) -> NDArray[np.float64]:
         """Solve the radiosity for these lights and occluders; the indirect illuminance at points.
@@ -328,9 +329,8 @@ def _direct_means(patches: PatchSet, lights: list[SolveLight], solids: list[Soli
     lo, hi = patches.bounds()
     pts, wts, idx = patches.samples(order)
     for light in lights:
-        if isinstance(light, PhotometricLight):  # a point: exact at the Gauss points, hard shadows
-            e = illuminance(pts, patches.normal[idx], [light], solids, resolution=resolution)
-            out += np.bincount(idx, weights=wts * e, minlength=n) / patches.area
+        if isinstance(light, PhotometricLight):
+            out += _point_means(patches, light, solids, blockers, (pts, wts, idx), resolution)
             continue
         for q in light.emitting_polygons():
             src = AreaLight(q, radiance=light.radiance)
@@ -348,6 +348,44 @@ def _direct_means(patches: PatchSet, lights: list[SolveLight], solids: list[Soli
             if sel.any():
                 e = illuminance(pts[sel], patches.normal[idx[sel]], [src], solids, resolution=resolution)
                 out += np.bincount(idx[sel], weights=wts[sel] * e, minlength=n) / patches.area
+    return out
+
+
+def _uniform_intensity(light: PhotometricLight) -> float | None:
+    """The intensity (cd, multiplier included) of a luminaire that sends the same in every direction, else None."""
+    ph = light.photometry
+    v = ph.candela
+    if ph.gamma_angles[0] == 0.0 and ph.gamma_angles[-1] == 180.0 and np.all(v == v.flat[0]):
+        return light.multiplier * float(v.flat[0])
+    return None
+
+
+def _point_means(patches: PatchSet, light: PhotometricLight, solids: list[Solid], blockers: _Blockers,
+                 rule: tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.int64]],
+                 resolution: int) -> NDArray[np.float64]:
+    """Mean direct illuminance of each patch from a point luminaire.
+
+    An isotropic luminaire and a patch that nothing can hide from it (no
+    occluder's box meets their joint box, the patch's owner left out: a convex
+    solid hides nothing from its own faces): exactly ``I Omega / A``. Else the
+    exact illuminance (hard shadows, the interpolated distribution) at the
+    patch's Gauss points, averaged.
+    """
+    n = len(patches)
+    out = np.zeros(n)
+    pts, wts, idx = rule
+    P = np.asarray(light.position, dtype=np.float64)
+    exact = np.zeros(n, dtype=bool)
+    intensity = _uniform_intensity(light)
+    if intensity is not None:
+        lo, hi = patches.bounds()
+        exact = blockers.clear(np.minimum(lo, P), np.maximum(hi, P), patches.owner, np.full(n, -2))
+        omega = signed_solid_angles(P, patches.verts, patches.off)
+        out = np.where(exact, intensity * np.maximum(omega, 0.0) / patches.area, 0.0)
+    sel = ~exact[idx]
+    if sel.any():
+        e = illuminance(pts[sel], patches.normal[idx[sel]], [light], solids, resolution=resolution)
+        out += np.bincount(idx[sel], weights=wts[sel] * e, minlength=n) / patches.area
     return out
 
 
@@ -423,8 +461,11 @@ def solve_radiosity(
     Parameters
     ----------
     lights : AreaLight, PolyhedronLight, PhotometricLight or a sequence of them
-        A point luminaire's mean over a patch comes from its exact
-        illuminance at the patch's Gauss points (no closed form).
+        A point luminaire's mean over a patch: for an isotropic one
+        (:meth:`~isocsg.lighting.luminaire.PhotometricLight.isotropic`) and a
+        patch nothing can hide from it, exactly ``I Omega / A`` (the patch's
+        solid angle); otherwise the mean of its exact illuminance (hard
+        shadows, the interpolated distribution) at the patch's Gauss points.
     occluders : Solid or sequence of Solid, optional
         As for :func:`~isocsg.shadows.direct.illuminance`; those given a
         reflectance in ``interreflections`` also reflect.
@@ -520,7 +561,7 @@ def _solve_lights(lights: Any) -> list[SolveLight]:
 def indirect_illuminance(
     points: ArrayLike,
     normals: ArrayLike,
-    lights: Sequence[AreaLight | PolyhedronLight] | AreaLight | PolyhedronLight,
+    lights: Sequence[SolveLight] | SolveLight,
     occluders: Sequence[Solid] | Solid = (),
     interreflections: Interreflections | None = None,
     *,
