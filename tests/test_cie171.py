@@ -1,4 +1,4 @@
-"""The analytic test cases of CIE 171:2006 on area sources, obstructions and interreflections.
+"""The analytic test cases of CIE 171:2006 on point and area sources, obstructions and interreflections.
 
 CIE 171:2006, "Test cases to assess the accuracy of lighting computer
 programs" (TC 3-33; Maamari and Fontoynont, "Analytical tests for
@@ -16,7 +16,11 @@ CIE 171:2006"): the report's tables themselves were not available (a paid
 CIE publication; the public sources give the case list, parts of the
 geometry and the analytical method, and Ashdown's errata), so the cases are
 checked against their formulas on the cases' configurations, not against
-the printed digits.
+the printed digits. The public sources give neither the titles nor the
+geometry of cases 5.1, 5.2, 5.5 and 5.6: under these numbers are a point
+source's direct light (isotropic, cosine distribution) and its light
+reflected by one and by several diffuse surfaces, on configurations chosen
+here (the docs say why).
 """
 
 from __future__ import annotations
