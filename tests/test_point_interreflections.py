@@ -26,6 +26,7 @@ from isocsg.errors import InvalidLightError, SceneFileError
 from isocsg.interop.study import load_study
 from isocsg.lighting.luminaire import PhotometricLight
 from isocsg.shadows.patches import Room
+from isocsg.shadows.pointflux import signed_solid_angles
 from isocsg.shadows.radiosity import Interreflections, solve_radiosity
 
 # the closed forms of the CIE 171 cases live next to the tests (pytest runs with --import-mode=importlib)
@@ -38,6 +39,55 @@ def _direct(pts, nrm, P, intensity):
     d = np.asarray(P) - pts
     r = np.linalg.norm(d, axis=1)
     return intensity * np.maximum(0.0, np.einsum("ij,ij->i", nrm, d)) / r**3
+
+
+# ---------------------------------------------------------------------------
+# Solid angles: a closed surface subtends 4 pi from inside and 0 from outside.
+# ---------------------------------------------------------------------------
+
+
+def _outward_faces(verts, faces):
+    """Faces of a convex polyhedron ordered counter-clockwise about their outward normals."""
+    c = verts.mean(axis=0)
+    out = []
+    for f in faces:
+        q = verts[list(f)]
+        if np.dot(np.cross(q[1] - q[0], q[2] - q[0]), q[0] - c) < 0:
+            q = q[::-1]
+        out.append(q)
+    return out
+
+
+BOX = np.array([[x, y, z] for x in (-1.0, 2.0) for y in (-0.5, 0.5) for z in (0.0, 3.0)])
+BOX_FACES = [(0, 1, 3, 2), (4, 5, 7, 6), (0, 1, 5, 4), (2, 3, 7, 6), (0, 2, 6, 4), (1, 3, 7, 5)]
+TETRA_FACES = [(0, 1, 2), (0, 1, 3), (0, 2, 3), (1, 2, 3)]
+
+
+def _closed_surface_sum(verts, faces, apex):
+    polys = _outward_faces(verts, faces)
+    off = np.concatenate([[0], np.cumsum([len(q) for q in polys])])
+    return float(signed_solid_angles(np.asarray(apex, dtype=float), np.vstack(polys), off).sum())
+
+
+@settings(max_examples=30, deadline=None)
+@given(st.lists(st.tuples(st.floats(-3, 3), st.floats(-3, 3), st.floats(-3, 3)), min_size=4, max_size=4)
+       .filter(lambda c: abs(np.linalg.det(np.subtract(c[1:], c[0]))) > 0.1),
+       st.tuples(*[st.floats(0.05, 1.0)] * 4),
+       st.tuples(*[st.floats(-9, 9)] * 3).filter(lambda p: max(map(abs, p)) > 4))
+def test_solid_angles_of_a_closed_surface(corners, weights, far):
+    """Signed solid angles of a tetrahedron's and a box's outward faces: -4 pi from inside, 0 from outside.
+
+    A point inside a closed surface sees it whole, from behind every outward
+    face; a point outside sees each ray enter and leave once (Gauss's
+    theorem for 1 / r^2). Asserted 1e-12.
+    """
+    v = np.asarray(corners, dtype=float)
+    w = np.asarray(weights) / sum(weights)
+    assert _closed_surface_sum(v, TETRA_FACES, w @ v) == pytest.approx(-4 * math.pi, rel=1e-12)
+    assert _closed_surface_sum(v, TETRA_FACES, far) == pytest.approx(0.0, abs=1e-12)
+    inside = BOX.min(axis=0) + w[:3] / w[:3].max() * 0.98 * np.ptp(BOX, axis=0)
+    assert _closed_surface_sum(BOX, BOX_FACES, inside) == pytest.approx(-4 * math.pi, rel=1e-12)
+    assert _closed_surface_sum(BOX, BOX_FACES, far) == pytest.approx(0.0, abs=1e-12)
 
 
 # ---------------------------------------------------------------------------
