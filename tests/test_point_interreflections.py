@@ -20,7 +20,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from isocsg import PointLight, illuminance
+from isocsg import Box, PointLight, illuminance
 from isocsg.cli import main
 from isocsg.errors import InvalidLightError, SceneFileError
 from isocsg.interop.study import load_study
@@ -32,6 +32,7 @@ from isocsg.shadows.radiosity import Interreflections, solve_radiosity
 # the closed forms of the CIE 171 cases live next to the tests (pytest runs with --import-mode=importlib)
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
+import test_cie171 as T  # noqa: E402
 from test_cie171 import FACES, _point_source_reference, point_to_face  # noqa: E402
 
 
@@ -146,6 +147,74 @@ def test_cube_with_a_central_source_keeps_sumpners_relation_at_every_point(rho):
     sumpner = rho * 4 * math.pi * intensity / (6 * s * s * (1 - rho))
     total = illuminance(pts, nrm, [lamp], interreflections=inter)
     assert total == pytest.approx(_direct(pts, nrm, (0, 0, 0), intensity) + sumpner, rel=1e-9)
+
+
+# ---------------------------------------------------------------------------
+# A hard shadow on a reflecting patch: the factor to its unshaded part, in closed form.
+# ---------------------------------------------------------------------------
+
+
+def _plate_case(P, plate_lo, plate_hi, zp, t, receivers, rho=0.5, intensity=500.0, size=(4.0, 4.0, 3.0)):
+    """isocsg against the closed form for a floor lit past a black plate (the feet of P and x under the plate).
+
+    From a point above the plate whose foot lies under it, the plate's shadow
+    on the floor is its top face's central projection (the bottom face's lies
+    inside it): a rectangle, clipped to the floor. The floor's mean direct
+    light is ``I [Omega(floor) - Omega(shadow)] / A``; a receiver above the
+    plate facing down gets ``B [F(x -> floor) - F(x -> its own shadow window)]``.
+    """
+    X, Y, _ = size
+    top = zp + t / 2
+
+    def hidden(apex, z_apex):
+        k = z_apex / (z_apex - top)
+        x0, x1 = (apex[0] + k * (c - apex[0]) for c in (plate_lo[0], plate_hi[0]))
+        y0, y1 = (apex[1] + k * (c - apex[1]) for c in (plate_lo[1], plate_hi[1]))
+        return max(x0, 0.0), min(x1, X), max(y0, 0.0), min(y1, Y)
+
+    x0, x1, y0, y1 = hidden(P, P[2])
+    seen = (T.rect_solid_angle(-P[0], X - P[0], -P[1], Y - P[1], P[2])
+            - (T.rect_solid_angle(x0 - P[0], x1 - P[0], y0 - P[1], y1 - P[1], P[2]) if x1 > x0 and y1 > y0 else 0))
+    B = rho * intensity * seen / (X * Y)
+    ref = []
+    for x in receivers:
+        h0, h1, g0, g1 = hidden(x, x[2])
+        f = T.point_to_parallel_rect(-x[0], X - x[0], -x[1], Y - x[1], x[2])
+        if h1 > h0 and g1 > g0:
+            f -= T.point_to_parallel_rect(h0 - x[0], h1 - x[0], g0 - x[1], g1 - x[1], x[2])
+        ref.append(B * f)
+    plate = Box(((plate_lo[0] + plate_hi[0]) / 2, (plate_lo[1] + plate_hi[1]) / 2, zp),
+                (plate_hi[0] - plate_lo[0], plate_hi[1] - plate_lo[1], t))
+    room = Room(np.asarray(size) / 2, size, floor=rho, walls=0.0, ceiling=0.0)
+    inter = Interreflections(room=room, patch_size=max(size) + 1, refine=0, tolerance=1e-13)
+    sol = solve_radiosity([PhotometricLight.isotropic(P, intensity)], [plate], inter)
+    floor = int(np.argmax(sol.patches.normal[:, 2]))
+    assert sol.direct[floor] == pytest.approx(intensity * seen / (X * Y), rel=1e-9)
+    got = sol.indirect_illuminance(np.asarray(receivers), [0.0, 0.0, -1.0])
+    assert got == pytest.approx(ref, rel=1e-9)
+
+
+def test_point_source_shadow_on_a_reflecting_floor_is_exact():
+    """A 1.2 m x 0.8 m x 2 cm plate at 1.3 m under a 500 cd lamp at 2.4 m; floor rho = 0.5, one patch.
+
+    Measured: the floor's mean direct light equal to the closed form to
+    rounding (asserted 1e-9); the mean of the exact illuminance at Gauss
+    points instead of the visible polygon (the former method) is 13 % off at
+    3 x 3 points and 8 % at 8 x 8 on this one 4 m patch.
+    """
+    _plate_case((1.9, 2.1, 2.4), (1.3, 1.6), (2.5, 2.4), 1.3, 0.02,
+                [[1.5, 2.0, 2.9], [2.2, 1.8, 1.6], [1.9, 2.1, 2.2]])
+
+
+@settings(max_examples=8, deadline=None)
+@given(st.tuples(st.floats(0.3, 3.7), st.floats(0.3, 3.7), st.floats(1.5, 2.9)),
+       st.floats(0.1, 1.5), st.floats(0.1, 1.5), st.floats(0.2, 0.9), st.floats(1e-3, 0.1))
+def test_point_source_shadow_on_a_reflecting_floor_any(P, wx, wy, frac, t):
+    """The same for lamps anywhere, plates of any size and height (the lamp's foot under the plate)."""
+    zp = frac * (P[2] - 0.2)
+    lo, hi = (P[0] - 0.4 * wx, P[1] - 0.6 * wy), (P[0] + 0.6 * wx, P[1] + 0.4 * wy)
+    x = [P[0] + 0.1 * wx, P[1] - 0.1 * wy, 0.5 * (zp + t / 2 + 3.0)]
+    _plate_case(P, lo, hi, zp, t, [x])
 
 
 # ---------------------------------------------------------------------------

@@ -1,11 +1,22 @@
 """Exact flux of an isotropic point source onto planar convex polygons (closed-form solid angles).
 
 An isotropic point source of intensity I at P sends ``I Omega`` lumens onto a
-polygon that it sees whole, ``Omega`` the polygon's solid angle from P. The
+polygon, ``Omega`` the solid angle of the part of the polygon it sees. The
 radiosity solve uses it for the mean direct illuminance of a patch,
-``I Omega / A``, where nothing can stand between the source and the patch:
-exact, where Gauss points on the patch would carry the quadrature error of
-the ``cos / r^2`` integrand (largest for a source close to a patch).
+``I Omega / A``: exact, where Gauss points on the patch would carry the
+quadrature error of the ``cos / r^2`` integrand (largest for a source close to
+a patch) and of the hard shadow's edge crossing the patch.
+
+The visible part (:func:`visible_solid_angle`): a convex occluder piece K
+shades the patch where the segment from P meets K, i.e. by the central
+projection from P onto the patch's plane of K's part between that plane and
+the parallel plane through P (the slab). That part's vertices are K's
+vertices in the slab and its edges' crossings of the slab's planes; the
+shadow is the convex hull of their projections. The patch minus the union of
+the shadows (shapely, in the patch's plane) is a polygon with holes, whose
+solid angle is the signed fan sum below over its rings (exterior counter-
+clockwise, holes clockwise: a signed fan over any closed ring integrates
+exactly, convex or not).
 
 The solid angle of a convex polygon q_0 .. q_{m-1} is the sum over its fan
 triangles (q_0, q_k, q_{k+1}) of Van Oosterom and Strackee's formula
@@ -21,10 +32,18 @@ polygon P lies on.
 
 from __future__ import annotations
 
-import numpy as np
-from numpy.typing import NDArray
+from collections.abc import Sequence
 
-__all__ = ["signed_solid_angles"]
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from .convex_regions import ConvexPiece
+
+__all__ = ["signed_solid_angles", "visible_solid_angle", "NEAR_SOURCE"]
+
+#: A piece closer to the source than this fraction of the source's height over the patch makes
+#: :func:`visible_solid_angle` decline (its shadow would reach out of any bounded window).
+NEAR_SOURCE = 1e-6
 
 
 def signed_solid_angles(apex: NDArray[np.float64], verts: NDArray[np.float64],
@@ -66,3 +85,96 @@ def signed_solid_angles(apex: NDArray[np.float64], verts: NDArray[np.float64],
     den = (la * lb * lc + np.einsum("ij,ij->i", a, b) * lc + np.einsum("ij,ij->i", a, c) * lb
            + np.einsum("ij,ij->i", b, c) * la)
     return np.asarray(np.bincount(owner, weights=2.0 * np.arctan2(num, den), minlength=len(counts)), dtype=np.float64)
+
+
+def _shadow_points(piece: ConvexPiece, P: NDArray[np.float64], n: NDArray[np.float64], c: float,
+                   top: float) -> NDArray[np.float64]:
+    """Points whose hull is K's part in the slab ``c <= n.y <= top`` (vertices and edge crossings)."""
+    v = piece.vertices
+    d = v @ n
+    keep = [v[(d >= c) & (d <= top)]]
+    e = piece.edges
+    da, db = d[e[:, 0]], d[e[:, 1]]
+    for level in (c, top):
+        cross = (da - level) * (db - level) < 0
+        if cross.any():
+            a, b = v[e[cross, 0]], v[e[cross, 1]]
+            t = ((level - da[cross]) / (db[cross] - da[cross]))[:, None]
+            keep.append(a + t * (b - a))
+    return np.vstack(keep)
+
+
+def visible_solid_angle(apex: ArrayLike, polygon: ArrayLike, pieces: Sequence[ConvexPiece]) -> float | None:
+    """Solid angle of the part of a convex polygon that ``apex`` sees past the convex pieces.
+
+    Parameters
+    ----------
+    apex : array_like, shape (3,)
+    polygon : array_like, shape (m, 3)
+        Planar, convex, counter-clockwise about its normal.
+    pieces : sequence of ConvexPiece
+        The occluders' convex pieces (the polygon's own solid left out).
+
+    Returns
+    -------
+    float or None
+        0 when ``apex`` is not in front of the polygon; None when a piece
+        comes within :data:`NEAR_SOURCE` of the source's height over the
+        polygon's plane (its shadow is then unbounded in practice).
+
+    Examples
+    --------
+    A plate halfway up hides the central quarter of a square's shadow window:
+
+    >>> from isocsg import Box
+    >>> from isocsg.shadows import convex_pieces
+    >>> floor = np.array([[-2.0, -2, 0], [2, -2, 0], [2, 2, 0], [-2, 2, 0]])
+    >>> plate = convex_pieces([Box((0, 0, 1), (1, 1, 1e-9))])
+    >>> full = visible_solid_angle((0, 0, 2), floor, [])
+    >>> hidden = signed_solid_angles(np.array([0.0, 0, 2]), floor / 2, np.array([0, 4]))[0]
+    >>> bool(np.isclose(visible_solid_angle((0, 0, 2), floor, plate), full - hidden, rtol=1e-8))
+    True
+    """
+    import shapely
+    from shapely.geometry import MultiPoint, Polygon
+    from shapely.geometry.polygon import orient
+
+    P = np.asarray(apex, dtype=np.float64)
+    q = np.asarray(polygon, dtype=np.float64)
+    n = np.cross(q[1] - q[0], q[2] - q[0])
+    n /= np.linalg.norm(n)
+    c = float(n @ q[0])
+    h = float(n @ P) - c
+    if not h > 0:
+        return 0.0
+    e1 = (q[1] - q[0]) / np.linalg.norm(q[1] - q[0])
+    e2 = np.cross(n, e1)
+    lo = np.minimum(q.min(axis=0), P)
+    hi = np.maximum(q.max(axis=0), P)
+    shadows = []
+    for pc in pieces:
+        if np.any(pc.vertices.max(axis=0) < lo) or np.any(pc.vertices.min(axis=0) > hi):
+            continue
+        if float(np.max(pc.normals @ P - pc.offsets)) < NEAR_SOURCE * h:
+            return None
+        pts = _shadow_points(pc, P, n, c, c + h * (1 - NEAR_SOURCE))
+        if len(pts) < 3:
+            continue
+        proj = P + (pts - P) * (h / (h - (pts @ n - c)))[:, None]
+        hull = MultiPoint(np.c_[(proj - q[0]) @ e1, (proj - q[0]) @ e2]).convex_hull
+        if hull.area > 0:
+            shadows.append(hull)
+    window = Polygon(np.c_[(q - q[0]) @ e1, (q - q[0]) @ e2])
+    seen = window.difference(shapely.union_all(shadows)) if shadows else window
+    rings: list[NDArray[np.float64]] = []
+    for part in shapely.get_parts(seen):
+        if part.geom_type != "Polygon" or part.area <= 0:
+            continue
+        part = orient(part, sign=1.0)
+        for ring in (part.exterior, *part.interiors):
+            xy = np.asarray(ring.coords)[:-1]
+            rings.append(q[0] + xy[:, :1] * e1 + xy[:, 1:2] * e2)
+    if not rings:
+        return 0.0
+    off = np.concatenate([[0], np.cumsum([len(r) for r in rings])])
+    return float(signed_solid_angles(P, np.vstack(rings), off).sum())

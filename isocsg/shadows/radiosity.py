@@ -56,12 +56,13 @@ from ..errors import InvalidLightError, InvalidParameterError, ResourceLimitErro
 from ..kinds import DEFAULT_RESOLUTION, Solid
 from ..lighting.area import AreaLight, PolyhedronLight, as_light_list
 from ..lighting.luminaire import PhotometricLight
+from .convex_regions import ConvexPiece
 from .direct import _fallback_point, illuminance, shadow_state
 from .form_factors import pair_form_factors
 from .lambert import _prepare
-from .occluders import occluder_list, shadow_pieces
+from .occluders import convex_pieces, occluder_list, shadow_pieces
 from .patches import PatchSet, Room, surface_patches
-from .pointflux import signed_solid_angles
+from .pointflux import signed_solid_angles, visible_solid_angle
 from .visibility import PieceArrays, SourceArrays, visible_illuminance
 
 __all__ = ["Interreflections", "RadiositySolution", "solve_radiosity", "indirect_illuminance"]
@@ -365,9 +366,12 @@ def _point_means(patches: PatchSet, light: PhotometricLight, solids: list[Solid]
                  resolution: int) -> NDArray[np.float64]:
     """Mean direct illuminance of each patch from a point luminaire.
 
-    An isotropic luminaire and a patch that nothing can hide from it (no
-    occluder's box meets their joint box, the patch's owner left out: a convex
-    solid hides nothing from its own faces): exactly ``I Omega / A``. Else the
+    An isotropic luminaire: exactly ``I Omega / A``, Omega the solid angle of
+    the part of the patch it sees; in closed form where nothing can hide the
+    patch (no occluder's box meets their joint box, the patch's owner left
+    out: a convex solid hides nothing from its own faces), else past the
+    occluders' convex pieces (:func:`~isocsg.shadows.pointflux.visible_solid_angle`).
+    Otherwise (a measured distribution, or a piece touching the luminaire) the
     exact illuminance (hard shadows, the interpolated distribution) at the
     patch's Gauss points, averaged.
     """
@@ -380,8 +384,16 @@ def _point_means(patches: PatchSet, light: PhotometricLight, solids: list[Solid]
     if intensity is not None:
         lo, hi = patches.bounds()
         exact = blockers.clear(np.minimum(lo, P), np.maximum(hi, P), patches.owner, np.full(n, -2))
-        omega = signed_solid_angles(P, patches.verts, patches.off)
-        out = np.where(exact, intensity * np.maximum(omega, 0.0) / patches.area, 0.0)
+        omega = np.where(exact, np.maximum(signed_solid_angles(P, patches.verts, patches.off), 0.0), 0.0)
+        pieces: dict[int, list[ConvexPiece]] = {}
+        for k in np.nonzero(~exact)[0]:
+            own = int(patches.owner[k])
+            if own not in pieces:
+                pieces[own] = convex_pieces(_without(solids, own), resolution=resolution)
+            seen = visible_solid_angle(P, patches.polygon(int(k)), pieces[own])
+            if seen is not None:
+                omega[k], exact[k] = seen, True
+        out = intensity * omega / patches.area
     sel = ~exact[idx]
     if sel.any():
         e = illuminance(pts[sel], patches.normal[idx[sel]], [light], solids, resolution=resolution)
