@@ -136,7 +136,7 @@ def visible_solid_angle(apex: ArrayLike, polygon: ArrayLike, pieces: Sequence[Co
     True
     """
     import shapely
-    from shapely.geometry import MultiPoint, Polygon
+    from shapely.geometry import Polygon
     from shapely.geometry.polygon import orient
 
     P = np.asarray(apex, dtype=np.float64)
@@ -161,7 +161,7 @@ def visible_solid_angle(apex: ArrayLike, polygon: ArrayLike, pieces: Sequence[Co
         if len(pts) < 3:
             continue
         proj = P + (pts - P) * (h / (h - (pts @ n - c)))[:, None]
-        hull = MultiPoint(np.c_[(proj - q[0]) @ e1, (proj - q[0]) @ e2]).convex_hull
+        hull = shapely.convex_hull(shapely.multipoints(np.c_[(proj - q[0]) @ e1, (proj - q[0]) @ e2]))
         if hull.area > 0:
             shadows.append(hull)
     window = Polygon(np.c_[(q - q[0]) @ e1, (q - q[0]) @ e2])
