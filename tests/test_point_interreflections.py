@@ -330,7 +330,8 @@ def test_random_walk_matches_the_closed_form():
 
 
 def test_a_rendering_point_light_is_refused_with_the_photometric_twin_named():
-    with pytest.raises(InvalidLightError, match=re.escape("lights[0] is a PointLight, a rendering light")):
+    with pytest.raises(InvalidLightError, match=re.escape("lights[0] must be an AreaLight or a PolyhedronLight, "
+                                                          "or a PhotometricLight for a point source; got a PointLight")):
         illuminance([[0, 0, 0]], [0, 0, 1], [PointLight((0, 0, 2))])
     with pytest.raises(InvalidLightError, match=re.escape("PhotometricLight.isotropic(position, I)")):
         illuminance([[0, 0, 0]], [0, 0, 1], PointLight((0, 0, 2)))

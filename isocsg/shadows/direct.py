@@ -120,8 +120,9 @@ def _split_lights(lights: Any) -> tuple[list[AreaLight | PolyhedronLight], list[
     for i, li in enumerate(seq or [lights]):
         if isinstance(li, PointLight):
             raise InvalidLightError(
-                f"lights[{i}] is a PointLight, a rendering light without photometric units; an isotropic point "
-                f"source of I cd is PhotometricLight.isotropic(position, I)")
+                f"lights[{i}] must be an AreaLight or a PolyhedronLight, or a PhotometricLight for a point source; "
+                "got a PointLight, a rendering light without photometric units (an isotropic point source of "
+                "I cd is PhotometricLight.isotropic(position, I))")
     if seq is not None and any(isinstance(li, PhotometricLight) for li in seq):
         return (as_light_list([li for li in seq if not isinstance(li, PhotometricLight)]),
                 [li for li in seq if isinstance(li, PhotometricLight)])
