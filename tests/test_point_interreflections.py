@@ -25,6 +25,7 @@ from isocsg.cli import main
 from isocsg.errors import InvalidLightError, SceneFileError
 from isocsg.interop.study import load_study
 from isocsg.lighting.luminaire import PhotometricLight
+from isocsg.lighting.photometry import Photometry
 from isocsg.shadows.patches import Room
 from isocsg.shadows.pointflux import signed_solid_angles
 from isocsg.shadows.radiosity import Interreflections, solve_radiosity
@@ -215,6 +216,55 @@ def test_point_source_shadow_on_a_reflecting_floor_any(P, wx, wy, frac, t):
     lo, hi = (P[0] - 0.4 * wx, P[1] - 0.6 * wy), (P[0] + 0.6 * wx, P[1] + 0.4 * wy)
     x = [P[0] + 0.1 * wx, P[1] - 0.1 * wy, 0.5 * (zp + t / 2 + 3.0)]
     _plate_case(P, lo, hi, zp, t, [x])
+
+
+def _floor_flux_past_plate(lamp, P, plate_lo, plate_hi, top, size=(4.0, 4.0), m=40):
+    """Flux on the floor outside the plate's shadow rectangle: Gauss-Legendre on rectangles cut at its edges."""
+    k = P[2] / (P[2] - top)
+    sx = sorted(P[0] + k * (c - P[0]) for c in (plate_lo[0], plate_hi[0]))
+    sy = sorted(P[1] + k * (c - P[1]) for c in (plate_lo[1], plate_hi[1]))
+    xs, ys = [0.0, *sx, size[0]], [0.0, *sy, size[1]]
+    g, w = np.polynomial.legendre.leggauss(m)
+    total = 0.0
+    for i in range(3):
+        for j in range(3):
+            if i == j == 1:
+                continue  # the shadow
+            for a, b in zip(np.linspace(xs[i], xs[i + 1], 5)[:-1], np.linspace(xs[i], xs[i + 1], 5)[1:], strict=True):
+                for c, d in zip(np.linspace(ys[j], ys[j + 1], 5)[:-1], np.linspace(ys[j], ys[j + 1], 5)[1:],
+                                strict=True):
+                    gx, gy = np.meshgrid((a + b) / 2 + (b - a) / 2 * g, (c + d) / 2 + (d - c) / 2 * g, indexing="ij")
+                    v = np.asarray(P) - np.c_[gx.ravel(), gy.ravel(), np.zeros(gx.size)]
+                    r2 = np.einsum("ij,ij->i", v, v)
+                    lv = v / np.sqrt(r2)[:, None]
+                    e = lamp.intensity_towards(-lv) * lv[:, 2] / r2
+                    total += float(np.outer(w, w).ravel() @ e) * (b - a) * (d - c) / 4
+    return total
+
+
+def test_measured_distribution_past_a_plate_integrates_its_visible_part():
+    """A distribution that is not isotropic: the patches' means over their visible parts, hard shadows exact.
+
+    The table ``I(gamma) = 500 .. 100 cd`` from nadir to zenith, linear in
+    gamma (its interpolant has no kink), 1 m floor patches, the plate of the
+    previous test. Reference: the flux outside the shadow's rectangle by
+    40 x 40 Gauss points on 128 rectangles cut at the shadow's edges (a
+    smooth integrand there: converged to 4e-16). isocsg's floor flux (a
+    signed fan of 8 x 8-point triangles over each shaded patch's visible
+    part) is within 1.3e-13 of it (asserted 1e-9). A cosine table every 5
+    degrees (kinks at the nodes) lands within 2e-6 at 1 m and 1.6e-7 at
+    0.5 m patches (not asserted: the kinks, not the shadows, set that error).
+    """
+    P, zp, t = (1.9, 2.1, 2.4), 1.3, 0.02
+    lo, hi = (1.3, 1.6), (2.5, 2.4)
+    lamp = PhotometricLight(P, Photometry([0.0], [0.0, 180.0], [[500.0, 100.0]]))
+    plate = Box(((lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, zp), (hi[0] - lo[0], hi[1] - lo[1], t))
+    room = Room((2, 2, 1.5), (4, 4, 3), floor=0.5, walls=0.0, ceiling=0.0)
+    sol = solve_radiosity([lamp], [plate], Interreflections(room=room, patch_size=1.0, refine=0, tolerance=1e-12))
+    floor = sol.patches.normal[:, 2] > 0.5
+    assert int(floor.sum()) == 16
+    got = float(sol.patches.area[floor] @ sol.direct[floor])
+    assert got == pytest.approx(_floor_flux_past_plate(lamp, P, lo, hi, zp + t / 2), rel=1e-9)
 
 
 # ---------------------------------------------------------------------------

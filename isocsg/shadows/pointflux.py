@@ -39,7 +39,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from .convex_regions import ConvexPiece
 
-__all__ = ["signed_solid_angles", "visible_solid_angle", "NEAR_SOURCE"]
+__all__ = ["signed_solid_angles", "visible_rings", "visible_solid_angle", "fan_quadrature", "NEAR_SOURCE"]
 
 #: A piece closer to the source than this fraction of the source's height over the patch makes
 #: :func:`visible_solid_angle` decline (its shadow would reach out of any bounded window).
@@ -104,8 +104,9 @@ def _shadow_points(piece: ConvexPiece, P: NDArray[np.float64], n: NDArray[np.flo
     return np.vstack(keep)
 
 
-def visible_solid_angle(apex: ArrayLike, polygon: ArrayLike, pieces: Sequence[ConvexPiece]) -> float | None:
-    """Solid angle of the part of a convex polygon that ``apex`` sees past the convex pieces.
+def visible_rings(apex: ArrayLike, polygon: ArrayLike,
+                  pieces: Sequence[ConvexPiece]) -> list[NDArray[np.float64]] | None:
+    """The part of a convex polygon that ``apex`` sees past the convex pieces, as 3D rings.
 
     Parameters
     ----------
@@ -117,23 +118,12 @@ def visible_solid_angle(apex: ArrayLike, polygon: ArrayLike, pieces: Sequence[Co
 
     Returns
     -------
-    float or None
-        0 when ``apex`` is not in front of the polygon; None when a piece
-        comes within :data:`NEAR_SOURCE` of the source's height over the
+    list of ndarray (k, 3), or None
+        The visible region's rings in the polygon's plane, exteriors
+        counter-clockwise about its normal and holes clockwise; empty when
+        ``apex`` is not in front of the polygon or sees none of it. None when a
+        piece comes within :data:`NEAR_SOURCE` of the source's height over the
         polygon's plane (its shadow is then unbounded in practice).
-
-    Examples
-    --------
-    A plate halfway up hides the central quarter of a square's shadow window:
-
-    >>> from isocsg import Box
-    >>> from isocsg.shadows import convex_pieces
-    >>> floor = np.array([[-2.0, -2, 0], [2, -2, 0], [2, 2, 0], [-2, 2, 0]])
-    >>> plate = convex_pieces([Box((0, 0, 1), (1, 1, 1e-9))])
-    >>> full = visible_solid_angle((0, 0, 2), floor, [])
-    >>> hidden = signed_solid_angles(np.array([0.0, 0, 2]), floor / 2, np.array([0, 4]))[0]
-    >>> bool(np.isclose(visible_solid_angle((0, 0, 2), floor, plate), full - hidden, rtol=1e-8))
-    True
     """
     import shapely
     from shapely.geometry import Polygon
@@ -146,7 +136,7 @@ def visible_solid_angle(apex: ArrayLike, polygon: ArrayLike, pieces: Sequence[Co
     c = float(n @ q[0])
     h = float(n @ P) - c
     if not h > 0:
-        return 0.0
+        return []
     e1 = (q[1] - q[0]) / np.linalg.norm(q[1] - q[0])
     e2 = np.cross(n, e1)
     lo = np.minimum(q.min(axis=0), P)
@@ -174,7 +164,76 @@ def visible_solid_angle(apex: ArrayLike, polygon: ArrayLike, pieces: Sequence[Co
         for ring in (part.exterior, *part.interiors):
             xy = np.asarray(ring.coords)[:-1]
             rings.append(q[0] + xy[:, :1] * e1 + xy[:, 1:2] * e2)
+    return rings
+
+
+def visible_solid_angle(apex: ArrayLike, polygon: ArrayLike, pieces: Sequence[ConvexPiece]) -> float | None:
+    """Solid angle of the part of a convex polygon that ``apex`` sees past the convex pieces.
+
+    Parameters
+    ----------
+    apex, polygon, pieces
+        As for :func:`visible_rings`.
+
+    Returns
+    -------
+    float or None
+        0 when ``apex`` is not in front of the polygon; None as for
+        :func:`visible_rings`.
+
+    Examples
+    --------
+    A plate halfway up hides the central quarter of a square's shadow window:
+
+    >>> from isocsg import Box
+    >>> from isocsg.shadows import convex_pieces
+    >>> floor = np.array([[-2.0, -2, 0], [2, -2, 0], [2, 2, 0], [-2, 2, 0]])
+    >>> plate = convex_pieces([Box((0, 0, 1), (1, 1, 1e-9))])
+    >>> full = visible_solid_angle((0, 0, 2), floor, [])
+    >>> hidden = signed_solid_angles(np.array([0.0, 0, 2]), floor / 2, np.array([0, 4]))[0]
+    >>> bool(np.isclose(visible_solid_angle((0, 0, 2), floor, plate), full - hidden, rtol=1e-8))
+    True
+    """
+    rings = visible_rings(apex, polygon, pieces)
+    if rings is None:
+        return None
     if not rings:
         return 0.0
     off = np.concatenate([[0], np.cumsum([len(r) for r in rings])])
-    return float(signed_solid_angles(P, np.vstack(rings), off).sum())
+    return float(signed_solid_angles(np.asarray(apex, dtype=np.float64), np.vstack(rings), off).sum())
+
+
+def fan_quadrature(rings: Sequence[NDArray[np.float64]], normal: ArrayLike,
+                   order: int) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+    """Points and signed weights integrating over the region the planar rings bound.
+
+    Each ring is fanned from its first vertex; each triangle carries the
+    collapsed (Duffy) ``order x order`` Gauss-Legendre rule times its signed
+    area about ``normal``, so that the triangles outside the region cancel
+    (exact for the region's area; for a smooth integrand as accurate as the
+    rule on the triangles).
+
+    Examples
+    --------
+    >>> sq = np.array([[0.0, 0, 0], [2, 0, 0], [2, 2, 0], [0, 2, 0]])
+    >>> hole = np.array([[0.5, 0.5, 0], [0.5, 1.5, 0], [1.5, 1.5, 0], [1.5, 0.5, 0]])  # clockwise
+    >>> p, w = fan_quadrature([sq, hole], [0, 0, 1], 3)
+    >>> round(float(w.sum()), 12), round(float(w @ p[:, 0]), 12)   # area 3, centroid x 1
+    (3.0, 3.0)
+    """
+    g, gw = np.polynomial.legendre.leggauss(order)
+    g, gw = (g + 1) / 2, gw / 2
+    u, v = (a.ravel() for a in np.meshgrid(g, g, indexing="ij"))
+    w = np.outer(gw, gw).ravel() * (1 - v)
+    nrm = np.asarray(normal, dtype=np.float64)
+    pts, wts = [], []
+    for ring in rings:
+        a = ring[0]
+        for b, c in zip(ring[1:-1], ring[2:], strict=True):
+            area2 = float(np.cross(b - a, c - a) @ nrm)
+            edge = a + u[:, None] * (b - a)
+            pts.append(edge + v[:, None] * (c - edge))
+            wts.append(area2 * w)
+    if not pts:
+        return np.zeros((0, 3)), np.zeros(0)
+    return np.vstack(pts), np.concatenate(wts)

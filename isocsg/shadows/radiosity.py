@@ -62,7 +62,7 @@ from .form_factors import pair_form_factors
 from .lambert import _prepare
 from .occluders import convex_pieces, occluder_list, shadow_pieces
 from .patches import PatchSet, Room, surface_patches
-from .pointflux import signed_solid_angles, visible_solid_angle
+from .pointflux import fan_quadrature, signed_solid_angles, visible_rings
 from .visibility import PieceArrays, SourceArrays, visible_illuminance
 
 __all__ = ["Interreflections", "RadiositySolution", "solve_radiosity", "indirect_illuminance"]
@@ -77,6 +77,9 @@ TABLE_FIELDS = frozenset({"room_center", "room_size", "floor", "walls", "ceiling
                           "refine", "order", "tolerance"})
 #: Hard limit on the patch count (the per-patch Python work grows with it).
 MAX_PATCHES = 50_000
+#: Gauss points per direction on each fan triangle of a shaded patch's visible part (measured
+#: distributions): the triangles reach across the whole patch, whatever ``order`` says.
+FAN_ORDER = 8
 
 
 @dataclass(frozen=True, slots=True)
@@ -331,7 +334,7 @@ def _direct_means(patches: PatchSet, lights: list[SolveLight], solids: list[Soli
     pts, wts, idx = patches.samples(order)
     for light in lights:
         if isinstance(light, PhotometricLight):
-            out += _point_means(patches, light, solids, blockers, (pts, wts, idx), resolution)
+            out += _point_means(patches, light, solids, blockers, (pts, wts, idx), resolution, order)
             continue
         for q in light.emitting_polygons():
             src = AreaLight(q, radiance=light.radiance)
@@ -363,42 +366,61 @@ def _uniform_intensity(light: PhotometricLight) -> float | None:
 
 def _point_means(patches: PatchSet, light: PhotometricLight, solids: list[Solid], blockers: _Blockers,
                  rule: tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.int64]],
-                 resolution: int) -> NDArray[np.float64]:
+                 resolution: int, order: int) -> NDArray[np.float64]:
     """Mean direct illuminance of each patch from a point luminaire.
 
-    An isotropic luminaire: exactly ``I Omega / A``, Omega the solid angle of
-    the part of the patch it sees; in closed form where nothing can hide the
-    patch (no occluder's box meets their joint box, the patch's owner left
-    out: a convex solid hides nothing from its own faces), else past the
-    occluders' convex pieces (:func:`~isocsg.shadows.pointflux.visible_solid_angle`).
-    Otherwise (a measured distribution, or a piece touching the luminaire) the
-    exact illuminance (hard shadows, the interpolated distribution) at the
-    patch's Gauss points, averaged.
+    Where nothing can hide the patch (no occluder's box meets the joint box
+    of the luminaire and the patch, the patch's owner left out: a convex
+    solid hides nothing from its own faces) the whole patch is lit; else its
+    visible part is the patch minus the occluders' hard shadows
+    (:func:`~isocsg.shadows.pointflux.visible_rings`). An isotropic luminaire
+    sends exactly ``I Omega`` onto it (its solid angle); a measured
+    distribution is integrated over it by Gauss points (the patch's rule on a
+    whole patch, a signed fan of triangles on a visible part), the intensity
+    interpolated as the standards say. A piece touching the luminaire leaves
+    its patches to the exact illuminance at the patch's Gauss points.
     """
     n = len(patches)
     out = np.zeros(n)
     pts, wts, idx = rule
     P = np.asarray(light.position, dtype=np.float64)
-    exact = np.zeros(n, dtype=bool)
+    lo, hi = patches.bounds()
+    clear = blockers.clear(np.minimum(lo, P), np.maximum(hi, P), patches.owner, np.full(n, -2))
     intensity = _uniform_intensity(light)
+    done = clear.copy() if intensity is not None else np.zeros(n, dtype=bool)
     if intensity is not None:
-        lo, hi = patches.bounds()
-        exact = blockers.clear(np.minimum(lo, P), np.maximum(hi, P), patches.owner, np.full(n, -2))
-        omega = np.where(exact, np.maximum(signed_solid_angles(P, patches.verts, patches.off), 0.0), 0.0)
-        pieces: dict[int, list[ConvexPiece]] = {}
-        for k in np.nonzero(~exact)[0]:
-            own = int(patches.owner[k])
-            if own not in pieces:
-                pieces[own] = convex_pieces(_without(solids, own), resolution=resolution)
-            seen = visible_solid_angle(P, patches.polygon(int(k)), pieces[own])
-            if seen is not None:
-                omega[k], exact[k] = seen, True
-        out = intensity * omega / patches.area
-    sel = ~exact[idx]
+        omega = np.maximum(signed_solid_angles(P, patches.verts, patches.off), 0.0)
+        out[clear] = intensity * omega[clear] / patches.area[clear]
+    pieces: dict[int, list[ConvexPiece]] = {}
+    for k in np.nonzero(~clear)[0]:
+        own = int(patches.owner[k])
+        if own not in pieces:
+            pieces[own] = convex_pieces(_without(solids, own), resolution=resolution)
+        rings = visible_rings(P, patches.polygon(int(k)), pieces[own])
+        if rings is None:
+            continue
+        done[k] = True
+        if not rings:
+            continue
+        if intensity is not None:
+            off = np.concatenate([[0], np.cumsum([len(r) for r in rings])])
+            out[k] = intensity * float(signed_solid_angles(P, np.vstack(rings), off).sum()) / patches.area[k]
+        else:
+            q, w = fan_quadrature(rings, patches.normal[k], FAN_ORDER)
+            out[k] = float(w @ _unshaded(light, q, patches.normal[k])) / patches.area[k]
+    sel = ~done[idx]
     if sel.any():
         e = illuminance(pts[sel], patches.normal[idx[sel]], [light], solids, resolution=resolution)
         out += np.bincount(idx[sel], weights=wts[sel] * e, minlength=n) / patches.area
     return out
+
+
+def _unshaded(light: PhotometricLight, pts: NDArray[np.float64], normal: NDArray[np.float64]) -> NDArray[np.float64]:
+    """``I(C, gamma) cos / r^2`` at points of a plane (unit normal) the luminaire faces, no occlusion."""
+    v = np.asarray(light.position, dtype=np.float64) - pts
+    r2 = np.einsum("ij,ij->i", v, v)
+    lvec = v / np.sqrt(r2)[:, None]
+    return np.asarray(light.intensity_towards(-lvec) * np.maximum(lvec @ normal, 0.0) / r2, dtype=np.float64)
 
 
 class _Columns:
