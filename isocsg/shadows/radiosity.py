@@ -12,7 +12,10 @@ light to light reflected between diffuse surfaces. Here:
 2. Each patch's mean direct illuminance E_i: where nothing can stand between
    the patch and an emitting polygon, exactly, ``pi L F(i -> source)`` with the
    closed-form polygon-to-polygon factor; otherwise the exact direct
-   illuminance at the patch's Gauss points, averaged.
+   illuminance at the patch's Gauss points, averaged. A point luminaire lights
+   the part of the patch it sees (the patch minus the occluders' hard
+   shadows, :mod:`isocsg.shadows.pointflux`): ``I Omega / A`` exactly for an
+   isotropic one, Gauss points over that part for a measured distribution.
 3. The radiosity (exitance, lm/m^2) of each patch solves
    ``B_i = rho_i (E_i + sum_j F_ij B_j)``, by progressive refinement
    (Southwell's iteration: shoot the patch with the most unshot flux
@@ -495,11 +498,12 @@ def solve_radiosity(
     Parameters
     ----------
     lights : AreaLight, PolyhedronLight, PhotometricLight or a sequence of them
-        A point luminaire's mean over a patch: for an isotropic one
-        (:meth:`~isocsg.lighting.luminaire.PhotometricLight.isotropic`) and a
-        patch nothing can hide from it, exactly ``I Omega / A`` (the patch's
-        solid angle); otherwise the mean of its exact illuminance (hard
-        shadows, the interpolated distribution) at the patch's Gauss points.
+        A point luminaire's mean over a patch is taken over the part of the
+        patch it sees (the patch minus the occluders' hard shadows): exactly
+        ``I Omega / A`` for an isotropic one
+        (:meth:`~isocsg.lighting.luminaire.PhotometricLight.isotropic`; Omega
+        the visible part's solid angle), by Gauss points over the visible
+        part for a measured distribution.
     occluders : Solid or sequence of Solid, optional
         As for :func:`~isocsg.shadows.direct.illuminance`; those given a
         reflectance in ``interreflections`` also reflect.
