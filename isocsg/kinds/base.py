@@ -22,7 +22,13 @@ The members, by concern:
 - meshes and shadows: ``to_polyhedron(resolution)``, ``manifold(resolution,
   shapes)``, ``convex_pieces(resolution)``;
 - files: ``kind`` and ``to_dict()`` / ``from_dict(fields)`` (scene files),
-  ``to_openscad(digits)``; ``_affine(A, t)`` (the image under an affine map).
+  ``to_openscad(digits)``; ``_affine(A, t)`` (the image under an affine map);
+- exact forms: ``exact_form()`` (the kind as plain data, :mod:`isocsg.kinds.forms`: what
+  ``projection`` and exact hulls read), ``is_prism_along(direction)``;
+- surface measure: ``area``, ``surface_patches(leaf)`` (:mod:`isocsg.kinds.patches`),
+  ``flat_face_planes()`` (what :mod:`isocsg.testing` integrates);
+- OpenSCAD values: ``axis_scaled(scale)`` (a box of any aspect), ``simplest()`` (an
+  axis-aligned polyhedron as a box).
 
 Members with a sound generic answer have a default here (a convex kind's
 ``ray_intervals`` from ``intersect_rays``, a section and a manifold from
