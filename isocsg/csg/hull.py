@@ -48,19 +48,9 @@ import numpy as np
 from numpy.typing import NDArray
 
 from ..errors import InvalidGeometryError, NotExactError, ResourceLimitError
-from ..kinds import (
-    Cone,
-    ConvexPolyhedron,
-    Cylinder,
-    Ellipsoid,
-    EllipticTruncus,
-    Primitive,
-    Solid,
-    Sphere,
-    Torus,
-    Truncus,
-)
+from ..kinds import ConvexPolyhedron, Cylinder, Primitive, Solid, Sphere, Torus, Truncus
 from ..kinds.affine import similarity_factor
+from ..kinds.forms import AffineBall, AffineFrustum
 from .hull_balls import ball_hull, disc_hull_prism, upper_disc_hull
 from .hull_discs import parallel_disc_hull
 from .hull_grow import grow_ball, grow_disc, polytope
@@ -112,27 +102,20 @@ def _union_leaves(solid: Solid, operation: str) -> list[Primitive]:
 
 
 def _convex(p: Primitive, operation: str) -> _Convex:
-    """A convex primitive as points plus a round generator; refuses the kinds that are not."""
+    """A convex primitive as points plus a round generator (its corners, or its
+    :meth:`~isocsg.kinds.base.Primitive.exact_form`: a ball, or a frustum of equal end radii);
+    refuses the kinds that are not."""
     corners = p.hull_points()
     if corners is not None:
         return _Convex(np.asarray(corners, dtype=np.float64))
-    if isinstance(p, Sphere):
-        return _Convex(p.center_array[None], "ball", p.radius * np.eye(3))
-    if isinstance(p, Ellipsoid):
-        rot = np.asarray(p.orientation, dtype=np.float64)
-        return _Convex(np.asarray(p.center, dtype=np.float64)[None], "ball", rot * np.asarray(p.radii))
-    if isinstance(p, EllipticTruncus) and p.r1 == p.r2:
-        m = p.linear
-        normal = np.cross(m[:, 0], m[:, 1])
-        ends = np.stack([p.center_array + m[:, 2] / 2, p.center_array - m[:, 2] / 2])
-        return _Convex(ends, "disc", np.column_stack([p.r1 * m[:, :2], normal / np.linalg.norm(normal)]))
-    if isinstance(p, Truncus) and p.r1 == p.r2:
-        from ..kinds.base import _perpendicular_frame
-
-        a = p.unit_axis
-        u, v = _perpendicular_frame(a)
-        return _Convex(np.stack(p.end_centers), "disc", np.column_stack([p.r1 * u, p.r1 * v, a]))
-    why = "a cone or frustum" if isinstance(p, (Truncus, EllipticTruncus)) else _article(_name(p))
+    form = p.exact_form()
+    if isinstance(form, AffineBall):
+        return _Convex(form.center[None], "ball", form.linear)
+    if isinstance(form, AffineFrustum) and form.r1 == form.r2:
+        m = form.matrix
+        ends = np.stack([form.center + m[:, 2] / 2, form.center - m[:, 2] / 2])
+        return _Convex(ends, "disc", np.column_stack([form.r1 * m[:, :2], form.normal]))
+    why = "a cone or frustum" if isinstance(form, AffineFrustum) else _article(_name(p))
     raise NotExactError(f"{operation}: a {operation} of {why} is not an exact union of isocsg kinds "
                         "(only polytopes, balls and cylinders are)")
 
@@ -186,13 +169,15 @@ def hull_pieces(*solids: Solid) -> list[Primitive]:
     leaves = [leaf for s in solids for leaf in _union_leaves(s, "hull")]
     if not leaves:
         raise InvalidGeometryError("hull: needs at least one solid")
-    if all(type(p) in (Truncus, Cylinder, Cone) for p in leaves):
-        coaxial = _coaxial_hull(leaves)  # type: ignore[arg-type]
+    forms = [p.exact_form() for p in leaves]
+    right = [f for f in forms if isinstance(f, AffineFrustum) and f.right]
+    spheres = [f for f in forms if isinstance(f, AffineBall) and f.radius is not None]
+    if len(right) == len(forms):
+        coaxial = _coaxial_hull(right)
         if coaxial is not None:
             return coaxial
-    elif all(type(p) in (Truncus, Cylinder, Cone, Sphere) for p in leaves) and any(type(p) is not Sphere
-                                                                                   for p in leaves):
-        coaxial = _coaxial_with_spheres(leaves)  # type: ignore[arg-type]
+    elif right and len(right) + len(spheres) == len(forms):
+        coaxial = _coaxial_with_spheres(right, spheres)
         if coaxial is not None:
             return coaxial
     try:
@@ -282,30 +267,31 @@ def _parallel_hull(leaves: list[Primitive]) -> list[Primitive] | None:
     any heights; right ones, or elliptic ones under one map) and polytopes' corners, as the hull
     of their end discs (:mod:`isocsg.csg.hull_discs`); None when another kind is there or the
     discs are not parallel circles (in the frame of the first elliptic one's map)."""
-    rounds = [p for p in leaves if isinstance(p, (Truncus, EllipticTruncus))]
+    forms = [p.exact_form() for p in leaves]
+    rounds = [f for f in forms if isinstance(f, AffineFrustum)]
     if not rounds:
         return None
-    first = next((p for p in rounds if isinstance(p, EllipticTruncus)), None)
+    first = next((f for f in rounds if not f.right), None)
     m = np.eye(3) if first is None else np.asarray(first.matrix, dtype=np.float64).copy()
     m[:, 2] = np.cross(m[:, 0], m[:, 1])  # the discs' frame; their normal in the world when a similarity
-    origin = np.zeros(3) if first is None else first.center_array
+    origin = np.zeros(3) if first is None else first.center
     inverse = np.linalg.inv(m)
-    axis = inverse @ (rounds[0].unit_axis if first is None else m[:, 2])  # type: ignore[union-attr]
+    axis = inverse @ (rounds[0].normal if first is None else m[:, 2])
     axis /= np.linalg.norm(axis)
     centres: list[NDArray[np.float64]] = []
     radii: list[float] = []
-    for p in leaves:
-        if isinstance(p, (Truncus, EllipticTruncus)):
-            lin = p.linear if isinstance(p, EllipticTruncus) else _truncus_matrix(p)
+    for p, f in zip(leaves, forms):
+        if isinstance(f, AffineFrustum):
+            lin = _right_matrix(f) if f.right else f.matrix
             local = inverse @ lin
             disc = local[:, :2] - np.outer(axis, axis @ local[:, :2])
             g = disc.T @ disc
             tilted = np.abs(axis @ local[:, :2]).max() > SHAPE_TOLERANCE * math.sqrt(g[0, 0])
             if tilted or not _same(g, g[0, 0] * np.eye(2)):
                 return None
-            c = inverse @ (p.center_array - origin)
+            c = inverse @ (f.center - origin)
             centres.extend((c + local[:, 2] / 2, c - local[:, 2] / 2))
-            radii.extend((p.r1 * math.sqrt(g[0, 0]), p.r2 * math.sqrt(g[0, 0])))
+            radii.extend((f.r1 * math.sqrt(g[0, 0]), f.r2 * math.sqrt(g[0, 0])))
         elif (corners := p.hull_points()) is not None:
             centres.extend((np.asarray(corners, dtype=np.float64) - origin) @ inverse.T)
             radii.extend([0.0] * len(corners))
@@ -319,11 +305,17 @@ def _parallel_hull(leaves: list[Primitive]) -> list[Primitive] | None:
     return [p.transform(back) for p in pieces]  # type: ignore[misc]
 
 
-def _truncus_matrix(t: Truncus) -> NDArray[np.float64]:
-    """A right truncus's frame: two unit vectors across its axis and the axis (E2 to E1)."""
-    u, v = _plane_frame(t.unit_axis)
-    e1, e2 = t.end_centers
+def _right_matrix(f: AffineFrustum) -> NDArray[np.float64]:
+    """A right frustum's frame in this module's convention: two unit vectors across its axis and
+    the axis (the ``r2`` end's centre to the ``r1`` end's)."""
+    u, v = _plane_frame(f.normal)
+    e1, e2 = _ends(f)
     return np.column_stack([u, v, e1 - e2])
+
+
+def _ends(f: AffineFrustum) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+    """The centres of the ``r1`` end and the ``r2`` end."""
+    return f.center + f.matrix[:, 2] / 2, f.center - f.matrix[:, 2] / 2
 
 
 def _plane_frame(axis: NDArray[np.float64]) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
@@ -333,13 +325,13 @@ def _plane_frame(axis: NDArray[np.float64]) -> tuple[NDArray[np.float64], NDArra
     return u, np.cross(axis, u)
 
 
-def _coaxial_hull(trunci: list[Truncus]) -> list[Primitive] | None:
+def _coaxial_hull(trunci: list[AffineFrustum]) -> list[Primitive] | None:
     """The hull of trunci on one axis (cylinders, cones, frusta), or None when they are not: a
     solid of revolution whose meridian is the upper hull of the ends' (position, radius) points,
     so frusta between consecutive vertices of that hull."""
-    axis = trunci[0].unit_axis
-    origin = trunci[0].center_array
-    ends = np.array([e for t in trunci for e in t.end_centers])
+    axis = trunci[0].normal
+    origin = trunci[0].center
+    ends = np.array([e for t in trunci for e in _ends(t)])
     radii = np.array([r for t in trunci for r in (t.r1, t.r2)])
     s = (ends - origin) @ axis
     reach = float(np.ptp(s) + radii.max())
@@ -367,16 +359,14 @@ def _coaxial_hull(trunci: list[Truncus]) -> list[Primitive] | None:
     return pieces
 
 
-def _coaxial_with_spheres(leaves: list[Truncus | Sphere]) -> list[Primitive] | None:
+def _coaxial_with_spheres(trunci: list[AffineFrustum], balls: list[AffineBall]) -> list[Primitive] | None:
     """The hull of trunci on one axis and spheres centred on it (a dome on a cylinder, a cone
     with a ball): a solid of revolution whose meridian is the upper hull of the ends' rims
     (points) and the spheres' discs; frusta under its straight edges, spheres under its arcs.
     None when they are not on one axis."""
-    trunci = [p for p in leaves if isinstance(p, Truncus)]
-    axis, origin = trunci[0].unit_axis, trunci[0].center_array
-    balls = [p for p in leaves if isinstance(p, Sphere)]
-    centres = np.array([e for t in trunci for e in t.end_centers] + [p.center_array for p in balls])
-    radii = np.array([r for t in trunci for r in (t.r1, t.r2)] + [p.radius for p in balls])
+    axis, origin = trunci[0].normal, trunci[0].center
+    centres = np.array([e for t in trunci for e in _ends(t)] + [b.center for b in balls])
+    radii = np.array([r for t in trunci for r in (t.r1, t.r2)] + [b.radius for b in balls])
     s = (centres - origin) @ axis
     off_line = np.linalg.norm(centres - origin - s[:, None] * axis, axis=1)
     if off_line.max() > SHAPE_TOLERANCE * float(np.ptp(s) + radii.max()):

@@ -9,7 +9,9 @@
   :mod:`~isocsg.kinds.torus` (the first non-convex kind), :mod:`~isocsg.kinds.mesh` (closed
   triangle meshes);
 - helpers the kinds share: :mod:`~isocsg.kinds.planar` (plane sections),
-  :mod:`~isocsg.kinds.meshing` (manifold3d), :mod:`~isocsg.kinds.scad` (OpenSCAD text).
+  :mod:`~isocsg.kinds.meshing` (manifold3d), :mod:`~isocsg.kinds.scad` (OpenSCAD text),
+  :mod:`~isocsg.kinds.forms` (exact forms: a kind as plain data, what ``projection`` and exact
+  hulls read), :mod:`~isocsg.kinds.patches` (surfaces as families of rings, for the area integrals).
 
 See ``docs/architecture.md`` ("Primitive kinds") for adding a kind.
 """
@@ -17,6 +19,7 @@ See ``docs/architecture.md`` ("Primitive kinds") for adding a kind.
 # isort: skip_file
 # (the kinds register as they are imported: in the order of the scene files' table of kinds)
 from .base import DEFAULT_RESOLUTION, LeafForm, LeafRow, Primitive, RayHits, Solid, provides
+from .forms import AffineBall, AffineFrustum, PointHull, RingTorus, TriangleSurface
 from .registry import PrimitiveKind, kind_named, kind_of, register_kind, registered_kinds, unregister_kind
 from .sphere import Sphere
 from .truncus import Cone, Cylinder, Truncus
@@ -29,6 +32,8 @@ from .mesh import TriangleMesh
 
 __all__ = [
     "DEFAULT_RESOLUTION",
+    "AffineBall",
+    "AffineFrustum",
     "Box",
     "Cone",
     "ConvexPolyhedron",
@@ -37,12 +42,15 @@ __all__ = [
     "EllipticTruncus",
     "LeafForm",
     "LeafRow",
+    "PointHull",
     "Primitive",
     "PrimitiveKind",
     "RayHits",
+    "RingTorus",
     "Solid",
     "Sphere",
     "Torus",
+    "TriangleSurface",
     "TriangleMesh",
     "Truncus",
     "kind_named",

@@ -32,6 +32,7 @@ from ..errors import InvalidParameterError
 
 __all__ = [
     "MAX_CONDITION",
+    "perpendicular_frame",
     "affine_matrix",
     "translation_matrix",
     "rotation_matrix",
@@ -208,3 +209,15 @@ def _similarity(key: bytes, tol: float) -> float | None:
     if np.max(np.abs(g - s2 * np.eye(3))) <= tol * s2:
         return math.sqrt(s2)
     return None
+
+
+def perpendicular_frame(axis: NDArray[np.float64]) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+    """Two unit vectors that complete ``axis`` (unit) to a right-handed frame."""
+    # np.cross's own products, written out: the same bits, without its overhead per call
+    # (a convex hull asks for one frame per face)
+    a0, a1, a2 = float(axis[0]), float(axis[1]), float(axis[2])
+    h0, h1, h2 = (1.0, 0.0, 0.0) if abs(a0) < 0.9 else (0.0, 1.0, 0.0)
+    u = np.array([a1 * h2 - a2 * h1, a2 * h0 - a0 * h2, a0 * h1 - a1 * h0])
+    u /= np.linalg.norm(u)
+    u0, u1, u2 = float(u[0]), float(u[1]), float(u[2])
+    return u, np.array([a1 * u2 - a2 * u1, a2 * u0 - a0 * u2, a0 * u1 - a1 * u0])

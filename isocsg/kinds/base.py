@@ -22,7 +22,13 @@ The members, by concern:
 - meshes and shadows: ``to_polyhedron(resolution)``, ``manifold(resolution,
   shapes)``, ``convex_pieces(resolution)``;
 - files: ``kind`` and ``to_dict()`` / ``from_dict(fields)`` (scene files),
-  ``to_openscad(digits)``; ``_affine(A, t)`` (the image under an affine map).
+  ``to_openscad(digits)``; ``_affine(A, t)`` (the image under an affine map);
+- exact forms: ``exact_form()`` (the kind as plain data, :mod:`isocsg.kinds.forms`: what
+  ``projection`` and exact hulls read), ``is_prism_along(direction)``;
+- surface measure: ``area``, ``surface_patches(leaf)`` (:mod:`isocsg.kinds.patches`),
+  ``flat_face_planes()`` (what :mod:`isocsg.testing` integrates);
+- OpenSCAD values: ``axis_scaled(scale)`` (a box of any aspect), ``simplest()`` (an
+  axis-aligned polyhedron as a box).
 
 Members with a sound generic answer have a default here (a convex kind's
 ``ray_intervals`` from ``intersect_rays``, a section and a manifold from
@@ -45,6 +51,7 @@ from numpy.typing import ArrayLike, NDArray
 from .._late import late
 from .._validation import Vec3, length_floor, points_array
 from ..errors import InvalidGeometryError, InvalidParameterError
+from .affine import perpendicular_frame as _perpendicular_frame  # noqa: F401  (the kinds import it from here)
 
 if TYPE_CHECKING:  # pragma: no cover
     import manifold3d
@@ -52,6 +59,8 @@ if TYPE_CHECKING:  # pragma: no cover
     from shapely.geometry import Polygon
 
     from ..bands.surface import Surface
+    from .forms import ExactForm
+    from .patches import Patch
 
 __all__ = [
     "DEFAULT_RESOLUTION",
@@ -468,6 +477,60 @@ class Primitive(Solid):
         (a curved kind): what OpenSCAD's ``hull()`` of its children needs."""
         return None
 
+    def exact_form(self) -> ExactForm | None:
+        """What the solid is exactly, as one of the shapes of :mod:`isocsg.kinds.forms` (a ball, a
+        frustum, a polytope, ... as plain data), or None (default: none of them). OpenSCAD's
+        ``projection`` and exact hulls read it; without one a section is polygonised from
+        :meth:`section`, and an outline or a hull raises :class:`~isocsg.errors.NotExactError`."""
+        return None
+
+    def is_prism_along(self, direction: NDArray[np.float64], tol: float = 1e-12) -> bool:
+        """Whether the solid is a right prism along the unit ``direction`` (its sides parallel to it,
+        its ends across it, to ``tol``): what makes ``projection`` of a through hole exact.
+        Default: False (not known to be one)."""
+        return False
+
+    def flat_face_planes(self) -> tuple[NDArray[np.float64], NDArray[np.float64]] | None:
+        """Outward normals and offsets ``n . x = d`` of the planes holding the flat parts of its
+        surface (a polytope's faces, a truncus's ends), or None: the area integration of
+        :mod:`isocsg.testing` finds where a surface crosses them in closed form. Default: a convex
+        polyhedral kind's :meth:`planar_faces`, else None."""
+        return self.planar_faces() if self.polyhedral and self.convex else None
+
+    @property
+    def area(self) -> float:
+        """The exact surface area (square metres).
+
+        Raises
+        ------
+        InvalidParameterError
+            For a kind without a closed form (the default).
+        """
+        raise InvalidParameterError(f"surface area: no closed form for the kind {type(self).__name__}")
+
+    def surface_patches(self, leaf: int) -> list[Patch]:
+        """Its surface as smooth patches, each a one-parameter family of rings (see
+        :mod:`isocsg.kinds.patches`), labelled with the leaf index ``leaf``: what
+        :func:`isocsg.testing.surface_area` integrates over.
+
+        Raises
+        ------
+        InvalidGeometryError
+            For a kind without a parametrisation (the default).
+        """
+        raise InvalidGeometryError(f"surface area: no surface parametrisation for the kind {type(self).__name__}")
+
+    def axis_scaled(self, scale: NDArray[np.float64]) -> Primitive | None:
+        """Its image under ``diag(scale)`` as this kind, for any ratio of the factors (an axis-aligned
+        box stays one where the general map of that aspect would be refused as ill-conditioned),
+        or None (default: use :meth:`transform`)."""
+        return None
+
+    def simplest(self) -> Primitive:
+        """The same solid as the simplest kind that is it exactly (a convex polyhedron that is an
+        axis-aligned box becomes a :class:`~isocsg.kinds.Box`); default: itself."""
+        return self
+
     def leaf_row(self) -> LeafRow:
         """The kind's row of the batched leaf tables (default: :attr:`LeafForm.GENERIC`)."""
         return LeafRow(LeafForm.GENERIC, center=0.5 * (self.bounds[0] + self.bounds[1]))
@@ -568,18 +631,6 @@ def _check_length(name: str, value: float, *positions: Any, what: str = "") -> N
 def _unit(v: Vec3) -> NDArray[np.float64]:
     a = np.asarray(v, dtype=np.float64)
     return a / np.linalg.norm(a)
-
-
-def _perpendicular_frame(axis: NDArray[np.float64]) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
-    """Two unit vectors that complete ``axis`` (unit) to a right-handed frame."""
-    # np.cross's own products, written out: the same bits, without its overhead per call
-    # (a convex hull asks for one frame per face)
-    a0, a1, a2 = float(axis[0]), float(axis[1]), float(axis[2])
-    h0, h1, h2 = (1.0, 0.0, 0.0) if abs(a0) < 0.9 else (0.0, 1.0, 0.0)
-    u = np.array([a1 * h2 - a2 * h1, a2 * h0 - a0 * h2, a0 * h1 - a1 * h0])
-    u /= np.linalg.norm(u)
-    u0, u1, u2 = float(u[0]), float(u[1]), float(u[2])
-    return u, np.array([a1 * u2 - a2 * u1, a2 * u0 - a0 * u2, a0 * u1 - a1 * u0])
 
 
 IDENTITY3: tuple[Vec3, Vec3, Vec3] = ((1.0, 0.0, 0.0), (0.0, 1.0, 0.0), (0.0, 0.0, 1.0))

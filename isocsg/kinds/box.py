@@ -26,8 +26,10 @@ from .base import (
     _snap_rotation,
     rotation3,
 )
+from .forms import PointHull
 from .halfspaces import polyhedral_tangent, ray_halfspaces
 from .meshing import manifold3d_module
+from .patches import Patch, polytope_patches
 from .registry import register_kind
 from .scad import encoded, mat, translated, vec
 
@@ -38,6 +40,9 @@ if TYPE_CHECKING:  # pragma: no cover
     from .polyhedron import ConvexPolyhedron
 
 __all__ = ["Box"]
+
+#: The 12 edges of the corners' order (x slowest, z fastest): corner pairs one bit apart.
+_EDGES = np.array([(a, b) for a in range(8) for b in range(a + 1, 8) if bin(a ^ b).count("1") == 1], dtype=np.int64)
 
 
 @register_kind("box", required=("center", "size"), optional=("orientation",))
@@ -264,6 +269,31 @@ class Box(Primitive):
             lo[b_idx] = a[:, :3] - a[:, 3:] / 2
             hi[b_idx] = a[:, :3] + a[:, 3:] / 2
         return lo, hi, np.zeros(n, np.bool_), np.zeros((n, 3)), np.zeros(n)
+
+    @property
+    def area(self) -> float:
+        """Exact surface area, 2 (ab + bc + ca)."""
+        a, b, c = (float(x) for x in self.size)
+        return 2.0 * (a * b + b * c + c * a)
+
+    def exact_form(self) -> PointHull:
+        """A :class:`~isocsg.kinds.forms.PointHull`: its corners and 12 edges."""
+        return PointHull(self.hull_points(), _EDGES)
+
+    def is_prism_along(self, direction: NDArray[np.float64], tol: float = 1e-12) -> bool:
+        """One of its own axes along ``direction``."""
+        along = np.asarray(direction, dtype=np.float64) @ self.rotation
+        return bool(np.any(np.abs(np.abs(along) - 1.0) <= tol))
+
+    def surface_patches(self, leaf: int) -> list[Patch]:
+        """Its six faces (:func:`~isocsg.kinds.patches.polytope_patches`)."""
+        return polytope_patches(leaf, self.face_polygons(), self.planar_faces()[0])
+
+    def axis_scaled(self, scale: NDArray[np.float64]) -> Box | None:
+        """An axis-aligned box scaled per axis (any aspect); None for a turned one."""
+        if not self.axis_aligned:
+            return None
+        return Box(tuple(np.asarray(self.center) * scale), tuple(np.asarray(self.size) * scale))
 
     def leaf_row(self) -> LeafRow:
         """An :attr:`LeafForm.AXIS_BOX` row, or a :attr:`LeafForm.HULL` row when turned."""

@@ -34,7 +34,9 @@ from .base import (
     _as_rays,
     rotation3,
 )
+from .forms import AffineBall
 from .meshing import manifold3d_module
+from .patches import Patch, affine_ball_patches, ellipsoid_area
 from .polyhedron import ConvexPolyhedron
 from .registry import register_kind
 from .scad import encoded, mat
@@ -243,6 +245,19 @@ class Ellipsoid(Primitive):
         return out
 
     # ------------------------------------------------------------ the kind interface
+    @property
+    def area(self) -> float:
+        """Exact surface area (Carlson's symmetric form: :func:`~isocsg.kinds.patches.ellipsoid_area`)."""
+        return ellipsoid_area(*(float(x) for x in self.radii))
+
+    def exact_form(self) -> AffineBall:
+        """An :class:`~isocsg.kinds.forms.AffineBall` of linear map ``R S``."""
+        return AffineBall(self.center_array, self.matrix)
+
+    def surface_patches(self, leaf: int) -> list[Patch]:
+        """The unit sphere's rings, mapped (:func:`~isocsg.kinds.patches.affine_ball_patches`)."""
+        return affine_ball_patches(leaf, self.center_array, np.asarray(self.matrix, dtype=np.float64), self.radii_array)
+
     def leaf_row(self) -> LeafRow:
         """A :attr:`LeafForm.GENERIC` row about its centre."""
         return LeafRow(LeafForm.GENERIC, center=self.center_array)

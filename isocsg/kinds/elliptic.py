@@ -28,7 +28,9 @@ from numpy.typing import ArrayLike, NDArray
 from .._validation import MAX_ABS_COORD, scalar, vector3
 from ..errors import InvalidGeometryError
 from .base import DEFAULT_RESOLUTION, LeafForm, LeafRow, Primitive, RayHits, _as_rays
+from .forms import AffineFrustum, frustum_is_prism
 from .meshing import manifold3d_module
+from .patches import Patch, affine_frustum_patches, elliptic_lateral_area
 from .polyhedron import ConvexPolyhedron
 from .registry import register_kind
 from .scad import encoded, mat, num, truncus_body
@@ -213,6 +215,40 @@ class EllipticTruncus(Primitive):
         return EllipticTruncus(tuple(c), M, canonical.r1, canonical.r2)
 
     # ------------------------------------------------------------ the kind interface
+    def _end_normal(self) -> NDArray[np.float64]:
+        """The ends' planes' normal, not normalised: ``M^-T e_z``."""
+        return np.linalg.inv(self.linear).T @ np.array([0.0, 0.0, 1.0])  # type: ignore[no-any-return]
+
+    @property
+    def area(self) -> float:
+        """Exact surface area: its two elliptic ends and the lateral integral
+        (:func:`~isocsg.kinds.patches.elliptic_lateral_area`)."""
+        M = self.linear
+        scale = abs(float(np.linalg.det(M))) * float(np.linalg.norm(self._end_normal()))
+        cap = scale * math.pi * (self.r1**2 + self.r2**2)
+        return cap + elliptic_lateral_area(M, float(self.r1), float(self.r2))
+
+    def exact_form(self) -> AffineFrustum:
+        """An :class:`~isocsg.kinds.forms.AffineFrustum` of its own matrix (never a right one)."""
+        m = self.linear
+        normal = np.cross(m[:, 0], m[:, 1])
+        return AffineFrustum(self.center_array, m, self.r1, self.r2, normal / np.linalg.norm(normal), False)
+
+    def is_prism_along(self, direction: NDArray[np.float64], tol: float = 1e-12) -> bool:
+        """An upright elliptic cylinder along ``direction``."""
+        return frustum_is_prism(self.exact_form(), np.asarray(direction, dtype=np.float64), tol)
+
+    def flat_face_planes(self) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+        """The planes of its two ends."""
+        M, c = self.linear, self.center_array
+        nz = self._end_normal()
+        nz = nz / np.linalg.norm(nz)
+        return np.stack([nz, -nz]), np.array([nz @ (c + M[:, 2] / 2), -nz @ (c - M[:, 2] / 2)])
+
+    def surface_patches(self, leaf: int) -> list[Patch]:
+        """Its side and two elliptic ends (:func:`~isocsg.kinds.patches.affine_frustum_patches`)."""
+        return affine_frustum_patches(leaf, self.center_array, self.linear, float(self.r1), float(self.r2))
+
     def leaf_row(self) -> LeafRow:
         """A :attr:`LeafForm.GENERIC` row about its centre."""
         return LeafRow(LeafForm.GENERIC, center=self.center_array)

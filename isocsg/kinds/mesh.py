@@ -42,6 +42,7 @@ from numpy.typing import ArrayLike, NDArray
 from .._validation import MAX_ABS_COORD
 from ..errors import InvalidGeometryError
 from .base import DEFAULT_RESOLUTION, Primitive, RayHits, _as_rays
+from .forms import TriangleSurface
 from .polyhedron import ConvexPolyhedron
 from .registry import register_kind
 from .scad import vec
@@ -348,6 +349,10 @@ class TriangleMesh(Primitive):
         """Every face's plane (outward normal and offset)."""
         n = self.face_normals
         return n, np.einsum("ij,ij->i", n, self.vertices[self.faces[:, 0]])
+
+    def exact_form(self) -> TriangleSurface:
+        """A :class:`~isocsg.kinds.forms.TriangleSurface`: its own vertices and faces."""
+        return TriangleSurface(self.vertices, self.faces)
 
     def hull_points(self) -> NDArray[np.float64]:
         """Its vertices (their hull is the hull of the solid)."""

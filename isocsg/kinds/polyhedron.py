@@ -27,9 +27,11 @@ from .base import (
     _as_rays,
     _perpendicular_frame,
 )
+from .forms import PointHull
 from .halfspaces import polyhedral_tangent, ray_halfspaces
 from .meshing import manifold3d_module
-from .registry import register_kind
+from .patches import Patch, polytope_patches
+from .registry import kind_class, register_kind
 from .scad import encoded, num_sig, round_sig, short_mat, vec
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -218,6 +220,38 @@ class ConvexPolyhedron(Primitive):
     def hull_points(self) -> NDArray[np.float64]:
         """Its hull vertices."""
         return np.asarray(self.hull_vertices, dtype=np.float64)
+
+    @property
+    def area(self) -> float:
+        """Exact surface area: the sum of its faces' areas."""
+        v = self.hull_vertices[self.triangles]
+        return float(0.5 * np.linalg.norm(np.cross(v[:, 1] - v[:, 0], v[:, 2] - v[:, 0]), axis=1).sum())
+
+    def exact_form(self) -> PointHull:
+        """A :class:`~isocsg.kinds.forms.PointHull`: its hull vertices and its faces' edges."""
+        pairs = {tuple(sorted((int(f[i]), int(f[(i + 1) % len(f)])))) for f in self.faces for i in range(len(f))}
+        return PointHull(np.asarray(self.hull_vertices, dtype=np.float64),
+                         np.array(sorted(pairs), dtype=np.int64).reshape(-1, 2))
+
+    def is_prism_along(self, direction: NDArray[np.float64], tol: float = 1e-12) -> bool:
+        """Every face along ``direction`` or across it."""
+        nz = np.abs(np.asarray(self.face_normals, dtype=np.float64) @ np.asarray(direction, dtype=np.float64))
+        return bool(np.all((nz <= tol) | (nz >= 1.0 - tol)))
+
+    def surface_patches(self, leaf: int) -> list[Patch]:
+        """Its faces (:func:`~isocsg.kinds.patches.polytope_patches`)."""
+        return polytope_patches(leaf, self.face_polygons(), self.planar_faces()[0])
+
+    def simplest(self) -> Primitive:
+        """An axis-aligned box held as eight corners becomes the :class:`~isocsg.kinds.Box` it is."""
+        v = self.hull_vertices
+        if len(v) != 8:
+            return self
+        lo, hi = v.min(axis=0), v.max(axis=0)
+        if not np.all((v == lo) | (v == hi)) or len({tuple(p) for p in v.tolist()}) != 8:
+            return self
+        box: Primitive = kind_class("box")(tuple(((lo + hi) / 2).tolist()), tuple((hi - lo).tolist()))
+        return box
 
     def leaf_row(self) -> LeafRow:
         """A :attr:`LeafForm.HULL` row: its hull vertices."""

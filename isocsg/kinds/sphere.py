@@ -27,7 +27,9 @@ from .base import (
     _as_rays,
     _check_length,
 )
+from .forms import AffineBall
 from .meshing import manifold3d_module
+from .patches import Patch, ball_patches
 from .registry import kind_class, register_kind
 from .scad import encoded, num, translated
 
@@ -177,6 +179,19 @@ class Sphere(Primitive):
             return EMPTY
         c2 = to2d(c[None, :], F)
         return Polygon(circle_ring(c2, np.array([math.sqrt(rr)]), resolution, area_exact)[0])
+
+    @property
+    def area(self) -> float:
+        """Exact surface area, 4 pi r^2."""
+        return 4.0 * math.pi * float(self.radius) ** 2
+
+    def exact_form(self) -> AffineBall:
+        """A round :class:`~isocsg.kinds.forms.AffineBall` (``radius * I``)."""
+        return AffineBall(self.center_array, self.radius * np.eye(3), self.radius)
+
+    def surface_patches(self, leaf: int) -> list[Patch]:
+        """Rings across z (:func:`~isocsg.kinds.patches.ball_patches`)."""
+        return ball_patches(leaf, self.center_array, float(self.radius))
 
     def leaf_row(self) -> LeafRow:
         """A :attr:`LeafForm.BALL` row."""

@@ -39,6 +39,8 @@ from numpy.typing import ArrayLike, NDArray
 from .._validation import MAX_ABS_COORD, MIN_ASPECT, Vec3, length_floor, scalar, vector3
 from ..errors import InvalidGeometryError
 from .base import DEFAULT_RESOLUTION, LeafForm, LeafRow, Primitive, RayHits, _as_rays, _perpendicular_frame
+from .forms import RingTorus
+from .patches import Patch, torus_patches
 from .polyhedron import ConvexPolyhedron
 from .registry import register_kind
 from .scad import encoded, frame, mat, num
@@ -278,6 +280,20 @@ class Torus(Primitive):
         return self.first_interval_hits(origins, directions)
 
     # ------------------------------------------------------------ sections
+    @property
+    def area(self) -> float:
+        """Exact surface area, 4 pi^2 R r."""
+        return 4.0 * math.pi**2 * float(self.major) * float(self.minor)
+
+    def exact_form(self) -> RingTorus:
+        """A :class:`~isocsg.kinds.forms.RingTorus`."""
+        return RingTorus(self.center_array, np.asarray(self.axis, dtype=np.float64), self.major, self.minor)
+
+    def surface_patches(self, leaf: int) -> list[Patch]:
+        """Rings about the axis, swept by the tube's angle (:func:`~isocsg.kinds.patches.torus_patches`)."""
+        return torus_patches(leaf, self.center_array, np.asarray(self.axis, dtype=np.float64), float(self.major),
+                             float(self.minor))
+
     def leaf_row(self) -> LeafRow:
         """A :attr:`LeafForm.GENERIC` row about its centre."""
         return LeafRow(LeafForm.GENERIC, center=self.center_array)

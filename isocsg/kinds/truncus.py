@@ -40,7 +40,9 @@ from .base import (
     _perpendicular_frame,
     _unit,
 )
+from .forms import AffineFrustum, frustum_is_prism
 from .meshing import manifold3d_module, rotation_to_axis
+from .patches import Patch, frustum_patches
 from .registry import kind_class, register_kind
 from .scad import encoded, frame, mat, num, translated, truncus_body
 
@@ -427,6 +429,35 @@ class Truncus(Primitive):
     def section(self, frame: NDArray[np.float64], resolution: int, area_exact: bool = False) -> Polygon:
         """See :func:`truncus_section`."""
         return truncus_section(self, frame, resolution, area_exact)
+
+    @property
+    def area(self) -> float:
+        """Exact surface area, ``pi ((r1 + r2) s + r1^2 + r2^2)`` with the slant ``s``."""
+        r1, r2, h = float(self.r1), float(self.r2), float(self.height)
+        return math.pi * ((r1 + r2) * math.hypot(r1 - r2, h) + r1 * r1 + r2 * r2)
+
+    def exact_form(self) -> AffineFrustum:
+        """A right :class:`~isocsg.kinds.forms.AffineFrustum`: two unit vectors across the axis, then the axis."""
+        a = np.asarray(self.axis, dtype=np.float64)
+        n = a / np.linalg.norm(a)
+        e1 = np.cross(n, [1.0, 0.0, 0.0] if abs(n[0]) < 0.9 else [0.0, 1.0, 0.0])
+        e1 /= np.linalg.norm(e1)
+        return AffineFrustum(self.center_array, np.column_stack([e1, np.cross(n, e1), a]), self.r1, self.r2,
+                             self.unit_axis, True)
+
+    def is_prism_along(self, direction: NDArray[np.float64], tol: float = 1e-12) -> bool:
+        """A cylinder along ``direction``."""
+        return frustum_is_prism(self.exact_form(), np.asarray(direction, dtype=np.float64), tol)
+
+    def flat_face_planes(self) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+        """The planes of its two ends."""
+        a, c, h = self.unit_axis, self.center_array, float(self.height)
+        return np.stack([a, -a]), np.array([a @ (c + a * h / 2), -a @ (c - a * h / 2)])
+
+    def surface_patches(self, leaf: int) -> list[Patch]:
+        """Its side swept along the axis and its end discs (:func:`~isocsg.kinds.patches.frustum_patches`)."""
+        h, r1, r2 = float(self.height), float(self.r1), float(self.r2)
+        return frustum_patches(leaf, self.center_array, self.unit_axis, h, r1, r2)
 
     def leaf_row(self) -> LeafRow:
         """A :attr:`LeafForm.FRUSTUM` row."""

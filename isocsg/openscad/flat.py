@@ -352,16 +352,11 @@ def _as_boxes(solid: Any) -> Any:
 
 
 def _as_box(solid: Any) -> Any:
-    """An extruded axis-aligned rectangle as the exact :class:`~isocsg.Box` it is."""
-    from ..kinds import Box, ConvexPolyhedron
+    """An extruded axis-aligned rectangle as the exact :class:`~isocsg.Box` it is
+    (:meth:`~isocsg.kinds.base.Primitive.simplest`)."""
+    from ..kinds import Primitive
 
-    if not isinstance(solid, ConvexPolyhedron) or len(solid.hull_vertices) != 8:
-        return solid
-    v = solid.hull_vertices
-    lo, hi = v.min(axis=0), v.max(axis=0)
-    if not np.all((v == lo) | (v == hi)) or len({tuple(p) for p in v.tolist()}) != 8:
-        return solid
-    return Box(tuple(((lo + hi) / 2).tolist()), tuple((hi - lo).tolist()))
+    return solid.simplest() if isinstance(solid, Primitive) else solid
 
 
 def extrude(lw: _Lowerer, call: CSGCall) -> Any:

@@ -257,11 +257,14 @@ def resize_solid(lw: Any, call: Any, solid: Any) -> Any:
     if np.all(scale == 1.0):
         return solid
     from ..errors import InvalidGeometryError, InvalidParameterError
-    from ..kinds import Box
+    from ..kinds import Primitive
 
-    if isinstance(solid, Box) and solid.orientation == ((1.0, 0.0, 0.0), (0.0, 1.0, 0.0), (0.0, 0.0, 1.0)):
-        # a box of any aspect stays one (a map of that aspect would be refused as ill-conditioned)
-        return lw.make(call, Box, tuple(np.asarray(solid.center) * scale), tuple(np.asarray(solid.size) * scale))
+    if isinstance(solid, Primitive):
+        # a kind that stays itself under any aspect (an axis-aligned box: a map of that aspect would be
+        # refused as ill-conditioned)
+        scaled = lw.make(call, solid.axis_scaled, scale)
+        if scaled is not None:
+            return scaled
     m = np.eye(4)
     m[:3, :3] = np.diag(scale)
     try:

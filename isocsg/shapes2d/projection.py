@@ -27,8 +27,8 @@ import numpy as np
 from numpy.typing import NDArray
 
 from ..errors import InvalidGeometryError, NotExactError
-from ..kinds import Box, ConvexPolyhedron, Ellipsoid, EllipticTruncus, Solid, Sphere, Torus, Truncus
-from ..kinds.mesh import TriangleMesh
+from ..kinds import Solid
+from ..kinds.forms import AffineBall, AffineFrustum, PointHull, RingTorus, TriangleSurface
 from .hull2d import disc_hull
 from .leaves import Circle, ConvexPolygon
 from .region import shape_from_region
@@ -42,6 +42,7 @@ __all__ = ["projection", "section_at", "outline"]
 CURVE_RESOLUTION = 2048
 
 _EPS = 1e-12
+_UP = np.array([0.0, 0.0, 1.0])
 
 
 def projection(solid: Solid, *, cut: bool = False) -> Shape2D:
@@ -170,23 +171,22 @@ def section_at(solid: Solid, z: float = 0.0) -> Shape2D:
 
 
 def leaf_section_at(leaf: Any, z: float) -> Shape2D:
-    """The exact section of one primitive by the plane at height ``z`` (faces in the plane count)."""
-    if isinstance(leaf, (Box, ConvexPolyhedron)):
-        return _polytope_section(_corners(leaf), _edges(leaf), z)
-    if isinstance(leaf, Sphere):
-        return _ball_section(np.asarray(leaf.center, dtype=np.float64), leaf.radius * np.eye(3), z)
-    if isinstance(leaf, Ellipsoid):
-        R = np.asarray(leaf.orientation, dtype=np.float64) * np.asarray(leaf.radii, dtype=np.float64)
-        return _ball_section(np.asarray(leaf.center, dtype=np.float64), R, z)
-    if isinstance(leaf, (Truncus, EllipticTruncus)):
-        c, M, r1, r2 = _frustum(leaf)
-        return _frustum_section(leaf, c, M, r1, r2, z)
-    if isinstance(leaf, Torus):
-        return _torus_section(leaf, z)
-    if isinstance(leaf, TriangleMesh):
+    """The exact section of one primitive by the plane at height ``z`` (faces in the plane count),
+    from its :meth:`~isocsg.kinds.base.Primitive.exact_form`; a kind without one is polygonised
+    from its own ``section``."""
+    form = leaf.exact_form()
+    if isinstance(form, PointHull):
+        return _polytope_section(form.vertices, form.edges, z)
+    if isinstance(form, AffineBall):
+        return _ball_section(form.center, form.linear, z)
+    if isinstance(form, AffineFrustum):
+        return _frustum_section(leaf, form.center, form.matrix, form.r1, form.r2, z)
+    if isinstance(form, RingTorus):
+        return _torus_section(leaf, form, z)
+    if isinstance(form, TriangleSurface):
         from ..kinds.mesh_section import mesh_section
 
-        return shape_from_region(mesh_section(leaf.vertices, leaf.faces, _frame(z)))
+        return shape_from_region(mesh_section(form.vertices, form.faces, _frame(z)))
     return _polygonised_section(leaf, z)
 
 
@@ -198,22 +198,6 @@ def _frame(z: float) -> NDArray[np.float64]:
 
 def _polygonised_section(leaf: Any, z: float) -> Shape2D:
     return shape_from_region(leaf.section(_frame(z), CURVE_RESOLUTION, False))
-
-
-def _corners(leaf: Box | ConvexPolyhedron) -> NDArray[np.float64]:
-    if isinstance(leaf, ConvexPolyhedron):
-        return np.asarray(leaf.hull_vertices, dtype=np.float64)
-    signs = np.array([[i, j, k] for i in (-1, 1) for j in (-1, 1) for k in (-1, 1)], dtype=np.float64)
-    R = np.asarray(leaf.orientation, dtype=np.float64)
-    half = np.asarray(leaf.size, dtype=np.float64) / 2
-    return np.asarray(leaf.center, dtype=np.float64) + (signs * half) @ R.T
-
-
-def _edges(leaf: Box | ConvexPolyhedron) -> NDArray[np.int64]:
-    if isinstance(leaf, ConvexPolyhedron):
-        pairs = {tuple(sorted((int(f[i]), int(f[(i + 1) % len(f)])))) for f in leaf.faces for i in range(len(f))}
-        return np.array(sorted(pairs), dtype=np.int64).reshape(-1, 2)
-    return np.array([(a, b) for a in range(8) for b in range(a + 1, 8) if bin(a ^ b).count("1") == 1], dtype=np.int64)
 
 
 def _convex(points: NDArray[np.float64]) -> Shape2D:
@@ -270,18 +254,6 @@ def _ball_section(c: NDArray[np.float64], M: NDArray[np.float64], z: float) -> S
     return _ellipse(center, rho * (M[:2] @ np.column_stack([e1, e2])))
 
 
-def _frustum(leaf: Truncus | EllipticTruncus) -> tuple[NDArray[np.float64], NDArray[np.float64], float, float]:
-    """``(c, M, r1, r2)``: points ``c + M (x, y, t)``, ``t`` in [-1/2, 1/2], ``|(x, y)| <= r(t)``,
-    ``r(-1/2) = r2``, ``r(1/2) = r1``."""
-    if isinstance(leaf, EllipticTruncus):
-        return np.asarray(leaf.center, dtype=np.float64), np.asarray(leaf.matrix, dtype=np.float64), leaf.r1, leaf.r2
-    a = np.asarray(leaf.axis, dtype=np.float64)
-    n = a / np.linalg.norm(a)
-    e1 = np.cross(n, [1.0, 0.0, 0.0] if abs(n[0]) < 0.9 else [0.0, 1.0, 0.0])
-    e1 /= np.linalg.norm(e1)
-    return np.asarray(leaf.center, dtype=np.float64), np.column_stack([e1, np.cross(n, e1), a]), leaf.r1, leaf.r2
-
-
 def _half_planes(shape: Shape2D, lines: list[tuple[NDArray[np.float64], float]]) -> Shape2D:
     """``shape`` cut by the half-planes ``g . p <= h`` (each an exact convex polygon around its box)."""
     if shape is EMPTY or not lines:
@@ -315,6 +287,7 @@ def _half_planes(shape: Shape2D, lines: list[tuple[NDArray[np.float64], float]])
 
 def _frustum_section(leaf: Any, c: NDArray[np.float64], M: NDArray[np.float64], r1: float, r2: float,
                      z: float) -> Shape2D:
+    """The section of the frustum ``c + M (x, y, t)`` (:class:`~isocsg.kinds.forms.AffineFrustum`)."""
     m = M[2]  # z = c_z + m . (x, y, t)
     size = float(np.abs(M).max())
     tol = 1e-13 * size
@@ -362,10 +335,9 @@ def _frustum_section(leaf: Any, c: NDArray[np.float64], M: NDArray[np.float64], 
     return _half_planes(ellipse, [(g, 0.5 - s0), (-g, 0.5 + s0)])
 
 
-def _torus_section(leaf: Torus, z: float) -> Shape2D:
-    c = np.asarray(leaf.center, dtype=np.float64)
-    a = np.asarray(leaf.axis, dtype=np.float64)
-    R, r = leaf.major, leaf.minor
+def _torus_section(leaf: Any, form: RingTorus, z: float) -> Shape2D:
+    c, a = form.center, form.axis
+    R, r = form.major, form.minor
     if abs(abs(a[2]) - 1.0) <= 1e-13:  # about z: an annulus
         d = z - c[2]
         if abs(d) >= r:
@@ -474,20 +446,7 @@ def _prism_range(s: Any) -> tuple[float, float] | None:
 
 
 def _leaf_prism(leaf: Any) -> tuple[float, float] | None:
-    tol = 1e-12
-    zr = _zrange(leaf)
-    if isinstance(leaf, Box):
-        R = np.asarray(leaf.orientation, dtype=np.float64)
-        return zr if np.any(np.abs(np.abs(R[2]) - 1.0) <= tol) else None
-    if isinstance(leaf, ConvexPolyhedron):
-        nz = np.abs(np.asarray(leaf.face_normals, dtype=np.float64)[:, 2])
-        return zr if np.all((nz <= tol) | (nz >= 1.0 - tol)) else None
-    if isinstance(leaf, (Truncus, EllipticTruncus)):
-        _, M, r1, r2 = _frustum(leaf)
-        size = float(np.abs(M).max())
-        upright = np.all(np.abs(M[2, :2]) <= tol * size) and np.all(np.abs(M[:2, 2]) <= tol * size)
-        return zr if r1 == r2 and upright else None
-    return None
+    return _zrange(leaf) if leaf.is_prism_along(_UP, 1e-12) else None
 
 
 def _core(s: Any, op: str, kids: tuple[Any, ...]) -> Any:
@@ -532,29 +491,34 @@ def _cut_by_prisms(s: Any, op: str, kids: tuple[Any, ...], core_outline: Shape2D
 
 
 def leaf_outline(leaf: Any) -> Shape2D:
-    """The exact outline of one primitive on the xy plane."""
-    if isinstance(leaf, (Box, ConvexPolyhedron)):
-        return _convex(_corners(leaf)[:, :2])
-    if isinstance(leaf, Sphere):
-        c = np.asarray(leaf.center, dtype=np.float64)
-        return Circle((float(c[0]), float(c[1])), leaf.radius)
-    if isinstance(leaf, Ellipsoid):
-        R = np.asarray(leaf.orientation, dtype=np.float64) * np.asarray(leaf.radii, dtype=np.float64)
-        P = R[:2]  # the shadow of c + R u is c + P u: the ellipse whose matrix L has L L^T = P P^T
+    """The exact outline of one primitive on the xy plane, from its
+    :meth:`~isocsg.kinds.base.Primitive.exact_form`.
+
+    Raises
+    ------
+    NotExactError
+        For a kind without an exact form (or a torus whose axis is not vertical).
+    """
+    form = leaf.exact_form()
+    if isinstance(form, PointHull):
+        return _convex(form.vertices[:, :2])
+    if isinstance(form, AffineBall) and form.radius is not None:
+        return Circle((float(form.center[0]), float(form.center[1])), form.radius)
+    if isinstance(form, AffineBall):
+        P = form.linear[:2]  # the shadow of c + R u is c + P u: the ellipse whose matrix L has L L^T = P P^T
         L = np.asarray(np.linalg.cholesky(P @ P.T), dtype=np.float64)
-        return _ellipse(np.asarray(leaf.center, dtype=np.float64)[:2], L)
-    if isinstance(leaf, (Truncus, EllipticTruncus)):
-        return _frustum_outline(*_frustum(leaf))
-    if isinstance(leaf, Torus):
-        a = np.asarray(leaf.axis, dtype=np.float64)
-        if abs(abs(a[2]) - 1.0) <= 1e-13:
-            xy = (float(leaf.center[0]), float(leaf.center[1]))
-            return Circle(xy, leaf.major + leaf.minor) - Circle(xy, leaf.major - leaf.minor)
+        return _ellipse(form.center[:2], L)
+    if isinstance(form, AffineFrustum):
+        return _frustum_outline(form.center, form.matrix, form.r1, form.r2)
+    if isinstance(form, RingTorus):
+        if abs(abs(form.axis[2]) - 1.0) <= 1e-13:
+            xy = (float(form.center[0]), float(form.center[1]))
+            return Circle(xy, form.major + form.minor) - Circle(xy, form.major - form.minor)
         raise NotExactError("projection: the outline of a torus whose axis is not vertical is not computed exactly")
-    if isinstance(leaf, TriangleMesh):
+    if isinstance(form, TriangleSurface):
         import shapely
 
-        tri = np.asarray(leaf.vertices, dtype=np.float64)[np.asarray(leaf.faces)][:, :, :2]
+        tri = np.asarray(form.vertices, dtype=np.float64)[np.asarray(form.faces)][:, :, :2]
         polys = shapely.polygons(np.concatenate([tri, tri[:, :1]], axis=1))
         polys = polys[shapely.area(polys) > 0]
         return shape_from_region(shapely.union_all(polys)) if len(polys) else EMPTY

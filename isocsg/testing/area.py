@@ -52,8 +52,8 @@ from .._validation import integer, scalar
 from ..csg.program import Program, combine_masks
 from ..csg.section import solid_program
 from ..errors import InvalidGeometryError, InvalidParameterError
-from ..kinds import Box, ConvexPolyhedron, Ellipsoid, EllipticTruncus, Primitive, Solid, Sphere, Torus, Truncus
-from .patches import Patch, Rings, ellipsoid_area, elliptic_lateral_area, leaf_patches
+from ..kinds import Primitive, Solid
+from .patches import Patch, Rings, leaf_patches
 
 __all__ = ["AreaResult", "boundary_volume", "closed_form_area", "surface_area"]
 
@@ -101,7 +101,7 @@ class AreaResult:
 
 
 def closed_form_area(prim: Primitive) -> float:
-    """The exact surface area of a primitive.
+    """The exact surface area of a primitive (its :attr:`~isocsg.kinds.base.Primitive.area`).
 
     Raises
     ------
@@ -116,43 +116,15 @@ def closed_form_area(prim: Primitive) -> float:
     >>> round(closed_form_area(Cylinder((0, 0, 0), (0, 0, 2), 1)) / math.pi, 12)
     6.0
     """
-    if isinstance(prim, Sphere):
-        return 4.0 * math.pi * float(prim.radius) ** 2
-    if isinstance(prim, Truncus):
-        r1, r2, h = float(prim.r1), float(prim.r2), float(prim.height)
-        return math.pi * ((r1 + r2) * math.hypot(r1 - r2, h) + r1 * r1 + r2 * r2)
-    if isinstance(prim, Box):
-        a, b, c = (float(x) for x in prim.size)
-        return 2.0 * (a * b + b * c + c * a)
-    if isinstance(prim, ConvexPolyhedron):
-        v = prim.hull_vertices[prim.triangles]
-        return float(0.5 * np.linalg.norm(np.cross(v[:, 1] - v[:, 0], v[:, 2] - v[:, 0]), axis=1).sum())
-    if isinstance(prim, Ellipsoid):
-        return ellipsoid_area(*(float(x) for x in prim.radii))
-    if isinstance(prim, Torus):
-        return 4.0 * math.pi**2 * float(prim.major) * float(prim.minor)
-    if isinstance(prim, EllipticTruncus):
-        M = prim.linear
-        nz = np.linalg.inv(M).T @ np.array([0.0, 0.0, 1.0])
-        cap = abs(float(np.linalg.det(M))) * float(np.linalg.norm(nz)) * math.pi * (prim.r1**2 + prim.r2**2)
-        return cap + elliptic_lateral_area(M, float(prim.r1), float(prim.r2))
-    raise InvalidParameterError(f"surface area: no closed form for the kind {type(prim).__name__}")
+    return prim.area
 
 
 def _planes(prim: Primitive) -> tuple[F64, F64] | None:
-    """The planes ``n . x = d`` of a leaf's planar faces (a truncus' ends too), or None."""
-    if isinstance(prim, (Box, ConvexPolyhedron)):
-        n, d = prim.planar_faces()
-        return np.asarray(n, dtype=np.float64), np.asarray(d, dtype=np.float64)
-    if isinstance(prim, Truncus):
-        a, c, h = prim.unit_axis, prim.center_array, float(prim.height)
-        return np.stack([a, -a]), np.array([a @ (c + a * h / 2), -a @ (c - a * h / 2)])
-    if isinstance(prim, EllipticTruncus):
-        M, c = prim.linear, prim.center_array
-        nz = np.linalg.inv(M).T @ np.array([0.0, 0.0, 1.0])
-        nz = nz / np.linalg.norm(nz)
-        return np.stack([nz, -nz]), np.array([nz @ (c + M[:, 2] / 2), -nz @ (c - M[:, 2] / 2)])
-    return None
+    """The planes ``n . x = d`` of a leaf's flat parts (a truncus' ends too), or None."""
+    planes = prim.flat_face_planes()
+    if planes is None:
+        return None
+    return np.asarray(planes[0], dtype=np.float64), np.asarray(planes[1], dtype=np.float64)
 
 
 class _Tree:
@@ -167,7 +139,8 @@ class _Tree:
         self.tol = COINCIDENT * scale
         self.step = 1e-7 * scale
         self.last_inside_minus = np.zeros(0, bool)
-        self.planar = [isinstance(p, (Box, ConvexPolyhedron)) for p in self.leaves]
+        # every part of the surface flat, and the planes all of it (a convex polytope)
+        self.planar = [bool(p.polyhedral and p.convex) for p in self.leaves]
         self.planes = [_planes(p) for p in self.leaves]
 
     def relevant(self, i: int) -> NDArray[np.int64]:
