@@ -76,7 +76,7 @@ def _polygons(rng: np.random.Generator, n_vertices: int, count: int) -> tuple[An
     return polys, vout, vin
 
 
-@settings(max_examples=12, deadline=None)
+@settings(max_examples=25, deadline=None)
 @given(SEEDS, st.integers(4, 60), st.integers(1, 80), st.booleans(), st.sampled_from([(17, 23), (40, 31)]))
 def test_the_polygon_fill_twins_give_the_same_buffers(seed: int, nv: int, count: int, inside: bool,
                                                        size: tuple[int, int]) -> None:

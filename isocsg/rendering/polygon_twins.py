@@ -268,6 +268,8 @@ def _write_spans(part: NDArray[np.int64], row: NDArray[np.int64], col: NDArray[n
                  zbuf: NDArray[np.float64], vbuf: NDArray[np.float32], tbuf: NDArray[np.int32]) -> None:
     """Depth-tested spans: each pixel takes the first (in part order) of its nearest keys
     (farthest for back faces) if it beats the buffer, as the kernel's sequence of writes leaves it."""
+    if not len(length):
+        return
     w = zbuf.shape[1]
     key_parts: list[NDArray[np.float64]] = []
     pixel_parts: list[NDArray[np.int64]] = []
