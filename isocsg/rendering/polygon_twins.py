@@ -191,17 +191,19 @@ def _depth_plane(px: NDArray[np.float64], py: NDArray[np.float64], pk: NDArray[n
     return ok, gx, gy, pk[rows, an], px[rows, an], py[rows, an]
 
 
-def _chain_edge(thr: Any, first: NDArray[np.int64], step: int, length: NDArray[np.int64],
-                m: NDArray[np.int64], row: NDArray[np.int64]) -> tuple[NDArray[np.int64], NDArray[np.int64]]:
-    """The edge ``(li, ln)`` of a chain (from the top, ``step`` +1 left, -1 right) that the kernel's
-    walk is on at ``row``: it moves on while the row has reached the threshold ``thr`` of the
-    edge's far end, and stops at the bottom (``length`` vertices from the top)."""
+def _chain_edge(thr: NDArray[np.int64], top: NDArray[np.int64], bot: NDArray[np.int64], m: NDArray[np.int64],
+                step: int, part: NDArray[np.int64], row: NDArray[np.int64]) -> tuple[NDArray[np.int64], ...]:
+    """The edge ``(li, ln)`` of a chain (from the top: ``step`` +1 the left, -1 the right) that the
+    kernel's walk is on at each ``row`` of ``part``: it moves on while the row has reached the
+    threshold ``thr`` (per part and vertex) of the edge's far end, and stops at the bottom."""
+    length = (step * (bot - top)) % m + 1  # vertices from the top to the bottom
+    chain = (top[:, None] + step * np.arange(4)) % m[:, None]  # the vertex at each position
+    far = np.take_along_axis(thr, chain, axis=1)
+    last = length[part] - 2
     pos = np.zeros(len(row), _I64)
     for k in range(1, 3):
-        nxt = (first + step * k) % m
-        pos = np.where((pos == k - 1) & (k <= length - 2) & (row >= thr(nxt)), k, pos)
-    li = (first + step * pos) % m
-    return li, (li + step) % m
+        pos[(pos == k - 1) & (k <= last) & (row >= far[part, k])] = k
+    return chain[part, pos], chain[part, pos + 1]
 
 
 def _fill_convex(px: NDArray[np.float64], py: NDArray[np.float64], pk: NDArray[np.float64], m: NDArray[np.int64],
@@ -235,17 +237,12 @@ def _fill_convex(px: NDArray[np.float64], py: NDArray[np.float64], pk: NDArray[n
     if not len(part):
         return
     row = i_start[part] + (np.arange(len(part)) - np.repeat(np.cumsum(count) - count, count))
-    lo_r, hi_r = lo[part], hi[part]
-
-    def thr(idx: NDArray[np.int64]) -> NDArray[np.int64]:  # the kernel's l_thr / r_thr of a vertex
-        return _ceil_int(np.minimum(np.maximum(lo_r, py[part, idx] - 0.5), hi_r))
-
-    mp, tp, bp = m[part], top[part], bot[part]
+    # The kernel's l_thr / r_thr of each vertex: the first row on the edges after it.
+    thr = _ceil_int(np.minimum(np.maximum(lo[:, None], py - 0.5), hi[:, None]))
     pyc = row + 0.5
     xs = []
     for step in (1, -1):
-        length = (step * (bp - tp)) % mp + 1
-        li, ln = _chain_edge(thr, tp, step, length, mp, row)
+        li, ln = _chain_edge(thr, top, bot, m, step, part, row)
         ex, ey = px[part, li], py[part, li]
         slope = (px[part, ln] - ex) / (py[part, ln] - ey)
         xs.append(ex + (pyc - ey) * slope)
