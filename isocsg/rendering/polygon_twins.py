@@ -200,10 +200,11 @@ def _chain_edge(thr: NDArray[np.int64], top: NDArray[np.int64], bot: NDArray[np.
     chain = (top[:, None] + step * np.arange(4)) % m[:, None]  # the vertex at each position
     far = np.take_along_axis(thr, chain, axis=1)
     last = length[part] - 2
-    pos = np.zeros(len(row), _I64)
-    for k in range(1, 3):
-        pos[(pos == k - 1) & (k <= last) & (row >= far[part, k])] = k
-    return chain[part, pos], chain[part, pos + 1]
+    first = (last >= 1) & (row >= far[:, 1][part])  # flat gathers: 2-d fancy indexing is slower
+    second = first & (last >= 2) & (row >= far[:, 2][part])
+    at = 4 * part + first + second
+    flat = chain.reshape(-1)
+    return flat[at], flat[at + 1]
 
 
 def _fill_convex(px: NDArray[np.float64], py: NDArray[np.float64], pk: NDArray[np.float64], m: NDArray[np.int64],
@@ -241,10 +242,11 @@ def _fill_convex(px: NDArray[np.float64], py: NDArray[np.float64], pk: NDArray[n
     thr = _ceil_int(np.minimum(np.maximum(lo[:, None], py - 0.5), hi[:, None]))
     pyc = row + 0.5
     xs = []
+    fx, fy, base = px.reshape(-1), py.reshape(-1), 4 * part
     for step in (1, -1):
         li, ln = _chain_edge(thr, top, bot, m, step, part, row)
-        ex, ey = px[part, li], py[part, li]
-        slope = (px[part, ln] - ex) / (py[part, ln] - ey)
+        ex, ey = fx[base + li], fy[base + li]
+        slope = (fx[base + ln] - ex) / (fy[base + ln] - ey)
         xs.append(ex + (pyc - ey) * slope)
     xl, xr = xs
     cl = clamp[part]
