@@ -46,6 +46,7 @@ def _fill_all(
     zf: NDArray[np.float64], vf: NDArray[np.float32], tf: NDArray[np.int32],
     zb: NDArray[np.float64], vb: NDArray[np.float32], bounds: NDArray[np.int64], scratch: NDArray[np.float64],
 ) -> None:
+    """Runs of polygons in front of the near plane, vectorised, between the ones crossing it."""
     hd = proj[3]
     quad = polys[:, 3] >= 0
     inside = (hd[polys[:, 0]] >= near) & (hd[polys[:, 1]] >= near) & (hd[polys[:, 2]] >= near)
@@ -68,7 +69,7 @@ def _clip_one(proj: NDArray[np.float64], polys: NDArray[np.int32], p: int, vout:
               vb: NDArray[np.float32], bounds: NDArray[np.int64], scratch: NDArray[np.float64]) -> None:
     """The kernel's handling of one polygon crossing the near plane: clipped triangle by triangle."""
     a, b, c, d = (int(i) for i in polys[p])
-    rows = (*proj[:7], )
+    rows = tuple(proj[:7])
     px, py, pk = scratch[0], scratch[1], scratch[2]
     for t1, t2 in ((b, c), (c, d)) if d >= 0 else ((b, c),):
         _fill_one(*rows, a, t1, t2, near, perspective, np.bool_(True), back, vout[p], vin[p], tag, ox, oy,
