@@ -3,14 +3,18 @@
 Run from the repository root (OpenSCAD's preview and pyvista need a display; ``xvfb-run``
 gives one)::
 
-    xvfb-run -a python benchmarks/startup.py             # 5 repeats of each
+    xvfb-run -a python benchmarks/startup.py             # the default models, 5 repeats of each
     xvfb-run -a python benchmarks/startup.py --repeats 9
+    xvfb-run -a python benchmarks/startup.py --models all      # cube(1) and every Basics example
+    xvfb-run -a python benchmarks/startup.py --models cube,CSG,example019
     xvfb-run -a python benchmarks/startup.py --root /tmp/old   # another checkout's isocsg (before / after)
     python benchmarks/startup.py --import-only           # isocsg's imports only (python -X importtime)
 
 Each contender draws a model at 512 x 512 to a PNG in a new process, the way a user's command
-does: ``cube(1)``, then OpenSCAD's own small examples (``examples/Basics/*.scad`` of its
-installation, those isocsg loads):
+does. The default models: ``cube(1)``, ``sphere(10)``, ``cylinder(h=10, r=3)``, a cube minus a
+sphere, OpenSCAD's ``Basics/CSG.scad`` (6 leaves) and ``Old/example019.scad`` (41 leaves, round
+ones). ``--models`` names others (OpenSCAD's own examples, ``examples/Basics`` and
+``examples/Old`` of its installation, by file name; ``all``: every Basics example isocsg loads):
 
 - ``isocsg render model.scad -o out.png`` (the command line, which runs ``openscad`` to read a
   ``.scad`` file; kernels already in numba's cache, bytecode already written as an installed
@@ -21,8 +25,9 @@ installation, those isocsg loads):
   saves an off-screen render.
 
 Printed: medians over the repeats of wall-clock and CPU seconds (user + system of the child
-process and its children), and isocsg's ratio to each of the others (> 1: isocsg is slower).
-The machine's load shows in wall-clock times; CPU seconds are steadier. ``--import-only`` prints
+process and its children), and isocsg's ratio to each of the others (> 1: isocsg is slower),
+with the machine's load average before and after. The load shows in wall-clock times; CPU
+seconds are steadier. ``--import-only`` prints
 the modules that take most of isocsg's import time for the command (self time, from
 ``-X importtime``).
 """
@@ -46,8 +51,15 @@ from _common import fmt_seconds, print_table
 ROOT = Path(__file__).resolve().parent.parent
 
 CSG = "group() {\n  cube(size = [1, 1, 1], center = false);\n}\n"
-SCAD = "cube(1);\n"
-EXAMPLES = "/usr/share/openscad/examples/Basics"
+#: Small models written for the run (``cube`` also as ``.csg`` for ``--import-only``).
+BUILT_IN = {
+    "cube": "cube(1);\n",
+    "sphere": "sphere(10);\n",
+    "cylinder": "cylinder(h=10, r=3);\n",
+    "difference": "difference() { cube(10, center=true); sphere(6.5); }\n",
+}
+DEFAULT_MODELS = "cube,sphere,cylinder,difference,CSG,example019"
+EXAMPLES = "/usr/share/openscad/examples"
 PEER = """
 import sys
 import manifold3d
@@ -100,15 +112,20 @@ def import_profile(workdir: Path, env: dict[str, str], top: int = 25) -> None:
                 [[name, fmt_seconds(own / 1e6), fmt_seconds(total / 1e6)] for own, total, name in rows[:top]])
 
 
-def models(work: Path, env: dict[str, str], only: str | None) -> dict[str, Path]:
-    """``cube(1)`` and the examples isocsg loads (each tried once), by name."""
-    found = {"cube": work / "cube.scad"}
-    for path in sorted(glob.glob(os.path.join(EXAMPLES, "*.scad"))):
+def models(work: Path, env: dict[str, str], only: str) -> dict[str, Path]:
+    """The models by name: the built-in ones and OpenSCAD's examples that isocsg loads (each tried once)."""
+    found: dict[str, Path] = {}
+    for name, text in BUILT_IN.items():
+        if only == "all" and name == "cube" or name in only.split(","):
+            (work / f"{name}.scad").write_text(text)
+            found[name] = work / f"{name}.scad"
+    pattern = "Basics/*.scad" if only == "all" else "*/*.scad"
+    for path in sorted(glob.glob(os.path.join(EXAMPLES, pattern))):
         name = Path(path).stem
-        if only and name not in only.split(","):
+        if only != "all" and name not in only.split(","):
             continue
         argv = [sys.executable, "-m", "isocsg", "render", path, "-o", str(work / "try.png"), "--no-progress"]
-        proc = subprocess.run(argv, env=env, capture_output=True, text=True, cwd=EXAMPLES)
+        proc = subprocess.run(argv, env=env, capture_output=True, text=True, cwd=str(Path(path).parent))
         if proc.returncode == 0:
             found[name] = Path(path)
         else:
@@ -135,17 +152,18 @@ def main() -> int:
     parser.add_argument("--repeats", type=int, default=5)
     parser.add_argument("--import-only", action="store_true")
     parser.add_argument("--root", type=Path, default=ROOT, help="the checkout whose isocsg is timed")
-    parser.add_argument("--models", help="comma-separated example names (default: every one that loads)")
+    parser.add_argument("--models", default=DEFAULT_MODELS,
+                        help=f"comma-separated names, or all (default: {DEFAULT_MODELS})")
     args = parser.parse_args()
     env = {k: v for k, v in os.environ.items() if k not in ("PYTHONDONTWRITEBYTECODE", "ISOCSG_JIT")}
     env["PYTHONPATH"] = str(args.root) + os.pathsep + os.environ.get("PYTHONPATH", "")
     if not os.environ.get("DISPLAY"):
         print("no display (DISPLAY unset): OpenSCAD's preview and pyvista not measured; run under xvfb-run -a\n")
     rows = []
+    load_before = os.getloadavg()
     with tempfile.TemporaryDirectory() as tmp:
         work = Path(tmp)
         (work / "cube.csg").write_text(CSG)
-        (work / "cube.scad").write_text(SCAD)
         (work / "peer.py").write_text(PEER)
         import_profile(work, env)
         if args.import_only:
@@ -162,7 +180,9 @@ def main() -> int:
                 mine = ours is None or who == "isocsg render"
                 ratio = "" if mine else f"{ours[0] / wall:.2f}x / {ours[1] / cpu:.2f}x"
                 rows.append([name, who, fmt_seconds(wall), fmt_seconds(cpu), ratio])
-    print_table(f"first image of a new process at 512 x 512 (medians of {args.repeats}; isocsg from {args.root})",
+    load = ", ".join(f"{a:.1f} -> {b:.1f}" for a, b in zip(load_before, os.getloadavg()))
+    print_table(f"first image of a new process at 512 x 512 (medians of {args.repeats}; isocsg from {args.root}; "
+                f"load average 1/5/15 min before -> after: {load}; {os.cpu_count()} cores)",
                 ["model", "contender", "wall", "CPU", "isocsg / it (wall / CPU)"], rows)
     return 0
 

@@ -193,7 +193,7 @@ class LazyKernel:
         func = self._twin if self._twin is not None else self.py_func
         depth = getattr(_local, "depth", 0)
         _local.depth = depth + 1
-        start = time.thread_time()
+        start = time.thread_time() if depth == 0 else 0.0  # a system call: outermost runs only
         try:
             if self._quiet:  # numba's error_model="numpy": a division by zero gives inf, silently
                 import numpy as np

@@ -103,9 +103,12 @@ def check_memory(what: str, nbytes: float) -> None:
 #: much work (loop iterations, about a microsecond each as Python): a small model's first image
 #: then never imports numba, whose import and first dispatch cost about a second of CPU time.
 JIT_PYTHON_WORK = 2048
-#: CPU seconds a process may spend running kernels as Python (each call small, many calls: a model of
-#: many leaves) before later calls compile; numba's import and first dispatch cost a second or more.
-JIT_PYTHON_SECONDS = 0.3
+#: CPU seconds a process may spend running kernels as Python or NumPy (each call small, many calls:
+#: a model of many leaves) before later calls compile. About what numba's import and the loading
+#: of cached kernels cost (1-1.5 s): switching once that much is spent never costs more than twice
+#: the better of the two choices, and the round models of a few dozen leaves that now run as NumPy
+#: twins (0.3-0.6 s) stay without numba.
+JIT_PYTHON_SECONDS = 1.0
 #: The same bound for kernels with a vectorised NumPy twin (work: the elements the twin touches,
 #: tens of nanoseconds each).
 JIT_TWIN_WORK = 1 << 20

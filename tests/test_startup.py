@@ -2,8 +2,10 @@
 
 Judges: the numba-compiled kernels, which the accuracy tests judge against the analytic ray
 caster (tests/reference/): the kernels' Python runs (and their NumPy twins) must give the same
-images bit for bit, on every kind and on small random trees; and, structurally, the modules a
-fresh process has imported after drawing ``cube(1)`` from the command line.
+images bit for bit, on every kind (round ones included) and on small random trees; and,
+structurally, the modules a fresh process has imported after drawing a cube, a sphere, a
+cylinder or a cube minus a sphere from the command line. tests/test_twins.py compares the
+twins with the compiled kernels on random input.
 """
 
 from __future__ import annotations
@@ -63,18 +65,13 @@ KINDS = {
 }
 
 
-# Round kinds' band meshes have tens of thousands of triangles: as Python their bands take
-# minutes, so a render hands them to numba (JIT_PYTHON_WORK) after the kernels that run as NumPy
-# twins (orienting the mesh): that mixed path ("auto" from a fresh start) is what they are judged on.
-ROUND = ("sphere", "ellipsoid", "torus")
-
-
-@pytest.mark.parametrize("kind", [k for k in KINDS if k not in ROUND], ids=str)
+@pytest.mark.parametrize("kind", list(KINDS), ids=str)
 def test_every_kind_draws_the_same_without_numba(kind: str) -> None:
     _same(*_both(_scene(KINDS[kind]())))
 
 
-@pytest.mark.parametrize("kind", ROUND, ids=str)
+# A new process starts in "auto": Python and NumPy runs until a large input compiles its kernel.
+@pytest.mark.parametrize("kind", ("sphere", "torus"), ids=str)
 def test_round_kinds_draw_the_same_when_numba_starts_midway(kind: str) -> None:
     _same(*_both(_scene(KINDS[kind]()), plain="auto"))
 
@@ -85,8 +82,7 @@ def test_a_csg_tree_of_flat_kinds_draws_the_same_without_numba() -> None:
     _same(*_both(_scene(tree, size=40)))
 
 
-# The kinds whose bands are quick to cut as Python (a sphere's or a torus's take seconds).
-LEAVES = st.sampled_from(["cylinder", "cone", "frustum", "box", "polyhedron", "mesh"])
+LEAVES = st.sampled_from(list(KINDS))
 OFFSETS = st.tuples(*[st.floats(-0.5, 0.5)] * 3)
 
 
@@ -107,6 +103,15 @@ def test_small_random_trees_draw_the_same_without_numba(tree: isocsg.Solid) -> N
     _same(*_both(_scene(tree, size=20)))
 
 
+@settings(max_examples=3, deadline=None)
+@given(small_trees(), st.sampled_from([24, 61]))
+def test_random_trees_draw_the_same_at_odd_sizes_and_with_point_lights(tree: isocsg.Solid, size: int) -> None:
+    camera = isocsg.Camera((2.2, -3.1, 1.4), (0.1, 0, 0), fov=45, width=size, height=size - 3)
+    lights = (isocsg.PointLight((2, -3, 3)), isocsg.DirectionalLight((-1, -2, 1)))
+    scene = isocsg.Scene(camera, lights, (isocsg.SceneObject(tree),), isocsg.RenderSettings(contours=5))
+    _same(*_both(scene))
+
+
 def test_small_inputs_run_as_python_large_ones_compiled() -> None:
     from isocsg.bands.surface import _orient
 
@@ -118,22 +123,31 @@ def test_small_inputs_run_as_python_large_ones_compiled() -> None:
             pass
 
 
-_CUBE = """
+_MODELS = """
 import json, sys
 from isocsg.cli import main
-code = main(["render", sys.argv[1], "-o", sys.argv[2], "--no-progress"])
-print(json.dumps([code, sorted(m for m in {heavy!r} if m in sys.modules)]))
+codes = [main(["render", model, "-o", model + ".png", "--no-progress"]) for model in sys.argv[1:]]
+print(json.dumps([codes, sorted(m for m in {heavy!r} if m in sys.modules)]))
 """
 
+# What OpenSCAD writes for cube(1); sphere(10); cylinder(h=10, r=3); a cube minus a sphere.
+_CSG = {
+    "cube": "group() {\n  cube(size = [1, 1, 1], center = false);\n}\n",
+    "sphere": "group() {\n  sphere($fn = 0, $fa = 12, $fs = 2, r = 10);\n}\n",
+    "cylinder": "group() {\n  cylinder($fn = 0, $fa = 12, $fs = 2, h = 10, r1 = 3, r2 = 3, center = false);\n}\n",
+    "difference": "difference() {\n  cube(size = [10, 10, 10], center = true);\n"
+                  "  sphere($fn = 0, $fa = 12, $fs = 2, r = 6.5);\n}\n",
+}
 
-def test_a_fresh_process_draws_cube_1_without_numba(tmp_path: Path) -> None:
-    model = tmp_path / "cube.csg"
-    model.write_text("group() {\n  cube(size = [1, 1, 1], center = false);\n}\n")
-    out = tmp_path / "cube.png"
+
+@pytest.mark.parametrize("name", list(_CSG), ids=str)
+def test_a_fresh_process_draws_a_small_model_without_numba(tmp_path: Path, name: str) -> None:
+    model = tmp_path / f"{name}.csg"
+    model.write_text(_CSG[name])
     env = {k: v for k, v in os.environ.items() if k != "ISOCSG_JIT"}
-    proc = subprocess.run([sys.executable, "-c", _CUBE.format(heavy=HEAVY), str(model), str(out)],
+    proc = subprocess.run([sys.executable, "-c", _MODELS.format(heavy=HEAVY), str(model)],
                           capture_output=True, text=True, timeout=300, env={**env, "PYTHONPATH": str(ROOT)})
     assert proc.returncode == 0, proc.stderr
-    code, loaded = json.loads(proc.stdout.splitlines()[-1])
-    assert code == 0 and loaded == []
-    assert out.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    codes, loaded = json.loads(proc.stdout.splitlines()[-1])
+    assert codes == [0] and loaded == []
+    assert Path(str(model) + ".png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"

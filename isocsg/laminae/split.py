@@ -318,3 +318,118 @@ def _cut_points(
             for j in range(vals.shape[1]):
                 new_vals[r, j] = vals[a, j] + w * (vals[b, j] - vals[a, j])
             new_vals[r, column] = lv
+
+
+def _search_numpy(levels: NDArray[np.float64], x: NDArray[np.float64], right: bool) -> NDArray[np.int64]:
+    """:func:`_search` of every ``x`` (a NaN, which no comparison passes, at 0 as in the loop)."""
+    k = np.searchsorted(levels, x, side="right" if right else "left").astype(np.int64)
+    k[np.isnan(x)] = 0
+    return k
+
+
+@_snap.twin
+def _snap_numpy(vals: NDArray[np.float64], column: int, levels: NDArray[np.float64], tol: float) -> None:
+    """:func:`_snap` of every value at once."""
+    n = levels.shape[0]
+    if n == 0:
+        return
+    x = vals[:, column].copy()
+    k = np.minimum(_search_numpy(levels, x, False), n - 1)
+    x = np.where(np.abs(x - levels[k]) <= tol, levels[k], x)
+    k = np.maximum(k - 1, 0)
+    vals[:, column] = np.where(np.abs(x - levels[k]) <= tol, levels[k], x)
+
+
+@_level_ranges.twin
+def _level_ranges_numpy(
+    f: NDArray[np.float64], rows: NDArray[np.int64], levels: NDArray[np.float64]
+) -> tuple[NDArray[np.int64], NDArray[np.int64], NDArray[np.int64], int]:
+    """:func:`_level_ranges` of every row at once (a field with NaN runs the loop, whose
+    ``min`` and ``max`` pass NaN on differently)."""
+    vals = f[rows]
+    if np.isnan(vals).any():
+        return _level_ranges.py_func(f, rows, levels)  # type: ignore[no-any-return]
+    kmin = _search_numpy(levels, vals.min(axis=1), True)
+    kmax = _search_numpy(levels, vals.max(axis=1), False)
+    count = np.maximum(kmax - kmin, 0)
+    off = np.cumsum(count) - count
+    return kmin, kmax, off, int(count.sum())
+
+
+@_edges_kernel.twin
+def _edges_numpy(
+    t: NDArray[np.int64], n: int
+) -> tuple[NDArray[np.int64], NDArray[np.int64], NDArray[np.int64], int]:
+    """:func:`_edges_kernel` on the sorted half-edges at once: an edge where ``(lower, higher)`` changes."""
+    start, his, owner = sorted_half_edges(t, n)
+    lower = np.repeat(np.arange(n, dtype=np.int64), np.diff(start))
+    new = np.ones(len(his), bool)
+    new[1:] = (his[1:] != his[:-1]) | (lower[1:] != lower[:-1])
+    index = np.cumsum(new) - 1
+    inverse = np.empty(3 * t.shape[0], np.int64)
+    inverse[owner] = index
+    return lower[new], his[new], inverse.reshape(-1, 3), int(new.sum())
+
+
+@_cut_points.twin
+def _cut_points_numpy(
+    v: NDArray[np.float64], vals: NDArray[np.float64], column: int, f: NDArray[np.float64], edges: NDArray[np.int64],
+    levels: NDArray[np.float64], k0: NDArray[np.int64], off: NDArray[np.int64],
+    new_v: NDArray[np.float64], new_vals: NDArray[np.float64],
+) -> None:
+    """:func:`_cut_points` of every cut at once (the same interpolation, term by term)."""
+    count = np.diff(np.append(off, new_v.shape[0]))
+    e = np.repeat(np.arange(edges.shape[0]), count)
+    lv = levels[k0[e] + np.arange(len(e)) - off[e]]
+    a, b = edges[e, 0], edges[e, 1]
+    w = ((lv - f[a]) / (f[b] - f[a]))[:, None]
+    new_v[:] = v[a] + w * (v[b] - v[a])
+    new_vals[:] = vals[a] + w * (vals[b] - vals[a])
+    new_vals[:, column] = lv
+
+
+@_split_kernel.twin
+def _split_numpy(
+    tri: NDArray[np.int64], f: NDArray[np.float64], tri_edge: NDArray[np.int64], edge_a: NDArray[np.int64],
+    edge_k0: NDArray[np.int64], edge_off: NDArray[np.int64], n_vertices: int, levels: NDArray[np.float64],
+    kmin: NDArray[np.int64], kmax: NDArray[np.int64],
+    out_tri: NDArray[np.int64], out_parent: NDArray[np.int64], out_band: NDArray[np.int64],
+) -> int:
+    """:func:`_split_kernel` of every (triangle, slab) at once: each slab's corners gathered in
+    the kernel's order (a corner, then the edge's crossings), then fanned from the first."""
+    n_levels = len(levels)
+    cut = kmin < kmax
+    slabs = np.where(cut, kmax - kmin + 1, 0)
+    t = np.repeat(np.arange(len(tri)), slabs)
+    s = np.arange(len(t)) - np.repeat(np.cumsum(slabs) - slabs, slabs)
+    k_lo, k_hi = kmin[t], kmax[t]
+    k_below, k_above = k_lo + s - 1, k_lo + s
+    safe = np.clip(np.concatenate([k_below, k_above]), 0, max(n_levels - 1, 0)).reshape(2, -1)
+    lo = np.where(s == 0, -np.inf, levels[safe[0]] if n_levels else -np.inf)
+    hi = np.where((k_above >= k_hi) | (k_above >= n_levels), np.inf, levels[safe[1]] if n_levels else np.inf)
+    corners, valid = [], []
+    for j in range(3):
+        p, q = tri[t, j], tri[t, (j + 1) % 3]
+        fp, fq = f[p], f[q]
+        corners.append(p)
+        valid.append((lo <= fp) & (fp <= hi))
+        e = tri_edge[t, j]
+        for step in range(2):
+            k = np.where(fp < fq, k_below if step == 0 else k_above, k_above if step == 0 else k_below)
+            lv = levels[np.clip(k, 0, max(n_levels - 1, 0))] if n_levels else np.zeros(len(t))
+            corners.append(n_vertices + edge_off[e] + (k - edge_k0[e]))
+            valid.append((k >= k_lo) & (k < k_hi) & (np.minimum(fp, fq) < lv) & (lv < np.maximum(fp, fq)))
+    cand, ok = np.stack(corners, axis=1), np.stack(valid, axis=1)
+    poly = np.take_along_axis(cand, np.argsort(~ok, axis=1, kind="stable"), axis=1)
+    n = ok.sum(axis=1)
+    fan = np.arange(1, cand.shape[1] - 1) < (n - 1)[:, None]  # triangle (0, i, i + 1) for i < n - 1
+    rows = np.nonzero(fan)
+    split_tri = np.stack([poly[rows[0], 0], poly[rows[0], rows[1] + 1], poly[rows[0], rows[1] + 2]], axis=1)
+    whole = np.flatnonzero(~cut)
+    parent = np.concatenate([whole, t[rows[0]]])
+    order = np.argsort(parent, kind="stable")  # triangle by triangle, as the loop writes them
+    m = len(parent)
+    out_tri[:m] = np.concatenate([tri[whole], split_tri])[order]
+    out_parent[:m] = parent[order]
+    out_band[:m] = np.concatenate([kmin[whole], k_above[rows[0]]])[order]
+    return m

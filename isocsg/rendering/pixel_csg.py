@@ -223,3 +223,123 @@ def fill_leaf(
     zb[:] = -np.inf
     fill_projected(proj, quads, vout, vin, near, perspective, c0, r0, zf, vf[off : off + h * w].reshape((h, w)),
                    zb, vb[off : off + h * w].reshape((h, w)))
+
+
+def _states_numpy(table: NDArray[np.bool_], op: NDArray[np.int8], arg: NDArray[np.int64],
+                  inside: NDArray[np.bool_]) -> NDArray[np.bool_]:
+    """The program's value for each row of ``inside`` (P, n): its truth table, else the program run on columns."""
+    if len(table):
+        return table[inside.astype(np.int64) @ (np.int64(1) << np.arange(inside.shape[1], dtype=np.int64))]
+    stack: list[NDArray[np.bool_]] = []
+    for o, k in zip(op.tolist(), arg.tolist()):
+        if o == 0:
+            stack.append(inside[:, k])
+            continue
+        operands = stack[len(stack) - k:]
+        del stack[len(stack) - k:]
+        if o == 1:
+            r = np.logical_or.reduce(operands)
+        elif o == 2:
+            r = np.logical_and.reduce(operands)
+        else:
+            r = operands[0] & ~np.logical_or.reduce(operands[1:]) if k > 1 else operands[0]
+        stack.append(r)
+    return stack[0].copy()  # not a view of ``inside``, which the caller changes in place
+
+
+@resolve_packed.twin
+def _resolve_packed_numpy(
+    kf: NDArray[np.float64], vf: NDArray[np.float32], kb: NDArray[np.float64], vb: NDArray[np.float32],
+    off: NDArray[np.int64], lr0: NDArray[np.int64], lc0: NDArray[np.int64], lh: NDArray[np.int64],
+    lw: NDArray[np.int64], ids: NDArray[np.int64], op: NDArray[np.int8], arg: NDArray[np.int64],
+    table: NDArray[np.bool_], gid_base: int,
+    row0: int, row1: int, col0: int, col1: int,
+    zkey: NDArray[np.float64], value: NDArray[np.float32], gid: NDArray[np.int32],
+    nxt: NDArray[np.float64], phase: NDArray[np.int8], inside: NDArray[np.bool_], stack: NDArray[np.bool_],
+    loc: NDArray[np.int64],
+) -> None:
+    """:func:`resolve_packed` on all pixels at once, event after event (blocks of rows bound the memory)."""
+    n = off.shape[0]
+    # Only the pixels some leaf's rectangle covers can change.
+    r0, r1 = max(row0, int(lr0.min(initial=row1))), min(row1, int((lr0 + lh).max(initial=row0)))
+    c0, c1 = max(col0, int(lc0.min(initial=col1))), min(col1, int((lc0 + lw).max(initial=col0)))
+    if n == 0 or r0 >= r1 or c0 >= c1:
+        return
+    block = max(1, (1 << 21) // (n * (c1 - c0)))
+    cols = np.arange(c0, c1)
+    with np.errstate(all="ignore"):
+        for top in range(r0, r1, block):
+            rr, cc = np.divmod(np.arange((min(r1, top + block) - top) * len(cols)), len(cols))
+            _resolve_block(kf, vf, kb, vb, off, lr0, lc0, lh, lw, ids, op, arg, table, gid_base,
+                           rr + top, cols[cc], zkey, value, gid)
+
+
+def _resolve_block(
+    kf: NDArray[np.float64], vf: NDArray[np.float32], kb: NDArray[np.float64], vb: NDArray[np.float32],
+    off: NDArray[np.int64], lr0: NDArray[np.int64], lc0: NDArray[np.int64], lh: NDArray[np.int64],
+    lw: NDArray[np.int64], ids: NDArray[np.int64], op: NDArray[np.int8], arg: NDArray[np.int64],
+    table: NDArray[np.bool_], gid_base: int, rr: NDArray[np.int64], cc: NDArray[np.int64],
+    zkey: NDArray[np.float64], value: NDArray[np.float32], gid: NDArray[np.int32],
+) -> None:
+    """The kernel's loop for the pixels ``(rr, cc)``: the same events, the same groups, the same choice."""
+    dr = rr[:, None] - lr0
+    dc = cc[:, None] - lc0
+    present = (dr >= 0) & (dr < lh) & (dc >= 0) & (dc < lw)
+    loc = np.where(present, off + dr * lw + dc, 0)
+    f = np.where(present, kf[loc], np.inf)
+    b = np.where(present, kb[loc], -np.inf)
+    gone = b == -np.inf
+    # The kernel's phase 1 is ``inside``, phase 2 ``done``, phase 0 neither.
+    inside = ~gone & (f == np.inf)
+    done = gone
+    nxt = np.where(gone, np.inf, np.where(inside, b, f))
+    live = np.flatnonzero((~gone).any(axis=1))
+    rr, cc, loc, inside, done, nxt = rr[live], cc[live], loc[live], inside[live], done[live], nxt[live]
+    state = _states_numpy(table, op, arg, inside)
+    limit = zkey[rr, cc]
+    while len(rr):
+        key = np.fmin.reduce(nxt, axis=1, initial=np.inf)  # the loop's running minimum skips a NaN
+        go = np.flatnonzero(~((key == np.inf) | (key >= limit)))
+        if len(go) < len(rr):
+            rr, cc, loc, inside, done, nxt = rr[go], cc[go], loc[go], inside[go], done[go], nxt[go]
+            state, limit, key = state[go], limit[go], key[go]
+        group = (key + _COINCIDENT * np.abs(key))[:, None]
+        event = ~(nxt > group)
+        enter = event & ~inside & ~done
+        leave = event & (inside | done)
+        nxt[enter] = kb[loc[enter]]
+        out = leave | (enter & (nxt <= group))  # leaving, or zero width: in and out at once
+        inside |= enter
+        inside &= ~out
+        done |= out
+        nxt[out] = np.inf
+        shown_front = enter.any(axis=1)
+        shown = np.where(shown_front, np.argmax(enter, axis=1), np.argmax(event, axis=1))
+        now = _states_numpy(table, op, arg, inside)
+        hit = now & ~state
+        if hit.any():
+            h = np.flatnonzero(hit)
+            at = loc[h, shown[h]]
+            zkey[rr[h], cc[h]] = key[h]
+            value[rr[h], cc[h]] = np.where(shown_front[h], vf[at], vb[at])
+            gid[rr[h], cc[h]] = (gid_base + ids[shown[h]]).astype(np.int32)
+            rest = np.flatnonzero(~hit)
+            rr, cc, loc, inside, done, nxt = rr[rest], cc[rest], loc[rest], inside[rest], done[rest], nxt[rest]
+            state, limit = now[rest], limit[rest]
+        else:
+            state = now
+
+
+@truth_table.twin
+def _truth_table_numpy(op: NDArray[np.int8], arg: NDArray[np.int64], n: int) -> NDArray[np.bool_]:
+    """:func:`truth_table` with every mask at once."""
+    masks = np.arange(1 << n, dtype=np.int64)
+    inside = ((masks[:, None] >> np.arange(max(n, 1))) & 1).astype(np.bool_)
+    if n == 0:
+        inside[:] = False
+    return _states_numpy(np.zeros(0, np.bool_), op, arg, inside)
+
+
+# The entry points' own Python is a few lines around the kernels above: as written, whatever their size.
+for _entry in (resolve_csg, fill_leaf):
+    _entry.twin(_entry.py_func)

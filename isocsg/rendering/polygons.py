@@ -17,6 +17,7 @@ from numpy.typing import NDArray
 
 from .._jit import njit
 from .jit import RAW
+from .polygon_twins import fill_polys_numpy
 from .triangles import _fill_one
 
 __all__ = ["fill_rect", "fill_projected", "fill_front_kernel", "fill_front_runs"]
@@ -392,3 +393,10 @@ def _fill_polys(
                     pk[k], pk[k2] = pk[k2], pk[k]
             _fill_convex(px, py, pk, m, vout[p] if front else vin[p], tag, ox, oy, clamp, front,
                          zf if front else zb, vf if front else vb, tf, bounds)
+
+
+# Small renders without numba (isocsg._jit): the polygon loop vectorised, and the entry points,
+# whose own Python is a few lines around it, run as written whatever their size.
+_fill_polys.twin(fill_polys_numpy)
+for _entry in (fill_projected, fill_front_kernel, fill_front_runs):
+    _entry.twin(_entry.py_func)

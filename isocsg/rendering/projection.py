@@ -175,3 +175,24 @@ def key_to_depth(key: NDArray[np.float64], perspective: bool, out: NDArray[np.fl
             o[k] = -1.0 / q
         else:
             o[k] = q
+
+
+@project_kernel.twin
+def _project_numpy(
+    vertices: NDArray[np.float64], eye: NDArray[np.float64], a: NDArray[np.float64], b: NDArray[np.float64],
+    perspective: bool, out: NDArray[np.float64], v0: int, v1: int,
+) -> float:
+    """:func:`project_kernel` of every vertex at once (the same sums, left to right)."""
+    d = vertices[v0:v1] - eye
+    dx, dy, dz = d[:, 0], d[:, 1], d[:, 2]
+    rows = [a[k, 0] * dx + a[k, 1] * dy + a[k, 2] * dz + b[k] for k in range(4)]
+    x, y, w, depth = rows
+    with np.errstate(divide="ignore"):
+        inv = np.where(w != 0.0, 1.0 / np.where(w != 0.0, w, 1.0), 0.0)
+    out[0, v0:v1], out[1, v0:v1], out[2, v0:v1], out[3, v0:v1] = x, y, w, depth
+    out[4, v0:v1] = x * inv
+    out[5, v0:v1] = y * inv
+    out[6, v0:v1] = -inv if perspective else depth
+    far = np.abs(depth)
+    far = far[far > 0.0]  # the loop keeps the largest |D| above 0 (a NaN never is)
+    return float(far.max()) if len(far) else 0.0

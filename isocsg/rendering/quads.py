@@ -139,3 +139,62 @@ def _planar_convex(v: NDArray[np.float64], p: int, r2: int, q: int, r1: int, tol
         if not turn > 0.0:
             return False
     return True
+
+
+def _planar_convex_numpy(v: NDArray[np.float64], p: NDArray[np.int64], r2: NDArray[np.int64], q: NDArray[np.int64],
+                         r1: NDArray[np.int64], tol: float) -> NDArray[np.bool_]:
+    """:func:`_planar_convex` of many quads, the same arithmetic in the same order."""
+    vp, vq, v1, v2 = v[p], v[q], v[r1], v[r2]
+    nx = (vq[:, 1] - vp[:, 1]) * (v1[:, 2] - vp[:, 2]) - (vq[:, 2] - vp[:, 2]) * (v1[:, 1] - vp[:, 1])
+    ny = (vq[:, 2] - vp[:, 2]) * (v1[:, 0] - vp[:, 0]) - (vq[:, 0] - vp[:, 0]) * (v1[:, 2] - vp[:, 2])
+    nz = (vq[:, 0] - vp[:, 0]) * (v1[:, 1] - vp[:, 1]) - (vq[:, 1] - vp[:, 1]) * (v1[:, 0] - vp[:, 0])
+    nlen = np.sqrt(nx * nx + ny * ny + nz * nz)
+    size = np.zeros(len(p))
+    for vo in (vq, v1, v2):
+        d = vo - vp
+        size = np.maximum(size, np.sqrt(d[:, 0] ** 2 + d[:, 1] ** 2 + d[:, 2] ** 2))
+    d = v2 - vp
+    off = np.abs(nx * d[:, 0] + ny * d[:, 1] + nz * d[:, 2])
+    ok = (nlen > 0.0) & (off <= tol * size * nlen)
+    ring = (vp, v2, vq, v1)
+    for k in range(4):
+        e0 = ring[(k + 1) % 4] - ring[k]
+        e1 = ring[(k + 2) % 4] - ring[(k + 1) % 4]
+        turn = ((e0[:, 1] * e1[:, 2] - e0[:, 2] * e1[:, 1]) * nx + (e0[:, 2] * e1[:, 0] - e0[:, 0] * e1[:, 2]) * ny
+                + (e0[:, 0] * e1[:, 1] - e0[:, 1] * e1[:, 0]) * nz)
+        ok &= turn > 0.0
+    return ok
+
+
+@_pair_kernel.twin
+def _pair_numpy(
+    v: NDArray[np.float64], t: NDArray[np.int64], vo: NDArray[np.float64], vi: NDArray[np.float64], tol: float,
+) -> tuple[NDArray[np.int32], NDArray[np.int32], int]:
+    """:func:`_pair_kernel` with the tests vectorised; the greedy pairing, edge after edge, stays a loop."""
+    n_tri = t.shape[0]
+    start, his, owner = sorted_half_edges(t, v.shape[0])
+    lower = np.repeat(np.arange(v.shape[0]), np.diff(start))
+    new = np.ones(len(his) + 1, bool)  # where a run of one undirected edge starts (and the end)
+    new[1:-1] = (his[1:] != his[:-1]) | (lower[1:] != lower[:-1])
+    runs = np.flatnonzero(new)
+    s = runs[:-1][np.diff(runs) == 2]  # edges with exactly two half-edges
+    ta, ja = owner[s] // 3, owner[s] % 3
+    tb, jb = owner[s + 1] // 3, owner[s + 1] % 3
+    p, q = t[ta, ja], t[ta, (ja + 1) % 3]
+    r1, r2 = t[ta, (ja + 2) % 3], t[tb, (jb + 2) % 3]
+    ok = (ta != tb) & (t[tb, jb] == q) & (t[tb, (jb + 1) % 3] == p) & (vo[ta] == vo[tb]) & (vi[ta] == vi[tb])
+    ok[ok] = _planar_convex_numpy(v, p[ok], r2[ok], q[ok], r1[ok], tol)
+    partner = np.full(n_tri, -1, np.int64)
+    single = [True] * n_tri
+    chosen = []
+    for e, a, b in zip(np.flatnonzero(ok).tolist(), ta[ok].tolist(), tb[ok].tolist()):
+        if single[a] and single[b]:
+            single[a] = single[b] = False
+            chosen.append(e)
+    pick = np.asarray(chosen, np.int64)
+    partner[ta[pick]], partner[tb[pick]] = tb[pick], ta[pick]
+    corner = np.empty((n_tri, 4), np.int64)
+    corner[np.minimum(ta[pick], tb[pick])] = np.stack([p[pick], r2[pick], q[pick], r1[pick]], axis=1)
+    rows = np.flatnonzero((partner < 0) | (partner > np.arange(n_tri)))
+    quads = np.where((partner[rows] < 0)[:, None], np.column_stack([t[rows], np.full(len(rows), -1)]), corner[rows])
+    return quads.astype(np.int32), rows.astype(np.int32), len(rows)
