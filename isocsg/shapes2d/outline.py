@@ -1,0 +1,458 @@
+"""Outlines (shadows on the xy plane along z) of solids as exact 2D shapes: ``projection(cut = false)``.
+
+A point (x, y) is in the outline when the vertical line through it meets the solid. The outline of
+a union is the union of its parts' outlines; a convex leaf's outline is exact (a ball's ellipse, a
+truncus's hull of its two end ellipses, a polyhedron's hull). A difference or an intersection is
+not the Boolean of its operands' outlines; these rules are exact:
+
+- every leaf flat faced: manifold3d's Boolean of the polyhedra, projected;
+- a difference ``A - B1 - ... - Bn`` (a chain built by ``s = s - b`` in a loop is read as one,
+  iteratively, and a subtracted union as its parts): a ``Bi`` that misses ``A``'s box subtracts
+  nothing; a ``Bi`` that is a vertical prism through ``A``'s whole height removes its section
+  (``proj(A - P) = proj(A) - section(P)``), whatever ``A`` is. When ``A`` is a vertical prism
+  itself (its leaves vertical prisms over one and the same height range ``[lo, hi]``), a column
+  is removed where the ``Bi`` cover all of ``[lo, hi]`` there: a convex ``Bi`` alone covers the
+  column where it holds both its ends, ``section(Bi, lo) & section(Bi, hi)``; vertical prisms
+  whose boxes overlap cover it where, in every slab between their heights, one of them holds the
+  point (the intersection over the slabs of the union of their sections). Groups are the
+  connected sets of overlapping boxes, so the work grows with the number of operands, not its
+  square;
+- an intersection of one solid with vertical prisms through its height: its outline cut to their
+  sections;
+- any tree whose leaves are all vertical prisms (boxes, polyhedral prisms and cylinders with
+  vertical axes, straight extrusions): its section is the same between consecutive leaf heights,
+  so the outline is the union of one section per slab.
+
+Any other tree raises :class:`~isocsg.errors.NotExactError` naming the operand that stops it.
+"""
+
+from __future__ import annotations
+
+import math
+from collections import defaultdict
+from collections.abc import Callable
+from typing import Any
+
+import numpy as np
+from numpy.typing import NDArray
+
+from ..errors import NotExactError
+from ..kinds import Box, ConvexPolyhedron, Ellipsoid, EllipticTruncus, Solid, Sphere, Torus, Truncus
+from ..kinds.mesh import TriangleMesh
+from .hull2d import disc_hull
+from .leaves import Circle
+from .region import shape_from_region
+from .sections import _children, _combine, _convex, _corners, _ellipse, _frustum, _op, leaf_section_at, section_at
+from .shape import EMPTY, Shape2D
+
+__all__ = ["outline", "leaf_outline"]
+
+#: Relative slack of the height comparisons (a prism "through" a solid, leaves of one height).
+_SLACK = 1e-9
+
+#: A plan for one node: the nodes whose outlines it needs, and how it makes its own from them.
+_Plan = tuple[list[Any], Callable[[list[Shape2D]], Shape2D]]
+
+
+def outline(solid: Solid) -> Shape2D:
+    """The outline (shadow on the xy plane along z) of ``solid``, exactly (see the module docs).
+
+    Raises
+    ------
+    NotExactError
+        For a difference or intersection that no exact rule reaches, naming the operand.
+
+    Examples
+    --------
+    >>> from isocsg import Box, Cylinder
+    >>> from isocsg.shapes2d import area
+    >>> round(area(outline(Cylinder((0, 0, 0), (0, 0, 2), 1))) / math.pi, 12)
+    1.0
+    >>> plate = Box((0, 0, 0), (4, 4, 1))
+    >>> blind = Cylinder((1, 1, 0.5), (0, 0, 0.6), 0.5)   # from the top, not through
+    >>> through = Cylinder((-1, -1, 0), (0, 0, 2), 0.5)
+    >>> round(area(outline(plate - blind - through)) + math.pi / 4, 12)
+    16.0
+    """
+    facts = _Facts(solid)
+    done: dict[int, Shape2D] = {}
+    plans: dict[int, _Plan] = {}
+    stack: list[Any] = [solid]
+    while stack:
+        s = stack[-1]
+        if id(s) in done:
+            stack.pop()
+            continue
+        if _children(s) is None:
+            done[id(s)] = leaf_outline(s)
+            stack.pop()
+            continue
+        if id(s) not in plans:
+            plans[id(s)] = _plan(s, facts)
+        needs, finish = plans[id(s)]
+        missing = [c for c in needs if id(c) not in done]
+        if missing:
+            stack.extend(missing)
+            continue
+        done[id(s)] = finish([done[id(c)] for c in needs])
+        stack.pop()
+    return done[id(solid)]
+
+
+# --------------------------------------------------------------------------- what each node is
+
+
+class _Facts:
+    """What the rules ask of every node and leaf, from one post-order pass (by ``id``): flat faced,
+    every leaf a vertical prism, the heights over which all its leaves are vertical prisms, the one
+    height range all its leaves span when they are prisms over the same one, and a bounding box
+    (leaves' boxes read in one vectorised pass per kind)."""
+
+    def __init__(self, root: Any) -> None:
+        self.flat: dict[int, bool] = {}
+        self.prismatic: dict[int, bool] = {}
+        self.range: dict[int, tuple[float, float] | None] = {}
+        self.uniform: dict[int, tuple[float, float] | None] = {}
+        self.box: dict[int, NDArray[np.float64]] = {}
+        order: list[Any] = []
+        seen: set[int] = set()
+        stack: list[tuple[Any, bool]] = [(root, False)]
+        while stack:
+            s, expanded = stack.pop()
+            kids = _children(s)
+            if expanded or kids is None:
+                if id(s) not in seen:
+                    seen.add(id(s))
+                    order.append(s)
+                continue
+            if id(s) in seen:
+                continue
+            stack.append((s, True))
+            stack.extend((c, False) for c in kids if id(c) not in seen)
+        self._read_leaves([s for s in order if _children(s) is None])
+        for s in order:
+            kids = _children(s)
+            if kids is not None:
+                self._read_node(s, kids)
+
+    def _read_leaves(self, leaves: list[Any]) -> None:
+        by_kind: dict[type, list[Any]] = defaultdict(list)
+        for leaf in leaves:
+            by_kind[type(leaf)].append(leaf)
+        for kind, group in by_kind.items():
+            lo, hi = (np.asarray(a, dtype=np.float64) for a in kind.leaf_boxes(group)[:2])  # type: ignore[attr-defined]
+            for k, leaf in enumerate(group):
+                key = id(leaf)
+                self.box[key] = np.array([lo[k], hi[k]])
+                self.flat[key] = bool(kind.polyhedral)  # type: ignore[attr-defined]
+                upright = _upright(leaf)
+                self.prismatic[key] = upright
+                r = (float(lo[k, 2]), float(hi[k, 2])) if upright else None
+                self.range[key] = self.uniform[key] = r
+
+    def _read_node(self, s: Any, kids: tuple[Any, ...]) -> None:
+        key, op = id(s), _op(s)
+        self.flat[key] = all(self.flat[id(c)] for c in kids)
+        self.prismatic[key] = all(self.prismatic[id(c)] for c in kids)
+        ranges = [self.range[id(c)] for c in kids]
+        if any(r is None for r in ranges):
+            self.range[key] = None
+        else:
+            lo, hi = max(r[0] for r in ranges), min(r[1] for r in ranges)  # type: ignore[index]
+            self.range[key] = (lo, hi) if lo < hi else None
+        spans = [self.uniform[id(c)] for c in kids]
+        first = spans[0]
+        same = first is not None and all(r is not None and _same_range(r, first) for r in spans)
+        self.uniform[key] = first if same else None
+        boxes = np.array([self.box[id(c)] for c in kids])
+        if op == "union":
+            self.box[key] = np.array([boxes[:, 0].min(axis=0), boxes[:, 1].max(axis=0)])
+        elif op == "intersection":
+            lo3, hi3 = boxes[:, 0].max(axis=0), boxes[:, 1].min(axis=0)
+            self.box[key] = np.array([lo3, np.maximum(lo3, hi3)])
+        else:
+            self.box[key] = boxes[0]
+
+
+def _same_range(a: tuple[float, float], b: tuple[float, float]) -> bool:
+    tol = _SLACK * max(abs(a[0]), abs(a[1]), a[1] - a[0], 1.0)
+    return abs(a[0] - b[0]) <= tol and abs(a[1] - b[1]) <= tol
+
+
+def _upright(leaf: Any) -> bool:
+    """Whether a leaf is a vertical prism: its section the same at every height it spans."""
+    tol = 1e-12
+    if isinstance(leaf, Box):
+        R = np.asarray(leaf.orientation, dtype=np.float64)
+        return bool(np.any(np.abs(np.abs(R[2]) - 1.0) <= tol))
+    if isinstance(leaf, ConvexPolyhedron):
+        nz = np.abs(np.asarray(leaf.face_normals, dtype=np.float64)[:, 2])
+        return bool(np.all((nz <= tol) | (nz >= 1.0 - tol)))
+    if isinstance(leaf, Truncus):
+        ax, ay, az = (float(v) for v in leaf.axis)
+        return leaf.r1 == leaf.r2 and max(abs(ax), abs(ay)) <= tol * abs(az)
+    if isinstance(leaf, EllipticTruncus):
+        _, M, r1, r2 = _frustum(leaf)
+        size = float(np.abs(M).max())
+        return bool(r1 == r2 and np.all(np.abs(M[2, :2]) <= tol * size) and np.all(np.abs(M[:2, 2]) <= tol * size))
+    return False
+
+
+# --------------------------------------------------------------------------- plans
+
+
+def _plan(s: Any, facts: _Facts) -> _Plan:
+    op, kids = _op(s), tuple(_children(s) or ())
+    if op == "union":
+        return list(kids), lambda shapes: _combine("union", shapes)
+    if facts.flat[id(s)]:
+        return [], lambda _: _manifold_outline(s)
+    if op == "intersection":
+        if facts.prismatic[id(s)]:
+            return [], lambda _: _slab_outline(s, facts)
+        return _plan_intersection(kids, facts)
+    try:
+        return _plan_difference(s, facts)
+    except NotExactError:
+        if facts.prismatic[id(s)]:
+            return [], lambda _: _slab_outline(s, facts)
+        raise
+
+
+def _difference_chain(s: Any) -> tuple[Any, list[Any]]:
+    """``A - B1 - ... - Bn`` read from nested differences (left operands) and subtracted unions
+    (their parts), iteratively: the first operand and the list of what is subtracted."""
+    subs: list[Any] = []
+    core = s
+    while _children(core) is not None and _op(core) == "difference":
+        kids = _children(core) or ()
+        subs.extend(kids[1:])
+        core = kids[0]
+    out: list[Any] = []
+    while subs:
+        k = subs.pop()
+        if _children(k) is not None and _op(k) == "union":
+            subs.extend(_children(k) or ())
+        else:
+            out.append(k)
+    return core, out
+
+
+def _slack(lo: float, hi: float) -> float:
+    return _SLACK * max(hi - lo, abs(lo), abs(hi), 1.0)
+
+
+def _section_inside(s: Any, z: float) -> Shape2D:
+    """The section at a height strictly inside ``s``'s prism range (no face lies in the plane)."""
+    if isinstance(s, Truncus) and _upright(s):  # the common hole: its disc, read off directly
+        return Circle((float(s.center[0]), float(s.center[1])), s.r1)
+    return leaf_section_at(s, z) if _children(s) is None else section_at(s, z)
+
+
+def _plan_difference(s: Any, facts: _Facts) -> _Plan:
+    core, subs = _difference_chain(s)
+    cb = facts.box[id(core)]
+    lo, hi = float(cb[0, 2]), float(cb[1, 2])
+    slack = _slack(lo, hi)
+    if subs:
+        boxes = np.array([facts.box[id(k)] for k in subs])
+        hit = np.all(boxes[:, 0] < cb[1], axis=1) & np.all(cb[0] < boxes[:, 1], axis=1)
+        subs = [k for k, h in zip(subs, hit) if h]
+    prism_core = facts.uniform[id(core)]
+    cuts: list[Shape2D] = []
+    partial: list[Any] = []
+    for k in subs:
+        r = facts.range[id(k)]
+        if r is not None and r[0] <= lo + slack and r[1] >= hi - slack:
+            cuts.append(_section_inside(k, 0.5 * (max(lo, r[0]) + min(hi, r[1]))))
+        elif prism_core is None:
+            what = "not a vertical prism" if r is None else (
+                f"a vertical prism over z in [{r[0]:g}, {r[1]:g}], not through")
+            raise NotExactError(
+                f"projection: the outline of a difference whose operand {type(k).__name__} is {what} the first "
+                f"operand (z in [{lo:g}, {hi:g}]), which is not a vertical prism, is not computed exactly; a "
+                "projection of a difference is not the difference of projections")
+        elif facts.prismatic[id(k)] or (_children(k) is None and type(k).convex):
+            partial.append(k)
+        else:
+            raise NotExactError(
+                f"projection: the outline of a difference whose operand {type(k).__name__} is neither a vertical "
+                f"prism nor a convex solid, and does not run through the first operand (z in [{lo:g}, {hi:g}]), is "
+                "not computed exactly")
+    for group in _overlap_groups([facts.box[id(k)] for k in partial]):
+        region = _covered([partial[i] for i in group], lo, hi, facts)
+        if region is not EMPTY:
+            cuts.append(region)
+    return [core], lambda shapes: _combine("difference", [shapes[0], *cuts])
+
+
+def _plan_intersection(kids: tuple[Any, ...], facts: _Facts) -> _Plan:
+    """One operand that is not a vertical prism, cut to the sections of the others, which must be
+    vertical prisms through its whole height."""
+    others = [k for k in kids if facts.range[id(k)] is None]
+    if len(others) > 1:
+        raise NotExactError(
+            f"projection: the outline of an intersection of {len(others)} solids that are not vertical prisms "
+            f"({', '.join(type(k).__name__ for k in others)}) is not computed exactly")
+    core = others[0] if others else kids[0]
+    cb = facts.box[id(core)]
+    lo, hi = float(cb[0, 2]), float(cb[1, 2])
+    slack = _slack(lo, hi)
+    cuts = []
+    for k in kids:
+        if k is core:
+            continue
+        r = facts.range[id(k)]
+        if r is None or r[0] > lo + slack or r[1] < hi - slack:
+            what = "not a vertical prism" if r is None else (
+                f"a vertical prism over z in [{r[0]:g}, {r[1]:g}], not through")
+            raise NotExactError(
+                f"projection: the outline of an intersection whose operand {type(k).__name__} is {what} the "
+                f"operand {type(core).__name__} (z in [{lo:g}, {hi:g}]) is not computed exactly")
+        cuts.append(_section_inside(k, 0.5 * (max(lo, r[0]) + min(hi, r[1]))))
+    return [core], lambda shapes: _combine("intersection", [shapes[0], *cuts])
+
+
+# --------------------------------------------------------------------------- columns covered
+
+
+def _overlap_groups(boxes: list[NDArray[np.float64]]) -> list[list[int]]:
+    """Indices grouped into the connected sets of boxes that overlap in x and y (touching counts)."""
+    n = len(boxes)
+    if n == 0:
+        return []
+    import shapely
+
+    b = np.array(boxes)
+    rects = shapely.box(b[:, 0, 0], b[:, 0, 1], b[:, 1, 0], b[:, 1, 1])
+    pairs = shapely.STRtree(rects).query(rects, predicate="intersects")
+    parent = list(range(n))
+
+    def root(i: int) -> int:
+        while parent[i] != i:
+            parent[i] = parent[parent[i]]
+            i = parent[i]
+        return i
+
+    for i, j in zip(pairs[0].tolist(), pairs[1].tolist()):
+        a, c = root(i), root(j)
+        if a != c:
+            parent[a] = c
+    groups: dict[int, list[int]] = defaultdict(list)
+    for i in range(n):
+        groups[root(i)].append(i)
+    return list(groups.values())
+
+
+def _covered(members: list[Any], lo: float, hi: float, facts: _Facts) -> Shape2D:
+    """Where the union of ``members`` holds the whole column ``[lo, hi]``: a convex leaf alone
+    where it holds both ends; vertical prisms where each slab between their heights is held."""
+    slack = _slack(lo, hi)
+    boxes = [facts.box[id(m)] for m in members]
+    if min(b[0, 2] for b in boxes) > lo + slack or max(b[1, 2] for b in boxes) < hi - slack:
+        return EMPTY
+    if len(members) == 1 and not facts.prismatic[id(members[0])]:
+        m = members[0]
+        if boxes[0][0, 2] > lo + slack or boxes[0][1, 2] < hi - slack:
+            return EMPTY
+        return _combine("intersection", [leaf_section_at(m, lo), leaf_section_at(m, hi)])
+    bad = [m for m in members if not facts.prismatic[id(m)]]
+    if bad:
+        raise NotExactError(
+            f"projection: the outline of a difference whose operand {type(bad[0]).__name__}, not a vertical prism, "
+            f"overlaps {len(members) - 1} other operand(s) that do not run through the first one (z in "
+            f"[{lo:g}, {hi:g}]) is not computed exactly")
+    heights = _heights(members, facts, lo, hi)
+    layers = []
+    for z0, z1 in zip(heights, heights[1:]):
+        mid = 0.5 * (z0 + z1)
+        held = [_section_inside(m, mid) for m, b in zip(members, boxes) if b[0, 2] < mid < b[1, 2]]
+        layer = _combine("union", held)
+        if layer is EMPTY:
+            return EMPTY
+        layers.append(layer)
+    return _combine("intersection", layers)
+
+
+def _heights(nodes: list[Any], facts: _Facts, lo: float = -math.inf, hi: float = math.inf) -> list[float]:
+    """The distinct heights of the nodes' leaves' ends within ``[lo, hi]`` (which are included when
+    finite), merged within the slack: the slabs' ends."""
+    from .sections import _leaves
+
+    zs = {float(z) for n in nodes for leaf in _leaves(n) for z in facts.box[id(leaf)][:, 2]}
+    zs = {min(max(z, lo), hi) for z in zs} | ({lo, hi} if math.isfinite(lo) and math.isfinite(hi) else set())
+    out: list[float] = []
+    for z in sorted(zs):
+        if not out or z - out[-1] > _slack(out[-1], z):
+            out.append(z)
+    return out
+
+
+def _slab_outline(s: Any, facts: _Facts) -> Shape2D:
+    """The outline of a tree of vertical prisms: the union of its sections, one per slab between
+    consecutive heights of its leaves' ends."""
+    heights = _heights([s], facts)
+    return _combine("union", [section_at(s, 0.5 * (z0 + z1)) for z0, z1 in zip(heights, heights[1:])])
+
+
+def _manifold_outline(s: Any) -> Shape2D:
+    """The outline of a tree of flat-faced solids: manifold3d's Boolean, projected."""
+    from ..csg.mesh import to_manifold
+    from .region import fill
+
+    rings = to_manifold(s).project().to_polygons()
+    if not rings:
+        return EMPTY
+    return shape_from_region(fill([np.asarray(r, dtype=np.float64) for r in rings], "nonzero"))
+
+
+# --------------------------------------------------------------------------- leaves
+
+
+def leaf_outline(leaf: Any) -> Shape2D:
+    """The exact outline of one primitive on the xy plane."""
+    if isinstance(leaf, (Box, ConvexPolyhedron)):
+        return _convex(_corners(leaf)[:, :2])
+    if isinstance(leaf, Sphere):
+        c = np.asarray(leaf.center, dtype=np.float64)
+        return Circle((float(c[0]), float(c[1])), leaf.radius)
+    if isinstance(leaf, Ellipsoid):
+        R = np.asarray(leaf.orientation, dtype=np.float64) * np.asarray(leaf.radii, dtype=np.float64)
+        P = R[:2]  # the shadow of c + R u is c + P u: the ellipse whose matrix L has L L^T = P P^T
+        L = np.asarray(np.linalg.cholesky(P @ P.T), dtype=np.float64)
+        return _ellipse(np.asarray(leaf.center, dtype=np.float64)[:2], L)
+    if isinstance(leaf, (Truncus, EllipticTruncus)):
+        return _frustum_outline(*_frustum(leaf))
+    if isinstance(leaf, Torus):
+        a = np.asarray(leaf.axis, dtype=np.float64)
+        if abs(abs(a[2]) - 1.0) <= 1e-13:
+            xy = (float(leaf.center[0]), float(leaf.center[1]))
+            return Circle(xy, leaf.major + leaf.minor) - Circle(xy, leaf.major - leaf.minor)
+        raise NotExactError("projection: the outline of a torus whose axis is not vertical is not computed exactly")
+    if isinstance(leaf, TriangleMesh):
+        import shapely
+
+        tri = np.asarray(leaf.vertices, dtype=np.float64)[np.asarray(leaf.faces)][:, :, :2]
+        polys = shapely.polygons(np.concatenate([tri, tri[:, :1]], axis=1))
+        polys = polys[shapely.area(polys) > 0]
+        return shape_from_region(shapely.union_all(polys)) if len(polys) else EMPTY
+    raise NotExactError(f"projection: the outline of a {type(leaf).__name__} is not computed exactly")
+
+
+def _frustum_outline(c: NDArray[np.float64], M: NDArray[np.float64], r1: float, r2: float) -> Shape2D:
+    """The hull of the two end ellipses ``c +- M[:, 2] / 2 + r M[:2, :2] u``: the same map B makes
+    both circles, so the hull is B's image of the hull of two discs (exact)."""
+    B = M[:2, :2]
+    ends = np.array([c[:2] + M[:2, 2] / 2, c[:2] - M[:2, 2] / 2])
+    radii = np.array([r1, r2], dtype=np.float64)
+    size = float(np.abs(M).max())
+    if abs(float(np.linalg.det(B))) <= 1e-12 * size * size:  # the ends seen edge on: segments
+        U, S, _ = np.linalg.svd(B)
+        reach = U[:, 0] * S[0]
+        pts = [e + s * r * reach for e, r in zip(ends, radii) for s in (-1.0, 1.0)]
+        return _convex(np.array(pts))
+    Binv = np.linalg.inv(B)
+    hull = disc_hull(ends @ Binv.T, radii)
+    from .transforms import transform2d
+
+    return transform2d(hull, np.hstack([B, np.zeros((2, 1))]))
