@@ -242,9 +242,9 @@ def _slack(lo: float, hi: float) -> float:
     return _SLACK * max(hi - lo, abs(lo), abs(hi), 1.0)
 
 
-def _section_inside(s: Any, z: float) -> Shape2D:
+def _section_inside(s: Any, z: float, facts: _Facts) -> Shape2D:
     """The section at a height strictly inside ``s``'s prism range (no face lies in the plane)."""
-    if isinstance(s, Truncus) and _upright(s):  # the common hole: its disc, read off directly
+    if isinstance(s, Truncus) and facts.prismatic[id(s)]:  # the common hole: its disc, read off directly
         return Circle((float(s.center[0]), float(s.center[1])), s.r1)
     return leaf_section_at(s, z) if _children(s) is None else section_at(s, z)
 
@@ -264,12 +264,11 @@ def _plan_difference(s: Any, facts: _Facts) -> _Plan:
     for k in subs:
         r = facts.range[id(k)]
         if r is not None and r[0] <= lo + slack and r[1] >= hi - slack:
-            cuts.append(_section_inside(k, 0.5 * (max(lo, r[0]) + min(hi, r[1]))))
+            cuts.append(_section_inside(k, 0.5 * (max(lo, r[0]) + min(hi, r[1])), facts))
         elif prism_core is None:
-            what = "not a vertical prism" if r is None else (
-                f"a vertical prism over z in [{r[0]:g}, {r[1]:g}], not through")
+            what = "not a vertical prism" if r is None else f"a vertical prism over z in [{r[0]:g}, {r[1]:g}], not"
             raise NotExactError(
-                f"projection: the outline of a difference whose operand {type(k).__name__} is {what} the first "
+                f"projection: the outline of a difference whose operand {type(k).__name__} is {what} through the first "
                 f"operand (z in [{lo:g}, {hi:g}]), which is not a vertical prism, is not computed exactly; a "
                 "projection of a difference is not the difference of projections")
         elif facts.prismatic[id(k)] or (_children(k) is None and type(k).convex):
@@ -304,12 +303,11 @@ def _plan_intersection(kids: tuple[Any, ...], facts: _Facts) -> _Plan:
             continue
         r = facts.range[id(k)]
         if r is None or r[0] > lo + slack or r[1] < hi - slack:
-            what = "not a vertical prism" if r is None else (
-                f"a vertical prism over z in [{r[0]:g}, {r[1]:g}], not through")
+            what = "not a vertical prism" if r is None else f"a vertical prism over z in [{r[0]:g}, {r[1]:g}], not"
             raise NotExactError(
-                f"projection: the outline of an intersection whose operand {type(k).__name__} is {what} the "
+                f"projection: the outline of an intersection whose operand {type(k).__name__} is {what} through the "
                 f"operand {type(core).__name__} (z in [{lo:g}, {hi:g}]) is not computed exactly")
-        cuts.append(_section_inside(k, 0.5 * (max(lo, r[0]) + min(hi, r[1]))))
+        cuts.append(_section_inside(k, 0.5 * (max(lo, r[0]) + min(hi, r[1])), facts))
     return [core], lambda shapes: _combine("intersection", [shapes[0], *cuts])
 
 
@@ -366,7 +364,7 @@ def _covered(members: list[Any], lo: float, hi: float, facts: _Facts) -> Shape2D
     layers = []
     for z0, z1 in zip(heights, heights[1:]):
         mid = 0.5 * (z0 + z1)
-        held = [_section_inside(m, mid) for m, b in zip(members, boxes) if b[0, 2] < mid < b[1, 2]]
+        held = [_section_inside(m, mid, facts) for m, b in zip(members, boxes) if b[0, 2] < mid < b[1, 2]]
         layer = _combine("union", held)
         if layer is EMPTY:
             return EMPTY

@@ -17,6 +17,7 @@ from typing import Any
 import numpy as np
 from numpy.typing import NDArray
 
+from ..csg import CSGNode, Difference, Intersection
 from ..errors import InvalidGeometryError
 from ..kinds import Box, ConvexPolyhedron, Ellipsoid, EllipticTruncus, Solid, Sphere, Torus, Truncus
 from ..kinds.mesh import TriangleMesh
@@ -37,20 +38,11 @@ _EPS = 1e-12
 # --------------------------------------------------------------------------- tree walks
 
 
-_NODE_CLASS: list[type] = []
-
-
 def _children(s: Any) -> tuple[Any, ...] | None:
-    if not _NODE_CLASS:  # csg sits above the kinds; read once, on first use
-        from ..csg import CSGNode
-
-        _NODE_CLASS.append(CSGNode)
-    return tuple(s.children) if isinstance(s, _NODE_CLASS[0]) else None  # type: ignore[attr-defined]
+    return tuple(s.children) if isinstance(s, CSGNode) else None
 
 
 def _op(s: Any) -> str:
-    from ..csg import Difference, Intersection
-
     return "difference" if isinstance(s, Difference) else "intersection" if isinstance(s, Intersection) else "union"
 
 
