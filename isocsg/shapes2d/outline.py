@@ -9,14 +9,14 @@ not the Boolean of its operands' outlines; these rules are exact:
 - a difference ``A - B1 - ... - Bn`` (a chain built by ``s = s - b`` in a loop is read as one,
   iteratively, and a subtracted union as its parts): a ``Bi`` that misses ``A``'s box subtracts
   nothing; a ``Bi`` that is a vertical prism through ``A``'s whole height removes its section
-  (``proj(A - P) = proj(A) - section(P)``), whatever ``A`` is. When ``A`` is a vertical prism
-  itself (its leaves vertical prisms over one and the same height range ``[lo, hi]``), a column
-  is removed where the ``Bi`` cover all of ``[lo, hi]`` there: a convex ``Bi`` alone covers the
-  column where it holds both its ends, ``section(Bi, lo) & section(Bi, hi)``; vertical prisms
-  whose boxes overlap cover it where, in every slab between their heights, one of them holds the
-  point (the intersection over the slabs of the union of their sections). Groups are the
-  connected sets of overlapping boxes, so the work grows with the number of operands, not its
-  square;
+  (``proj(A - P) = proj(A) - section(P)``), whatever ``A`` is. When ``A`` is made of vertical
+  prisms, it is read slab by slab between the heights of its leaves' ends: each slab ``[lo, hi]``
+  is a prism of one section, and a column of it is removed where the ``Bi`` hold all of
+  ``[lo, hi]`` there: a convex ``Bi`` alone where it holds both ends, ``section(Bi, lo) &
+  section(Bi, hi)``; vertical prisms whose boxes overlap where, in every slab between their
+  heights, one of them holds the point (the intersection over those slabs of the union of their
+  sections). Groups are the connected sets of overlapping boxes, so the work grows with the
+  number of operands, not its square;
 - an intersection of one solid with vertical prisms through its height: its outline cut to their
   sections;
 - any tree whose leaves are all vertical prisms (boxes, polyhedral prisms and cylinders with
@@ -211,12 +211,7 @@ def _plan(s: Any, facts: _Facts) -> _Plan:
         if facts.prismatic[id(s)]:
             return [], lambda _: _slab_outline(s, facts)
         return _plan_intersection(kids, facts)
-    try:
-        return _plan_difference(s, facts)
-    except NotExactError:
-        if facts.prismatic[id(s)]:
-            return [], lambda _: _slab_outline(s, facts)
-        raise
+    return _plan_difference(s, facts)
 
 
 def _difference_chain(s: Any) -> tuple[Any, list[Any]]:
@@ -253,24 +248,45 @@ def _plan_difference(s: Any, facts: _Facts) -> _Plan:
     core, subs = _difference_chain(s)
     cb = facts.box[id(core)]
     lo, hi = float(cb[0, 2]), float(cb[1, 2])
+    boxes = np.array([facts.box[id(k)] for k in subs]).reshape(-1, 2, 3)
+    hit = np.all(boxes[:, 0] < cb[1], axis=1) & np.all(cb[0] < boxes[:, 1], axis=1)
+    subs, boxes = [k for k, h in zip(subs, hit) if h], boxes[hit]
+    if not facts.prismatic[id(core)]:  # only through prisms are exact: they take their sections out
+        slack = _slack(lo, hi)
+        cuts: list[Shape2D] = []
+        for k in subs:
+            r = facts.range[id(k)]
+            if r is None or r[0] > lo + slack or r[1] < hi - slack:
+                what = "not a vertical prism" if r is None else f"a vertical prism over z in [{r[0]:g}, {r[1]:g}], not"
+                raise NotExactError(
+                    f"projection: the outline of a difference whose operand {type(k).__name__} is {what} through the "
+                    f"first operand (z in [{lo:g}, {hi:g}]), which is not a vertical prism, is not computed exactly; "
+                    "a projection of a difference is not the difference of projections")
+            cuts.append(_section_inside(k, 0.5 * (max(lo, r[0]) + min(hi, r[1])), facts))
+        return [core], lambda shapes: _combine("difference", [shapes[0], *cuts])
+    # a first operand of vertical prisms: one layer per slab between the heights of its leaves' ends
+    pieces = []
+    heights = _heights([core], facts, lo, hi)
+    for z0, z1 in zip(heights, heights[1:]):
+        layer = _section_inside(core, 0.5 * (z0 + z1), facts)
+        if layer is EMPTY:
+            continue
+        here = (boxes[:, 0, 2] < z1) & (boxes[:, 1, 2] > z0)
+        pieces.append(_cut_layer(layer, [k for k, h in zip(subs, here) if h], z0, z1, facts))
+    result = _combine("union", pieces)
+    return [], lambda _: result
+
+
+def _cut_layer(layer: Shape2D, subs: list[Any], lo: float, hi: float, facts: _Facts) -> Shape2D:
+    """The outline of the prism of section ``layer`` over ``[lo, hi]`` minus ``subs``: the sections
+    of those through it, and the columns the others hold together (:func:`_covered`)."""
     slack = _slack(lo, hi)
-    if subs:
-        boxes = np.array([facts.box[id(k)] for k in subs])
-        hit = np.all(boxes[:, 0] < cb[1], axis=1) & np.all(cb[0] < boxes[:, 1], axis=1)
-        subs = [k for k, h in zip(subs, hit) if h]
-    prism_core = facts.uniform[id(core)]
     cuts: list[Shape2D] = []
     partial: list[Any] = []
     for k in subs:
         r = facts.range[id(k)]
         if r is not None and r[0] <= lo + slack and r[1] >= hi - slack:
             cuts.append(_section_inside(k, 0.5 * (max(lo, r[0]) + min(hi, r[1])), facts))
-        elif prism_core is None:
-            what = "not a vertical prism" if r is None else f"a vertical prism over z in [{r[0]:g}, {r[1]:g}], not"
-            raise NotExactError(
-                f"projection: the outline of a difference whose operand {type(k).__name__} is {what} through the first "
-                f"operand (z in [{lo:g}, {hi:g}]), which is not a vertical prism, is not computed exactly; a "
-                "projection of a difference is not the difference of projections")
         elif facts.prismatic[id(k)] or (_children(k) is None and type(k).convex):
             partial.append(k)
         else:
@@ -282,7 +298,7 @@ def _plan_difference(s: Any, facts: _Facts) -> _Plan:
         region = _covered([partial[i] for i in group], lo, hi, facts)
         if region is not EMPTY:
             cuts.append(region)
-    return [core], lambda shapes: _combine("difference", [shapes[0], *cuts])
+    return _combine("difference", [layer, *cuts])
 
 
 def _plan_intersection(kids: tuple[Any, ...], facts: _Facts) -> _Plan:
