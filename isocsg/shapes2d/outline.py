@@ -5,7 +5,6 @@ a union is the union of its parts' outlines; a convex leaf's outline is exact (a
 truncus's hull of its two end ellipses, a polyhedron's hull). A difference or an intersection is
 not the Boolean of its operands' outlines; these rules are exact:
 
-- every leaf flat faced: manifold3d's Boolean of the polyhedra, projected;
 - a difference ``A - B1 - ... - Bn`` (a chain built by ``s = s - b`` in a loop is read as one,
   iteratively, and a subtracted union as its parts): a ``Bi`` that misses ``A``'s box subtracts
   nothing; a ``Bi`` that is a vertical prism through ``A``'s whole height removes its section
@@ -23,6 +22,8 @@ not the Boolean of its operands' outlines; these rules are exact:
   vertical axes, straight extrusions): its section is the same between consecutive leaf heights,
   so the outline is the union of one section per slab.
 
+A tree that none of these reaches and whose leaves are all flat faced takes manifold3d's Boolean
+of the polyhedra, projected (exact, but slower on thousands of operands than the rules above).
 Any other tree raises :class:`~isocsg.errors.NotExactError` naming the operand that stops it.
 """
 
@@ -205,13 +206,16 @@ def _plan(s: Any, facts: _Facts) -> _Plan:
     op, kids = _op(s), tuple(_children(s) or ())
     if op == "union":
         return list(kids), lambda shapes: _combine("union", shapes)
-    if facts.flat[id(s)]:
-        return [], lambda _: _manifold_outline(s)
-    if op == "intersection":
-        if facts.prismatic[id(s)]:
-            return [], lambda _: _slab_outline(s, facts)
-        return _plan_intersection(kids, facts)
-    return _plan_difference(s, facts)
+    try:  # the rules on vertical prisms first: near-linear in the operands, where manifold3d's Boolean is not
+        if op == "intersection":
+            if facts.prismatic[id(s)]:
+                return [], lambda _: _slab_outline(s, facts)
+            return _plan_intersection(kids, facts)
+        return _plan_difference(s, facts)
+    except NotExactError:
+        if facts.flat[id(s)]:
+            return [], lambda _: _manifold_outline(s)
+        raise
 
 
 def _difference_chain(s: Any) -> tuple[Any, list[Any]]:
