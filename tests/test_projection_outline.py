@@ -138,6 +138,8 @@ def test_refusals_name_the_operand() -> None:
         outline(plate - Torus((0, 0, 0.5), (1, 0, 0), 1.0, 0.3))
     with pytest.raises(NotExactError, match="first operand .* which is not a vertical prism"):
         outline(Sphere((0, 0, 0), 2) - Cylinder((0, 0, 1.5), (0, 0, 2), 0.5))
+    with pytest.raises(NotExactError, match=r"intersection of 2 solids that are not vertical prisms \(Sphere, Sphere\)"):
+        outline(Sphere((0, 0, 0), 1) & Sphere((0.5, 0, 0), 1) & Cylinder((0, 0, 0), (0, 0, 5), 0.8))
 
 
 # ----------------------------------------------------------------------------- hypothesis
