@@ -124,6 +124,16 @@ def test_a_convex_cut_removes_the_columns_it_holds_end_to_end() -> None:
     assert area(shape) == pytest.approx(36.0 - removed, rel=1e-12)
 
 
+def test_a_blind_hole_in_a_ball_takes_the_columns_within_its_heights() -> None:
+    """A hole over z in [-1, 3] at 1.8 from the centre of a ball of radius 2: it takes the columns
+    whose bottom is above -1, those farther than sqrt(3) from the centre (the reference: shapely's
+    Booleans of finely polygonised discs)."""
+    s = Sphere((0, 0, 0), 2) - Cylinder((1.8, 0, 1), (0, 0, 4), 0.5)
+    taken = _disc(1.8, 0, 0.5, 8192).difference(_disc(0, 0, math.sqrt(3), 8192)).intersection(_disc(0, 0, 2, 8192))
+    assert area(outline(s)) == pytest.approx(4 * math.pi - taken.area, abs=1e-6)
+    assert area(outline(Sphere((0, 0, 0), 2) - Cylinder((0, 0, 2), (0, 0, 2), 0.5))) == pytest.approx(4 * math.pi)
+
+
 def test_intersections_of_prisms_of_different_heights() -> None:
     box, cyl = Box((0, 0, 0.5), (2, 2, 1)), Cylinder((1, 1, 1.5), (0, 0, 2), 1.0)  # z in [0, 1], [0.5, 2.5]
     assert area(outline(box & cyl)) == pytest.approx(math.pi / 4, rel=1e-12)
@@ -137,7 +147,9 @@ def test_refusals_name_the_operand() -> None:
     with pytest.raises(NotExactError, match="operand Torus is neither a vertical prism nor a convex solid"):
         outline(plate - Torus((0, 0, 0.5), (1, 0, 0), 1.0, 0.3))
     with pytest.raises(NotExactError, match="first operand .* which is not a vertical prism"):
-        outline(Sphere((0, 0, 0), 2) - Cylinder((0, 0, 1.5), (0, 0, 2), 0.5))
+        outline(Cylinder((0, 0, 0), (1, 0, 2), 1) - Cylinder((0, 0, 1.5), (0, 0, 2), 0.5))  # a tilted core
+    with pytest.raises(NotExactError, match="difference of a Sphere and 2 overlapping vertical prisms"):
+        outline(Sphere((0, 0, 0), 2) - Cylinder((0, 0, 1.5), (0, 0, 2), 0.5) - Cylinder((0.2, 0, -1.5), (0, 0, 2), 0.5))
     with pytest.raises(NotExactError, match=r"intersection of 2 solids that are not vertical prisms \(Sphere, Sphere\)"):
         outline(Sphere((0, 0, 0), 1) & Sphere((0.5, 0, 0), 1) & Cylinder((0, 0, 0), (0, 0, 5), 0.8))
 
@@ -229,4 +241,28 @@ def prism_trees(draw: st.DrawFn) -> tuple[object, object]:
 @given(prism_trees())
 def test_trees_of_vertical_prisms(tree: tuple[object, object]) -> None:
     solid, mesh = tree
+    _compare(outline(solid), _mesh_outline(mesh))  # type: ignore[arg-type]
+
+
+@st.composite
+def nested_cores(draw: st.DrawFn) -> tuple[object, object]:
+    """A ball or an upright cone or frustum about the origin (horizontal sections: nested discs)."""
+    if draw(st.booleans()):
+        r = draw(st.floats(1.2, 1.8))
+        return Sphere((0, 0, 0), r), manifold3d.Manifold.sphere(r, SEGMENTS)
+    r1, r2 = draw(st.floats(0.0, 1.8)), draw(st.floats(0.6, 1.8))
+    mesh = manifold3d.Manifold.cylinder(2.0, r2, r1, SEGMENTS, True)
+    return Truncus((0, 0, 0), (0, 0, 2.0), r1, r2), mesh
+
+
+@settings(max_examples=10, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(nested_cores(), st.integers(1, 3).flatmap(lambda n: st.tuples(*(prisms(k, xs=(0.0, 0.0)) for k in range(n)))))
+def test_ball_or_cone_minus_vertical_prisms_through_or_not(core: tuple[object, object],
+                                                           cuts: tuple[tuple[object, object], ...]) -> None:
+    """Vertical prisms of any heights, one per cell (x = -1, 0, 1), cut from a ball or an upright
+    cone: each takes out the columns of the core that lie within its height range."""
+    solid, mesh = core
+    for k, (s, mm) in enumerate(cuts):
+        dx = (k - 1) * 1.0
+        solid, mesh = solid - s.translate([dx, -float(s.center[1]), 0]), mesh - mm.translate((dx, -float(s.center[1]), 0))  # type: ignore[attr-defined,operator]
     _compare(outline(solid), _mesh_outline(mesh))  # type: ignore[arg-type]

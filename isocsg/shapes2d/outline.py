@@ -15,7 +15,10 @@ not the Boolean of its operands' outlines; these rules are exact:
   section(Bi, hi)``; vertical prisms whose boxes overlap where, in every slab between their
   heights, one of them holds the point (the intersection over those slabs of the union of their
   sections). Groups are the connected sets of overlapping boxes, so the work grows with the
-  number of operands, not its square;
+  number of operands, not its square. When ``A`` is a ball or an upright cone or frustum (its
+  horizontal sections nested discs), a vertical prism leaf over ``[b0, b1]`` that overlaps no
+  other such cut removes its section minus ``A``'s outlines below ``b0`` and above ``b1`` (the
+  columns of ``A`` within ``[b0, b1]``);
 - an intersection of one solid with vertical prisms through its height: its outline cut to their
   sections;
 - any tree whose leaves are all vertical prisms (boxes, polyhedral prisms and cylinders with
@@ -255,19 +258,8 @@ def _plan_difference(s: Any, facts: _Facts) -> _Plan:
     boxes = np.array([facts.box[id(k)] for k in subs]).reshape(-1, 2, 3)
     hit = np.all(boxes[:, 0] < cb[1], axis=1) & np.all(cb[0] < boxes[:, 1], axis=1)
     subs, boxes = [k for k, h in zip(subs, hit) if h], boxes[hit]
-    if not facts.prismatic[id(core)]:  # only through prisms are exact: they take their sections out
-        slack = _slack(lo, hi)
-        cuts: list[Shape2D] = []
-        for k in subs:
-            r = facts.range[id(k)]
-            if r is None or r[0] > lo + slack or r[1] < hi - slack:
-                what = "not a vertical prism" if r is None else f"a vertical prism over z in [{r[0]:g}, {r[1]:g}], not"
-                raise NotExactError(
-                    f"projection: the outline of a difference whose operand {type(k).__name__} is {what} through the "
-                    f"first operand (z in [{lo:g}, {hi:g}]), which is not a vertical prism, is not computed exactly; "
-                    "a projection of a difference is not the difference of projections")
-            cuts.append(_section_inside(k, 0.5 * (max(lo, r[0]) + min(hi, r[1])), facts))
-        return [core], lambda shapes: _combine("difference", [shapes[0], *cuts])
+    if not facts.prismatic[id(core)]:
+        return [core], _cut_curved(core, subs, lo, hi, facts)
     # a first operand of vertical prisms: one layer per slab between the heights of its leaves' ends
     pieces = []
     heights = _heights([core], facts, lo, hi)
@@ -279,6 +271,61 @@ def _plan_difference(s: Any, facts: _Facts) -> _Plan:
         pieces.append(_cut_layer(layer, [k for k, h in zip(subs, here) if h], z0, z1, facts))
     result = _combine("union", pieces)
     return [], lambda _: result
+
+
+def _cut_curved(core: Any, subs: list[Any], lo: float, hi: float,
+                facts: _Facts) -> Callable[[list[Shape2D]], Shape2D]:
+    """A first operand that is not made of vertical prisms: vertical prisms through it take their
+    sections out. When its horizontal sections are nested discs (a ball, an upright cone or
+    frustum), a vertical prism leaf over ``[b0, b1]`` that does not overlap another such cut also
+    takes out the part of its section where the first operand's column lies within ``[b0, b1]``:
+    its section minus the outlines of the first operand below ``b0`` and above ``b1``."""
+    slack = _slack(lo, hi)
+    cuts: list[Shape2D] = []
+    partial: list[Any] = []
+    nested = _nested_discs(core)
+    for k in subs:
+        r = facts.range[id(k)]
+        if r is not None and r[0] <= lo + slack and r[1] >= hi - slack:
+            cuts.append(_section_inside(k, 0.5 * (max(lo, r[0]) + min(hi, r[1])), facts))
+        elif nested and r is not None and _children(k) is None:
+            partial.append(k)
+        else:
+            what = "not a vertical prism" if r is None else f"a vertical prism over z in [{r[0]:g}, {r[1]:g}], not"
+            raise NotExactError(
+                f"projection: the outline of a difference whose operand {type(k).__name__} is {what} through the "
+                f"first operand (z in [{lo:g}, {hi:g}]), which is not a vertical prism, is not computed exactly; "
+                "a projection of a difference is not the difference of projections")
+    for group in _overlap_groups([facts.box[id(k)] for k in partial]):
+        if len(group) > 1:
+            raise NotExactError(
+                f"projection: the outline of a difference of a {type(core).__name__} and {len(group)} overlapping "
+                f"vertical prisms ({type(partial[group[0]]).__name__}, ...) that do not run through it is not "
+                "computed exactly")
+        k = partial[group[0]]
+        b0, b1 = facts.range[id(k)]  # type: ignore[misc]
+        caps = ([_cap_outline(core, lo, min(b0, hi))] if b0 > lo + slack else []) + (
+            [_cap_outline(core, max(b1, lo), hi)] if b1 < hi - slack else [])
+        cuts.append(_combine("difference", [_section_inside(k, 0.5 * (max(lo, b0) + min(hi, b1)), facts), *caps]))
+    return lambda shapes: _combine("difference", [shapes[0], *cuts])
+
+
+def _nested_discs(leaf: Any) -> bool:
+    """Whether a leaf's horizontal sections are concentric discs: a ball, an upright truncus."""
+    if isinstance(leaf, Sphere):
+        return True
+    if isinstance(leaf, Truncus):
+        ax, ay, az = (float(v) for v in leaf.axis)
+        return max(abs(ax), abs(ay)) <= 1e-12 * abs(az)
+    return False
+
+
+def _cap_outline(core: Any, z0: float, z1: float) -> Shape2D:
+    """The outline of the part of ``core`` (:func:`_nested_discs`) between heights ``z0`` and ``z1``:
+    its widest section there (a ball's nearest its centre, a truncus's at one of the two ends)."""
+    if isinstance(core, Sphere):
+        return leaf_section_at(core, min(max(float(core.center[2]), z0), z1))
+    return _combine("union", [leaf_section_at(core, z0), leaf_section_at(core, z1)])
 
 
 def _cut_layer(layer: Shape2D, subs: list[Any], lo: float, hi: float, facts: _Facts) -> Shape2D:

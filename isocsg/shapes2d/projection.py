@@ -4,8 +4,9 @@
   the plane included (:mod:`isocsg.shapes2d.sections`);
 - ``cut=False``: the outline (shadow): exact for unions, flat-faced trees, trees of vertical
   prisms, and differences and intersections whose other operands are vertical prisms through the
-  first one, miss it, or (when it is a vertical prism) are convex solids or prisms that do not
-  run through it (:mod:`isocsg.shapes2d.outline`); any other tree raises
+  first one, miss it, or (when it is made of vertical prisms) are convex solids or prisms that
+  do not run through it, or (when it is a ball or an upright cone) are vertical prisms apart from
+  one another (:mod:`isocsg.shapes2d.outline`); any other tree raises
   :class:`~isocsg.errors.NotExactError` naming what stops it.
 """
 
