@@ -380,7 +380,7 @@ def extrude(lw: _Lowerer, call: CSGCall) -> Any:
         return None
     # The old form names its drawing itself: linear_extrude(file = "x.dxf", layer = ...). A per-axis
     # scale of a disc has no exact isocsg form: OpenSCAD's own polygonal circles then.
-    polygonal = scale_v[0] != scale_v[1]
+    polygonal = scale_v[0] != scale_v[1] or lw.faceted
     shape = import_drawing(lw, call) if "file" in call.kwargs else shape_of(lw, call, polygonal=polygonal)
     if shape is None or shape is EMPTY:
         return None

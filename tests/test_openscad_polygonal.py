@@ -1,0 +1,183 @@
+"""``polygonal=True``: a ``hull`` or ``minkowski`` without an exact form as OpenSCAD's own polygonal solid.
+
+References written here, apart from the library: OpenSCAD's segment count and vertex rings
+(``Calc::get_fragments_from_r`` and ``primitives.cc`` of 2021.01, re-derived below), scipy's
+convex hull for hulls, and manifold3d's ``minkowski_sum`` of the same polyhedra for sums.
+"""
+
+from __future__ import annotations
+
+import math
+import warnings
+
+import manifold3d
+import numpy as np
+import pytest
+from hypothesis import assume, given, settings
+from hypothesis import strategies as st
+from scipy.spatial import ConvexHull
+
+from isocsg import UnsupportedOpenSCADError, loads_openscad, volume
+from isocsg.openscad import OpenSCADPolygonalWarning, lower, parse_csg
+
+
+def _segments(r: float, fn: float = 0.0, fs: float = 2.0, fa: float = 12.0) -> int:
+    if fn > 0:
+        return max(int(fn), 3)
+    return int(math.ceil(max(min(360.0 / fa, 2 * math.pi * r / fs), 5)))
+
+
+def _circle(n: int, r: float, z: float) -> np.ndarray:
+    t = 2 * math.pi * np.arange(n) / n
+    return np.column_stack([r * np.cos(t), r * np.sin(t), np.full(n, z)])
+
+
+def _sphere(r: float, **fx: float) -> np.ndarray:
+    n = _segments(r, **fx)
+    rings = (n + 1) // 2
+    return np.vstack([_circle(n, r * math.sin(math.pi * (i + 0.5) / rings), r * math.cos(math.pi * (i + 0.5) / rings))
+                      for i in range(rings)])
+
+
+def _cylinder(r: float, h: float, **fx: float) -> np.ndarray:
+    n = _segments(r, **fx)
+    return np.vstack([_circle(n, r, 0.0), _circle(n, r, h)])
+
+
+def _fx(fn: float, fa: float, fs: float) -> str:
+    return f"$fn = {fn}, $fa = {fa}, $fs = {fs}"
+
+
+def _hull_csg(at: tuple[float, float, float], rs: float, rc: float, h: float, fn: float, fa: float, fs: float) -> str:
+    return (f"hull() {{ multmatrix([[1, 0, 0, {at[0]}], [0, 1, 0, {at[1]}], [0, 0, 1, {at[2]}], [0, 0, 0, 1]]) "
+            f"{{ sphere(r = {rs}, {_fx(fn, fa, fs)}); }} "
+            f"cylinder(h = {h}, r1 = {rc}, r2 = {rc}, center = false, {_fx(fn, fa, fs)}); }}")
+
+
+def _load(text: str) -> object:
+    return lower(parse_csg(text), polygonal=True)
+
+
+def test_default_refuses_naming_the_node() -> None:
+    text = "group() {\n" + _hull_csg((10, 0, 0), 3, 2, 8, 0, 12, 2) + "\n}"
+    with pytest.raises(UnsupportedOpenSCADError, match=r"line 2: hull\(\) is not supported"):
+        loads_openscad(text)
+
+
+def test_hull_of_a_sphere_and_a_cylinder_is_openscads_polyhedron() -> None:
+    model = _load(_hull_csg((10, 0, 0), 3, 2, 8, 0, 12, 2))
+    want = ConvexHull(np.vstack([_sphere(3) + (10, 0, 0), _cylinder(2, 8)])).volume
+    assert abs(volume(model.solid) - want) <= 1e-9 * want  # type: ignore[attr-defined]
+    assert len(model.polygonal) == 1 and "hull()" in model.polygonal[0]  # type: ignore[attr-defined]
+
+
+def test_load_openscad_warns_with_the_nodes() -> None:
+    with warnings.catch_warnings(record=True) as got:
+        warnings.simplefilter("always")
+        loads_openscad(_hull_csg((10, 0, 0), 3, 2, 8, 0, 12, 2), polygonal=True)
+    assert any(isinstance(w.message, OpenSCADPolygonalWarning) and len(w.message.nodes) == 1 for w in got)
+
+
+def test_an_exact_hull_stays_exact_with_the_option() -> None:
+    text = ("hull() { sphere(r = 2, $fn = 0, $fa = 12, $fs = 2); multmatrix([[1, 0, 0, 5], [0, 1, 0, 0], "
+            "[0, 0, 1, 0], [0, 0, 0, 1]]) { sphere(r = 2, $fn = 0, $fa = 12, $fs = 2); } }")
+    model = _load(text)
+    assert model.polygonal == ()  # type: ignore[attr-defined]
+    want = math.pi * 4 * 5 + 4 / 3 * math.pi * 8  # a capsule: the exact round solid
+    assert abs(volume(model.solid, tol=1e-6) - want) < 1e-5 * want  # type: ignore[attr-defined]
+
+
+def _manifold_sum(a: manifold3d.Manifold, b_points: np.ndarray) -> float:
+    return float(a.minkowski_sum(manifold3d.Manifold.hull_points(b_points)).volume())
+
+
+def _plate_csg(size: tuple[float, float, float], hole: float, fn_hole: int, ball: float, fn_ball: int) -> str:
+    sx, sy, sz = size
+    return (f"minkowski() {{ difference() {{ cube(size = [{sx}, {sy}, {sz}], center = false); "
+            f"multmatrix([[1, 0, 0, {sx / 2}], [0, 1, 0, {sy / 2}], [0, 0, 1, -1], [0, 0, 0, 1]]) "
+            f"{{ cylinder(h = {sz + 2}, r1 = {hole}, r2 = {hole}, center = false, $fn = {fn_hole}, $fa = 12, "
+            f"$fs = 2); }} }} sphere(r = {ball}, $fn = {fn_ball}, $fa = 12, $fs = 2); }}")
+
+
+def _plate_manifold(size: tuple[float, float, float], hole: float, fn_hole: int) -> manifold3d.Manifold:
+    sx, sy, sz = size
+    box = manifold3d.Manifold.cube(size)
+    bore = manifold3d.Manifold.hull_points(_cylinder(hole, sz + 2, fn=fn_hole) + (sx / 2, sy / 2, -1))
+    return box - bore
+
+
+def test_minkowski_of_a_plate_with_a_hole_and_a_ball() -> None:
+    model = _load(_plate_csg((10, 8, 3), 2, 12, 1, 10))
+    want = _manifold_sum(_plate_manifold((10, 8, 3), 2, 12), _sphere(1, fn=10))
+    assert abs(volume(model.solid) - want) <= 1e-6 * want  # type: ignore[attr-defined]
+
+
+def test_minkowski_under_a_map_takes_the_shift_back_once() -> None:
+    plate = _plate_csg((10, 8, 3), 2, 12, 1, 10)
+    moved = _load(f"multmatrix([[1, 0, 0, 40], [0, 1, 0, 5], [0, 0, 1, 2], [0, 0, 0, 1]]) {{ {plate} }}")
+    here = _load(plate)
+    lo = np.asarray(moved.solid.bounds)[0] - np.asarray(here.solid.bounds)[0]  # type: ignore[attr-defined]
+    assert np.allclose(lo, (40, 5, 2))
+
+
+def test_two_non_convex_children_stay_refused() -> None:
+    plate = "difference() { cube(size = [4, 4, 4], center = false); cube(size = [2, 2, 9], center = true); }"
+    with pytest.raises(UnsupportedOpenSCADError, match="not convex"):
+        _load(f"minkowski() {{ {plate} {plate} }}")
+
+
+@settings(max_examples=6, deadline=None)
+@given(
+    at=st.tuples(*[st.floats(-12, 12) for _ in range(3)]),
+    rs=st.floats(0.5, 6), rc=st.floats(0.5, 6), h=st.floats(0.5, 15),
+    fn=st.sampled_from([0, 5, 8, 13, 30]), fa=st.sampled_from([6, 12, 30]), fs=st.sampled_from([0.5, 2, 5]),
+)
+def test_random_hulls_match_scipy(at: tuple[float, float, float], rs: float, rc: float, h: float, fn: int,
+                                  fa: float, fs: float) -> None:
+    assume(math.hypot(at[0], at[1]) > 0.05)  # off the cylinder's axis: no exact form
+    model = _load(_hull_csg(at, rs, rc, h, fn, fa, fs))
+    assert model.polygonal  # type: ignore[attr-defined]
+    fx = {"fn": fn, "fa": fa, "fs": fs}
+    want = ConvexHull(np.vstack([_sphere(rs, **fx) + np.array(at), _cylinder(rc, h, **fx)])).volume
+    assert abs(volume(model.solid) - want) <= 1e-8 * want  # type: ignore[attr-defined]
+
+
+@settings(max_examples=4, deadline=None)
+@given(
+    size=st.tuples(st.floats(4, 12), st.floats(4, 12), st.floats(1, 5)),
+    hole=st.floats(0.3, 1.8), fn_hole=st.integers(3, 16), ball=st.floats(0.2, 2), fn_ball=st.integers(3, 12),
+)
+def test_random_sums_match_manifold(size: tuple[float, float, float], hole: float, fn_hole: int, ball: float,
+                                    fn_ball: int) -> None:
+    model = _load(_plate_csg(size, hole, fn_hole, ball, fn_ball))
+    want = _manifold_sum(_plate_manifold(size, hole, fn_hole), _sphere(ball, fn=fn_ball))
+    assert abs(volume(model.solid) - want) <= 1e-6 * want  # type: ignore[attr-defined]
+
+
+def test_an_unset_colour_leaves_the_leaf_uncoloured() -> None:
+    """OpenSCAD exports ``color(undef)`` or an unknown colour name as ``[-1, -1, -1, 1]``."""
+    model = lower(parse_csg("color([-1, -1, -1, 1]) { cube(size = [1, 2, 3], center = false); }"))
+    assert abs(volume(model.solid) - 6.0) < 1e-12  # type: ignore[attr-defined]
+    assert model.leaf_colors == ()  # type: ignore[attr-defined]
+
+
+def test_a_scaled_torus_is_openscads_faceted_solid() -> None:
+    """``scale([1, 1, 0.5]) rotate_extrude() translate([10, 0]) circle(3)``: refused by default (no
+    squashed torus kind); with the option, OpenSCAD's 30 sections of its 10-gon, scaled."""
+    text = ("multmatrix([[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 0.5, 0], [0, 0, 0, 1]]) { rotate_extrude(angle = 360, "
+            "convexity = 2, $fn = 0, $fa = 12, $fs = 2) { multmatrix([[1, 0, 0, 10], [0, 1, 0, 0], [0, 0, 1, 0], "
+            "[0, 0, 0, 1]]) { circle(r = 3, $fn = 0, $fa = 12, $fs = 2); } } }")
+    with pytest.raises(Exception, match="rotate_extrude"):
+        lower(parse_csg(text))
+    model = _load(text)
+    # each of the 30 sections is the hull of the 10-gon turned by 12 degrees: a closed-form sum of
+    # prismatoids; checked here by scipy's hull of each section's 20 points
+    profile = np.column_stack([10 + 3 * np.cos(2 * np.pi * np.arange(10) / 10), 3 * np.sin(2 * np.pi * np.arange(10) / 10)])
+    want = 0.0
+    for k in range(30):
+        pts = []
+        for a in (2 * np.pi * k / 30, 2 * np.pi * (k + 1) / 30):
+            pts.append(np.column_stack([profile[:, 0] * np.cos(a), profile[:, 0] * np.sin(a), 0.5 * profile[:, 1]]))
+        want += ConvexHull(np.vstack(pts)).volume
+    assert abs(volume(model.solid) - want) <= 1e-9 * want  # type: ignore[attr-defined]
+    assert "rotate_extrude()" in model.polygonal[0]  # type: ignore[attr-defined]
