@@ -181,3 +181,42 @@ def test_a_scaled_torus_is_openscads_faceted_solid() -> None:
         want += ConvexHull(np.vstack(pts)).volume
     assert abs(volume(model.solid) - want) <= 1e-9 * want  # type: ignore[attr-defined]
     assert "rotate_extrude()" in model.polygonal[0]  # type: ignore[attr-defined]
+
+
+def test_pieces_of_a_small_dented_edge_on_a_large_outline_are_convex() -> None:
+    """A 60-wide region whose top is a chain of 0.2-long edges dented by 1e-6 (turns of 1e-5 rad),
+    joined by a thin corridor to a 1000-wide plate (an SVG drawing's outline did this): the merged
+    convex pieces are convex at their own size, and their areas add up to shapely's."""
+    from shapely.geometry import Polygon
+
+    from isocsg.shapes2d import area
+    from isocsg.shapes2d.region import shape_from_region
+
+    xs = np.linspace(60, 0, 301)
+    ys = 10 + np.where(np.arange(301) % 2 == 1, -1e-6, 0.0)
+    ring = [(0, 0), (100, 0), (100, -1000), (1100, -1000), (1100, 1000), (100, 1000), (100, 0.5), (60, 0.5)]
+    poly = Polygon(ring + list(zip(xs.tolist(), ys.tolist())))
+    assert poly.is_valid
+    shape = shape_from_region(poly)  # raised "must be convex" before
+    assert abs(area(shape) - poly.area) <= 1e-12 * poly.area
+
+
+@settings(max_examples=4, deadline=None)
+@given(a=st.floats(0.5, 30), b=st.floats(0.5, 30), r=st.floats(0.2, 8), fn=st.sampled_from([0, 3, 6, 7, 24]),
+       h=st.floats(0.5, 10))
+def test_a_2d_sum_of_a_rectangle_and_a_circle(a: float, b: float, r: float, fn: int, h: float) -> None:
+    """``linear_extrude(h) minkowski() { square([a, b]); circle(r); }``: refused by default; with the
+    option the area is Steiner's ``ab + a w_y + b w_x + area(P)`` for OpenSCAD's polygon ``P`` of
+    the circle (its widths ``w_x``, ``w_y`` along the axes)."""
+    text = (f"linear_extrude(height = {h}, center = false, convexity = 1, scale = [1, 1], $fn = {fn}, $fa = 12, "
+            f"$fs = 2) {{ minkowski(convexity = 0) {{ square(size = [{a}, {b}], center = false); "
+            f"circle(r = {r}, $fn = {fn}, $fa = 12, $fs = 2); }} }}")
+    with pytest.raises(UnsupportedOpenSCADError, match="minkowski"):
+        lower(parse_csg(text))
+    ring = _circle(_segments(r, fn=fn), r, 0.0)[:, :2]
+    wx, wy = np.ptp(ring, axis=0)
+    n = len(ring)
+    want = h * (a * b + a * wy + b * wx + n * r * r * math.sin(2 * math.pi / n) / 2)
+    model = _load(text)
+    assert abs(volume(model.solid) - want) <= 1e-9 * want  # type: ignore[attr-defined]
+    assert "minkowski()" in model.polygonal[0]  # type: ignore[attr-defined]

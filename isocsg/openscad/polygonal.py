@@ -14,7 +14,8 @@ OpenSCAD computes from them:
   ``A``'s boundary, the convex polyhedron ``T + K`` (the same set as OpenSCAD's sum over convex
   parts). Two non-convex children are refused.
 
-A ``rotate_extrude`` whose exact solid is refused (an ellipse off the axis, a torus under a
+A 2D ``minkowski`` becomes the union of the hulls of pairwise vertex sums of its children's
+convex pieces (:func:`polygonal_minkowski2d`). A ``rotate_extrude`` whose exact solid is refused (an ellipse off the axis, a torus under a
 non-uniform scale) becomes OpenSCAD's faceted solid likewise
 (:func:`isocsg.openscad.lowering._revolved`). Each such node is listed in
 :attr:`~isocsg.openscad.LoweredModel.polygonal` (``"model.csg:12: hull(): ..."``). Without the
@@ -38,7 +39,7 @@ if TYPE_CHECKING:
 #: Lowers one child under a map: the lowering's walk, passed in (this module sits beside it).
 LowerChild = Callable[["CSGCall", "NDArray[np.float64] | None"], "Solid | None"]
 
-__all__ = ["polygonal_node"]
+__all__ = ["polygonal_node", "polygonal_minkowski2d"]
 
 
 def _faceted_children(lw: Any, call: CSGCall, m: NDArray[np.float64] | None, lower_child: LowerChild) -> list[Solid]:
@@ -137,3 +138,37 @@ def polygonal_node(lw: Any, call: CSGCall, m: NDArray[np.float64] | None, reason
         raise lw.fail(call, f"OpenSCAD's polygonal {call.name}: {exc}") from None
     lw.polygonal_nodes.append(f"{lw.where(call)}{call.name}(): {reason}")
     return result  # a minkowski's caller takes the maps' shift back
+
+
+def polygonal_minkowski2d(lw: Any, call: CSGCall, shape_of: Callable[..., Any]) -> Any:
+    """A 2D ``minkowski`` as OpenSCAD draws it: each child's shape with circles as OpenSCAD's
+    polygons (``shape_of``: :func:`~isocsg.openscad.flat.shape_of`, passed in), cut into convex
+    pieces, the hull of each pair of pieces' vertex sums, united; recorded in ``lw.polygonal_nodes``."""
+    import shapely
+    from shapely.geometry import MultiPoint
+
+    from ..csg.hull import MAX_MINKOWSKI_TERMS
+    from ..shapes2d import EMPTY, to_shapely
+    from ..shapes2d.region import convex_pieces, shape_from_region
+    from .parser import CSGCall
+
+    shapes = []
+    for child in call.children:
+        if "%" in child.modifiers or "*" in child.modifiers:
+            continue
+        shape = shape_of(lw, CSGCall("union", children=[child], line=child.line), polygonal=True)
+        if shape is not None and shape is not EMPTY:
+            shapes.append(shape)
+    if not shapes:
+        return EMPTY
+    region = to_shapely(shapes[0])
+    for shape in shapes[1:]:
+        a, b = convex_pieces(region), convex_pieces(to_shapely(shape))
+        if len(a) * len(b) > MAX_MINKOWSKI_TERMS:
+            lw.unsupported(call, f"a 2D Minkowski sum of {len(a)} by {len(b)} convex pieces is over "
+                                 f"MAX_MINKOWSKI_TERMS = {MAX_MINKOWSKI_TERMS}")
+            return None
+        region = shapely.union_all([MultiPoint((p[:, None, :] + q[None]).reshape(-1, 2)).convex_hull
+                                    for p in a for q in b])
+    lw.polygonal_nodes.append(f"{lw.where(call)}minkowski(): a 2D Minkowski sum has no exact form here")
+    return shape_from_region(region)
