@@ -15,9 +15,9 @@ OpenSCAD computes from them:
   parts). Two non-convex children are refused.
 
 A 2D ``minkowski`` becomes the union of the hulls of pairwise vertex sums of its children's
-convex pieces (:func:`polygonal_minkowski2d`). A ``rotate_extrude`` whose exact solid is refused (an ellipse off the axis, a torus under a
-non-uniform scale) becomes OpenSCAD's faceted solid likewise
-(:func:`isocsg.openscad.lowering._revolved`). Each such node is listed in
+convex pieces (:func:`polygonal_minkowski2d`). A ``rotate_extrude`` whose exact solid is refused
+(an ellipse off the axis, a torus under a non-uniform scale) becomes OpenSCAD's faceted solid
+likewise (:func:`isocsg.openscad.lowering._revolved`). Each such node is listed in
 :attr:`~isocsg.openscad.LoweredModel.polygonal` (``"model.csg:12: hull(): ..."``). Without the
 option those nodes stay refused with the reason, as the default.
 """
