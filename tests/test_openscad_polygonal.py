@@ -220,3 +220,15 @@ def test_a_2d_sum_of_a_rectangle_and_a_circle(a: float, b: float, r: float, fn: 
     model = _load(text)
     assert abs(volume(model.solid) - want) <= 1e-9 * want  # type: ignore[attr-defined]
     assert "minkowski()" in model.polygonal[0]  # type: ignore[attr-defined]
+
+
+def test_a_face_with_a_point_repeated_in_turn_has_no_area() -> None:
+    """OpenSCAD's export of generated polyhedra has faces such as ``[4, 7, 4]``: no area, dropped;
+    the L-shaped prism (non-convex: a mesh) keeps its volume."""
+    pts = [[0, 0, 0], [2, 0, 0], [2, 1, 0], [1, 1, 0], [1, 2, 0], [0, 2, 0]]
+    pts += [[x, y, 1] for x, y, _ in pts]
+    bottom, top = [0, 1, 2, 3, 4, 5], [11, 10, 9, 8, 7, 6]  # clockwise seen from outside
+    sides = [[k, k + 6, (k + 1) % 6 + 6, (k + 1) % 6] for k in range(6)]
+    faces = [bottom, top, *sides, [4, 7, 4], [3, 3, 9, 9]]
+    text = f"polyhedron(points = {pts}, faces = {faces}, convexity = 1);"
+    assert abs(volume(lower(parse_csg(text)).solid) - 3.0) < 1e-12  # type: ignore[attr-defined]
