@@ -8,7 +8,9 @@ convex hull for hulls, and manifold3d's ``minkowski_sum`` of the same polyhedra 
 from __future__ import annotations
 
 import math
+import shutil
 import warnings
+from pathlib import Path
 
 import manifold3d
 import numpy as np
@@ -232,3 +234,15 @@ def test_a_face_with_a_point_repeated_in_turn_has_no_area() -> None:
     faces = [bottom, top, *sides, [4, 7, 4], [3, 3, 9, 9]]
     text = f"polyhedron(points = {pts}, faces = {faces}, convexity = 1);"
     assert abs(volume(lower(parse_csg(text)).solid) - 3.0) < 1e-12  # type: ignore[attr-defined]
+
+
+@pytest.mark.skipif(shutil.which("openscad") is None, reason="the openscad program is not installed")
+def test_preview_is_false_as_in_a_render(tmp_path: Path) -> None:
+    """OpenSCAD's ``.csg`` export runs with ``$preview`` true, its STL export (a render) false; the
+    model read is the rendered one (a real model cut itself in half ``if ($preview)``)."""
+    from isocsg.openscad import read_openscad
+
+    scad = tmp_path / "m.scad"
+    scad.write_text("if ($preview) cube(1); else sphere(1);\n")
+    solid = read_openscad(scad).solid
+    assert abs(volume(solid, tol=1e-6) - 4 / 3 * math.pi) < 1e-5
