@@ -58,6 +58,11 @@ def register(subparsers: Any) -> argparse.ArgumentParser:
         help="OpenSCAD models: skip nodes without an exact equivalent (a hull of a sphere and a cube, SVG "
              "drawings, ...) and say how many",
     )
+    p.add_argument(
+        "--polygonal", action="store_true",
+        help="OpenSCAD models: make a hull or minkowski without an exact form OpenSCAD's own polygonal solid "
+             "(spheres, cylinders and circles at the model's $fn/$fa/$fs) instead of refusing it, and list them",
+    )
     add_common_render_options(p)
     p.set_defaults(func=run)
     return p
@@ -75,7 +80,7 @@ def run(args: argparse.Namespace) -> int:
         raise InvalidParameterError(f"--svg must name a .svg file, got {args.svg!r}")
     if args.svg is not None and Path(args.svg).is_dir():
         raise InvalidParameterError(f"--svg {args.svg!r} is a directory")
-    loaded = _load(args.scene, skip_unsupported=args.skip_unsupported)
+    loaded = _load(args.scene, skip_unsupported=args.skip_unsupported, polygonal=args.polygonal)
     scene = apply_overrides(loaded, size=args.size, contours=args.contours)
     if gltf and scene.render.mode != "isoluminance":
         raise InvalidParameterError(
@@ -115,14 +120,16 @@ def run(args: argparse.Namespace) -> int:
     return 0
 
 
-def _load(path: str, *, skip_unsupported: bool = False) -> Any:
+def _load(path: str, *, skip_unsupported: bool = False, polygonal: bool = False) -> Any:
     """A scene file, or an OpenSCAD model in a framed scene."""
     if Path(path).suffix.lower() not in OPENSCAD_SUFFIXES:
         return load_scene_argument(path)
     from ..openscad import read_openscad
     from ..scene.framing import framed_scene
 
-    model = read_openscad(path, skip_unsupported=skip_unsupported)
+    model = read_openscad(path, skip_unsupported=skip_unsupported, polygonal=polygonal)
+    for line in model.polygonal:  # each node made OpenSCAD's polygonal solid, with its line and why
+        print(f"isocsg render: polygonal {line}", file=sys.stderr)
     if model.skipped:
         counts = ", ".join(f"{n} {name}" for name, n in sorted(model.skipped.items()))
         skipped = sum(model.skipped.values())

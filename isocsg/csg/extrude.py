@@ -61,8 +61,11 @@ def _cross(o: NDArray[np.float64], a: NDArray[np.float64], b: NDArray[np.float64
 
 
 def _convex_at(pts: NDArray[np.float64], prev: int, here: int, nxt: int, scale: float) -> bool:
-    """A counter-clockwise corner that turns left or goes straight (within rounding)."""
-    return _cross(pts[prev], pts[here], pts[nxt]) >= -1e-12 * scale * scale
+    """A counter-clockwise corner that turns left or goes straight (within rounding). The rounding
+    is relative to the corner's own edges, not the polygon's size: a merged piece much smaller than
+    its polygon must still pass :class:`~isocsg.shapes2d.ConvexPolygon`'s test at its own size."""
+    edges = float(np.linalg.norm(pts[here] - pts[prev]) * np.linalg.norm(pts[nxt] - pts[here]))
+    return _cross(pts[prev], pts[here], pts[nxt]) >= -1e-12 * min(scale * scale, edges)
 
 
 def convex_partition(polygon: Any, *, name: str = "polygon") -> list[NDArray[np.float64]]:

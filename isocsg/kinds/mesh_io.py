@@ -80,7 +80,8 @@ def polygon_mesh(points: ArrayLike, faces: list[list[int]], *, clockwise: bool =
     ----------
     points : array_like, shape (n, 3)
     faces : list of list of int
-        Polygons of at least 3 point indices; faces of fewer are dropped.
+        Polygons of at least 3 point indices; faces of fewer distinct ones (after a point repeated
+        in turn is taken once) are dropped: they have no area.
     clockwise : bool
         The faces are clockwise seen from outside (OpenSCAD's order). A mesh whose faces all wind
         the other way (a negative volume) is turned over, as OpenSCAD accepts either.
@@ -95,8 +96,9 @@ def polygon_mesh(points: ArrayLike, faces: list[list[int]], *, clockwise: bool =
     P = np.asarray(points, dtype=np.float64)
     tris: list[tuple[int, int, int]] = []
     for f in faces:
-        if len(f) < 3:
-            continue
+        f = [k for i, k in enumerate(f) if k != f[i - 1]]  # a point repeated in turn adds no side
+        if len(set(f)) < 3:
+            continue  # no area (OpenSCAD's export has faces such as [a, b, a])
         if len(f) == 3:
             tris.append((f[0], f[1], f[2]))
             continue

@@ -29,6 +29,7 @@ __all__ = [
     "save_openscad",
     "dumps_openscad",
     "OpenSCADSkipWarning",
+    "OpenSCADPolygonalWarning",
     "LoweredModel",
     "CSGCall",
     "parse_csg",
@@ -73,11 +74,13 @@ def _read_text(p: Path) -> str:
         ) from None
 
 
-def read_openscad(path: str | os.PathLike[str], *, skip_unsupported: bool = False) -> LoweredModel:
+def read_openscad(path: str | os.PathLike[str], *, skip_unsupported: bool = False,
+                  polygonal: bool = False) -> LoweredModel:
     """Read an OpenSCAD model: the solid and the counts of skipped nodes.
 
     Like :func:`load_openscad`, but returns a :class:`LoweredModel`
-    (``.solid``, ``.skipped``) and issues no warning.
+    (``.solid``, ``.skipped``, ``.polygonal``: the nodes made OpenSCAD's polygonal solid) and
+    issues no warning.
     """
     p = Path(path)
     suffix = p.suffix.lower()
@@ -103,10 +106,10 @@ def read_openscad(path: str | os.PathLike[str], *, skip_unsupported: bool = Fals
             raise MissingDependencyError(f"{exc}: beyond the plain subset, {p} needs the openscad program, "
                                          f"which was not found: {_INSTALL}") from None
         raise
-    return lower(calls, source=str(p), skip_unsupported=skip_unsupported)
+    return lower(calls, source=str(p), skip_unsupported=skip_unsupported, polygonal=polygonal)
 
 
-def load_openscad(path: str | os.PathLike[str], *, skip_unsupported: bool = False) -> Solid:
+def load_openscad(path: str | os.PathLike[str], *, skip_unsupported: bool = False, polygonal: bool = False) -> Solid:
     """Read an OpenSCAD model (``.csg``, or ``.scad`` through ``openscad``) as an exact solid.
 
     ``cube``, ``sphere``, ``cylinder`` and convex ``polyhedron`` become exact
@@ -130,6 +133,13 @@ def load_openscad(path: str | os.PathLike[str], *, skip_unsupported: bool = Fals
         ``rotate_extrude``, ...) instead of raising; an
         :class:`OpenSCADSkipWarning` then reports how many of each were
         skipped (:func:`read_openscad` returns the counts instead).
+    polygonal : bool, default False
+        Opt-in: a ``hull`` or ``minkowski`` node without an exact form (a sphere with a
+        cylinder off its axis, a sum with a difference) becomes OpenSCAD's own polygonal
+        solid, its children's spheres, cylinders and circles at their ``$fn``/``$fa``/``$fs``
+        (:mod:`isocsg.openscad.polygonal`), instead of raising; an
+        :class:`OpenSCADPolygonalWarning` lists those nodes (:func:`read_openscad` returns
+        them in ``.polygonal``). Such a node's volume is OpenSCAD's, not the exact one.
 
     Returns
     -------
@@ -155,19 +165,35 @@ def load_openscad(path: str | os.PathLike[str], *, skip_unsupported: bool = Fals
     >>> round(volume(load_openscad(path)), 9) == round(2 * 2 * 1 - 3.141592653589793 * 0.5**2 * 1, 9)
     True
     """
-    model = read_openscad(path, skip_unsupported=skip_unsupported)
+    model = read_openscad(path, skip_unsupported=skip_unsupported, polygonal=polygonal)
     _warn(model)
     return model.solid
 
 
-def loads_openscad(text: str, *, source: str | None = None, skip_unsupported: bool = False) -> Solid:
+def loads_openscad(text: str, *, source: str | None = None, skip_unsupported: bool = False,
+                   polygonal: bool = False) -> Solid:
     """Read ``.csg`` text as a solid (see :func:`load_openscad`)."""
-    model = lower(parse_csg(text, source=source), source=source, skip_unsupported=skip_unsupported)
+    model = lower(parse_csg(text, source=source), source=source, skip_unsupported=skip_unsupported,
+                  polygonal=polygonal)
     _warn(model)
     return model.solid
+
+
+class OpenSCADPolygonalWarning(UserWarning):
+    """Issued by :func:`load_openscad` with ``polygonal=True`` when nodes were made OpenSCAD's
+    polygonal solid; ``nodes`` lists them (``"model.csg:12: hull(): ..."``)."""
+
+    def __init__(self, message: str, nodes: tuple[str, ...]) -> None:
+        super().__init__(message)
+        self.nodes = nodes
 
 
 def _warn(model: LoweredModel) -> None:
+    if model.polygonal:
+        n = len(model.polygonal)
+        warnings.warn(OpenSCADPolygonalWarning(
+            f"{n} node{'s' if n > 1 else ''} without an exact form made OpenSCAD's polygonal solid: "
+            + "; ".join(model.polygonal), model.polygonal), stacklevel=3)
     if model.skipped:
         total = sum(model.skipped.values())
         counts = ", ".join(f"{n} {name}" for name, n in sorted(model.skipped.items()))

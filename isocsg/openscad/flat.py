@@ -292,6 +292,9 @@ def _kept(lw: _Lowerer, call: CSGCall) -> list[CSGCall]:
             warnings.warn(MixedDimensionsWarning(
                 f"{lw.where(c)}ignoring the 3D object {c.name}() in a 2D operation, as OpenSCAD does"), stacklevel=2)
             continue
+        if c.name == "minkowski" and lw.polygonal:
+            out.append(c)  # OpenSCAD's polygonal sum (isocsg.openscad.polygonal)
+            continue
         if c.name not in NODES_2D and c.name not in _PASS and c.name not in ("import", "projection", "resize"):
             lw.unsupported(c, lw.reason(c.name, "2D"))
             continue
@@ -311,6 +314,10 @@ def shape_of(lw: _Lowerer, call: CSGCall, polygonal: bool = False) -> Any:
             child = kids[len(done)]
             if child.name == "projection":  # 3D children: lowered as solids, then projected
                 done.append(project(lw, child))
+            elif child.name == "minkowski":  # only kept with the polygonal option (see _kept)
+                from .polygonal import polygonal_minkowski2d
+
+                done.append(polygonal_minkowski2d(lw, child, shape_of))
             else:
                 stack.append((child, _kept(lw, child), []))
             continue
@@ -375,7 +382,7 @@ def extrude(lw: _Lowerer, call: CSGCall) -> Any:
         return None
     # The old form names its drawing itself: linear_extrude(file = "x.dxf", layer = ...). A per-axis
     # scale of a disc has no exact isocsg form: OpenSCAD's own polygonal circles then.
-    polygonal = scale_v[0] != scale_v[1]
+    polygonal = scale_v[0] != scale_v[1] or lw.faceted
     shape = import_drawing(lw, call) if "file" in call.kwargs else shape_of(lw, call, polygonal=polygonal)
     if shape is None or shape is EMPTY:
         return None

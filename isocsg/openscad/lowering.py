@@ -107,18 +107,26 @@ class LoweredModel:
         The colour ``color()`` gives each leaf of :attr:`solid` (in ``leaves()`` order; the
         innermost ``color`` wins, as in OpenSCAD), or None; empty when nothing is coloured. Pass
         it to :class:`~isocsg.SceneObject` to draw the model in its colours.
+    polygonal : tuple of str
+        One line per ``hull`` or ``minkowski`` node made OpenSCAD's own polygonal solid because
+        it has no exact form (only with ``polygonal=True``; :mod:`isocsg.openscad.polygonal`):
+        ``"model.csg:12: hull(): a hull of Cylinder, Sphere ..."``.
     """
 
     solid: Solid
     skipped: dict[str, int]
     left_out: tuple[str, ...] = ()
     leaf_colors: tuple[tuple[float, float, float] | None, ...] = ()
+    polygonal: tuple[str, ...] = ()
 
 
 class _Lowerer:
-    def __init__(self, source: str | None, skip_unsupported: bool) -> None:
+    def __init__(self, source: str | None, skip_unsupported: bool, polygonal: bool = False) -> None:
         self.source = source
         self.skip = skip_unsupported
+        self.polygonal = polygonal  # a hull or minkowski without an exact form: OpenSCAD's polygons
+        self.faceted = False  # lowering such a node's children: round leaves as OpenSCAD's polygons
+        self.polygonal_nodes: list[str] = []
         self.skipped: Counter[str] = Counter()
         self.left_out: list[str] = []
         self.colors: dict[int, tuple[float, float, float]] = {}  # by id() of a leaf
@@ -213,6 +221,16 @@ class _Lowerer:
         except InvalidGeometryError as exc:
             raise self.fail(call, str(exc)) from None
 
+    def fragments(self, call: CSGCall, r: float) -> int | None:
+        """OpenSCAD's segments for a round leaf of radius ``r`` while :attr:`faceted`, else None."""
+        if not self.faceted:
+            return None
+        from ..shapes2d import fragments
+
+        fn, fs, fa = (self.number(call, k, call.kwargs.get(k, d))
+                      for k, d in (("$fn", 0.0), ("$fs", 2.0), ("$fa", 12.0)))
+        return fragments(r, max(fn, 0.0), max(fs, 0.01), max(fa, 0.01))
+
     # ------------------------------------------------------------------ 3D leaves
 
     def cube(self, call: CSGCall) -> Box | None:
@@ -230,7 +248,7 @@ class _Lowerer:
         r = self.number(call, "r", 1.0 if r is None else r)
         if r <= 0:
             return None
-        n = polygonal_sides(call)
+        n = polygonal_sides(call) or self.fragments(call, r)
         if n is not None:  # OpenSCAD's polyhedral sphere
             return self.make(call, ConvexPolyhedron, sphere_points(n, r))
         return self.make(call, Sphere, (0.0, 0.0, 0.0), r)
@@ -252,7 +270,7 @@ class _Lowerer:
         if r1 < 0 or r2 < 0:
             raise self.fail(call, f"r1 and r2 must be >= 0, got {r1:g} and {r2:g}")
         zc = 0.0 if center else h / 2
-        n = polygonal_sides(call)
+        n = polygonal_sides(call) or self.fragments(call, max(r1, r2))
         if n is not None:  # OpenSCAD's prism, pyramid or frustum of n sides
             return self.make(call, ConvexPolyhedron, cylinder_points(n, r1, r2, zc - h / 2, zc + h / 2))
         # OpenSCAD's r1 is at the bottom (z = 0); the truncus' r1 is at center + axis / 2 (the top).
@@ -454,7 +472,8 @@ def _combine(name: str, parts: list[Solid | None]) -> Solid | None:
     return Union(*solids) if len(solids) > 1 else solids[0]
 
 
-def lower(calls: list[CSGCall], *, source: str | None = None, skip_unsupported: bool = False) -> LoweredModel:
+def lower(calls: list[CSGCall], *, source: str | None = None, skip_unsupported: bool = False,
+          polygonal: bool = False) -> LoweredModel:
     """Lower parsed ``.csg`` statements to one isocsg solid.
 
     Parameters
@@ -467,6 +486,10 @@ def lower(calls: list[CSGCall], *, source: str | None = None, skip_unsupported: 
     skip_unsupported : bool, default False
         Skip unsupported nodes (counted in :attr:`LoweredModel.skipped`)
         instead of raising.
+    polygonal : bool, default False
+        Make a ``hull`` or ``minkowski`` without an exact form OpenSCAD's own polygonal solid
+        (:mod:`isocsg.openscad.polygonal`; listed in :attr:`LoweredModel.polygonal`) instead of
+        refusing it.
 
     Returns
     -------
@@ -479,20 +502,22 @@ def lower(calls: list[CSGCall], *, source: str | None = None, skip_unsupported: 
     OpenSCADError
         On malformed arguments, or when nothing of the model is left.
     """
-    lw = _Lowerer(source, skip_unsupported)
+    lw = _Lowerer(source, skip_unsupported, polygonal)
     root = CSGCall("union", children=_root_modified(calls) or list(calls), line=1)
     result = _run(lw, root)
     if result is None or result is _DROP:
         what = f" (skipped: {_counts(lw.skipped)})" if lw.skipped else ""
         raise OpenSCADError(f"{source or 'model'}: the model is empty: nothing of it has a volume{what}")
-    return LoweredModel(result, dict(lw.skipped), tuple(lw.left_out), _leaf_colors(lw, result))
+    return LoweredModel(result, dict(lw.skipped), tuple(lw.left_out), _leaf_colors(lw, result),
+                        tuple(lw.polygonal_nodes))
 
 
-def _run(lw: _Lowerer, root: CSGCall) -> Any:
-    """The solid of ``root`` (a union of its children; None or ``_DROP`` when nothing is left)."""
+def _run(lw: _Lowerer, root: CSGCall, m0: NDArray[np.float64] | None = None) -> Any:
+    """The solid of ``root`` (a union of its children; None or ``_DROP`` when nothing is left),
+    under the map ``m0`` when given."""
     # Frames: (call, the map accumulated from the root or None, results of the children so far).
     # Maps compose on the way down and are applied once per leaf, however deep they nest.
-    stack: list[tuple[CSGCall, NDArray[np.float64] | None, list[Any]]] = [(root, None, [])]
+    stack: list[tuple[CSGCall, NDArray[np.float64] | None, list[Any]]] = [(root, m0, [])]
     result: Any = None
     while stack:
         call, m, done = stack[-1]
@@ -518,8 +543,8 @@ def _color(lw: _Lowerer, call: CSGCall, solid: Any) -> None:
     if not isinstance(solid, Solid):
         return
     value = lw.arg(call, "c", 0, None)
-    if value is None:
-        return
+    if value is None or (isinstance(value, list) and any(isinstance(v, (int, float)) and v < 0 for v in value[:3])):
+        return  # OpenSCAD exports an unset colour (an unknown name, undef) as [-1, -1, -1, 1]: no colour
     try:
         rgb = parse_color(value, name="color")
     except InvalidParameterError as exc:
@@ -569,6 +594,27 @@ def _placed(lw: _Lowerer, call: CSGCall, solid: Solid | None, m: NDArray[np.floa
     return _transform(lw, call, solid, m)
 
 
+def _revolved(lw: _Lowerer, call: CSGCall, m: NDArray[np.float64] | None) -> Solid | None:
+    """A ``rotate_extrude`` under its map; with ``polygonal``, where the exact solid is refused (an
+    ellipse off the axis, a torus under a non-uniform scale), OpenSCAD's faceted one."""
+    if not lw.polygonal or lw.faceted:
+        return _placed(lw, call, revolve(lw, call), m)
+    skip, lw.skip = lw.skip, False
+    try:
+        return _placed(lw, call, revolve(lw, call), m)
+    except OpenSCADError as exc:
+        reason = str(exc).removeprefix(lw.where(call)).split("; load_openscad(")[0]
+    finally:
+        lw.skip = skip
+    lw.faceted = True
+    try:
+        solid = _placed(lw, call, revolve(lw, call), m)
+    finally:
+        lw.faceted = False
+    lw.polygonal_nodes.append(f"{lw.where(call)}rotate_extrude(): {reason}")
+    return solid
+
+
 def _drawing_file(lw: _Lowerer, call: CSGCall) -> bool:
     """An ``import`` of a 2D drawing (DXF, SVG): a 2D object."""
     value = lw.arg(call, "file", 0, None)
@@ -609,7 +655,7 @@ def _enter(lw: _Lowerer, call: CSGCall, m: NDArray[np.float64] | None) -> tuple[
     if name == "linear_extrude":
         return _placed(lw, call, extrude(lw, call), m), m, False
     if name == "rotate_extrude":
-        return _placed(lw, call, revolve(lw, call), m), m, False
+        return _revolved(lw, call, m), m, False
     if name in _LEAVES_3D:
         return _placed(lw, call, getattr(lw, "import_file" if name == "import" else name)(call), m), m, False
     lw.unsupported(call, "unknown module")
@@ -625,7 +671,7 @@ def _leave(lw: _Lowerer, call: CSGCall, m: NDArray[np.float64] | None, parts: li
     if name in ("difference", "intersection"):
         return _combine(name, kept)
     if name == "hull":
-        return _hull(lw, call, kept)
+        return _hull(lw, call, m, kept)
     if name == "minkowski":
         return _minkowski(lw, call, m, kept)
     if name == "resize":
@@ -696,12 +742,12 @@ def _hull_of(pts: NDArray[np.float64] | None) -> Solid | None:
     return ConvexPolyhedron(hull.hull_vertices)  # its vertices alone: interior corners are not kept
 
 
-def _hull(lw: _Lowerer, call: CSGCall, parts: list[Solid | None]) -> Solid | None:
+def _hull(lw: _Lowerer, call: CSGCall, m: NDArray[np.float64] | None, parts: list[Solid | None]) -> Solid | None:
     """``hull()`` of the children's solids, exactly (:func:`~isocsg.csg.hull.hull_pieces`); the
     maps on the children are affine, and the hull of their images is the image of their hull."""
     from ..csg.hull import hull_pieces
 
-    return _exactly(lw, call, hull_pieces, [p for p in parts if p is not None])
+    return _exactly(lw, call, hull_pieces, [p for p in parts if p is not None], m)
 
 
 def _minkowski(lw: _Lowerer, call: CSGCall, m: NDArray[np.float64] | None, parts: list[Solid | None]) -> Solid | None:
@@ -713,20 +759,32 @@ def _minkowski(lw: _Lowerer, call: CSGCall, m: NDArray[np.float64] | None, parts
     solids = [p for p in parts if p is not None]
     if len(solids) < 2:
         return solids[0] if solids else None
-    result = _exactly(lw, call, minkowski_pieces, solids)
+    result = _exactly(lw, call, minkowski_pieces, solids, m)
     if result is None or m is None or not np.any(m[:3, 3]):
         return result
     return result.translate(-(len(solids) - 1) * m[:3, 3])
 
 
-def _exactly(lw: _Lowerer, call: CSGCall, build: Any, solids: list[Solid]) -> Solid | None:
-    """The union of ``build(*solids)``'s pieces; None when flat (no volume, as in OpenSCAD)."""
+def _lower_child(lw: _Lowerer, child: CSGCall, m: NDArray[np.float64] | None) -> Solid | None:
+    value = _run(lw, CSGCall("union", children=[child], line=child.line), m)
+    return None if value is _DROP else value  # type: ignore[no-any-return]
+
+
+def _exactly(lw: _Lowerer, call: CSGCall, build: Any, solids: list[Solid],
+             m: NDArray[np.float64] | None) -> Solid | None:
+    """The union of ``build(*solids)``'s pieces; None when flat (no volume, as in OpenSCAD).
+    Without an exact form: refused, or OpenSCAD's polygonal solid when asked for."""
     if not solids:
         return None
     try:
         pieces = build(*solids)
     except NotExactError as exc:
-        lw.unsupported(call, str(exc).removeprefix(f"{call.name}: "))
+        reason = str(exc).removeprefix(f"{call.name}: ")
+        if lw.polygonal and not lw.faceted:
+            from .polygonal import polygonal_node
+
+            return polygonal_node(lw, call, m, reason, lambda child, mm: _lower_child(lw, child, mm))
+        lw.unsupported(call, reason)
         return None
     except InvalidGeometryError as exc:
         raise lw.fail(call, str(exc)) from None

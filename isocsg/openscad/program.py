@@ -56,9 +56,11 @@ def _run(args: list[str], source: str, timeout: float) -> None:
 
 
 def scad_to_csg(path: str | os.PathLike[str], *, timeout: float = OPENSCAD_TIMEOUT) -> str:
-    """The ``.csg`` text that ``openscad -o model.csg model.scad`` exports.
+    """The ``.csg`` text that ``openscad -o model.csg -D '$preview=false' model.scad`` exports.
 
-    Runs in a temporary directory, which is removed afterwards.
+    ``$preview`` is false as in OpenSCAD's render and STL export (its ``.csg`` export alone runs
+    as a preview): a model's ``if ($preview)`` cut-away or helper is not part of the solid. Runs
+    in a temporary directory, which is removed afterwards.
 
     Raises
     ------
@@ -72,7 +74,8 @@ def scad_to_csg(path: str | os.PathLike[str], *, timeout: float = OPENSCAD_TIMEO
         raise OpenSCADError(f"{p}: not a file")
     with tempfile.TemporaryDirectory(prefix="isocsg-openscad-") as tmp:
         out = Path(tmp) / "model.csg"
-        _run(["-o", str(out), str(p.resolve())], str(p), timeout)
+        # the .csg export runs as a preview ($preview true); the model is what a render exports
+        _run(["-o", str(out), "-D", "$preview=false", str(p.resolve())], str(p), timeout)
         if not out.is_file():
             raise OpenSCADError(f"{p}: openscad wrote no .csg file")
         return out.read_text(encoding="utf-8", errors="replace")

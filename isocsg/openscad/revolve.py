@@ -46,15 +46,22 @@ def revolve(lw: Any, call: CSGCall) -> Any:
         return None  # OpenSCAD makes nothing
     modern = "start" in call.kwargs
     start = lw.number(call, "start", call.kwargs["start"]) if modern else (180.0 if angle == 360.0 else 0.0)
+    # The old form names its drawing itself: rotate_extrude(file = "x.dxf", layer = ...).
+    shape = import_drawing(lw, call) if "file" in call.kwargs else shape_of(lw, call, polygonal=lw.faceted)
+    if shape is None or shape is EMPTY:
+        return None
     sides = polygonal_sides(call)
+    if sides is None and lw.faceted:  # OpenSCAD's sections from the profile's reach (rotateextrude.cc)
+        from ..shapes2d import bounds, fragments
+
+        x0, _, x1, _ = bounds(shape)
+        sides = fragments(max(abs(x0), abs(x1)), *(max(lw.number(call, k, call.kwargs.get(k, d)), low)
+                                                    for k, d, low in (("$fn", 0.0, 0.0), ("$fs", 2.0, 0.01),
+                                                                      ("$fa", 12.0, 0.01))))
     segments = None
     if sides is not None:
         turns = sides * abs(angle) / 360.0
         segments = max(math.ceil(turns) if modern else int(turns), 1)
-    # The old form names its drawing itself: rotate_extrude(file = "x.dxf", layer = ...).
-    shape = import_drawing(lw, call) if "file" in call.kwargs else shape_of(lw, call)
-    if shape is None or shape is EMPTY:
-        return None
     try:
         return rotate_extrude(shape, angle, start=start, segments=segments)
     except InvalidGeometryError as exc:
