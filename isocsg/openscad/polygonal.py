@@ -75,10 +75,17 @@ def _arrays(manifold: Any) -> tuple[NDArray[np.float64], NDArray[np.int64]]:
     return np.asarray(mesh.vert_properties, dtype=np.float64)[:, :3], np.asarray(mesh.tri_verts, dtype=np.int64)
 
 
-def _convex(solid: Solid) -> bool:
-    from ..kinds import Box
+def _corners(solid: Solid) -> NDArray[np.float64] | None:
+    """A convex flat-faced leaf's corners (its :class:`~isocsg.kinds.forms.PointHull`), else None."""
+    from ..kinds.base import Primitive
+    from ..kinds.forms import PointHull
 
-    return isinstance(solid, (ConvexPolyhedron, Box))
+    form = solid.exact_form() if isinstance(solid, Primitive) else None
+    return np.asarray(form.vertices, dtype=np.float64) if isinstance(form, PointHull) else None
+
+
+def _convex(solid: Solid) -> bool:
+    return _corners(solid) is not None
 
 
 def _hull(solids: list[Solid]) -> Solid | None:
@@ -105,8 +112,8 @@ def _minkowski(solids: list[Solid]) -> Solid | None:
         raise NotExactError(f"{len(others)} children are not convex (a polygonal sum takes at most one)")
     points = np.zeros((1, 3))
     for s in solids:
-        if _convex(s):
-            corners = np.asarray(s.hull_points(), dtype=np.float64)  # type: ignore[attr-defined]
+        corners = _corners(s)
+        if corners is not None:
             points = (points[:, None, :] + corners[None]).reshape(-1, 3)
             if len(points) > 64:  # only the sum's corners matter
                 points = np.asarray(ConvexPolyhedron(points).hull_vertices, dtype=np.float64)
