@@ -41,7 +41,7 @@ from ..lighting.lights import PointLight
 from ..lighting.luminaire import PhotometricLight
 from .lambert import _prepare, edge_terms
 from .occluders import ConvexPiece, occluder_list, shadow_pieces
-from .tiles import CLASS_EXACT, CLASS_LIT, CLASS_UMBRA, bounding_box, classify_receivers, lit_illuminance
+from .tiles import bounding_box, class_indices, classify_receivers, lit_illuminance
 from .visibility import UMBRA_TOL, PieceArrays, SourceArrays, blockers_single, visible_illuminance
 
 
@@ -266,13 +266,12 @@ def _area_sources(
     lit_parts, exact_parts, tile_of, t_off, t_idx = [], [], [], [0], []
     for idx, own_idx in zip(groups, own_ids):
         rc = classify_receivers(p if len(groups) == 1 else p[idx], sources, [pieces[k] for k in own_idx], scale)
-        lit_parts.append(idx[rc.cls == CLASS_LIT])
-        state[idx[rc.cls == CLASS_UMBRA]] = UMBRA
-        ex = rc.cls == CLASS_EXACT
-        if not np.any(ex):
+        lit, umbra, ex, tiles_used, local = class_indices(rc.cls, rc.tile, len(rc.needed))
+        lit_parts.append(idx[lit] if len(groups) > 1 else lit)
+        state[idx[umbra]] = UMBRA
+        if not len(ex):
             continue
-        tiles_used, local = np.unique(rc.tile[ex], return_inverse=True)
-        exact_parts.append(idx[ex])
+        exact_parts.append(idx[ex] if len(groups) > 1 else ex)
         tile_of.append(local + len(t_off) - 1)
         for t in tiles_used:
             t_idx.extend(own_idx[rc.needed[t]].tolist())

@@ -49,12 +49,12 @@ import numba
 import numpy as np
 from numpy.typing import NDArray
 
-from .lambert import edge_term_nb
+from .lambert import edge_term_fast
 from .visibility import SourceArrays, _area2, _lambert2, _pool, _source_polygon, _threads
 
 __all__ = [
     "ReceiverClasses", "CLASS_LIT", "CLASS_UMBRA", "CLASS_EXACT", "classify_receivers", "lit_illuminance",
-    "bounding_box",
+    "bounding_box", "class_indices",
 ]
 
 CLASS_LIT = 0
@@ -394,6 +394,49 @@ def classify_receivers(
 
 
 @numba.njit(cache=True)
+def class_indices(cls, tile, ntiles):
+    """(lit, umbra, exact) receiver indices, the tiles the exact ones use (ascending) and each one's place in them.
+
+    One pass over the receivers: what ``np.nonzero`` per class and ``np.unique(tile[exact],
+    return_inverse=True)`` give, without the sort.
+    """
+    n = cls.shape[0]
+    counts = np.zeros(3, dtype=np.int64)
+    for i in range(n):
+        counts[cls[i]] += 1
+    lit = np.empty(counts[CLASS_LIT], dtype=np.int64)
+    umbra = np.empty(counts[CLASS_UMBRA], dtype=np.int64)
+    exact = np.empty(counts[CLASS_EXACT], dtype=np.int64)
+    place = np.full(ntiles, -1, dtype=np.int64)
+    k0 = k1 = k2 = 0
+    for i in range(n):
+        c = cls[i]
+        if c == CLASS_LIT:
+            lit[k0] = i
+            k0 += 1
+        elif c == CLASS_UMBRA:
+            umbra[k2] = i
+            k2 += 1
+        else:
+            exact[k1] = i
+            k1 += 1
+            place[tile[i]] = 0
+    used = 0
+    for t in range(ntiles):
+        if place[t] == 0:
+            place[t] = used
+            used += 1
+    tiles_used = np.empty(used, dtype=np.int64)
+    local = np.empty(k1, dtype=np.int64)
+    for t in range(ntiles):
+        if place[t] >= 0:
+            tiles_used[place[t]] = t
+    for k in range(k1):
+        local[k] = place[tile[exact[k]]]
+    return lit, umbra, exact, tiles_used, local
+
+
+@numba.njit(cache=True)
 def _whole_sources(s_verts, s_off, s_u, s_w, s_q0):
     """Each source polygon's vertices as the exact path rebuilds them (2D source frame, back to 3D), and its area.
 
@@ -422,59 +465,100 @@ def _whole_sources(s_verts, s_off, s_u, s_w, s_q0):
     return R, area
 
 
-@numba.njit(cache=True, nogil=True)
+LIT_BLOCK = 512  # lit receivers evaluated together, one pass over them per source edge
+
+
+@numba.njit(cache=True, error_model="numpy")
+def _edge_sums(px, py, pz, nx, ny, nz, m, R, a0, a1, val):
+    """``val[i]`` = the edge sum of polygon ``R[a0:a1]`` at receivers ``i < m``: a loop over receivers per edge
+    (it vectorises)."""
+    for i in range(m):
+        val[i] = 0.0
+    for k in range(a0, a1):
+        k1 = k + 1 if k + 1 < a1 else a0
+        qax, qay, qaz = R[k, 0], R[k, 1], R[k, 2]
+        qbx, qby, qbz = R[k1, 0], R[k1, 1], R[k1, 2]
+        for i in range(m):
+            val[i] += edge_term_fast(px[i], py[i], pz[i], nx[i], ny[i], nz[i], qax, qay, qaz, qbx, qby, qbz)
+
+
+@numba.njit(cache=True, nogil=True, error_model="numpy")
 def _lit_kernel(P, NR, idx, s_verts, s_off, s_normal, s_u, s_w, s_q0, s_L, s_group, ngroups, scale,
-                R, s_area, vmax, nchunk, c0, c1, E, state):
+                R, s_area, vmax, b0, b1, E, state):
     """The exact path's arithmetic for receivers ``idx`` that see every source polygon whole (or not at all).
 
-    ``NR`` holds one normal a receiver or a single row for all.
+    Blocks ``b0 .. b1`` of ``LIT_BLOCK`` receivers; ``NR`` holds one normal a receiver or a single row for all.
+    A source polygon wholly in front of a receiving plane takes the vectorised edge sums; one cut by it
+    takes the exact path's own clipping.
     """
     n = idx.shape[0]
     ns = s_L.shape[0]
     one = NR.shape[0] == 1
     P2 = np.empty((vmax, 2))
-    gstat = np.empty(ngroups, dtype=np.int64)
-    for c in range(c0, c1):
-        for ii in range(c, n, nchunk):
-            i = idx[ii]
-            p = P[i]
-            nr = NR[0] if one else NR[i]
+    px = np.empty(LIT_BLOCK)
+    py = np.empty(LIT_BLOCK)
+    pz = np.empty(LIT_BLOCK)
+    nx = np.empty(LIT_BLOCK)
+    ny = np.empty(LIT_BLOCK)
+    nz = np.empty(LIT_BLOCK)
+    val = np.empty(LIT_BLOCK)
+    e = np.empty(LIT_BLOCK)
+    whole = np.empty(LIT_BLOCK, dtype=np.bool_)
+    seen = np.empty((LIT_BLOCK, max(ngroups, 1)), dtype=np.bool_)
+    for b in range(b0, b1):
+        i0 = b * LIT_BLOCK
+        m = min(n, i0 + LIT_BLOCK) - i0
+        for ii in range(m):
+            i = idx[i0 + ii]
+            px[ii] = P[i, 0]
+            py[ii] = P[i, 1]
+            pz[ii] = P[i, 2]
+            r = 0 if one else i
+            nx[ii] = NR[r, 0]
+            ny[ii] = NR[r, 1]
+            nz[ii] = NR[r, 2]
+            e[ii] = 0.0
             for g in range(ngroups):
-                gstat[g] = -1
-            e = 0.0
-            for s in range(ns):
-                q0 = s_q0[s]
-                N = s_normal[s]
-                h = N[0] * (p[0] - q0[0]) + N[1] * (p[1] - q0[1]) + N[2] * (p[2] - q0[2])
+                seen[ii, g] = False
+        for s in range(ns):
+            q0 = s_q0[s]
+            N = s_normal[s]
+            a0 = s_off[s]
+            a1 = s_off[s + 1]
+            for ii in range(m):
+                whole[ii] = True
+            for k in range(a0, a1):
+                qa = s_verts[k]
+                for ii in range(m):
+                    d = nx[ii] * (qa[0] - px[ii]) + ny[ii] * (qa[1] - py[ii]) + nz[ii] * (qa[2] - pz[ii])
+                    whole[ii] = whole[ii] and d >= 0.0
+            usable = a1 - a0 >= 3 and s_area[s] > 0.0
+            if usable:
+                _edge_sums(px, py, pz, nx, ny, nz, m, R, a0, a1, val)
+            g = s_group[s]
+            for ii in range(m):
+                h = N[0] * (px[ii] - q0[0]) + N[1] * (py[ii] - q0[1]) + N[2] * (pz[ii] - q0[2])
                 if h <= 1e-14 * scale:  # as _source_polygon: in or behind the source plane
                     continue
-                a0 = s_off[s]
-                a1 = s_off[s + 1]
-                whole = True
-                for k in range(a0, a1):
-                    qa = s_verts[k]
-                    if nr[0] * (qa[0] - p[0]) + nr[1] * (qa[1] - p[1]) + nr[2] * (qa[2] - p[2]) < 0.0:
-                        whole = False
-                        break
-                if whole:
-                    if a1 - a0 < 3 or s_area[s] <= 0.0:
+                if whole[ii]:
+                    if not usable:
                         continue
-                    val = 0.0
-                    for k in range(a0, a1):
-                        k1 = k + 1 if k + 1 < a1 else a0
-                        val += edge_term_nb(p[0], p[1], p[2], nr[0], nr[1], nr[2], R[k, 0], R[k, 1], R[k, 2],
-                                            R[k1, 0], R[k1, 1], R[k1, 2])
+                    v = val[ii]
                 else:  # cut by the receiving plane: the exact path's own clipping
-                    n2, h2, A0 = _source_polygon(p, nr, s, s_verts, s_off, s_normal, s_u, s_w, s_q0, scale, P2)
+                    i = idx[i0 + ii]
+                    nr = NR[0] if one else NR[i]
+                    n2, h2, A0 = _source_polygon(P[i], nr, s, s_verts, s_off, s_normal, s_u, s_w, s_q0, scale, P2)
                     if n2 == 0 or A0 <= 0.0:
                         continue
-                    val = _lambert2(P2, n2, p, nr, q0, s_u[s], s_w[s])
-                e += 0.5 * s_L[s] * val
-                gstat[s_group[s]] = 1
-            E[i] = e
+                    v = _lambert2(P2, n2, P[i], nr, q0, s_u[s], s_w[s])
+                e[ii] += 0.5 * s_L[s] * v
+                seen[ii, g] = True
+        for ii in range(m):
+            i = idx[i0 + ii]
+            E[i] = e[ii]
             worst = 0
             for g in range(ngroups):
-                if gstat[g] < 0:
+                if not seen[ii, g]:
                     worst = 2
             state[i] = worst
 
@@ -496,9 +580,10 @@ def lit_illuminance(
             sources.verts, sources.off, sources.normal, sources.u, sources.w, sources.q0, sources.radiance,
             sources.group, sources.ngroups, float(scale), R, area, msrc + 2)
     threads = _threads()
-    nchunk = max(1, min(4 * threads, n // 256))
+    nblocks = -(-n // LIT_BLOCK)
+    nchunk = min(nblocks, 8 * threads)  # runs of blocks, taken in turn by this thread and the pool's
     if threads == 1 or nchunk == 1:
-        _lit_kernel(*args, nchunk, 0, nchunk, E, state)
+        _lit_kernel(*args, 0, nblocks, E, state)
         return
     counter = itertools.count()
     stop = [False]
@@ -507,7 +592,7 @@ def lit_illuminance(
         for c in counter:
             if c >= nchunk or stop[0]:
                 return
-            _lit_kernel(*args, nchunk, c, c + 1, E, state)
+            _lit_kernel(*args, c * nblocks // nchunk, (c + 1) * nblocks // nchunk, E, state)
 
     pool = _pool(threads - 1)
     helpers = [pool.submit(work) for _ in range(min(threads, nchunk) - 1)]
