@@ -27,7 +27,7 @@ from ..errors import InvalidGeometryError
 from ..kinds import Box, ConvexPolyhedron, Ellipsoid, EllipticTruncus, Primitive, Sphere, Torus, Truncus
 from ..kinds.base import _perpendicular_frame
 
-__all__ = ["Patch", "Rings", "leaf_patches"]
+__all__ = ["Patch", "Rings", "face_normals", "leaf_patches"]
 
 F64 = NDArray[np.float64]
 
@@ -294,11 +294,11 @@ def leaf_patches(i: int, prim: Primitive) -> list[Patch]:
         normals, _ = prim.planar_faces()
         polys = prim.face_polygons()
         return [polygon_patch(i, np.asarray(V, dtype=np.float64), np.asarray(nv, dtype=np.float64))
-                for V, nv in zip(polys, _face_normals(polys, normals))]
+                for V, nv in zip(polys, face_normals(polys, normals))]
     raise InvalidGeometryError(f"surface area: no surface parametrisation for the kind {type(prim).__name__}")
 
 
-def _face_normals(polys: list[F64], normals: F64) -> list[F64]:
+def face_normals(polys: list[F64], normals: F64) -> list[F64]:
     """The outward normal of each face polygon (matched by its own orientation)."""
     out = []
     for V in polys:
