@@ -26,6 +26,9 @@ other planes meet on it, each on its leaf's surface: the ring measure's kinks), 
 Kronrod-Gauss differences add up to less than ``tol`` times the patch's contribution (at least 1e-6 of its whole area).
 The reported error is that sum plus the area of pieces that could not be decided (a midpoint
 on another surface at an angle).
+A box or convex polyhedron whose neighbours are all boxes or convex polyhedra is not swept: its
+faces' boundary parts are polygons (:mod:`isocsg.testing.planar`), exact up to a grid of 1e-12
+of each face's size, with the area and the volume's share taken in one pass.
 
 Coincident faces
 ----------------

@@ -4,13 +4,16 @@ A face ``F`` of a box or convex polyhedron (leaf ``i``) whose neighbours (the le
 meet ``i``'s) are all boxes or convex polyhedra is cut by them into polygons: a neighbour ``j``
 contains a point of ``F``'s plane where all of its half-spaces do, and each half-space meets
 the plane in a half-plane, so ``j``'s state on ``F`` is one convex polygon (``F`` clipped by
-those half-planes). The tree evaluated on these polygons (shapely's overlay: union,
-intersection, difference) with ``i`` out (the empty set) and with ``i`` in (all of ``F``) gives
-the two regions whose symmetric difference is the part of ``F`` on the result's boundary: the
-rule of :mod:`isocsg.testing.area`, applied to whole polygons instead of points on rings, so its
-area is exact to rounding and its cost grows with the number of neighbours, not with the
-number of rings. The flux of ``x / 3`` through a planar face is constant per unit area, so the
-volume's share of the face is its area times ``(n . p - n . origin) / 3``.
+those half-planes, rebuilt as the convex hull of its vertices: a clip at a vertex can repeat it,
+and GEOS takes such a ring as self-intersecting). The tree evaluated on these polygons (shapely's
+overlay: union, intersection, difference, snap-rounded to a fine grid where the caller asks:
+GEOS' floating overlay can lose pieces where edges nearly coincide) with ``i`` out (the empty
+set) and with ``i`` in (all of ``F``) gives the two regions whose symmetric difference is the part
+of ``F`` on the result's boundary: the rule of :mod:`isocsg.testing.area`, applied to whole
+polygons instead of points on rings, so its area is exact up to the grid and its cost grows
+with the number of neighbours, not with the number of rings. The flux of ``x / 3`` through a
+planar face is constant per unit area, so the volume's share of the face is its area times
+``(n . p - n . origin) / 3``.
 
 Coincident faces follow :mod:`isocsg.testing.area` exactly: a half-space of ``j`` whose plane
 holds all of ``F`` (within the tolerance) is decided by the side (just outside ``i``, where
