@@ -235,7 +235,17 @@ def main() -> None:
                     help="keep the drawn trees in this pickle (drawing 1000 takes minutes): shards share them")
     ap.add_argument("--shard", default="0/1", help="i/n: judge only the trees k with k %% n == i")
     ap.add_argument("--report", nargs="*", default=None, help="only print the tables of these results files")
+    ap.add_argument("--collect", nargs="*", default=None,
+                    help="only gather these findings files into FUZZ_OUT and RANDOM_OUT given by --collect-to")
+    ap.add_argument("--collect-to", default="docs/testing_engines_findings",
+                    help="the directory --collect writes trees.py and fuzz.py to")
+    ap.add_argument("--phases", default=None,
+                    help="only time the phases of a few trees: the first 3 random trees and the fuzz trees "
+                         "nearest these cube counts (e.g. 10,30,100)")
     args = ap.parse_args()
+    if args.collect is not None:
+        collect_findings(args.collect, args.n - int(round(args.n * args.fuzz)), args.collect_to)
+        return
     if args.report is not None:
         records = [json.loads(line) for f in args.report for line in open(f) if line.strip()]
         report(args.engines.split(","), records, f"{len(records)} trees from {', '.join(args.report)}")
@@ -256,6 +266,10 @@ def main() -> None:
                 pickle.dump(cases, fh)
     print(f"{len(cases)} trees drawn in {time.time() - t0:.1f} s; segments {args.segments}", flush=True)
     engines = args.engines.split(",")
+    if args.phases:
+        time_phases(cases, len(cases) - int(round(len(cases) * args.fuzz)), [int(x) for x in args.phases.split(",")],
+                    args, engines)
+        return
     done: set[int] = set()
     if args.results and os.path.exists(args.results):
         done = {json.loads(line)["k"] for line in open(args.results) if line.strip()}
@@ -270,20 +284,23 @@ def main() -> None:
         raise TimeoutError
 
     signal.signal(signal.SIGALRM, alarm)
-    for k, tree in enumerate(cases):
+    n_random = len(cases) - int(round(len(cases) * args.fuzz))
+    for k in judging_order(len(cases), n_random):
+        tree = cases[k]
         if k % shards != shard or k in done:
             continue
         signal.alarm(args.budget)
         try:
             rec, notes = judge_tree(k, tree, args, engines)
         except TimeoutError:
-            rec, notes = {"k": k, "skipped": f"over {args.budget} s"}, [
+            rec, notes = {"k": k, "leaves": solid_program(tree).n_leaves, "skipped": f"over {args.budget} s"}, [
                 f"# case {k}: over {args.budget} s, skipped\n{to_python(tree)}\n"]
         except Exception as exc:  # noqa: BLE001 - the reference or the comparison failed: a finding on isocsg
             rec, notes = {"k": k, "skipped": f"{type(exc).__name__}: {exc}"[:300]}, [
                 f"# case {k}: isocsg raised {type(exc).__name__}: {exc}\n{to_python(tree)}\n"]
         finally:
             signal.alarm(0)
+        rec["fuzz"] = k >= n_random
         records.append(rec)
         write(args.results, json.dumps(rec))
         for text in notes:
@@ -296,7 +313,77 @@ def main() -> None:
     report(engines, records, f"{len(records)} trees in {time.time() - t0:.0f} s")
 
 
+def time_phases(cases: list[Any], n_random: int, counts: list[int], args: Any, engines: list[str]) -> None:
+    """Where one tree's time goes: the reference, each engine's Booleans (nan where it raised),
+    and the rest: the comparisons (tessellation reference meshes, sampling, distances) and the
+    time of an engine that raised (VTK's forked process may run to its timeout first)."""
+    picks = list(range(min(3, n_random)))
+    fuzz = list(range(n_random, len(cases)))
+    for c in counts:
+        if fuzz:
+            picks.append(min(fuzz, key=lambda k: abs(solid_program(cases[k]).n_leaves - c)))
+    print("| tree | leaves | reference s | " + " | ".join(f"{e} s" for e in engines) + " | rest s | total s |")
+    print("|---|---|---|" + "---|" * len(engines) + "---|---|")
+    for k in picks:
+        rec, _ = judge_tree(k, cases[k], args, engines)
+        eng = [rec["engines"][e].get("seconds", float("nan")) for e in engines]
+        rest = rec["seconds"] - rec["ref_seconds"] - sum(x for x in eng if x == x)
+        kind = "fuzz" if k >= n_random else "random"
+        print(f"| {kind} {k} | {rec['leaves']} | {rec['ref_seconds']:.2f} | " + " | ".join(f"{x:.2f}" for x in eng)
+              + f" | {rest:.2f} | {rec['seconds']:.2f} |", flush=True)
+
+
+def collect_findings(paths: list[str], n_random: int, out_dir: str) -> None:
+    """The findings files of the shards as two modules of reproducers, ``trees.py`` (the random
+    trees) and ``fuzz.py``: one function ``case_K()`` per case, returning its tree, with what was
+    found as comments above it; pyvista's refusals ("raised") are left out (most trees)."""
+    cases: dict[int, tuple[list[str], str]] = {}
+    for path in paths:
+        for block in open(path).read().split("\n# case ")[0:]:
+            block = block.strip()
+            if not block:
+                continue
+            block = block if block.startswith("# case ") else "# case " + block
+            head = block.split("\n", 1)[0]
+            if ", pyvista: raised" in head:
+                continue
+            k = int(head[len("# case "):].split(",")[0].split(":")[0])
+            comments = [ln for ln in block.splitlines() if ln.startswith("#")]
+            code = "\n".join(ln for ln in block.splitlines() if not ln.startswith("#") and not ln.startswith("from "))
+            old = cases.get(k, ([], code))
+            cases[k] = (old[0] + comments, code)
+    for name, sel in (("trees.py", lambda k: k < n_random), ("fuzz.py", lambda k: k >= n_random)):
+        lines = ['"""Findings of benchmarks/engines.py (docs/testing_engines.md): each function rebuilds the tree',
+                 'of one case (its number in the list the command draws); the comments say what was found."""',
+                 "", "from isocsg import *  # noqa: F403", ""]
+        for k in sorted(c for c in cases if sel(c)):
+            comments, code = cases[k]
+            lines += ["", *comments, f"def case_{k}():"] + ["    " + ln for ln in code.strip().splitlines()]
+            lines += ["    return tree", ""]
+        with open(os.path.join(out_dir, name), "w") as fh:
+            fh.write("\n".join(lines))
+
+
+def judging_order(n: int, n_random: int) -> list[int]:
+    """The trees' indices in the order they are judged: the random trees (the first
+    ``n_random``) and the fuzz trees interleaved in proportion, so that a run stopped early has
+    judged the same share of each list (its first trees), not only random ones."""
+    def position(k: int) -> float:
+        return (k + 0.5) / n_random if k < n_random else (k - n_random + 0.5) / (n - n_random)
+
+    return sorted(range(n), key=position)
+
+
 def report(engines: list[str], records: list[dict[str, Any]], title: str) -> None:
+    """The tables of the records, for the random trees and the fuzz trees apart (``fuzz``)."""
+    groups = [(False, "random trees"), (True, "manifold's fuzz domain")]
+    present = [(g, name) for g, name in groups if any(bool(r.get("fuzz")) == g for r in records)]
+    for g, name in present:
+        part = [r for r in records if bool(r.get("fuzz")) == g]
+        report_group(engines, part, f"{title}: {len(part)} {name}" if len(present) > 1 else title)
+
+
+def report_group(engines: list[str], records: list[dict[str, Any]], title: str) -> None:
     skipped = sum(1 for r in records if "skipped" in r or any(
         e.get("what", "").startswith("raised TimeoutError") for e in r.get("engines", {}).values()))
     print(f"\n{title} ({skipped} over the time budget: skipped, or an engine stopped)\n")
@@ -319,6 +406,27 @@ def report(engines: list[str], records: list[dict[str, Any]], title: str) -> Non
             if len(v):
                 q = np.quantile(v, [0.5, 0.9, 0.99, 1.0], method="higher")
                 print(f"| {eng} | {fig} | " + " | ".join(f"{x:.2e}" for x in q) + " |")
+    print_times(records)
+
+
+def print_times(records: list[dict[str, Any]]) -> None:
+    """Wall seconds per judged tree (reference, engines and comparisons) and for the reference
+    alone, by leaf count."""
+    done = [r for r in records if "seconds" in r]
+    if not done:
+        return
+    print("\n| leaves | trees judged | over the budget | seconds a tree: median | 90 % | reference: median | 90 % |")
+    print("|---|---|---|---|---|---|---|")
+    bins = [(2, 5), (6, 10), (11, 30), (31, 60), (61, 100)]
+    for lo, hi in bins + [(2, 10**9)]:
+        rs = [r for r in done if lo <= r.get("leaves", 0) <= hi]
+        over = sum(1 for r in records if "skipped" in r and lo <= r.get("leaves", 0) <= hi)
+        if not rs:
+            continue
+        t = np.quantile([r["seconds"] for r in rs], [0.5, 0.9], method="higher")
+        f = np.quantile([r["ref_seconds"] for r in rs], [0.5, 0.9], method="higher")
+        label = "all" if hi == 10**9 else f"{lo}-{hi}"
+        print(f"| {label} | {len(rs)} | {over} | {t[0]:.1f} | {t[1]:.1f} | {f[0]:.2f} | {f[1]:.2f} |")
 
 
 if __name__ == "__main__":

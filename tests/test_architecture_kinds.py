@@ -44,6 +44,15 @@ def _names(node: ast.AST) -> list[str]:
     return []
 
 
+def _strings(node: ast.AST) -> list[str]:
+    """The strings an expression holds: ``'K'``, or a tuple / list / set of them."""
+    if isinstance(node, ast.Constant) and isinstance(node.value, str):
+        return [node.value]
+    if isinstance(node, (ast.Tuple, ast.List, ast.Set)):
+        return [v for e in node.elts for v in _strings(e)]
+    return []
+
+
 def _is_type_of(node: ast.AST) -> bool:
     """``type(x)`` or ``x.__class__``."""
     if isinstance(node, ast.Call) and isinstance(node.func, ast.Name) and node.func.id == "type":
@@ -78,9 +87,7 @@ def kind_tests(source: str, classes: set[str], names: set[str]) -> list[tuple[in
             sides = [node.left, *node.comparators]
             if any(_is_type_of(s) for s in sides) and any(n in aliases for s in sides for n in _names(s)):
                 found(node)
-            elif any(_is_name_of(s) for s in sides) and any(
-                isinstance(s, ast.Constant) and s.value in names | classes for s in sides
-            ):
+            elif any(_is_name_of(s) for s in sides) and any(v in names | classes for s in sides for v in _strings(s)):
                 found(node)
         elif isinstance(node, ast.MatchClass) and any(n in aliases for n in _names(node.cls)):
             found(node)
@@ -108,6 +115,7 @@ def test_the_registry_is_read():
         "ok = p.__class__ == Sphere",
         "ok = p.kind == 'sphere'",
         "ok = type(p).__name__ != 'ConvexPolyhedron'",
+        "ok = type(p).__name__ in ('Box', 'ConvexPolyhedron')",
         "from ..kinds import Box as B\nok = issubclass(c, B)",
         "match p:\n    case Sphere(): pass",
     ],

@@ -497,6 +497,16 @@ class Primitive(Solid):
         polyhedral kind's :meth:`planar_faces`, else None."""
         return self.planar_faces() if self.polyhedral and self.convex else None
 
+    def flat_faces(self) -> list[tuple[NDArray[np.float64], NDArray[np.float64]]]:
+        """A convex polyhedral kind's faces: each polygon (counter-clockwise seen from outside) with
+        its outward unit normal; the exact reference of :mod:`isocsg.testing` overlays them.
+        Default: the faces of :meth:`to_polyhedron` (exact for a convex polytope)."""
+        from .patches import face_normals
+
+        poly = self.to_polyhedron()
+        polys = [np.asarray(V, dtype=np.float64) for V in poly.face_polygons()]
+        return list(zip(polys, face_normals(polys, np.asarray(poly.face_normals, dtype=np.float64))))
+
     @property
     def area(self) -> float:
         """The exact surface area (square metres).

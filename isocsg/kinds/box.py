@@ -285,6 +285,17 @@ class Box(Primitive):
         along = np.asarray(direction, dtype=np.float64) @ self.rotation
         return bool(np.any(np.abs(np.abs(along) - 1.0) <= tol))
 
+    def flat_faces(self) -> list[tuple[NDArray[np.float64], NDArray[np.float64]]]:
+        """Its six faces (corners (4, 3), outward normal), built directly (a hull would be slow)."""
+        R, c, h = self.rotation, self.center_array, self.half_size
+        out = []
+        for k in range(3):
+            u, v = R[:, (k + 1) % 3] * h[(k + 1) % 3], R[:, (k + 2) % 3] * h[(k + 2) % 3]
+            for s in (1.0, -1.0):
+                fc = c + s * h[k] * R[:, k]
+                out.append((np.stack([fc + u + v, fc - u + v, fc - u - v, fc + u - v]), s * R[:, k]))
+        return out
+
     def surface_patches(self, leaf: int) -> list[Patch]:
         """Its six faces (:func:`~isocsg.kinds.patches.polytope_patches`)."""
         return polytope_patches(leaf, self.face_polygons(), self.planar_faces()[0])

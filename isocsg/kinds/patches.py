@@ -31,7 +31,7 @@ from .affine import perpendicular_frame as _perpendicular_frame
 
 __all__ = [
     "Patch", "Rings", "affine_ball_patches", "ball_patches", "elliptic_lateral_area", "ellipsoid_area",
-    "frustum_patches", "affine_frustum_patches", "polygon_patch", "polytope_patches", "torus_patches",
+    "face_normals", "frustum_patches", "affine_frustum_patches", "polygon_patch", "polytope_patches", "torus_patches",
 ]
 
 F64 = NDArray[np.float64]
@@ -280,10 +280,10 @@ def polytope_patches(i: int, polys: list[F64], normals: F64) -> list[Patch]:
     """A convex polytope from its face polygons (each counter-clockwise seen from outside) and
     its faces' outward normals (matched to the polygons by their own orientation)."""
     return [polygon_patch(i, np.asarray(V, dtype=np.float64), np.asarray(nv, dtype=np.float64))
-            for V, nv in zip(polys, _face_normals(polys, normals))]
+            for V, nv in zip(polys, face_normals(polys, normals))]
 
 
-def _face_normals(polys: list[F64], normals: F64) -> list[F64]:
+def face_normals(polys: list[F64], normals: F64) -> list[F64]:
     """The outward normal of each face polygon (matched by its own orientation)."""
     out = []
     for V in polys:

@@ -30,7 +30,7 @@ from .base import (
 from .forms import PointHull
 from .halfspaces import polyhedral_tangent, ray_halfspaces
 from .meshing import manifold3d_module
-from .patches import Patch, polytope_patches
+from .patches import Patch, face_normals, polytope_patches
 from .registry import kind_class, register_kind
 from .scad import encoded, num_sig, round_sig, short_mat, vec
 
@@ -237,6 +237,11 @@ class ConvexPolyhedron(Primitive):
         """Every face along ``direction`` or across it."""
         nz = np.abs(np.asarray(self.face_normals, dtype=np.float64) @ np.asarray(direction, dtype=np.float64))
         return bool(np.all((nz <= tol) | (nz >= 1.0 - tol)))
+
+    def flat_faces(self) -> list[tuple[NDArray[np.float64], NDArray[np.float64]]]:
+        """Its face polygons with their outward normals."""
+        polys = [np.asarray(V, dtype=np.float64) for V in self.face_polygons()]
+        return list(zip(polys, face_normals(polys, self.planar_faces()[0])))
 
     def surface_patches(self, leaf: int) -> list[Patch]:
         """Its faces (:func:`~isocsg.kinds.patches.polytope_patches`)."""

@@ -342,7 +342,7 @@ def compare_mesh(
     rng = np.random.default_rng(seed)
     prog = solid_program(solid)
     size = float(np.max(truth.bounds[1] - truth.bounds[0]))
-    planar = all(type(p).__name__ in ("Box", "ConvexPolyhedron") for p in prog.leaves)
+    planar = all(p.polyhedral and p.convex for p in prog.leaves)
     if segments is None and not planar:
         segments = _guess_segments(solid, len(m.vertices))
     tess_seg = 8 if segments is None else integer("segments", segments, low=3, high=65536, error=InvalidParameterError)

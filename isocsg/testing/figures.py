@@ -13,7 +13,7 @@ from .._validation import nonzero_vector3, scalar, vector3
 from ..csg.section import section as _section
 from ..errors import InvalidParameterError
 from ..kinds import Solid
-from .area import boundary_volume, surface_area
+from .area import boundary_figures
 from .distance import DistanceResult, signed_distance
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -130,8 +130,7 @@ def reference(solid: Solid, *, tol: float = 1e-9) -> Reference:
     1.0
     """
     tol_ = scalar("tol", tol, low=1e-12, high=0.1, error=InvalidParameterError)
-    v = boundary_volume(solid, tol=tol_)
-    a = surface_area(solid, tol=tol_)
+    v, a = boundary_figures(solid, tol=tol_)
     return Reference(solid, v.value, v.error, a.value, a.error, np.asarray(solid.bounds, dtype=np.float64), tol_)
 
 
