@@ -42,7 +42,6 @@ receivers' bounding box, about ``TILE_POINTS`` points each.
 
 from __future__ import annotations
 
-import itertools
 from typing import Any
 
 import numba
@@ -50,7 +49,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from .lambert import edge_term_fast
-from .visibility import SourceArrays, _area2, _lambert2, _pool, _source_polygon, _threads
+from .visibility import SourceArrays, _area2, _lambert2, _source_polygon, _threads, run_chunks
 
 __all__ = [
     "ReceiverClasses", "CLASS_LIT", "CLASS_UMBRA", "CLASS_EXACT", "classify_receivers", "lit_illuminance",
@@ -62,6 +61,7 @@ CLASS_EXACT = 1
 CLASS_UMBRA = 2
 
 TILE_POINTS = 64  # receivers per tile (about)
+CLASSIFY_CHUNK = 4096  # receivers a chunk of the point-by-point classification takes at least
 SEPARATION_MARGIN = 1e-9  # relative to the scene's size: how far beyond a separating plane a receiver must be
 PLANE_TOL = 1e-14  # relative: rounding allowed in "S positive, V negative" on a candidate plane
 NEAR_SOURCE = 1e-4  # relative: pieces this close to a source plane are never called separated
@@ -249,8 +249,8 @@ def _relations(X, nx, s_verts, s_off, kind, poff, pn, pd, margin, hA, hb, hoff, 
 
 
 @numba.njit(cache=True)
-def _classify(P, tile, ntiles, s_verts, s_off, kind, poff, pn, pd, margin, hA, hb, hoff, cls, needed):
-    """Tiles first (their bounding boxes), then the single points of the tiles that are neither lit nor umbra."""
+def _classify_tiles(P, tile, ntiles, s_verts, s_off, kind, poff, pn, pd, margin, hA, hb, hoff, needed):
+    """Each tile's class from its bounding box, and its relation to each (source, piece) pair."""
     n = P.shape[0]
     ns = kind.shape[0]
     npc = kind.shape[1]
@@ -283,9 +283,18 @@ def _classify(P, tile, ntiles, s_verts, s_off, kind, poff, pn, pd, margin, hA, h
             for s in range(ns):
                 if rel[t, s, j] != REL_SEPARATED:
                     needed[t, j] = True
+    return tcls, rel
+
+
+@numba.njit(cache=True, nogil=True)
+def _classify_points(P, tile, tcls, rel, s_verts, s_off, kind, poff, pn, pd, margin, hA, hb, hoff, i0, i1, cls):
+    """Receivers ``i0 .. i1``: their tile's class, or their own where the tile is neither lit nor umbra."""
+    ns = kind.shape[0]
+    npc = kind.shape[1]
+    X = np.empty((1, 3))
     prel = np.empty((ns, npc), dtype=np.int8)
     cand = np.empty((ns, npc), dtype=np.bool_)
-    for i in range(n):
+    for i in range(i0, i1):
         t = tile[i]
         if tcls[t] != CLASS_EXACT:
             cls[i] = tcls[t]
@@ -388,9 +397,14 @@ def classify_receivers(
     cls = np.empty(n, dtype=np.int8)
     needed = np.zeros((ntiles, len(pieces)), dtype=np.bool_)
     if n:
-        _classify(np.ascontiguousarray(points), tile, ntiles, sources.verts, sources.off, tab.kind, tab.poff,
-                  tab.pn, tab.pd, tab.margin, tab.hA, tab.hb, tab.hoff, cls, needed)
+        P = np.ascontiguousarray(points)
+        pairs = (sources.verts, sources.off, tab.kind, tab.poff, tab.pn, tab.pd, tab.margin, tab.hA, tab.hb, tab.hoff)
+        tcls, rel = _classify_tiles(P, tile, ntiles, *pairs, needed)
+        nchunk = min(8 * _threads(), -(-n // CLASSIFY_CHUNK))
+        run_chunks(nchunk, lambda c: _classify_points(P, tile, tcls, rel, *pairs, c * n // nchunk,
+                                                      (c + 1) * n // nchunk, cls))
     return ReceiverClasses(cls, tile, needed)
+
 
 
 @numba.njit(cache=True)
@@ -579,27 +593,6 @@ def lit_illuminance(
     args = (np.ascontiguousarray(points), np.ascontiguousarray(normals), np.ascontiguousarray(idx, dtype=np.int64),
             sources.verts, sources.off, sources.normal, sources.u, sources.w, sources.q0, sources.radiance,
             sources.group, sources.ngroups, float(scale), R, area, msrc + 2)
-    threads = _threads()
     nblocks = -(-n // LIT_BLOCK)
-    nchunk = min(nblocks, 8 * threads)  # runs of blocks, taken in turn by this thread and the pool's
-    if threads == 1 or nchunk == 1:
-        _lit_kernel(*args, 0, nblocks, E, state)
-        return
-    counter = itertools.count()
-    stop = [False]
-
-    def work() -> None:
-        for c in counter:
-            if c >= nchunk or stop[0]:
-                return
-            _lit_kernel(*args, c * nblocks // nchunk, (c + 1) * nblocks // nchunk, E, state)
-
-    pool = _pool(threads - 1)
-    helpers = [pool.submit(work) for _ in range(min(threads, nchunk) - 1)]
-    try:
-        work()
-    finally:
-        stop[0] = True
-        for h in helpers:
-            if not h.cancel():
-                h.result()
+    nchunk = min(nblocks, 8 * _threads())  # runs of blocks
+    run_chunks(nchunk, lambda c: _lit_kernel(*args, c * nblocks // nchunk, (c + 1) * nblocks // nchunk, E, state))

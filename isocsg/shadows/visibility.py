@@ -40,6 +40,7 @@ import itertools
 import math
 import os
 import threading
+from collections.abc import Callable
 from concurrent.futures import ThreadPoolExecutor
 
 import numba
@@ -48,7 +49,7 @@ from numpy.typing import NDArray
 
 from .lambert import edge_term_fast
 
-__all__ = ["SourceArrays", "PieceArrays", "visible_illuminance", "blockers_single", "MAXV", "MAXB"]
+__all__ = ["SourceArrays", "PieceArrays", "visible_illuminance", "blockers_single", "run_chunks", "MAXV", "MAXB"]
 
 MAXV = 256  # vertices of one clipped polygon
 MAXB = 24  # blocking silhouettes per point and source before the 2D Boolean fallback
@@ -668,23 +669,22 @@ if hasattr(os, "register_at_fork"):
     os.register_at_fork(after_in_child=_forget_pool)
 
 
-def _run_chunks(args: tuple, n: int, E: np.ndarray, state: np.ndarray, overflow: np.ndarray) -> None:
-    """Evaluate all points: ``nchunk`` strided chunks taken in turn by this thread and the pool's helpers."""
+def run_chunks(nchunk: int, run: Callable[[int], object]) -> None:
+    """``run(c)`` for chunks ``c = 0 .. nchunk - 1``, taken in turn by this thread and the pool's
+    helpers (``run`` calls a kernel that releases the GIL)."""
     threads = _threads()
-    nchunk = max(1, min(CHUNKS_PER_THREAD * threads, n // MIN_CHUNK))
-    if threads == 1 or nchunk == 1:
-        # args: the kernel's leading arguments, a tuple whose length mypy cannot count.
-        _kernel(*args, nchunk, 0, nchunk, E, state, overflow)  # type: ignore[call-arg]
+    if threads == 1 or nchunk <= 1:
+        for c in range(nchunk):
+            run(c)
         return
-    # next() on a shared count is atomic under the GIL: each chunk is taken once.
-    counter = itertools.count()
+    counter = itertools.count()  # next() on a shared count is atomic under the GIL: each chunk once
     stop = [False]  # set when this thread leaves (an exception here): helpers take no more chunks
 
     def work() -> None:
         for c in counter:
             if c >= nchunk or stop[0]:
                 return
-            _kernel(*args, nchunk, c, c + 1, E, state, overflow)  # type: ignore[call-arg]
+            run(c)
 
     pool = _pool(threads - 1)
     helpers = [pool.submit(work) for _ in range(min(threads, nchunk) - 1)]
@@ -692,10 +692,16 @@ def _run_chunks(args: tuple, n: int, E: np.ndarray, state: np.ndarray, overflow:
         work()
     finally:
         stop[0] = True
-        # Helpers still queued (the pool busy with other callers' chunks) are not waited for.
-        for h in helpers:
+        for h in helpers:  # helpers still queued (the pool busy with other callers' chunks) are not waited for
             if not h.cancel():
                 h.result()
+
+
+def _run_chunks(args: tuple, n: int, E: np.ndarray, state: np.ndarray, overflow: np.ndarray) -> None:
+    """Evaluate all points: ``nchunk`` strided chunks taken in turn by this thread and the pool's helpers."""
+    nchunk = max(1, min(CHUNKS_PER_THREAD * _threads(), n // MIN_CHUNK))
+    # args: the kernel's leading arguments, a tuple whose length mypy cannot count.
+    run_chunks(nchunk, lambda c: _kernel(*args, nchunk, c, c + 1, E, state, overflow))  # type: ignore[call-arg]
 
 
 def _all_pieces(n: int, pieces: PieceArrays) -> tuple[NDArray[np.int64], NDArray[np.int64], NDArray[np.int64]]:
