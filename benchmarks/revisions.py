@@ -5,7 +5,8 @@ temporary worktrees and runs each workload on both, alternating old and new, eac
 measurement in a fresh process (so that no cache of one measurement helps the next).
 A child imports the revision under test, warms its compiled kernels on a small scene of
 the same kind (numba's on-disk cache is per checkout: the first child of a revision
-compiles them, which is not timed), then times the workload once and prints the seconds.
+compiles them, which is not timed; ``ISOCSG_JIT=numba``, so that a revision with lazy kernels
+compiles too), then times the workload once and prints the seconds.
 Printed: the median over the repeats for each revision and the ratio new / old
 (< 1: the new revision is faster), with the spread (min-max) so that noise shows.
 
@@ -139,7 +140,10 @@ def _child_source(setup: str, warm: str, run: str) -> str:
 
 def _measure(checkout: Path, name: str, timeout: float) -> float | None:
     _, setup, warm, run = WORKLOADS[name]
-    env = dict(os.environ, PYTHONPATH=str(checkout), ISOCSG_PROGRESS="0")
+    # Compiled kernels from the start: a revision with lazy kernels would otherwise run the warm-up
+    # and the start of the workload in Python (that first-call cost is benchmarks/startup.py's
+    # subject); the older revisions always compile and ignore the variable.
+    env = dict(os.environ, PYTHONPATH=str(checkout), ISOCSG_PROGRESS="0", ISOCSG_JIT="numba")
     try:
         proc = subprocess.run([sys.executable, "-c", _child_source(setup, warm, run)], cwd=checkout,
                               env=env, capture_output=True, text=True, timeout=timeout)
