@@ -5,7 +5,7 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from hypothesis import given
+from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from isocsg.shadows.lambert import atan2_pos, edge_term_fast, edge_term_nb
@@ -15,6 +15,8 @@ signed = st.floats(min_value=-1e300, max_value=1e300, allow_nan=False, allow_inf
 coords = st.floats(min_value=-10.0, max_value=10.0, allow_nan=False)
 
 
+# No deadline: the first example loads the compiled kernels (0.4 s in a fresh process).
+@settings(deadline=None)
 @given(positive, signed)
 def test_atan2_pos_is_within_a_few_ulp_of_libm(s: float, d: float) -> None:
     exact = math.atan2(s, d)
@@ -29,6 +31,7 @@ def test_atan2_pos_on_the_quadrant_and_reduction_boundaries() -> None:
         assert abs(atan2_pos(s, d) - exact) <= 4 * math.ulp(exact), (s, d)
 
 
+@settings(deadline=None)
 @given(st.lists(coords, min_size=12, max_size=12))
 def test_fast_edge_term_equals_the_libm_one(v: list[float]) -> None:
     p, n, a, b = v[0:3], v[3:6], v[6:9], v[9:12]
