@@ -250,7 +250,8 @@ def nested_cores(draw: st.DrawFn) -> tuple[object, object]:
     if draw(st.booleans()):
         r = draw(st.floats(1.2, 1.8))
         return Sphere((0, 0, 0), r), manifold3d.Manifold.sphere(r, SEGMENTS)
-    r1, r2 = draw(st.floats(0.0, 1.8)), draw(st.floats(0.6, 1.8))
+    # a cone's apex (0) or a frustum's top; no radius so small that Truncus refuses it as degenerate
+    r1, r2 = draw(st.one_of(st.just(0.0), st.floats(0.05, 1.8))), draw(st.floats(0.6, 1.8))
     mesh = manifold3d.Manifold.cylinder(2.0, r2, r1, SEGMENTS, True)
     return Truncus((0, 0, 0), (0, 0, 2.0), r1, r2), mesh
 
