@@ -41,6 +41,7 @@ from __future__ import annotations
 
 import argparse
 import math
+import os
 import resource
 import sys
 import time
@@ -381,14 +382,28 @@ def run_scale(quick: bool, full: bool) -> None:
                     [(len(pcs), fmt_seconds(time.perf_counter() - t0))])
 
 
+def run_rate(repeats: int = 9) -> None:
+    """The goal's figure alone: wall points/s of the exact method on the 1001 x 1001 room floor
+    (median of ``repeats`` calls after a warm-up call) and the load average (on 2 idle cores it
+    should be near 0)."""
+    lamp, boxes = room()
+    P = floor(1001)
+    t, _ = median_time(lambda: illuminance_and_state(P, [0, 0, 1], [lamp], boxes), repeats, warmup=1)
+    print(f"room floor 1001 x 1001: {fmt_seconds(t)} median of {repeats}, {fmt_rate(len(P), t)} points/s, "
+          f"load average {os.getloadavg()[0]:.2f}")
+
+
 def main(argv: list[str] | None = None) -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--quick", action="store_true", help="fewer repeats and seeds")
     ap.add_argument("--scale", action="store_true", help="the room with a CSG plate on the table (201 x 201 floor)")
     ap.add_argument("--full", action="store_true", help="with --scale: also the full decomposition of the plate")
     ap.add_argument("--big", action="store_true", help="a 10^7-point floor grid: time and peak memory")
+    ap.add_argument("--rate", action="store_true", help="only the exact method's points/s on the 1001 x 1001 floor")
     args = ap.parse_args(argv)
-    if args.big:
+    if args.rate:
+        run_rate()
+    elif args.big:
         run_big()
     elif args.scale:
         run_scale(args.quick, args.full)

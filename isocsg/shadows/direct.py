@@ -221,30 +221,32 @@ def illuminance_and_state(
         E_ar, s_ar = illuminance_and_state(p, nfull, light_list, solids, resolution=resolution)
         return E_pt + E_ar, np.maximum(s_pt, s_ar)
     sources = _sources(light_list)
-    ext = [np.vstack(bounding_box(p)) if len(p) else p, sources.verts]
+    # Chunks of receivers, each on its own: the memory beyond the results stays bounded. Their
+    # bounding boxes (one pass) give the scene's scale and each chunk's occluder pieces.
+    chunks = [slice(c0, c0 + CHUNK_POINTS) for c0 in range(0, max(len(p), 1), CHUNK_POINTS)]
+    boxes = [np.vstack(bounding_box(p[sl])) if len(p) else p for sl in chunks]
+    ext = [*boxes, sources.verts]
     ext += [np.asarray(o.bounds, dtype=np.float64) for o in solids]
     allpts = np.vstack(ext)
     scale = float(max(np.max(np.ptp(allpts, axis=0)), np.max(np.abs(allpts)), 1e-300))
     E = np.zeros(len(p))
     state = np.zeros(len(p), dtype=np.int8)
-    # Chunks of receivers, each on its own: the memory beyond the results stays bounded.
-    for c0 in range(0, max(len(p), 1), CHUNK_POINTS):
-        sl = slice(c0, c0 + CHUNK_POINTS)
-        E[sl], state[sl] = _area_sources(p[sl], n.chunk(sl), sources, solids, resolution, scale)
+    for sl, box in zip(chunks, boxes):
+        E[sl], state[sl] = _area_sources(p[sl], n.chunk(sl), sources, solids, resolution, scale, box)
     return E, state
 
 
 def _area_sources(
     p: NDArray[np.float64], n: NDArray[np.float64], sources: SourceArrays, solids: list[Solid], resolution: int,
-    scale: float,
+    scale: float, box: NDArray[np.float64],
 ) -> tuple[NDArray[np.float64], NDArray[np.int8]]:
     """Illuminance and state of one chunk of receivers from the area and polyhedron sources.
 
-    ``n`` has a row a receiver, or a single row for all.
+    ``n`` has a row a receiver, or a single row for all; ``box`` is the receivers' bounding box
+    (rows lo, hi).
     """
     # The pieces the receivers' bounding box needs; when they are many, each group of nearby
     # receivers gets its own (fewer) pieces.
-    box = np.vstack(bounding_box(p)) if len(p) else p
     whole = shadow_pieces(solids, box, sources.verts, resolution=resolution, scale=scale) if solids and len(p) else []
     groups = receiver_tiles(p) if len(whole) > FEW_PIECES else [np.arange(len(p), dtype=np.int64)]
     ids: dict[int, int] = {}
@@ -265,7 +267,8 @@ def _area_sources(
     # formula alone, umbra ones nothing; the rest are clipped against the pieces their tile needs.
     lit_parts, exact_parts, tile_of, t_off, t_idx = [], [], [], [0], []
     for idx, own_idx in zip(groups, own_ids):
-        rc = classify_receivers(p if len(groups) == 1 else p[idx], sources, [pieces[k] for k in own_idx], scale)
+        rc = classify_receivers(p if len(groups) == 1 else p[idx], sources, [pieces[k] for k in own_idx], scale,
+                                box=box if len(groups) == 1 else None)
         lit, umbra, ex, tiles_used, local = class_indices(rc.cls, rc.tile, len(rc.needed))
         lit_parts.append(idx[lit] if len(groups) > 1 else lit)
         state[idx[umbra]] = UMBRA

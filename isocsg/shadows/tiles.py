@@ -354,11 +354,13 @@ def _tile_keys(P, lo, ext, cells):
     return out
 
 
-def _tiles(points: NDArray[np.float64], per_tile: int) -> tuple[NDArray[np.int64], int]:
-    """Tile index of each point: cells of a grid over the bounding box, about ``per_tile`` points each."""
+def _tiles(points: NDArray[np.float64], per_tile: int,
+           box: NDArray[np.float64] | None = None) -> tuple[NDArray[np.int64], int]:
+    """Tile index of each point: cells of a grid over the bounding box (``box`` when the caller
+    has it), about ``per_tile`` points each."""
     n = len(points)
     want = max(1, n // max(per_tile, 1))
-    lo, hi = bounding_box(points)
+    lo, hi = bounding_box(points) if box is None else (box[0], box[1])
     ext = hi - lo
     cells = np.ones(3, dtype=np.int64)
     # square-ish cells: split the axis whose cells are longest while the count stays within want
@@ -372,6 +374,7 @@ def _tiles(points: NDArray[np.float64], per_tile: int) -> tuple[NDArray[np.int64
 
 def classify_receivers(
     points: NDArray[np.float64], sources: SourceArrays, pieces: list, scale: float, *, per_tile: int = TILE_POINTS,
+    box: NDArray[np.float64] | None = None,
 ) -> ReceiverClasses:
     """Lit, umbra or exact class of each receiver against the given convex occluder pieces (module docstring).
 
@@ -386,6 +389,8 @@ def classify_receivers(
         The scene's size (the margins are relative to it).
     per_tile : int, keyword-only
         Receivers per tile (about).
+    box : ndarray, shape (2, 3), keyword-only, optional
+        The points' bounding box (rows lo, hi), when the caller has it.
 
     Returns
     -------
@@ -393,7 +398,7 @@ def classify_receivers(
     """
     n = len(points)
     tab = _PairTables(sources, pieces, scale)
-    tile, ntiles = _tiles(points, per_tile) if n else (np.zeros(0, dtype=np.int64), 1)
+    tile, ntiles = _tiles(points, per_tile, box) if n else (np.zeros(0, dtype=np.int64), 1)
     cls = np.empty(n, dtype=np.int8)
     needed = np.zeros((ntiles, len(pieces)), dtype=np.bool_)
     if n:
