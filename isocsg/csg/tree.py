@@ -35,6 +35,7 @@ __all__ = [
     "difference",
     "union_all",
     "leaves",
+    "distinct_postorder",
     "OP_UNION",
     "OP_INTERSECTION",
     "OP_DIFFERENCE",
@@ -304,6 +305,33 @@ def difference(first: Solid, *others: Solid) -> Difference:
 def union_all(solids: Iterable[Solid]) -> Union:
     """Union of an iterable of solids."""
     return Union(tuple(solids))
+
+
+def distinct_postorder(root: Solid) -> list[Solid]:
+    """Every distinct node and leaf of the tree (by identity: a shared subtree once), children
+    before their parents, without recursion: the order for folding a tree bottom up.
+
+    Examples
+    --------
+    >>> from isocsg import Sphere
+    >>> a = Sphere((0, 0, 0), 1)
+    >>> [type(s).__name__ for s in distinct_postorder((a | a) - a)]
+    ['Sphere', 'Union', 'Difference']
+    """
+    order: list[Solid] = []
+    seen: set[int] = set()
+    todo: list[tuple[Solid, bool]] = [(root, False)]
+    while todo:
+        s, expanded = todo.pop()
+        if id(s) in seen:
+            continue
+        if expanded or not isinstance(s, CSGNode):
+            seen.add(id(s))
+            order.append(s)
+            continue
+        todo.append((s, True))
+        todo.extend((c, False) for c in reversed(s.children) if id(c) not in seen)
+    return order
 
 
 def leaves(solid: Solid) -> list[Primitive]:

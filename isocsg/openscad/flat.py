@@ -339,22 +339,16 @@ def _as_boxes(solid: Any) -> Any:
     """The extruded tree with its axis-aligned rectangles' prisms as the exact boxes they are
     (an explicit stack; nodes are rebuilt only where a leaf changed)."""
     from ..csg import CSGNode
+    from ..csg.tree import distinct_postorder
 
     done: dict[int, Any] = {}
-    stack: list[tuple[Any, bool]] = [(solid, False)]
-    while stack:
-        s, expanded = stack.pop()
-        if id(s) in done:
-            continue
+    for s in distinct_postorder(solid):
         if not isinstance(s, CSGNode):
             done[id(s)] = _as_box(s)
-        elif expanded:
-            kids = [done[id(c)] for c in s.children]
-            same = all(k is c for k, c in zip(kids, s.children, strict=True))
-            done[id(s)] = s if same else type(s)(tuple(kids))
-        else:
-            stack.append((s, True))
-            stack.extend((c, False) for c in s.children)
+            continue
+        kids = [done[id(c)] for c in s.children]
+        same = all(k is c for k, c in zip(kids, s.children, strict=True))
+        done[id(s)] = s if same else type(s)(tuple(kids))
     return done[id(solid)]
 
 

@@ -40,6 +40,7 @@ from typing import Any
 import numpy as np
 from numpy.typing import NDArray
 
+from ..csg.tree import distinct_postorder
 from ..errors import NotExactError
 from ..kinds import Solid
 from ..kinds.forms import AffineBall, AffineFrustum, PointHull, RingTorus, TriangleSurface
@@ -119,21 +120,7 @@ class _Facts:
         self.range: dict[int, tuple[float, float] | None] = {}
         self.uniform: dict[int, tuple[float, float] | None] = {}
         self.box: dict[int, NDArray[np.float64]] = {}
-        order: list[Any] = []
-        seen: set[int] = set()
-        stack: list[tuple[Any, bool]] = [(root, False)]
-        while stack:
-            s, expanded = stack.pop()
-            kids = _children(s)
-            if expanded or kids is None:
-                if id(s) not in seen:
-                    seen.add(id(s))
-                    order.append(s)
-                continue
-            if id(s) in seen:
-                continue
-            stack.append((s, True))
-            stack.extend((c, False) for c in kids if id(c) not in seen)
+        order = distinct_postorder(root)
         self._read_leaves([s for s in order if _children(s) is None])
         for s in order:
             kids = _children(s)

@@ -18,6 +18,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from ..csg import CSGNode, Difference, Intersection
+from ..csg.tree import distinct_postorder
 from ..errors import InvalidGeometryError
 from ..kinds import Solid
 from ..kinds.forms import AffineBall, AffineFrustum, PointHull, RingTorus, TriangleSurface
@@ -67,19 +68,9 @@ def _combine(op: str, shapes: list[Shape2D]) -> Shape2D:
 def _fold(solid: Any, leaf_value: Any) -> Shape2D:
     """The 2D tree of ``solid`` over ``leaf_value(leaf)`` (explicit stack; shared subtrees once)."""
     done: dict[int, Shape2D] = {}
-    stack: list[tuple[Any, bool]] = [(solid, False)]
-    while stack:
-        s, expanded = stack.pop()
-        if id(s) in done:
-            continue
+    for s in distinct_postorder(solid):
         kids = _children(s)
-        if kids is None:
-            done[id(s)] = leaf_value(s)
-        elif expanded:
-            done[id(s)] = _combine(_op(s), [done[id(c)] for c in kids])
-        else:
-            stack.append((s, True))
-            stack.extend((c, False) for c in kids)
+        done[id(s)] = leaf_value(s) if kids is None else _combine(_op(s), [done[id(c)] for c in kids])
     return done[id(solid)]
 
 
