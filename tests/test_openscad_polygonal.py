@@ -122,10 +122,13 @@ def test_minkowski_under_a_map_takes_the_shift_back_once() -> None:
     assert np.allclose(lo, (40, 5, 2))
 
 
-def test_two_non_convex_children_stay_refused() -> None:
+def test_two_non_convex_flat_children_sum_exactly() -> None:
+    """Two L-shaped prisms (a cube with a corner cut through): flat-faced, so each sums through its
+    convex pieces, by default (isocsg.csg.flat_pieces). By hand: L = [1,4]x[0,4] u [0,1]x[1,4] (x 4
+    high); the pairs' sums [2,8]x[0,8], [1,5]x[1,8], [0,2]x[2,8] cover 48 + 7 + 6 = 61, 8 high."""
     plate = "difference() { cube(size = [4, 4, 4], center = false); cube(size = [2, 2, 9], center = true); }"
-    with pytest.raises(UnsupportedOpenSCADError, match="not convex"):
-        _load(f"minkowski() {{ {plate} {plate} }}")
+    model = lower(parse_csg(f"minkowski() {{ {plate} {plate} }}"))
+    assert volume(model.solid) == pytest.approx(61 * 8, rel=1e-9)  # type: ignore[attr-defined]
 
 
 @settings(max_examples=4, deadline=None)
