@@ -325,8 +325,9 @@ _doc_case("box.size-thin-1e-300", ("objects", 4, "shape", "box", "size"), [1.0, 
 # (boxes have no aspect limit since issue 22: a 1 x 1 x 1e-7 plate or a 1e-6 needle is a valid box,
 # exact as slabs; only the length floor above applies)
 _doc_case("truncus.axis-tiny", ("objects", 1, "shape", "truncus", "axis"), [0.0, 0.0, 1e-300])
-_doc_case("cylinder.axis-flat-disc", ("objects", 2, "shape", "cylinder", "axis"), [0.0, 0.0, 1e-8])
-_doc_case("cylinder.radius-hair", ("objects", 2, "shape", "cylinder", "radius"), 1e-7)
+# (trunci may be as thin as MIN_TRUNCUS_ASPECT = 1e-12 since issue 22; below the length floor is refused)
+_doc_case("cylinder.axis-flat-disc", ("objects", 2, "shape", "cylinder", "axis"), [0.0, 0.0, 1e-13])
+_doc_case("cylinder.radius-hair", ("objects", 2, "shape", "cylinder", "radius"), 1e-13)
 _doc_case("sphere.radius-far-away", ("objects", 0, "shape", "sphere"), {"center": [1e11, 0, 0], "radius": 1e-3},
           "objects[0].shape.sphere.radius")
 _doc_case("polyhedron.vertices-tiny", ("objects", 5, "shape", "polyhedron", "vertices"), [[x * 1e-300 for x in v] for v in TETRA])
@@ -885,7 +886,8 @@ API_CASES += [
 ]
 API_CASES += [
     ("Box.size-thin", lambda: isocsg.Box((0, 0, 0), (1, 1, 1e-300)), G, ("Box.size",)),
-    ("Cylinder.axis-flat", lambda: isocsg.Cylinder((0, 0, 0), (0, 0, 1e-9), 1), G, ("Cylinder.axis",)),
+    ("Cylinder.axis-flat", lambda: isocsg.Cylinder((0, 0, 0), (0, 0, 1e-9), 1e4), G, ("Cylinder.axis",)),
+    ("Cylinder.radius-needle", lambda: isocsg.Cylinder((0, 0, 0), (0, 0, 1e4), 1e-9), G, ("Cylinder.radius",)),
     ("Cone.radius-hair", lambda: isocsg.Cone((0, 0, 0), (0, 0, 1), 1e-12), G, ("Cone.radius",)),
     ("ConvexPolyhedron.vertices-strings", lambda: isocsg.ConvexPolyhedron([["0", "0", "0"]] * 4), G, ("ConvexPolyhedron.vertices",)),
     ("ConvexPolyhedron.vertices-bools", lambda: isocsg.ConvexPolyhedron(np.eye(4, 3, dtype=bool)), G, ("ConvexPolyhedron.vertices",)),

@@ -122,10 +122,13 @@ def test_minkowski_under_a_map_takes_the_shift_back_once() -> None:
     assert np.allclose(lo, (40, 5, 2))
 
 
-def test_two_non_convex_children_stay_refused() -> None:
+def test_two_non_convex_flat_children_sum_exactly() -> None:
+    """Two L-shaped prisms (a cube with a corner cut through): flat-faced, so each sums through its
+    convex pieces, by default (isocsg.csg.flat_pieces). By hand: L = [1,4]x[0,4] u [0,1]x[1,4] (x 4
+    high); the pairs' sums [2,8]x[0,8], [1,5]x[1,8], [0,2]x[2,8] cover 48 + 7 + 6 = 61, 8 high."""
     plate = "difference() { cube(size = [4, 4, 4], center = false); cube(size = [2, 2, 9], center = true); }"
-    with pytest.raises(UnsupportedOpenSCADError, match="not convex"):
-        _load(f"minkowski() {{ {plate} {plate} }}")
+    model = lower(parse_csg(f"minkowski() {{ {plate} {plate} }}"))
+    assert volume(model.solid) == pytest.approx(61 * 8, rel=1e-9)  # type: ignore[attr-defined]
 
 
 @settings(max_examples=4, deadline=None)
@@ -207,21 +210,23 @@ def test_pieces_of_a_small_dented_edge_on_a_large_outline_are_convex() -> None:
 @given(a=st.floats(0.5, 30), b=st.floats(0.5, 30), r=st.floats(0.2, 8), fn=st.sampled_from([0, 3, 6, 7, 24]),
        h=st.floats(0.5, 10))
 def test_a_2d_sum_of_a_rectangle_and_a_circle(a: float, b: float, r: float, fn: int, h: float) -> None:
-    """``linear_extrude(h) minkowski() { square([a, b]); circle(r); }``: refused by default; with the
-    option the area is Steiner's ``ab + a w_y + b w_x + area(P)`` for OpenSCAD's polygon ``P`` of
-    the circle (its widths ``w_x``, ``w_y`` along the axes)."""
+    """``linear_extrude(h) minkowski() { square([a, b]); circle(r); }``: exact by default (the disc
+    Steiner's ``ab + 2 (a + b) r + pi r^2``; with an explicit ``$fn`` OpenSCAD's polygon ``P`` of the
+    circle, ``ab + a w_y + b w_x + area(P)`` with its widths ``w_x``, ``w_y`` along the axes), and the
+    same with the option (an exact node stays exact)."""
     text = (f"linear_extrude(height = {h}, center = false, convexity = 1, scale = [1, 1], $fn = {fn}, $fa = 12, "
             f"$fs = 2) {{ minkowski(convexity = 0) {{ square(size = [{a}, {b}], center = false); "
             f"circle(r = {r}, $fn = {fn}, $fa = 12, $fs = 2); }} }}")
-    with pytest.raises(UnsupportedOpenSCADError, match="minkowski"):
-        lower(parse_csg(text))
-    ring = _circle(_segments(r, fn=fn), r, 0.0)[:, :2]
-    wx, wy = np.ptp(ring, axis=0)
-    n = len(ring)
-    want = h * (a * b + a * wy + b * wx + n * r * r * math.sin(2 * math.pi / n) / 2)
-    model = _load(text)
-    assert abs(volume(model.solid) - want) <= 1e-9 * want  # type: ignore[attr-defined]
-    assert "minkowski()" in model.polygonal[0]  # type: ignore[attr-defined]
+    if fn == 0:
+        want = h * (a * b + 2 * (a + b) * r + math.pi * r * r)
+    else:
+        ring = _circle(_segments(r, fn=fn), r, 0.0)[:, :2]
+        wx, wy = np.ptp(ring, axis=0)
+        n = len(ring)
+        want = h * (a * b + a * wy + b * wx + n * r * r * math.sin(2 * math.pi / n) / 2)
+    for model in (lower(parse_csg(text)), _load(text)):
+        assert abs(volume(model.solid) - want) <= 1e-6 * want  # type: ignore[attr-defined]
+        assert not model.polygonal  # type: ignore[attr-defined]
 
 
 def test_a_face_with_a_point_repeated_in_turn_has_no_area() -> None:

@@ -51,6 +51,8 @@ from ..errors import InvalidGeometryError, NotExactError, ResourceLimitError
 from ..kinds import ConvexPolyhedron, Cylinder, Primitive, Solid, Sphere, Torus, Truncus
 from ..kinds.affine import similarity_factor
 from ..kinds.forms import AffineBall, AffineFrustum
+from ..kinds.mesh import TriangleMesh
+from .flat_pieces import flat_convex_pieces
 from .hull_balls import ball_hull, disc_hull_prism, upper_disc_hull
 from .hull_discs import parallel_disc_hull
 from .hull_grow import grow_ball, grow_disc, polytope
@@ -89,13 +91,19 @@ def _union_leaves(solid: Solid, operation: str) -> list[Primitive]:
         s = todo.pop()
         if isinstance(s, Union):
             todo.extend(reversed(s.children))
+        elif isinstance(s, TriangleMesh) and operation == "minkowski" and not s.is_convex():
+            out.extend(s.convex_pieces())  # a non-convex mesh sums through its convex pieces
         elif isinstance(s, Primitive):
             out.append(s)
         elif isinstance(s, CSGNode):
-            raise NotExactError(
-                f"{operation}: a {operation} of {_article(_name(s).lower())} is not supported (only unions split "
-                f"into convex pieces exactly: a {operation} does not distribute over it)"
-            )
+            pieces = flat_convex_pieces(s) if operation == "minkowski" else None
+            if pieces is None:
+                flat = " and flat-faced solids" if operation == "minkowski" else ""
+                raise NotExactError(
+                    f"{operation}: a {operation} of {_article(_name(s).lower())} is not supported (only unions"
+                    f"{flat} split into convex pieces exactly: a {operation} does not distribute over it)"
+                )
+            out.extend(pieces)
         else:
             raise InvalidGeometryError(f"{operation}: operands must be isocsg solids, got {_name(s)}")
     return out

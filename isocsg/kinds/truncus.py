@@ -18,7 +18,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from .._validation import (
     MAX_ABS_COORD,
-    MIN_ASPECT,
+    MIN_TRUNCUS_ASPECT,
     Vec3,
     length_floor,
     nonzero_vector3,
@@ -118,14 +118,15 @@ class Truncus(Primitive):
         height = math.hypot(*axis)
         _check_length(f"{name}.axis", height, center, what="length")
         big = max(r1, r2)
-        if height < MIN_ASPECT * big:
+        if height < MIN_TRUNCUS_ASPECT * big:
             raise InvalidGeometryError(
-                f"{name}.axis must be at least {MIN_ASPECT:g} x the larger radius {big:g} long, got length {height:g}"
+                f"{name}.axis must be at least {MIN_TRUNCUS_ASPECT:g} x the larger radius {big:g} long, "
+                f"got length {height:g}"
             )
-        if big < MIN_ASPECT * height:
+        if big < MIN_TRUNCUS_ASPECT * height:
             shown = "radius" if one_radius else ("r1" if r1 >= r2 else "r2")
             raise InvalidGeometryError(
-                f"{name}.{shown} must be at least {MIN_ASPECT:g} x the height {height:g}, got {big:g}"
+                f"{name}.{shown} must be at least {MIN_TRUNCUS_ASPECT:g} x the height {height:g}, got {big:g}"
             )
         object.__setattr__(self, "r1", r1)
         object.__setattr__(self, "r2", r2)

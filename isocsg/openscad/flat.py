@@ -292,8 +292,8 @@ def _kept(lw: _Lowerer, call: CSGCall) -> list[CSGCall]:
             warnings.warn(MixedDimensionsWarning(
                 f"{lw.where(c)}ignoring the 3D object {c.name}() in a 2D operation, as OpenSCAD does"), stacklevel=2)
             continue
-        if c.name == "minkowski" and lw.polygonal:
-            out.append(c)  # OpenSCAD's polygonal sum (isocsg.openscad.polygonal)
+        if c.name == "minkowski":
+            out.append(c)  # summed exactly (isocsg.openscad.sum2d)
             continue
         if c.name not in NODES_2D and c.name not in _PASS and c.name not in ("import", "projection", "resize"):
             lw.unsupported(c, lw.reason(c.name, "2D"))
@@ -314,10 +314,10 @@ def shape_of(lw: _Lowerer, call: CSGCall, polygonal: bool = False) -> Any:
             child = kids[len(done)]
             if child.name == "projection":  # 3D children: lowered as solids, then projected
                 done.append(project(lw, child))
-            elif child.name == "minkowski":  # only kept with the polygonal option (see _kept)
-                from .polygonal import polygonal_minkowski2d
+            elif child.name == "minkowski":
+                from .sum2d import minkowski_shape
 
-                done.append(polygonal_minkowski2d(lw, child, shape_of))
+                done.append(minkowski_shape(lw, child, shape_of, polygonal))
             else:
                 stack.append((child, _kept(lw, child), []))
             continue

@@ -15,6 +15,7 @@ from .constructors import circle, polygon, regular_polygon, square
 from .extrude import linear_extrude
 from .leaves import Circle, ConvexPolygon, Ellipse, convex_polygon
 from .measure import area, area_bounds, bounds, to_shapely
+from .minkowski import minkowski2d
 from .offset import offset
 from .openscad import fragments, from_openscad, text_segments
 from .region import convex_pieces, fill, shape_from_region
@@ -44,6 +45,6 @@ __all__ = [
     "union2d", "intersection2d", "difference2d", "union_all2d",
     "transform2d", "translate2d", "rotate2d", "scale2d", "mirror2d",
     "area", "area_bounds", "bounds", "to_shapely", "fill", "convex_pieces", "shape_from_region",
-    "offset", "linear_extrude", "rotate_extrude", "text", "font_path", "FontFallbackWarning",
+    "offset", "minkowski2d", "linear_extrude", "rotate_extrude", "text", "font_path", "FontFallbackWarning",
     "from_openscad", "fragments", "text_segments",
 ]
