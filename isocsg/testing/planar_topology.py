@@ -21,7 +21,15 @@ were cut by different neighbours) splits that edge. Then, with no mesh in betwee
   outer ring not at all: such an open polygon is still simply connected), per component; its
   genus is ``(2 - chi) / 2`` and must be a whole number (else ``None``);
 - a component whose enclosed volume (the flux of ``x / 3`` through its polygons) is negative is a
-  void: the inner shell of a cavity.
+  void: the inner shell of a cavity;
+- ``touching`` also where a corner of a leaf lies on another leaf's face plane without a face of
+  its own in that plane (a contact at a point or along a line, :func:`_contacts`): there a mesh
+  engine may join or separate the sheets either way (and the polygons' counts were not always
+  right on grid trees with such contacts).
+
+Where the polygons do not close into an oriented surface, or a component's characteristic is
+odd or above 2, :func:`planar_topology` returns None and :func:`refusal` says why: the caller
+(:func:`isocsg.testing.compare.true_topology`) then reads the topology from a mesh, and says so.
 """
 
 from __future__ import annotations
