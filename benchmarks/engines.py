@@ -17,6 +17,12 @@ tessellation bound, area and Hausdorff distance against the tessellation referen
 The distributions are printed, and every case judged wrong is listed with its reproducer::
 
     python benchmarks/engines.py --n 200 --seed 1 [--fuzz 0.2] [--max-cubes 100] [--tol 1e-5] [--findings FILE]
+
+``--rejudge-topology RESULTS --rejudged OUT`` (with the arguments or ``--cases`` that drew the
+trees) judges only the topology again, with the current truth (``isocsg.testing.true_topology``:
+an all-planar tree's from its exact boundary polygons), for the all-planar trees of a results
+file: each engine's mesh is computed again, no volume, area or distance; the other records are
+copied as they are.
 """
 
 from __future__ import annotations
@@ -38,7 +44,7 @@ from isocsg.csg.mesh import to_manifold
 from isocsg.csg.program import OP_INTERSECTION, OP_UNION
 from isocsg.csg.section import solid_program
 from isocsg.testing import compare_mesh, reference, to_python
-from isocsg.testing.compare import as_trimesh
+from isocsg.testing.compare import as_trimesh, compare_topology, true_topology
 from isocsg.testing.strategies import manifold_fuzz, trees
 
 
@@ -169,8 +175,6 @@ def isolated(fn: Any, *args: Any, timeout: float = 120.0) -> Any:
 def judge_tree(k: int, tree: Any, args: Any, engines: list[str]) -> tuple[dict[str, Any], list[str]]:
     """One tree: its reference, every engine's result and its comparison; the record written to
     the results file and the findings (reproducers) of the cases judged wrong, raised or crashed."""
-    import pyvista as pv
-
     t0 = time.time()
     ref = reference(tree, tol=args.tol)
     rec: dict[str, Any] = {"k": k, "leaves": solid_program(tree).n_leaves, "ref_seconds": time.time() - t0,
@@ -184,13 +188,7 @@ def judge_tree(k: int, tree: Any, args: Any, engines: list[str]) -> tuple[dict[s
     for eng in engines:
         t1 = time.time()
         try:
-            if eng == "manifold3d":
-                mesh = run_manifold(tree, mf)
-                mesh.num_tri()  # manifold3d evaluates lazily: time the Booleans, not the tree
-            elif eng.startswith("trimesh-"):
-                mesh = run_trimesh(tree, [as_trimesh(m) for m in mf], eng.split("-", 1)[1])
-            else:
-                mesh = isolated(run_pyvista, tree, [pv.wrap(as_trimesh(m)) for m in mf])
+            mesh = engine_mesh(eng, tree, mf)
         except TimeoutError:
             raise  # the tree's time budget, not the engine
         except Exception as exc:  # noqa: BLE001 - an engine's failure is a finding
@@ -215,6 +213,68 @@ def judge_tree(k: int, tree: Any, args: Any, engines: list[str]) -> tuple[dict[s
     return rec, notes
 
 
+def engine_mesh(eng: str, tree: Any, mf: list[Any]) -> Any:
+    """One engine's result for ``tree`` from the leaf meshes ``mf`` (manifold3d solids)."""
+    import pyvista as pv
+
+    if eng == "manifold3d":
+        mesh = run_manifold(tree, mf)
+        mesh.num_tri()  # manifold3d evaluates lazily: time the Booleans, not the tree
+        return mesh
+    if eng.startswith("trimesh-"):
+        return run_trimesh(tree, [as_trimesh(m) for m in mf], eng.split("-", 1)[1])
+    return isolated(run_pyvista, tree, [pv.wrap(as_trimesh(m)) for m in mf])
+
+
+def rejudge_topology(cases: list[Any], records: list[dict[str, Any]], args: Any, out: str) -> None:
+    """The topology verdicts of the all-planar trees of ``records`` judged again against
+    :func:`~isocsg.testing.compare.true_topology` (written to ``out``, one JSON line per tree,
+    resuming); every other record is copied. An engine's record keeps its other verdicts and
+    gains ``topology_before`` (the verdict it had), and the tree's record ``topology_truth``."""
+    done: set[int] = set()
+    if os.path.exists(out):
+        done = {json.loads(line)["k"] for line in open(out) if line.strip()}
+
+    def alarm(*_: Any) -> None:
+        raise TimeoutError
+
+    signal.signal(signal.SIGALRM, alarm)
+    changed: Counter[str] = Counter()
+    for rec in records:
+        k = rec["k"]
+        if k in done:
+            continue
+        tree = cases[k]
+        prog = solid_program(tree)
+        judged = [e for e, r in rec.get("engines", {}).items() if r.get("status") in ("ok", "wrong")]
+        if judged and all(p.polyhedral and p.convex for p in prog.leaves):
+            signal.alarm(args.budget)
+            try:
+                t0 = time.time()
+                truth = true_topology(tree)
+                rec["topology_truth"] = {"source": truth.source, "components": truth.components,
+                                         "genus": truth.genus, "voids": truth.voids, "touching": truth.touching,
+                                         "seconds": time.time() - t0}
+                mf = [to_manifold(p, args.segments) for p in prog.leaves]
+                for eng in judged:
+                    r = rec["engines"][eng]
+                    topo, _, verdict = compare_topology(engine_mesh(eng, tree, mf), tree, segments=args.segments)
+                    r["topology_before"] = r["verdicts"].get("topology")
+                    r["verdicts"]["topology"] = verdict
+                    r["topology"] = {"components": topo.components, "genus": topo.genus, "voids": topo.voids}
+                    r["status"] = "wrong" if "wrong" in r["verdicts"].values() else "ok"
+                    changed[f"{eng}: {r['topology_before']} -> {verdict}"] += 1
+            except Exception as exc:  # noqa: BLE001 - kept as it was, with the reason
+                rec["rejudge_failed"] = f"{type(exc).__name__}: {exc}"[:300]
+                changed["failed"] += 1
+            finally:
+                signal.alarm(0)
+        with open(out, "a") as fh:
+            fh.write(json.dumps(rec) + "\n")
+    for key, n in sorted(changed.items()):
+        print(f"{n:5d}  {key}")
+
+
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--n", type=int, default=20, help="number of trees (1000 for the full run)")
@@ -234,6 +294,10 @@ def main() -> None:
     ap.add_argument("--cases", default=None,
                     help="keep the drawn trees in this pickle (drawing 1000 takes minutes): shards share them")
     ap.add_argument("--shard", default="0/1", help="i/n: judge only the trees k with k %% n == i")
+    ap.add_argument("--rejudge-topology", default=None, metavar="RESULTS",
+                    help="only judge the topology of the all-planar trees of this results file again (the "
+                         "trees drawn by the other arguments or read from --cases); written to --rejudged")
+    ap.add_argument("--rejudged", default=None, help="the results file --rejudge-topology writes")
     ap.add_argument("--report", nargs="*", default=None, help="only print the tables of these results files")
     ap.add_argument("--collect", nargs="*", default=None,
                     help="only gather these findings files into FUZZ_OUT and RANDOM_OUT given by --collect-to")
@@ -266,6 +330,12 @@ def main() -> None:
                 pickle.dump(cases, fh)
     print(f"{len(cases)} trees drawn in {time.time() - t0:.1f} s; segments {args.segments}", flush=True)
     engines = args.engines.split(",")
+    if args.rejudge_topology:
+        if not args.rejudged:
+            ap.error("--rejudge-topology needs --rejudged OUT")
+        records = [json.loads(line) for line in open(args.rejudge_topology) if line.strip()]
+        rejudge_topology(cases, records, args, args.rejudged)
+        return
     if args.phases:
         time_phases(cases, len(cases) - int(round(len(cases) * args.fuzz)), [int(x) for x in args.phases.split(",")],
                     args, engines)

@@ -5,6 +5,8 @@
 - :func:`surface_area`, :func:`boundary_volume`, :func:`closed_form_area`;
 - :func:`signed_distance`: the CSG combination and its certified bounds;
 - :func:`compare_mesh`: an engine's mesh against the truth and the tessellation reference;
+  :func:`true_topology` (an all-planar tree's from its exact boundary polygons,
+  :mod:`isocsg.testing.planar_topology`) and :func:`compare_topology` (the topology alone);
 - :mod:`isocsg.testing.strategies`: hypothesis strategies (the ``testing`` extra) and
   :func:`to_python`;
 - :mod:`isocsg.testing.plugin`: pytest fixtures.
@@ -15,7 +17,8 @@ from .._lazy import lazy_exports
 # Loaded on first use (the pytest plugin imports this package in every session of an install).
 _EXPORTS: dict[str, str] = {
     **dict.fromkeys(["AreaResult", "boundary_volume", "closed_form_area", "surface_area"], ".area"),
-    **dict.fromkeys(["MeshComparison", "Topology", "compare_mesh", "topology"], ".compare"),
+    **dict.fromkeys(["MeshComparison", "Topology", "compare_mesh", "compare_topology", "topology", "true_topology"],
+                    ".compare"),
     **dict.fromkeys(["DistanceResult", "signed_distance"], ".distance"),
     **dict.fromkeys(["Reference", "SectionReference", "reference"], ".figures"),
     "to_python": ".strategies",
@@ -31,11 +34,13 @@ __all__ = [
     "boundary_volume",
     "closed_form_area",
     "compare_mesh",
+    "compare_topology",
     "reference",
     "signed_distance",
     "surface_area",
     "to_python",
     "topology",
+    "true_topology",
 ]
 
 __getattr__, __dir__ = lazy_exports(globals(), _EXPORTS)

@@ -21,12 +21,15 @@ a floor of 1e-9 of the solid's size) did something else, and the report says ``w
   the result's boundary) get their distance to the mesh (VTK's exact point-to-triangle distance);
 - watertightness, winding consistency, components and genus. The mesh's genus is
   ``components - chi / 2`` from its Euler characteristic ``chi = V - E + F``, in the mesh's own
-  connectivity for a manifold3d mesh and with vertices merged by position for a triangle soup;
-  the true solid's topology is read from a fine manifold3d mesh (256 segments per circle) in its
-  own connectivity. Where that mesh has distinct vertices at one position, sheets of the result
-  touch (a tangential contact, where the regularised solid is not a manifold): components and
-  genus then depend on whether a mesh joins the sheets, and a differing mesh is reported
-  ``not comparable``, not ``wrong``.
+  connectivity for a manifold3d mesh and with vertices merged by position for a triangle soup.
+  The true solid's topology (:func:`true_topology`) of an all-planar tree (boxes and convex
+  polyhedra) comes from its exact boundary polygons (:mod:`isocsg.testing.planar_topology`:
+  no mesh engine is involved, so manifold3d is not judged by itself); for a tree with a curved
+  leaf it is read from a fine manifold3d mesh (256 segments per circle) in its own
+  connectivity. Where sheets of the result touch (at an edge or a vertex of the polygons; in
+  the fine mesh, distinct vertices at one position: a tangential contact, where the
+  regularised solid is not a manifold), components and genus depend on how a mesh separates
+  or joins the sheets, and a differing mesh is reported ``not comparable``, not ``wrong``.
 """
 
 from __future__ import annotations
@@ -48,7 +51,8 @@ from .area import _Tree
 from .distance import signed_distance
 from .figures import Reference, reference
 
-__all__ = ["MeshComparison", "Topology", "as_trimesh", "compare_mesh", "distance_to_mesh", "topology"]
+__all__ = ["MeshComparison", "Topology", "as_trimesh", "compare_mesh", "compare_topology", "distance_to_mesh",
+           "topology", "true_topology"]
 
 #: The true solid's topology is read from a manifold3d mesh with this many segments per circle.
 FINE_SEGMENTS = 256
@@ -60,8 +64,10 @@ class Topology:
     (summed over them), ``euler`` (V - E + F), ``watertight``, ``winding_consistent``,
     ``nonmanifold_edges`` (edges of more than two triangles), ``oriented`` (every edge used as
     often in one direction as in the other: closed and consistently wound, even where sheets meet
-    at an edge) and ``touching`` (distinct vertices of the mesh's own connectivity at one
-    position: sheets that meet there)."""
+    at an edge), ``touching`` (distinct vertices of the mesh's own connectivity at one
+    position: sheets that meet there), ``voids`` (components whose enclosed volume is negative:
+    the inner shells of cavities) and ``source``: ``"mesh"`` (read from a mesh) or
+    ``"polygons"`` (the exact boundary polygons of an all-planar tree, :func:`true_topology`)."""
 
     components: int
     genus: float
@@ -71,6 +77,8 @@ class Topology:
     nonmanifold_edges: int = 0
     oriented: bool = True
     touching: bool = False
+    voids: int = 0
+    source: str = "mesh"
 
 
 @dataclass(frozen=True, slots=True)
@@ -122,7 +130,8 @@ class MeshComparison:
             (f"hausdorff mesh->true {self.hausdorff_mesh_to_true:.3e}, true->mesh {self.hausdorff_true_to_mesh:.3e}, "
              f"tessellation {self.tess_hausdorff:.3e} -> {v['hausdorff']}"),
             (f"topology  {t.components} components, genus {t.genus:g}, watertight {t.watertight}, winding "
-             f"consistent {t.winding_consistent} (true: {tt.components}, genus {tt.genus:g}) -> {v['topology']}"),
+             f"consistent {t.winding_consistent} (true: {tt.components}, genus {tt.genus:g}, from {tt.source}) "
+             f"-> {v['topology']}"),
             "verdict   " + ("OK (tessellation only)" if self.ok else "WRONG: " + ", ".join(self.wrong)),
         ]
         return "\n".join(lines)
@@ -217,9 +226,35 @@ def topology(mesh: Any) -> Topology:
     order = np.argsort(inverse.ravel()[two], kind="stable")
     pairs = face[two][order].reshape(-1, 2)
     adj = coo_matrix((np.ones(len(pairs)), (pairs[:, 0], pairs[:, 1])), shape=(len(f), len(f)))
-    comps = int(connected_components(adj, directed=False)[0])
-    return Topology(comps, comps - euler / 2.0, int(euler), bool(np.all(count == 2)), bool(np.all(dcount == 1)),
-                    int(np.count_nonzero(count > 2)), bool(np.all(2 * forward == count)), touching)
+    comps, label = connected_components(adj, directed=False)
+    c = v[used].mean(axis=0)  # the enclosed volume of each component, about a point near it
+    a, b, d = v[f[:, 0]] - c, v[f[:, 1]] - c, v[f[:, 2]] - c
+    vol = np.bincount(label, weights=np.einsum("ij,ij->i", a, np.cross(b, d)) / 6.0, minlength=comps)
+    tiny = 1e-12 * float(np.max(np.ptp(v[used], axis=0))) ** 3  # a sliver's sign is rounding
+    return Topology(int(comps), comps - euler / 2.0, int(euler), bool(np.all(count == 2)), bool(np.all(dcount == 1)),
+                    int(np.count_nonzero(count > 2)), bool(np.all(2 * forward == count)), touching,
+                    int(np.count_nonzero(vol < -tiny)))
+
+
+def true_topology(solid: Solid) -> Topology:
+    """The topology of the true solid's boundary.
+
+    For an all-planar tree (boxes and convex polyhedra) from its exact boundary polygons
+    (:func:`isocsg.testing.planar_topology.planar_topology`; ``source == "polygons"``): sheets
+    that touch at an edge or a vertex are kept apart across the solid and ``touching`` says so.
+    Otherwise, and where the polygons fail (an overlay that fails on both grids, or polygons
+    that do not close), from a manifold3d mesh in its own connectivity (``source == "mesh"``):
+    at 256 segments per circle with a curved leaf, or the exact Boolean of an all-planar tree.
+    """
+    from .planar_topology import planar_topology
+
+    prog = solid_program(solid)
+    planar = all(p.polyhedral and p.convex for p in prog.leaves)
+    exact = planar_topology(solid) if planar else None
+    if exact is None:
+        return topology(to_manifold(solid, 8 if planar else FINE_SEGMENTS))
+    return Topology(exact.components, float(exact.genus), exact.euler, True, True, 0, True, exact.touching,
+                    exact.voids, "polygons")
 
 
 def _true_surface_points(
@@ -281,7 +316,9 @@ def distance_to_mesh(mesh: Any, points: NDArray[np.float64]) -> NDArray[np.float
 
 
 def _topology_verdict(topo: Topology, tess: Topology, true: Topology) -> str:
-    """``exact`` / ``tessellation`` when closed and equal to the fine / tessellation reference's;
+    """``exact`` / ``tessellation`` when closed and equal to the true / tessellation reference's
+    (the tessellation reference is not used where the truth comes from the polygons: an
+    all-planar tree has no tessellation, and its reference mesh is manifold3d's own Boolean);
     ``not comparable`` where the true result has sheets that touch (a tangential contact: the
     regularised solid is not a manifold there, and an engine may join or separate the sheets)
     and the mesh differs but is closed and oriented at every edge (a soup whose merged vertices
@@ -291,9 +328,10 @@ def _topology_verdict(topo: Topology, tess: Topology, true: Topology) -> str:
     closed = topo.watertight and topo.winding_consistent
     if closed and same(topo, true):
         return "exact"
-    if closed and same(topo, tess):
+    by_polygons = true.source == "polygons"
+    if closed and not by_polygons and same(topo, tess):
         return "tessellation"
-    touching = true.touching or tess.touching
+    touching = true.touching or (tess.touching and not by_polygons)
     return "not comparable" if touching and topo.oriented else "wrong"
 
 
@@ -359,7 +397,8 @@ def compare_mesh(
     elif len(tz.true_points):
         h_tm = math.inf
     topo = topology(mesh)
-    topo_v = _topology_verdict(topo, tz.topology, tz.topology_true)
+    topo_true = _true_topology(solid) if planar else tz.topology_true
+    topo_v = _topology_verdict(topo, tz.topology, topo_true)
     vol_err = vol - truth.volume
     vol_v = "exact" if abs(vol_err) <= vol_floor else (
         "tessellation" if abs(vol_err) <= tz.volume_bound + vol_floor else "wrong")
@@ -369,7 +408,7 @@ def compare_mesh(
         ("hausdorff", _verdict(max(h_mt, h_tm), tz.hausdorff, floor * size, slack)),
         ("topology", topo_v),
     )
-    tv, ta, h_tess, topo_true = tz.volume, tz.area, tz.hausdorff, tz.topology_true
+    tv, ta, h_tess = tz.volume, tz.area, tz.hausdorff
     return MeshComparison(vol, truth.volume, vol_err, area, truth.area, area - truth.area, h_mt, h_tm,
                           topo, topo_true, segments, tv - truth.volume, tz.volume_bound, ta - truth.area, h_tess,
                           verdicts)
@@ -399,7 +438,7 @@ def _tessellation(solid: Solid, segments: int, n: int, seed: int, planar: bool) 
     if len(tp) and len(tess.faces):
         h = max(h, float(np.max(distance_to_mesh(tess, tp))))
     topo = topology(tess)
-    topo_true = topology(fine) if not planar else topo
+    topo_true = topology(fine) if not planar else topo  # compare_mesh takes a planar tree's from the polygons
     # |V(op(A', B', ...)) - V(op(A, B, ...))| <= sum |A' xor A| = sum (V(A) - V(A')) for meshes A'
     # inscribed in convex leaves A: the volume error any exact Boolean of the tessellated leaves may have
     bound = 0.0
@@ -407,6 +446,40 @@ def _tessellation(solid: Solid, segments: int, n: int, seed: int, planar: bool) 
         lm = to_manifold(leaf, segments)
         bound += abs(float(leaf.volume) - float(lm.volume()))
     return _Tessellated(tv, ta, h, topo, topo_true, tp, bound)
+
+
+def compare_topology(
+    mesh: Any, solid: Solid, *, segments: int | None = None,
+) -> tuple[Topology, Topology, str]:
+    """Only the topology part of :func:`compare_mesh`: the mesh's :class:`Topology`, the true
+    one (:func:`true_topology`) and the verdict, against the tessellation
+    reference at ``segments`` (8 for an all-planar tree; None: guessed as in
+    :func:`compare_mesh`). No volume, area or distance is computed.
+
+    Raises
+    ------
+    InvalidParameterError
+        On an unsupported mesh type or a bad ``segments``.
+    """
+    topo = topology(mesh)
+    prog = solid_program(solid)
+    planar = all(p.polyhedral and p.convex for p in prog.leaves)
+    if segments is None and not planar:
+        segments = _guess_segments(solid, len(as_trimesh(mesh).vertices))
+    seg = 8 if segments is None else integer("segments", segments, low=3, high=65536, error=InvalidParameterError)
+    tess = _tess_topology(solid, seg)
+    true = _true_topology(solid) if planar else topology(to_manifold(solid, FINE_SEGMENTS))
+    return topo, true, _topology_verdict(topo, tess, true)
+
+
+@functools.lru_cache(maxsize=8)
+def _true_topology(solid: Solid) -> Topology:
+    return true_topology(solid)  # several engines' meshes of one tree are compared in a row
+
+
+@functools.lru_cache(maxsize=4)
+def _tess_topology(solid: Solid, segments: int) -> Topology:
+    return topology(to_manifold(solid, segments))
 
 
 def _guess_segments(solid: Solid, vertices: int) -> int:

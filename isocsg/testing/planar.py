@@ -32,7 +32,7 @@ from numpy.typing import NDArray
 
 from ..csg.program import OP_INTERSECTION, OP_UNION, Program
 
-__all__ = ["Neighbours", "PlanarFace", "face_boundary"]
+__all__ = ["Neighbours", "PlanarFace", "face_boundary", "face_regions"]
 
 F64 = NDArray[np.float64]
 #: Relative rounding of the overlay's areas (GEOS' snap-rounded overlay in double precision).
@@ -127,6 +127,17 @@ def _convex_polygon(points: F64) -> Any:
     return hull if hull.geom_type == "Polygon" and hull.area > 0 else None
 
 
+def _areal(g: Any) -> Any:
+    """The polygons of an overlay's result: snap-rounding can collapse a sliver into a line or a
+    point, and GEOS refuses such a mixed collection as the input of the next overlay."""
+    import shapely
+
+    if g.geom_type in ("Polygon", "MultiPolygon"):
+        return g
+    parts = [p for p in shapely.get_parts(g) if p.geom_type == "Polygon" and not p.is_empty]
+    return shapely.MultiPolygon(parts) if parts else shapely.Polygon()
+
+
 def _combiner(face_poly: Any, grid: float | None) -> Any:
     """``combine`` for :meth:`Program.evaluate` on regions of a face: a shapely geometry, None
     (empty) or ``_FULL`` (all of ``face_poly``); ``grid``: the overlay's snapping grid, if any."""
@@ -137,21 +148,26 @@ def _combiner(face_poly: Any, grid: float | None) -> Any:
             if any(x is _FULL for x in xs):
                 return _FULL
             geoms = [x for x in xs if x is not None]
-            return None if not geoms else geoms[0] if len(geoms) == 1 else shapely.union_all(geoms, grid_size=grid)
+            if len(geoms) <= 1:
+                return geoms[0] if geoms else None
+            return _areal(shapely.union_all(geoms, grid_size=grid))
         if op == OP_INTERSECTION:
             if any(x is None for x in xs):
                 return None
             geoms = [x for x in xs if x is not _FULL]
             if len(geoms) <= 1:
                 return geoms[0] if geoms else _FULL
-            return shapely.intersection_all(geoms, grid_size=grid)
+            out = geoms[0]
+            for g in geoms[1:]:  # intersection_all takes no grid: pairwise, snap-rounded
+                out = _areal(shapely.intersection(out, g, grid_size=grid))
+            return out
         first, rest = xs[0], [x for x in xs[1:] if x is not None]
         if first is None or any(x is _FULL for x in rest):
             return None
         if not rest:
             return first
-        return shapely.difference(face_poly if first is _FULL else first, shapely.union_all(rest, grid_size=grid),
-                                  grid_size=grid)
+        return _areal(shapely.difference(face_poly if first is _FULL else first,
+                                         _areal(shapely.union_all(rest, grid_size=grid)), grid_size=grid))
 
     return combine
 
@@ -172,11 +188,28 @@ def face_boundary(
     ------
     shapely.errors.GEOSException
         Where the overlay fails."""
+    inside, outside, err = face_regions(prog, i, face, nb, tol, grid)
+    a_in, a_out = float(inside.area), float(outside.area)
+    return a_in + a_out, a_in - a_out, err
+
+
+def face_regions(
+    prog: Program, i: int, face: PlanarFace, nb: Neighbours, tol: float, grid: float | None = None,
+) -> tuple[Any, Any, float]:
+    """The part of leaf ``i``'s face on the result's boundary counted by ``i``, as two shapely
+    geometries in the face's frame: where the result is inside ``i`` (its outward normal is the
+    face's) and where it is outside (the opposite normal); and the overlay's rounding bound on
+    their area (see :func:`face_boundary`).
+
+    Raises
+    ------
+    shapely.errors.GEOSException
+        Where the overlay fails."""
     import shapely
 
     face_poly = _convex_polygon(face.uv)
     if face_poly is None:
-        return 0.0, 0.0, 0.0
+        return shapely.Polygon(), shapely.Polygon(), 0.0
     plus: dict[int, Any] = {i: None}
     minus: dict[int, Any] = {i: _FULL}
     skip: list[Any] = []
@@ -197,17 +230,17 @@ def face_boundary(
         return shapely.Polygon() if x is None else face_poly if x is _FULL else x
 
     if rp is rm or (rp is _FULL and rm is _FULL):
-        return 0.0, 0.0, 0.0
+        return shapely.Polygon(), shapely.Polygon(), 0.0
     gp, gm = geom(rp), geom(rm)
-    inside = shapely.difference(gm, gp, grid_size=grid)  # the result inside i
-    outside = shapely.difference(gp, gm, grid_size=grid)  # outside i
+    inside = _areal(shapely.difference(gm, gp, grid_size=grid))  # the result inside i
+    outside = _areal(shapely.difference(gp, gm, grid_size=grid))  # outside i
     if skip:
-        s = shapely.union_all(skip, grid_size=grid)
-        inside, outside = shapely.difference(inside, s, grid_size=grid), shapely.difference(outside, s, grid_size=grid)
-    a_in, a_out = float(inside.area), float(outside.area)
+        s = _areal(shapely.union_all(skip, grid_size=grid))
+        inside = _areal(shapely.difference(inside, s, grid_size=grid))
+        outside = _areal(shapely.difference(outside, s, grid_size=grid))
     err = OVERLAY_ROUNDING * float(face_poly.area) * (1 + len(states))
     if grid is not None:
         cuts = [g for g in plus.values() if g is not None and g is not _FULL]
         perimeter = float(face_poly.length) + sum(float(g.length) for g in cuts)
         err += 2.0 * grid * perimeter * (1 + len(states))
-    return a_in + a_out, a_in - a_out, err
+    return inside, outside, err
