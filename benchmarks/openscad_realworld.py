@@ -46,6 +46,7 @@ from pathlib import Path
 
 HERE = Path(__file__).resolve().parent
 SAMPLE = HERE / "openscad_realworld_sample.txt"
+HEAVY = HERE / "openscad_realworld_heavy.txt"
 
 
 def _stl_volume(model: Path, root: Path, timeout: float) -> float | None:
@@ -62,6 +63,22 @@ def _stl_volume(model: Path, root: Path, timeout: float) -> float | None:
         return None
     mesh = trimesh.load(str(out), force="mesh")
     return float(abs(mesh.volume))
+
+
+_SOLID_NODE = re.compile(r"\b(cube|sphere|cylinder|polyhedron|linear_extrude|rotate_extrude|surface)\s*\("
+                         r"|import\([^)]*\.(stl|off|obj|3mf|amf)\b", re.IGNORECASE)
+
+
+def _has_3d_tree(model: Path, root: Path, timeout: float) -> bool:
+    """Whether ``openscad -o model.csg`` (cached under ``DIR/_csg``) gives a tree with a 3D node."""
+    out = root / "_csg" / (str(model.relative_to(root)).replace("/", "__") + ".csg")
+    if not out.exists():
+        try:
+            subprocess.run(["openscad", "-o", str(out), model.name], cwd=model.parent, capture_output=True,
+                           timeout=timeout, check=False)
+        except subprocess.TimeoutExpired:
+            return False
+    return out.exists() and _SOLID_NODE.search(out.read_text(errors="replace")) is not None
 
 
 def _kind(message: str) -> str:
@@ -127,8 +144,14 @@ def main() -> None:
     ap.add_argument("--only", default="", help="regular expression on the model path")
     ap.add_argument("--no-volume", action="store_true", help="load only (no isocsg.volume): the load rate alone")
     ap.add_argument("--sample", type=Path, default=SAMPLE, help="the sample list (owner/name commit path lines)")
+    ap.add_argument("--heavy", action="store_true", help="the heavy sample list (implies --load-only)")
+    ap.add_argument("--load-only", action="store_true",
+                    help="no STL: a model counts when openscad -o model.csg gives a 3D tree; load only")
     args = ap.parse_args()
+    if args.heavy:
+        args.sample, args.load_only = HEAVY, True
     (args.root / "_stl").mkdir(exist_ok=True)
+    (args.root / "_csg").mkdir(exist_ok=True)
     models = [m for m in _models(args.root, args.scan, args.sample) if re.search(args.only, str(m))]
     import isocsg  # loaded and warmed once here: each model's child process is a fork of this one
     import isocsg.openscad
@@ -144,18 +167,24 @@ def main() -> None:
         if not model.exists():
             print(f"MISSING {model}")
             continue
-        ref = _stl_volume(model, args.root, 600.0)
-        if ref is None or ref <= 0.0:
-            print(f"NO-STL  {model}")
-            continue
+        if args.load_only:
+            ref = None
+            if not _has_3d_tree(model, args.root, 120.0):
+                print(f"NO-3D   {model}")
+                continue
+        else:
+            ref = _stl_volume(model, args.root, 600.0)
+            if ref is None or ref <= 0.0:
+                print(f"NO-STL  {model}")
+                continue
         counted += 1
         t0 = time.perf_counter()
-        status, a, b = _child(model, args.polygonal, False, args.timeout, not args.no_volume)
+        status, a, b = _child(model, args.polygonal, False, args.timeout, not (args.no_volume or args.load_only))
         dt = time.perf_counter() - t0
         if status == "ok":
             loaded += 1
             extra = f" polygonal {len(b)}" if b else ""  # type: ignore[arg-type]
-            if a is None:
+            if a is None or ref is None:
                 print(f"OK   {dt:6.1f}s {model}{extra}", flush=True)
                 continue
             rel = abs(float(a) - ref) / ref  # type: ignore[arg-type]

@@ -54,7 +54,7 @@ from ..kinds.forms import AffineBall, AffineFrustum
 from .hull_balls import ball_hull, disc_hull_prism, upper_disc_hull
 from .hull_discs import parallel_disc_hull
 from .hull_grow import grow_ball, grow_disc, polytope
-from .tree import CSGNode, Union
+from .tree import CSGNode, Difference, Union
 
 __all__ = ["hull", "minkowski", "hull_pieces", "minkowski_pieces", "MAX_MINKOWSKI_TERMS"]
 
@@ -89,6 +89,8 @@ def _union_leaves(solid: Solid, operation: str) -> list[Primitive]:
         s = todo.pop()
         if isinstance(s, Union):
             todo.extend(reversed(s.children))
+        elif operation == "hull" and isinstance(s, Difference) and _cuts_no_corner(s):
+            todo.append(s.children[0])
         elif isinstance(s, Primitive):
             out.append(s)
         elif isinstance(s, CSGNode):
@@ -99,6 +101,33 @@ def _union_leaves(solid: Solid, operation: str) -> list[Primitive]:
         else:
             raise InvalidGeometryError(f"{operation}: operands must be isocsg solids, got {_name(s)}")
     return out
+
+
+def _cuts_no_corner(d: Difference) -> bool:
+    """Whether ``hull(d) == hull(d.children[0])``: the first operand is a union of polytopes and
+    no other operand comes within rounding of a corner of its hull. The hull of a set is the hull
+    of its extreme points; these are corners of the first operand's hull, and each one kept (and
+    a neighbourhood of it within the first operand) stays in the difference."""
+    corners: list[NDArray[np.float64]] = []
+    todo: list[Solid] = [d.children[0]]
+    while todo:
+        s = todo.pop()
+        if isinstance(s, Union):
+            todo.extend(s.children)
+            continue
+        pts = s.hull_points() if isinstance(s, Primitive) else None
+        if pts is None:
+            return False  # a round or non-convex piece: its extreme points are not a finite set here
+        corners.append(np.asarray(pts, dtype=np.float64))
+    q = polytope(np.vstack(corners))
+    if q.solid is None:
+        return False
+    v = np.asarray(q.vertices, dtype=np.float64)
+    margin = 1e-9 * max(float(np.max(np.ptp(v, axis=0))), float(np.max(np.abs(v))))
+    for cut in d.children[1:]:
+        if not isinstance(cut, (Primitive, CSGNode)) or np.any(cut.contains(v, tol=margin)):
+            return False
+    return True
 
 
 def _convex(p: Primitive, operation: str) -> _Convex:
