@@ -189,3 +189,25 @@ def test_lists_with_other_values_take_the_token_path() -> None:
     assert calls[0].kwargs["a"] == [[1.0, 2.0], "x", [0.5, math.inf]]
     with pytest.raises(OpenSCADError, match="1e999 in the arguments of f is too large"):
         parse_csg("f(b = [1e999]);")
+
+
+@given(n=st.integers(3, 64), r=st.floats(0.01, 100.0), h=st.floats(0.01, 100.0))
+@settings(max_examples=20, deadline=None)
+def test_polygonal_cylinder_faces_wind_around_their_normals(n: int, r: float, h: float) -> None:
+    """OpenSCAD's n-sided cylinder as a hull: n + 2 faces (sides and ends, all faces at once),
+    each counter-clockwise about its outward normal, triangles covering the closed-form volume."""
+    from isocsg import ConvexPolyhedron
+    from isocsg.openscad.flat import cylinder_points
+
+    c = ConvexPolyhedron(cylinder_points(n, r, r, 0.0, h))
+    assert len(c.faces) == n + 2
+    assert sorted(len(f) for f in c.faces) == sorted([4] * n + [n, n])
+    for f, normal in zip(c.faces, c.face_normals):
+        q = c.hull_vertices[f]
+        newell = np.cross(q - q.mean(axis=0), np.roll(q, -1, axis=0) - q.mean(axis=0)).sum(axis=0)
+        assert newell @ normal > 0
+    want = 0.5 * n * r * r * math.sin(2 * math.pi / n) * h
+    assert c.volume == pytest.approx(want, rel=1e-9)
+    T = c.triangles
+    a, b, d = (c.hull_vertices[T[:, k]] for k in range(3))
+    assert float(np.einsum("ij,ij->i", a, np.cross(b, d)).sum()) / 6 == pytest.approx(want, rel=1e-9)
