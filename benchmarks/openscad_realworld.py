@@ -5,9 +5,12 @@ Usage, from the repository root::
     python benchmarks/openscad_realworld.py DIR                # the sample list below, under DIR
     python benchmarks/openscad_realworld.py DIR --scan         # every .scad file under DIR
     python benchmarks/openscad_realworld.py DIR --polygonal    # read_openscad(..., polygonal=True)
+    python benchmarks/openscad_realworld.py DIR --heavy --timeout 60   # the heavy sample, load only
 
 ``DIR`` holds one folder per repository, named ``owner+name`` (``git archive`` of the commit
-given in the sample list, e.g. ``git --git-dir=REPO.git archive COMMIT | tar -x -C DIR/owner+name``).
+given in the sample list, e.g. ``git --git-dir=REPO.git archive COMMIT | tar -x -C DIR/owner+name``;
+where a mirror lacks some large blobs, ``git archive`` stops at them: write the files one by one
+from ``git ls-tree -r`` and ``git cat-file --batch``, skipping the missing ones).
 The sample list, ``benchmarks/openscad_realworld_sample.txt``, has one model per line: ``owner/name
 commit path``; it names 114 models from 15 repositories of people's own models that OpenSCAD
 2021.01 exports as non-empty 3D solids. How it was drawn: 19 repositories found by name
@@ -19,6 +22,17 @@ loaded machine) with a non-empty 3D solid. Of 356 files tried, 85 were libraries
 2D drawings ("top level object is empty" or "not a 3D object"), about 95 timed out, the rest
 failed on a missing library, file or syntax error. The model files themselves are not in this repository
 (their licences are their authors').
+
+The heavy sample, ``benchmarks/openscad_realworld_heavy.txt`` (``--heavy``, which implies
+``--load-only``), names 110 other models of the same 19 repositories (at their mirrored commits):
+per repository, the ``.scad`` files outside the sample list and outside the library paths above,
+shuffled (``random.Random("heavy:" + "owner+name")``), the first 16 tried; kept when ``openscad -o
+model.csg`` (30 s) gives a tree with a 3D node and no include or library is missing (213 of 304);
+of those, shuffled again (``random.Random("heavy-sample")``), at most 8 a repository, the first
+110. No STL is needed (the heavy models are those whose STL export takes OpenSCAD minutes): with
+``--load-only`` a model counts when its ``.csg`` export (cached under ``DIR/_csg``) has a 3D node
+(cube, sphere, cylinder, polyhedron, an extrusion, ``surface`` or a mesh import), and loads when
+``read_openscad`` returns within ``--timeout`` seconds; no volume.
 
 Per model: OpenSCAD's STL (``openscad -o model.stl``, cached under ``DIR/_stl``), then
 ``isocsg.openscad.read_openscad`` and ``isocsg.volume`` in a child process stopped after
