@@ -12,7 +12,8 @@ Every convex operand is read as a *point set plus at most one round generator*:
 one shape (spheres of one radius, or ellipsoids of one shape and orientation), or of cylinders
 whose discs are one ellipse (parallel cylinders of one radius), is the hull of the centres or
 segments grown by that ball or disc (:mod:`isocsg.csg.hull_grow`, mapped by ``L`` when it is not
-a similarity). A hull of polytopes is the :class:`~isocsg.ConvexPolyhedron` of their corners.
+a similarity). A hull of polytopes is the :class:`~isocsg.ConvexPolyhedron` of their corners;
+a difference whose cuts keep every corner of its polytopal first operand's hull is that operand.
 Balls of any radii (spheres, or ellipsoids of one shape and any size) with any polytopes'
 corners (balls of radius 0) are exact through :mod:`isocsg.csg.hull_balls`: a polyhedron, the
 frusta of the tangent cones between balls and the spheres. Cylinders, cones and frusta on one
