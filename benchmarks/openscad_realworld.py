@@ -5,9 +5,12 @@ Usage, from the repository root::
     python benchmarks/openscad_realworld.py DIR                # the sample list below, under DIR
     python benchmarks/openscad_realworld.py DIR --scan         # every .scad file under DIR
     python benchmarks/openscad_realworld.py DIR --polygonal    # read_openscad(..., polygonal=True)
+    python benchmarks/openscad_realworld.py DIR --heavy --timeout 60   # the heavy sample, load only
 
 ``DIR`` holds one folder per repository, named ``owner+name`` (``git archive`` of the commit
-given in the sample list, e.g. ``git --git-dir=REPO.git archive COMMIT | tar -x -C DIR/owner+name``).
+given in the sample list, e.g. ``git --git-dir=REPO.git archive COMMIT | tar -x -C DIR/owner+name``;
+where a mirror lacks some large blobs, ``git archive`` stops at them: write the files one by one
+from ``git ls-tree -r`` and ``git cat-file --batch``, skipping the missing ones).
 The sample list, ``benchmarks/openscad_realworld_sample.txt``, has one model per line: ``owner/name
 commit path``; it names 114 models from 15 repositories of people's own models that OpenSCAD
 2021.01 exports as non-empty 3D solids. How it was drawn: 19 repositories found by name
@@ -19,6 +22,17 @@ loaded machine) with a non-empty 3D solid. Of 356 files tried, 85 were libraries
 2D drawings ("top level object is empty" or "not a 3D object"), about 95 timed out, the rest
 failed on a missing library, file or syntax error. The model files themselves are not in this repository
 (their licences are their authors').
+
+The heavy sample, ``benchmarks/openscad_realworld_heavy.txt`` (``--heavy``, which implies
+``--load-only``), names 110 other models of the same 19 repositories (at their mirrored commits):
+per repository, the ``.scad`` files outside the sample list and outside the library paths above,
+shuffled (``random.Random("heavy:" + "owner+name")``), the first 16 tried; kept when ``openscad -o
+model.csg`` (30 s) gives a tree with a 3D node and no include or library is missing (213 of 304);
+of those, shuffled again (``random.Random("heavy-sample")``), at most 8 a repository, the first
+110. No STL is needed (the heavy models are those whose STL export takes OpenSCAD minutes): with
+``--load-only`` a model counts when its ``.csg`` export (cached under ``DIR/_csg``) has a 3D node
+(cube, sphere, cylinder, polyhedron, an extrusion, ``surface`` or a mesh import), and loads when
+``read_openscad`` returns within ``--timeout`` seconds; no volume.
 
 Per model: OpenSCAD's STL (``openscad -o model.stl``, cached under ``DIR/_stl``), then
 ``isocsg.openscad.read_openscad`` and ``isocsg.volume`` in a child process stopped after
@@ -46,6 +60,7 @@ from pathlib import Path
 
 HERE = Path(__file__).resolve().parent
 SAMPLE = HERE / "openscad_realworld_sample.txt"
+HEAVY = HERE / "openscad_realworld_heavy.txt"
 
 
 def _stl_volume(model: Path, root: Path, timeout: float) -> float | None:
@@ -62,6 +77,22 @@ def _stl_volume(model: Path, root: Path, timeout: float) -> float | None:
         return None
     mesh = trimesh.load(str(out), force="mesh")
     return float(abs(mesh.volume))
+
+
+_SOLID_NODE = re.compile(r"\b(cube|sphere|cylinder|polyhedron|linear_extrude|rotate_extrude|surface)\s*\("
+                         r"|import\([^)]*\.(stl|off|obj|3mf|amf)\b", re.IGNORECASE)
+
+
+def _has_3d_tree(model: Path, root: Path, timeout: float) -> bool:
+    """Whether ``openscad -o model.csg`` (cached under ``DIR/_csg``) gives a tree with a 3D node."""
+    out = root / "_csg" / (str(model.relative_to(root)).replace("/", "__") + ".csg")
+    if not out.exists():
+        try:
+            subprocess.run(["openscad", "-o", str(out), model.name], cwd=model.parent, capture_output=True,
+                           timeout=timeout, check=False)
+        except subprocess.TimeoutExpired:
+            return False
+    return out.exists() and _SOLID_NODE.search(out.read_text(errors="replace")) is not None
 
 
 def _kind(message: str) -> str:
@@ -127,8 +158,14 @@ def main() -> None:
     ap.add_argument("--only", default="", help="regular expression on the model path")
     ap.add_argument("--no-volume", action="store_true", help="load only (no isocsg.volume): the load rate alone")
     ap.add_argument("--sample", type=Path, default=SAMPLE, help="the sample list (owner/name commit path lines)")
+    ap.add_argument("--heavy", action="store_true", help="the heavy sample list (implies --load-only)")
+    ap.add_argument("--load-only", action="store_true",
+                    help="no STL: a model counts when openscad -o model.csg gives a 3D tree; load only")
     args = ap.parse_args()
+    if args.heavy:
+        args.sample, args.load_only = HEAVY, True
     (args.root / "_stl").mkdir(exist_ok=True)
+    (args.root / "_csg").mkdir(exist_ok=True)
     models = [m for m in _models(args.root, args.scan, args.sample) if re.search(args.only, str(m))]
     import isocsg  # loaded and warmed once here: each model's child process is a fork of this one
     import isocsg.openscad
@@ -144,18 +181,24 @@ def main() -> None:
         if not model.exists():
             print(f"MISSING {model}")
             continue
-        ref = _stl_volume(model, args.root, 600.0)
-        if ref is None or ref <= 0.0:
-            print(f"NO-STL  {model}")
-            continue
+        if args.load_only:
+            ref = None
+            if not _has_3d_tree(model, args.root, 120.0):
+                print(f"NO-3D   {model}")
+                continue
+        else:
+            ref = _stl_volume(model, args.root, 600.0)
+            if ref is None or ref <= 0.0:
+                print(f"NO-STL  {model}")
+                continue
         counted += 1
         t0 = time.perf_counter()
-        status, a, b = _child(model, args.polygonal, False, args.timeout, not args.no_volume)
+        status, a, b = _child(model, args.polygonal, False, args.timeout, not (args.no_volume or args.load_only))
         dt = time.perf_counter() - t0
         if status == "ok":
             loaded += 1
             extra = f" polygonal {len(b)}" if b else ""  # type: ignore[arg-type]
-            if a is None:
+            if a is None or ref is None:
                 print(f"OK   {dt:6.1f}s {model}{extra}", flush=True)
                 continue
             rel = abs(float(a) - ref) / ref  # type: ignore[arg-type]

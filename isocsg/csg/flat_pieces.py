@@ -23,7 +23,7 @@ __all__ = ["flat_convex_pieces"]
 
 
 def _flat(leaf: Primitive) -> bool:
-    return isinstance(leaf, TriangleMesh) or leaf.hull_points() is not None
+    return leaf.polyhedral or leaf.hull_points() is not None
 
 
 def flat_convex_pieces(solid: Solid) -> list[ConvexPolyhedron] | None:
@@ -37,7 +37,7 @@ def flat_convex_pieces(solid: Solid) -> list[ConvexPolyhedron] | None:
         (:data:`~isocsg.kinds.mesh_convex.MAX_DECOMPOSITION_FACES`).
     """
     if isinstance(solid, Primitive):
-        if isinstance(solid, TriangleMesh):
+        if solid.polyhedral and not solid.convex:  # a non-convex flat-faced kind: its exact pieces
             return solid.convex_pieces()
         corners = solid.hull_points()
         return [ConvexPolyhedron(corners)] if corners is not None else None

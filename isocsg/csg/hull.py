@@ -12,7 +12,8 @@ Every convex operand is read as a *point set plus at most one round generator*:
 one shape (spheres of one radius, or ellipsoids of one shape and orientation), or of cylinders
 whose discs are one ellipse (parallel cylinders of one radius), is the hull of the centres or
 segments grown by that ball or disc (:mod:`isocsg.csg.hull_grow`, mapped by ``L`` when it is not
-a similarity). A hull of polytopes is the :class:`~isocsg.ConvexPolyhedron` of their corners.
+a similarity). A hull of polytopes is the :class:`~isocsg.ConvexPolyhedron` of their corners;
+a difference whose cuts keep every corner of its polytopal first operand's hull is that operand.
 Balls of any radii (spheres, or ellipsoids of one shape and any size) with any polytopes'
 corners (balls of radius 0) are exact through :mod:`isocsg.csg.hull_balls`: a polyhedron, the
 frusta of the tangent cones between balls and the spheres. Cylinders, cones and frusta on one
@@ -51,12 +52,11 @@ from ..errors import InvalidGeometryError, NotExactError, ResourceLimitError
 from ..kinds import ConvexPolyhedron, Cylinder, Primitive, Solid, Sphere, Torus, Truncus
 from ..kinds.affine import similarity_factor
 from ..kinds.forms import AffineBall, AffineFrustum
-from ..kinds.mesh import TriangleMesh
 from .flat_pieces import flat_convex_pieces
 from .hull_balls import ball_hull, disc_hull_prism, upper_disc_hull
 from .hull_discs import parallel_disc_hull
 from .hull_grow import grow_ball, grow_disc, polytope
-from .tree import CSGNode, Union
+from .tree import CSGNode, Difference, Union
 
 __all__ = ["hull", "minkowski", "hull_pieces", "minkowski_pieces", "MAX_MINKOWSKI_TERMS"]
 
@@ -91,8 +91,10 @@ def _union_leaves(solid: Solid, operation: str) -> list[Primitive]:
         s = todo.pop()
         if isinstance(s, Union):
             todo.extend(reversed(s.children))
-        elif isinstance(s, TriangleMesh) and operation == "minkowski" and not s.is_convex():
-            out.extend(s.convex_pieces())  # a non-convex mesh sums through its convex pieces
+        elif operation == "minkowski" and isinstance(s, Primitive) and s.polyhedral and not s.convex:
+            out.extend(s.convex_pieces())  # a non-convex flat-faced kind sums through its exact convex pieces
+        elif operation == "hull" and isinstance(s, Difference) and _cuts_no_corner(s):
+            todo.append(s.children[0])
         elif isinstance(s, Primitive):
             out.append(s)
         elif isinstance(s, CSGNode):
@@ -107,6 +109,33 @@ def _union_leaves(solid: Solid, operation: str) -> list[Primitive]:
         else:
             raise InvalidGeometryError(f"{operation}: operands must be isocsg solids, got {_name(s)}")
     return out
+
+
+def _cuts_no_corner(d: Difference) -> bool:
+    """Whether ``hull(d) == hull(d.children[0])``: the first operand is a union of polytopes and
+    no other operand comes within rounding of a corner of its hull. The hull of a set is the hull
+    of its extreme points; these are corners of the first operand's hull, and each one kept (and
+    a neighbourhood of it within the first operand) stays in the difference."""
+    corners: list[NDArray[np.float64]] = []
+    todo: list[Solid] = [d.children[0]]
+    while todo:
+        s = todo.pop()
+        if isinstance(s, Union):
+            todo.extend(s.children)
+            continue
+        pts = s.hull_points() if isinstance(s, Primitive) else None
+        if pts is None:
+            return False  # a round or non-convex piece: its extreme points are not a finite set here
+        corners.append(np.asarray(pts, dtype=np.float64))
+    q = polytope(np.vstack(corners))
+    if q.solid is None:
+        return False
+    v = np.asarray(q.vertices, dtype=np.float64)
+    margin = 1e-9 * max(float(np.max(np.ptp(v, axis=0))), float(np.max(np.abs(v))))
+    for cut in d.children[1:]:
+        if not isinstance(cut, (Primitive, CSGNode)) or np.any(cut.contains(v, tol=margin)):
+            return False
+    return True
 
 
 def _convex(p: Primitive, operation: str) -> _Convex:

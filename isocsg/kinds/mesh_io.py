@@ -91,30 +91,10 @@ def polygon_mesh(points: ArrayLike, faces: list[list[int]], *, clockwise: bool =
     InvalidGeometryError
         When the faces do not bound a valid closed solid (see :class:`TriangleMesh`).
     """
-    import manifold3d
+    from .polygon_faces import triangulate_faces
 
     P = np.asarray(points, dtype=np.float64)
-    tris: list[tuple[int, int, int]] = []
-    for f in faces:
-        f = [k for i, k in enumerate(f) if k != f[i - 1]]  # a point repeated in turn adds no side
-        if len(set(f)) < 3:
-            continue  # no area (OpenSCAD's export has faces such as [a, b, a])
-        if len(f) == 3:
-            tris.append((f[0], f[1], f[2]))
-            continue
-        q = P[f]
-        g = q - q.mean(axis=0)
-        n = np.sum(np.cross(g, np.roll(g, -1, axis=0)), axis=0)  # Newell's normal of the polygon's order
-        if not np.linalg.norm(n) > 0:
-            continue  # a flat-to-a-line face: no area
-        n /= np.linalg.norm(n)
-        u = np.cross(n, [1.0, 0.0, 0.0] if abs(n[0]) < 0.9 else [0.0, 1.0, 0.0])
-        u /= np.linalg.norm(u)
-        v = np.cross(n, u)
-        ring = np.stack([g @ u, g @ v], axis=1)  # counter-clockwise about n
-        local = np.asarray(manifold3d.triangulate([ring]), dtype=np.int64).reshape(-1, 3)
-        tris.extend((f[a], f[b], f[c]) for a, b, c in local.tolist())
-    T = np.asarray(tris, dtype=np.int64).reshape(-1, 3)
+    T = triangulate_faces(P, faces)
     if clockwise:
         T = T[:, ::-1]
     if len(T) >= 4 and len(P):

@@ -25,12 +25,12 @@ from .base import (
     RayHits,
     TangentCone,
     _as_rays,
-    _perpendicular_frame,
 )
 from .forms import PointHull
 from .halfspaces import polyhedral_tangent, ray_halfspaces
 from .meshing import manifold3d_module
 from .patches import Patch, face_normals, polytope_patches
+from .polygon_faces import fan_triangles
 from .registry import kind_class, register_kind
 from .scad import encoded, num_sig, round_sig, short_mat, vec
 
@@ -73,23 +73,26 @@ def _hull(
     # a non-convex set of them, whose fan then overlaps itself.
     _, group = np.unique(eq, axis=0, return_inverse=True)
     group = group.ravel()
-    faces, normals, offsets = [], [], []
-    for g in range(group.max() + 1):
-        members = np.nonzero(group == g)[0]
-        n = eq[members[0], :3]
-        idx = np.unique(remap[hull.simplices[members].ravel()])
-        pts = hv[idx]
-        c = pts.mean(axis=0)
-        u, v = _perpendicular_frame(n)
-        ang = np.arctan2((pts - c) @ v, (pts - c) @ u)
-        faces.append(idx[np.argsort(ang)])  # CCW around the outward normal
-        normals.append(n)
-        offsets.append(-eq[members[0], 3])
-    tris = []
-    for f in faces:
-        for i in range(1, len(f) - 1):
-            tris.append((f[0], f[i], f[i + 1]))
-    return hv, faces, np.array(normals), np.array(offsets), np.array(tris, dtype=np.int64)
+    # Every face at once (a polygonal cylinder has a face per side): its distinct vertices, each
+    # face's first facet's plane, the vertices sorted by angle about the face's centroid.
+    n_groups = int(group.max()) + 1
+    first = np.unique(group, return_index=True)[1]
+    keys = np.unique(group[:, None] * len(hv) + remap[hull.simplices])
+    g, idx = keys // len(hv), keys % len(hv)
+    count = np.bincount(g, minlength=n_groups).astype(np.float64)
+    c = np.stack([np.bincount(g, weights=hv[idx, k], minlength=n_groups) for k in range(3)], axis=1) / count[:, None]
+    n = eq[first, :3]
+    h = np.where((np.abs(n[:, 0]) < 0.9)[:, None], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0])
+    u = np.cross(n, h)
+    u /= np.linalg.norm(u, axis=1)[:, None]
+    v = np.cross(n, u)
+    d = hv[idx] - c[g]
+    ang = np.arctan2(np.einsum("ij,ij->i", d, v[g]), np.einsum("ij,ij->i", d, u[g]))
+    order = np.lexsort((ang, g))  # CCW around the outward normal, face by face
+    faces = np.split(idx[order], np.cumsum(np.bincount(g, minlength=n_groups))[:-1])
+    normals, offsets = n, -eq[first, 3]
+    tris = fan_triangles([f.tolist() for f in faces])
+    return hv, faces, normals, offsets, tris
 
 
 @register_kind("polyhedron", required=("vertices",))

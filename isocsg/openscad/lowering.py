@@ -63,6 +63,7 @@ from ..csg import Difference, Intersection, Union
 from ..errors import InvalidGeometryError, InvalidParameterError, NotExactError, OpenSCADError, UnsupportedOpenSCADError
 from ..kinds import Box, ConvexPolyhedron, Cylinder, Solid, Sphere, Truncus
 from ..kinds.mesh_io import MESH_SUFFIXES, height_map, polygon_mesh, read_height_map, read_mesh
+from ..kinds.polygon_faces import signed_volume
 from .flat import MixedDimensionsWarning, cylinder_points, extrude, polygonal_sides, sphere_points
 from .parser import CSGCall
 from .revolve import revolve
@@ -304,12 +305,7 @@ class _Lowerer:
         scale = float(np.max(np.ptp(hull.hull_vertices, axis=0)))
         reach = max(scale, float(np.max(np.abs(pts))))
         off = PRINTED_PRECISION * reach
-        enclosed = 0.0
-        for f in faces:
-            if len(f) < 3:
-                continue
-            p = pts[f] - pts[0]  # about a point of the solid: no cancellation far from the origin
-            enclosed += sum(float(np.dot(p[0], np.cross(p[i], p[i + 1]))) for i in range(1, len(f) - 1)) / 6.0
+        enclosed = signed_volume(pts, faces)
         used = pts[sorted({i for f in faces for i in f})]
         off_plane = np.abs(used @ hull.face_normals.T - hull.face_offsets).min(axis=1)
         planar = np.all(off_plane <= off + 1e-9 * max(scale, 1.0))

@@ -22,6 +22,7 @@ and every error is an :class:`~isocsg.errors.OpenSCADError` naming the line.
 
 from __future__ import annotations
 
+import json
 import math
 import re
 from dataclasses import dataclass, field
@@ -46,6 +47,26 @@ _TOKEN = re.compile(
     """,
     re.VERBOSE | re.DOTALL,
 )
+
+# A list of plain numbers (a polyhedron's points and faces, a matrix) is read in one step by the
+# JSON reader, as floats, when its text is digits, signs, points, exponents, commas, brackets and
+# blanks only; anything else (names, strings, `.5`, a number that overflows) takes the token path.
+_JSON = json.JSONDecoder(parse_int=float)
+_PLAIN_LIST = re.compile(r"[\d\s.,eE+\-\[\]]*")
+_HUGE_NUMBER = re.compile(r"\d{300}|[eE][+-]?\d{3}")
+
+
+def _plain_list(text: str, pos: int) -> tuple[list[Any], int] | None:
+    """The list of numbers starting at ``text[pos] == '['`` and the end of its text, or None."""
+    try:
+        value, end = _JSON.raw_decode(text, pos)
+    except (ValueError, RecursionError):
+        return None
+    span = text[pos:end]
+    if not isinstance(value, list) or not _PLAIN_LIST.fullmatch(span) or _HUGE_NUMBER.search(span):
+        return None
+    return value, end
+
 
 _KEYWORDS: dict[str, Any] = {"true": True, "false": False, "undef": None, "inf": math.inf, "nan": math.nan}
 _MODIFIERS = "!#%*"
@@ -90,9 +111,12 @@ class _Tok:
     kind: str
     text: str
     line: int
+    value: Any = None  # a "list" token's numbers, read at once
 
 
 def _show(tok: _Tok) -> str:
+    if tok.kind == "list":
+        return repr("[")  # where the list starts, as the token path names it
     return "the end of the file" if tok.kind == "eof" else repr(tok.text[:40])
 
 
@@ -104,6 +128,13 @@ class _Tokens:
         self.toks: list[_Tok] = []
         line, pos, n = 1, 0, len(text)
         while pos < n:
+            if text[pos] == "[":
+                plain = _plain_list(text, pos)
+                if plain is not None:
+                    self.toks.append(_Tok("list", text[pos:plain[1]], line, plain[0]))
+                    line += text.count("\n", pos, plain[1])
+                    pos = plain[1]
+                    continue
             m = _TOKEN.match(text, pos)
             if m is None:
                 if text.startswith("/*", pos):
@@ -154,10 +185,12 @@ def _value(ts: _Tokens, where: str) -> Any:
             tok = ts.next()
             if tok.kind != "number" and tok.text not in ("inf", "nan"):
                 raise ts.error(tok.line, f"expected a number after the sign {where}, got {_show(tok)}")
-        if tok.kind == "punct" and tok.text == "[":
+        if tok.kind == "list":
+            value: Any = tok.value
+        elif tok.kind == "punct" and tok.text == "[":
             if ts.peek().text == "]" and ts.peek().kind == "punct":
                 ts.next()
-                value: Any = []
+                value = []
             else:
                 stack.append([])
                 continue
