@@ -151,3 +151,33 @@ def test_a_fresh_process_draws_a_small_model_without_numba(tmp_path: Path, name:
     codes, loaded = json.loads(proc.stdout.splitlines()[-1])
     assert codes == [0] and loaded == []
     assert Path(str(model) + ".png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+
+
+#: Modules a plain ``.scad`` model's command line has no use for: running ``openscad``, reading
+#: scene files (``json`` too, but the script above imports it), hashing meshes, writing SVG.
+_UNUSED = ("subprocess", "tempfile", "tomllib", "hashlib", "xml.etree.ElementTree")
+
+_SCAD = {
+    "cube": "cube(1);\n",
+    "sphere": "sphere(10);\n",
+    "cylinder": "cylinder(h=10, r=3);\n",
+    "difference": "difference() { cube(10, center=true); sphere(6.5); }\n",
+}
+
+
+def test_a_fresh_process_reads_plain_scad_models_in_process(tmp_path: Path) -> None:
+    """The same four models as ``.scad`` files: read without the ``openscad`` program (no process
+    started: the plain subset, :mod:`isocsg.openscad.plain`), nor the heavy or unused modules."""
+    models = []
+    for name, text in _SCAD.items():
+        models.append(tmp_path / f"{name}.scad")
+        models[-1].write_text(text)
+    env = {k: v for k, v in os.environ.items() if k != "ISOCSG_JIT"}
+    # a program that is not there: were it needed, the read would fall back to it and fail
+    env["ISOCSG_OPENSCAD"] = str(tmp_path / "no-such-openscad")
+    proc = subprocess.run([sys.executable, "-c", _MODELS.format(heavy=HEAVY + _UNUSED), *map(str, models)],
+                          capture_output=True, text=True, timeout=300, env={**env, "PYTHONPATH": str(ROOT)})
+    assert proc.returncode == 0, proc.stderr
+    codes, loaded = json.loads(proc.stdout.splitlines()[-1])
+    assert codes == [0, 0, 0, 0] and loaded == []
+    assert "PlainSubsetWarning" not in proc.stderr

@@ -124,10 +124,15 @@ def _load(path: str, *, skip_unsupported: bool = False, polygonal: bool = False)
     """A scene file, or an OpenSCAD model in a framed scene."""
     if Path(path).suffix.lower() not in OPENSCAD_SUFFIXES:
         return load_scene_argument(path)
-    from ..openscad import read_openscad
+    from ..openscad.plain import read_plain_scad
     from ..scene.framing import framed_scene
 
-    model = read_openscad(path, skip_unsupported=skip_unsupported, polygonal=polygonal)
+    # a file that OpenSCAD's export would leave as it is needs no openscad run (the same model)
+    model = read_plain_scad(path, skip_unsupported=skip_unsupported, polygonal=polygonal)
+    if model is None:
+        from ..openscad import read_openscad
+
+        model = read_openscad(path, skip_unsupported=skip_unsupported, polygonal=polygonal)
     for line in model.polygonal:  # each node made OpenSCAD's polygonal solid, with its line and why
         print(f"isocsg render: polygonal {line}", file=sys.stderr)
     if model.skipped:

@@ -32,7 +32,6 @@ Every operation is exact for the mesh:
 
 from __future__ import annotations
 
-import hashlib
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any, ClassVar
 
@@ -193,6 +192,8 @@ class TriangleMesh(Primitive):
         object.__setattr__(self, "face_normals", normals)
         object.__setattr__(self, "max_intervals", len(F) // 2)
         object.__setattr__(self, "_volume", vol)
+        import hashlib  # here: a model without meshes does not load it
+
         object.__setattr__(self, "_digest", hashlib.blake2b(V.tobytes() + b"|" + F.tobytes(), digest_size=16).digest())
 
     def _check_crossings(self) -> None:

@@ -10,8 +10,6 @@ from __future__ import annotations
 
 import os
 import shutil
-import subprocess
-import tempfile
 from pathlib import Path
 
 from ..errors import MissingDependencyError, OpenSCADError
@@ -39,6 +37,8 @@ def find_openscad() -> str:
 
 
 def _run(args: list[str], source: str, timeout: float) -> None:
+    import subprocess  # here: a file read without the program does not load it
+
     exe = find_openscad()
     try:
         done = subprocess.run(
@@ -72,6 +72,8 @@ def scad_to_csg(path: str | os.PathLike[str], *, timeout: float = OPENSCAD_TIMEO
     p = Path(path)
     if not p.is_file():
         raise OpenSCADError(f"{p}: not a file")
+    import tempfile
+
     with tempfile.TemporaryDirectory(prefix="isocsg-openscad-") as tmp:
         out = Path(tmp) / "model.csg"
         # the .csg export runs as a preview ($preview true); the model is what a render exports

@@ -10,7 +10,6 @@ from __future__ import annotations
 import io
 import os
 import struct
-import xml.etree.ElementTree as ET
 import zlib
 from collections.abc import Sequence
 from typing import BinaryIO
@@ -186,6 +185,8 @@ def save_svg(
     if len(vals) != len(polygons):
         raise InvalidParameterError(f"values must have one entry per polygon ({len(polygons)}), got {len(vals)}")
     grey = to_uint8(vals.reshape(1, -1))[0] if len(vals) else np.zeros(0, np.uint8)
+    import xml.etree.ElementTree as ET  # here: a PNG alone does not load it
+
     root = ET.Element(
         "svg",
         {

@@ -49,13 +49,10 @@ few hundred levels of nesting, which is reported as an error of the file.
 
 from __future__ import annotations
 
-import json
 import os
 import re
 import stat
-import tomllib
 from collections.abc import Callable, Mapping
-from importlib import resources
 from pathlib import Path
 from typing import Any, BinaryIO
 
@@ -511,6 +508,9 @@ def decode_scene_text(text: str, *, format: str = "toml", source: str | os.PathL
     if format not in ("toml", "json"):
         raise SceneFileError(f"{prefix}unknown scene format {show(format)} (expected 'toml' or 'json')")
     label = format.upper()
+    import json  # here, as tomllib: a model that reads no scene file does not load them
+    import tomllib
+
     try:
         return tomllib.loads(text) if format == "toml" else json.loads(text)
     except (tomllib.TOMLDecodeError, json.JSONDecodeError) as exc:
@@ -688,6 +688,8 @@ def builtin_scene_path(name: str = "demo") -> Path:
     """
     if name not in BUILTIN_SCENES:
         raise SceneFileError(f"unknown built-in scene {name!r} (expected one of {', '.join(BUILTIN_SCENES)})")
+    from importlib import resources
+
     return Path(str(resources.files("isocsg").joinpath("data", f"{name}.toml")))
 
 

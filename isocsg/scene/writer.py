@@ -6,7 +6,6 @@ Shapes are written through their kinds' ``to_dict``; trees nested deeper than
 
 from __future__ import annotations
 
-import json
 import math
 import os
 from collections.abc import Mapping
@@ -123,6 +122,8 @@ def _toml_value(v: Any) -> str:
             return "inf" if v > 0 else "-inf"
         return repr(v)
     if isinstance(v, str):
+        import json  # here: reading a model does not load it
+
         return json.dumps(v)  # a JSON string is a valid TOML basic string
     if isinstance(v, Mapping):
         return "{ " + ", ".join(f"{k} = {_toml_value(x)}" for k, x in v.items()) + " }"
@@ -144,6 +145,8 @@ def dumps_scene(scene: Scene, *, format: str = "toml") -> str:
     """
     doc = scene_to_dict(scene)
     if format == "json":
+        import json
+
         return json.dumps(doc, indent=2) + "\n"
     if format != "toml":
         raise SceneFileError(f"unknown scene format {format!r} (expected 'toml' or 'json')")
