@@ -17,6 +17,7 @@ from pathlib import Path
 from ..errors import MissingDependencyError, OpenSCADError
 from ..kinds import Solid
 from .flat import FN_MAX, MixedDimensionsWarning
+from .lenient import OpenSCADLenientWarning
 from .lowering import UNSUPPORTED_NODES, LoweredModel, lower
 from .parser import MAX_CSG_TEXT, CSGCall, parse_csg
 from .program import _INSTALL, export_mesh, find_openscad, scad_to_csg
@@ -30,6 +31,7 @@ __all__ = [
     "dumps_openscad",
     "OpenSCADSkipWarning",
     "OpenSCADPolygonalWarning",
+    "OpenSCADLenientWarning",
     "LoweredModel",
     "CSGCall",
     "parse_csg",
