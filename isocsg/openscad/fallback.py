@@ -34,18 +34,22 @@ __all__ = ["polygonal_projection", "polygonal_twist"]
 
 
 def _shadow_region(solid: Any) -> Any:
-    """The shapely region of a flat-faced solid's shadow on the xy plane."""
+    """The shapely region of a flat-faced solid's shadow on the xy plane: each connected piece of
+    manifold3d's projection is its one counter-clockwise ring with its clockwise holes."""
     import shapely
     from shapely.geometry import Polygon
 
     from ..csg.mesh import to_manifold
 
-    rings = [np.asarray(p, dtype=np.float64) for p in to_manifold(solid).project().to_polygons()]
-    region: Any = Polygon()
-    for ring in rings:  # manifold3d's contours do not cross: even-odd is their union with holes
-        if len(ring) >= 3:
-            region = shapely.symmetric_difference(region, Polygon(ring).buffer(0))
-    return shapely.normalize(region)
+    polygons = []
+    for piece in to_manifold(solid).project().decompose():
+        rings = [np.asarray(p, dtype=np.float64) for p in piece.to_polygons() if len(p) >= 3]
+        if not rings:
+            continue
+        signed = [0.5 * float(np.sum(r[:, 0] * np.roll(r[:, 1], -1) - np.roll(r[:, 0], -1) * r[:, 1])) for r in rings]
+        k = int(np.argmax(signed))
+        polygons.append(Polygon(rings[k], [r for i, r in enumerate(rings) if i != k]))
+    return shapely.normalize(shapely.union_all(polygons)) if polygons else Polygon()
 
 
 def polygonal_projection(lw: Any, call: CSGCall, reason: str) -> Any:
