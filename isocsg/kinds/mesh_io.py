@@ -234,7 +234,7 @@ def height_map(heights: ArrayLike, *, center: bool = False, base: float | None =
     bottom = np.stack([np.full(len(ring), bottom_c), dn1, dn0], axis=1)
     V = np.vstack([grid, centres, low, [[ox + (cols - 1) / 2.0, oy + (lines - 1) / 2.0, zb]]])
     F = np.vstack([top, walls, bottom]).astype(np.int64)
-    return TriangleMesh(V, F)
+    return TriangleMesh._simple(V, F)  # a height field over its grid, walls and a flat base: no crossing
 
 
 def read_height_map(path: str | os.PathLike[str], *, invert: bool = False) -> tuple[NDArray[np.float64], float]:
