@@ -157,3 +157,17 @@ def test_polygonal_answers_match_openscads_stl(text: str, tmp_path: Path) -> Non
     assert len(model.polygonal) == 1
     expected = _openscad_volume(scad)
     assert abs(volume(model.solid) - expected) < 2e-5 * expected
+
+
+def test_mapped_meshes_skip_only_the_crossing_check() -> None:
+    """An affine image of a checked mesh is built without the self-intersection check (it cannot
+    cross itself); the next mesh built is checked again: two interpenetrating tetrahedra are refused."""
+    from isocsg import TriangleMesh
+    from isocsg.errors import InvalidGeometryError
+
+    tet = np.array([(0, 0, 0), (1, 0, 0), (0, 1, 0), (0, 0, 1)], dtype=float)
+    faces = np.array([(0, 2, 1), (0, 1, 3), (0, 3, 2), (1, 2, 3)])
+    mapped = TriangleMesh(tet, faces).transform(np.array([[2, 0, 0, 1], [0, 3, 0, 0], [0, 0, 1, 0]], dtype=float))
+    assert abs(mapped.volume - 1.0) < 1e-12  # type: ignore[attr-defined]  # 6 x 1/6
+    with pytest.raises(InvalidGeometryError, match="intersect themselves"):
+        TriangleMesh(np.vstack([tet, tet + 0.2]), np.vstack([faces, faces + 4]))

@@ -182,8 +182,9 @@ def loads_openscad(text: str, *, source: str | None = None, skip_unsupported: bo
 
 
 class OpenSCADPolygonalWarning(UserWarning):
-    """Issued by :func:`load_openscad` with ``polygonal=True`` when nodes were made OpenSCAD's
-    polygonal solid; ``nodes`` lists them (``"model.csg:12: hull(): ..."``)."""
+    """Issued by :func:`load_openscad` when nodes were made OpenSCAD's polygonal solid (a
+    ``projection`` or twisted ``linear_extrude`` without an exact form; with ``polygonal=True`` also
+    a ``hull`` or ``minkowski``); ``nodes`` lists them (``"model.csg:12: hull(): ..."``)."""
 
     def __init__(self, message: str, nodes: tuple[str, ...]) -> None:
         super().__init__(message)

@@ -109,8 +109,9 @@ class LoweredModel:
         innermost ``color`` wins, as in OpenSCAD), or None; empty when nothing is coloured. Pass
         it to :class:`~isocsg.SceneObject` to draw the model in its colours.
     polygonal : tuple of str
-        One line per ``hull`` or ``minkowski`` node made OpenSCAD's own polygonal solid because
-        it has no exact form (only with ``polygonal=True``; :mod:`isocsg.openscad.polygonal`):
+        One line per node made OpenSCAD's own polygonal solid because it has no exact form: a
+        ``projection`` or twisted ``linear_extrude`` (:mod:`isocsg.openscad.fallback`), and with
+        ``polygonal=True`` a ``hull`` or ``minkowski`` (:mod:`isocsg.openscad.polygonal`):
         ``"model.csg:12: hull(): a hull of Cylinder, Sphere ..."``.
     """
 
