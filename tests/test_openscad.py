@@ -215,7 +215,7 @@ UNSUPPORTED = [
     ("hull", "hull() {\n  sphere(r = 1);\n  multmatrix([[1, 0, 0, 3], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) cylinder(h = 2, r1 = 1, r2 = 1);\n}"),
     ("minkowski", "minkowski() {\n  cube(size = 1);\n  cylinder(h = 1, r1 = 0.1, r2 = 0);\n}"),
     ("roof", "linear_extrude(height = 1) {\n  roof() {\n    square(size = 1);\n  }\n}"),
-    ("import", "linear_extrude(height = 1) {\n  import(file = \"part.amf\", layer = \"\", origin = [0, 0], scale = 1);\n}"),
+    ("import", "linear_extrude(height = 1) {\n  import(file = \"part.nef3\", layer = \"\", origin = [0, 0], scale = 1);\n}"),
     ("fill", "fill() {\n  cube(size = 1);\n}"),
     ("frobnicate", "frobnicate(size = 3);"),
 ]

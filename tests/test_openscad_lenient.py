@@ -171,3 +171,36 @@ def test_mapped_meshes_skip_only_the_crossing_check() -> None:
     assert abs(mapped.volume - 1.0) < 1e-12  # type: ignore[attr-defined]  # 6 x 1/6
     with pytest.raises(InvalidGeometryError, match="intersect themselves"):
         TriangleMesh(np.vstack([tet, tet + 0.2]), np.vstack([faces, faces + 4]))
+
+
+_TET_AMF = """<?xml version="1.0" encoding="utf-8"?>
+<amf unit="inch" version="1.1">{objects}</amf>"""
+
+
+def _amf_object(points: list[tuple[float, float, float]], volumes: list[list[tuple[int, int, int]]]) -> str:
+    vertices = "".join(f"<vertex><coordinates><x>{x}</x><y>{y}</y><z>{z}</z></coordinates></vertex>" for x, y, z in points)
+    vols = "".join("<volume>" + "".join(f"<triangle><v1>{a}</v1><v2>{b}</v2><v3>{c}</v3></triangle>" for a, b, c in v)
+                   + "</volume>" for v in volumes)
+    return f"<object id='1'><mesh><vertices>{vertices}</vertices>{vols}</mesh></object>"
+
+
+def test_amf_objects_and_volumes(tmp_path: Path) -> None:
+    """OpenSCAD's ``import_amf.cc``: units ignored, objects united. A tetrahedron of legs 2 (volume 4/3)
+    and, zipped, a second object: a unit cube split in two volumes by its diagonal plane (each 1/2, sharing
+    that face), 4 away: volume 4/3 + 1."""
+    import zipfile
+
+    tet = _amf_object([(0, 0, 0), (2, 0, 0), (0, 2, 0), (0, 0, 2)], [[(0, 2, 1), (0, 1, 3), (0, 3, 2), (1, 2, 3)]])
+    cube = [(4 + x, y, z) for z in (0, 1) for y in (0, 1) for x in (0, 1)]  # index x + 2 y + 4 z
+    half_a = [(0, 2, 1), (4, 5, 6), (0, 1, 5), (0, 5, 4), (0, 4, 6), (0, 6, 2), (1, 2, 6), (1, 6, 5)]
+    half_b = [(1, 2, 3), (5, 7, 6), (1, 3, 7), (1, 7, 5), (2, 6, 7), (2, 7, 3), (1, 6, 2), (1, 5, 6)]
+    (tmp_path / "tet.amf").write_text(_TET_AMF.format(objects=tet))
+    with zipfile.ZipFile(tmp_path / "two.amf", "w") as z:
+        z.writestr("two.amf", _TET_AMF.format(objects=tet + _amf_object(cube, [half_a, half_b])))
+    for name, expected in (("tet.amf", 4 / 3), ("two.amf", 4 / 3 + 1)):
+        (tmp_path / "m.csg").write_text(f'import(file = "{name}", convexity = 1);\n')
+        assert abs(volume(read_openscad(tmp_path / "m.csg").solid) - expected) < 1e-12
+    (tmp_path / "bad.amf").write_text(_TET_AMF.format(objects=tet.replace("<x>2</x>", "<x>a</x>")))
+    (tmp_path / "m.csg").write_text('import(file = "bad.amf");\n')
+    with pytest.raises(OpenSCADError, match="m.csg:1: import: .*<x> is not a number, got 'a'"):
+        read_openscad(tmp_path / "m.csg")

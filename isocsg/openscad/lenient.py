@@ -13,8 +13,8 @@ where a strict reader would fail. isocsg does what OpenSCAD does, and says so wi
   left out ("Transformation matrix contains Not-a-Number and/or Infinity - removing object");
 - an ``import`` or ``surface`` whose ``file`` is empty, does not exist, or is of a type OpenSCAD
   does not read (``.eps``): nothing ("Can't open import file", "The file '' couldn't be opened",
-  "Unsupported file format"); AMF and NEF3 files, which OpenSCAD reads and isocsg does not, stay
-  refused by name;
+  "Unsupported file format"); NEF3 files, which OpenSCAD reads and isocsg does not, stay refused by
+  name;
 - an infinite or NaN ``$fn``: 3 segments (``Calc::get_fragments_from_r``);
 - a ``multmatrix`` whose last row is not ``[0, 0, 0, 1]``: that row ignored (OpenSCAD's
   transforms are affine: its STL of such a model is the affine part's image);
@@ -42,8 +42,8 @@ class OpenSCADLenientWarning(UserWarning):
 
 _SIZES = {"cube": ("size",), "sphere": ("r", "d"), "cylinder": ("h", "r", "r1", "r2", "d", "d1", "d2")}
 _MAPS = {"multmatrix", "translate", "rotate", "scale", "mirror"}
-_READ = {".stl", ".off", ".obj", ".ply", ".3mf", ".dxf", ".svg", ".dat", ".png"}  # the files read here
-_NOT_READ = {".amf", ".nef3"}  # read by OpenSCAD 2021.01, not here
+_READ = {".stl", ".off", ".obj", ".ply", ".3mf", ".amf", ".dxf", ".svg", ".dat", ".png"}  # the files read here
+_NOT_READ = {".nef3"}  # read by OpenSCAD 2021.01, not here
 
 
 def _finite(value: Any) -> bool:
@@ -148,12 +148,13 @@ def mesh(lw: Any, call: CSGCall, build: Any, *args: Any) -> Any:
     orientation (:func:`~isocsg.kinds.mesh_io.reoriented`), warned. Other faults raise, naming the node."""
     from ..csg import Union
     from ..errors import InvalidGeometryError
-    from ..kinds.mesh_io import bodies, polygon_mesh, polygon_triangles, reoriented
+    from ..kinds.mesh_io import bodies, polygon_mesh, polygon_triangles, read_mesh, reoriented
 
     try:
         return build(*args)
     except InvalidGeometryError as exc:
-        if "not consistently oriented" not in str(exc) and "wind inwards" not in str(exc):
+        wound = "not consistently oriented" in str(exc) or "wind inwards" in str(exc)
+        if not wound or build not in (polygon_mesh, read_mesh):
             raise lw.fail(call, str(exc)) from None
         first = exc
     try:

@@ -63,6 +63,7 @@ from ..csg import Difference, Intersection, Union
 from ..errors import InvalidGeometryError, InvalidParameterError, NotExactError, OpenSCADError, UnsupportedOpenSCADError
 from ..kinds import Box, ConvexPolyhedron, Cylinder, Solid, Sphere, Truncus
 from ..kinds.mesh_io import MESH_SUFFIXES, height_map, polygon_mesh, read_height_map, read_mesh
+from .amf import read_amf
 from .flat import MixedDimensionsWarning, cylinder_points, extrude, polygonal_sides, sphere_points
 from .lenient import affine_row, color_value, dropped, mesh
 from .parser import CSGCall
@@ -337,10 +338,11 @@ class _Lowerer:
         """``import(file)`` of a mesh (``convexity`` and ``layer`` do not matter to a mesh)."""
         value = self.arg(call, "file", 0, None)
         suffix = Path(value).suffix.lower() if isinstance(value, str) else ""
-        if isinstance(value, str) and suffix not in MESH_SUFFIXES:
-            self.unsupported(call, f"only 3D meshes ({', '.join(MESH_SUFFIXES)}) are imported, not {suffix or value!r}")
+        if isinstance(value, str) and suffix not in MESH_SUFFIXES + (".amf",):
+            self.unsupported(call, f"only 3D meshes ({', '.join(MESH_SUFFIXES)}, .amf) are imported, "
+                                   f"not {suffix or value!r}")
             return None
-        return mesh(self, call, read_mesh, self.model_file(call, "file"))
+        return mesh(self, call, read_amf if suffix == ".amf" else read_mesh, self.model_file(call, "file"))
 
     def surface(self, call: CSGCall) -> Solid | None:
         """``surface(file, center, invert)``: OpenSCAD's height-map solid (:func:`~isocsg.kinds.mesh_io.height_map`)."""
