@@ -140,12 +140,15 @@ def _csg(tmp_path: Path, text: str) -> Path:
     return p
 
 
-def test_missing_file_names_the_file_and_line(tmp_path: Path) -> None:
+def test_missing_file_is_left_out_naming_the_file_and_line(tmp_path: Path) -> None:
+    """OpenSCAD warns "Can't open import file" and draws nothing of the node: so does the reader, warned."""
+    from isocsg.openscad import OpenSCADLenientWarning
+
     p = _csg(tmp_path, 'import(file = "nothing.stl", convexity = 2);')
-    with pytest.raises(OpenSCADError, match=re.escape("m.csg:2: import: file 'nothing.stl' not found")):
+    with pytest.warns(OpenSCADLenientWarning, match=re.escape("m.csg:2: import(): the file 'nothing.stl' does not exist")):
         load_openscad(p)
     p = _csg(tmp_path, 'surface(file = "none.dat", center = false);')
-    with pytest.raises(OpenSCADError, match=re.escape("m.csg:2: surface: file 'none.dat' not found")):
+    with pytest.warns(OpenSCADLenientWarning, match=re.escape("m.csg:2: surface(): the file 'none.dat' does not exist")):
         load_openscad(p)
 
 

@@ -68,9 +68,12 @@ def test_parser_is_iterative_over_deep_nesting() -> None:
         node, levels = node.children[0], levels + 1
     assert node.name == "cube" and node.line == depth + 1 and levels == depth + 1
     assert volume(load(text)) == pytest.approx(1.0, rel=1e-12)
-    nested = "polyhedron(points = " + "[" * 5000 + "]" * 5000 + ");"
-    with pytest.raises(OpenSCADError, match=re.escape("m.csg:1: polyhedron: points must be a list of 3D points")):
-        load(nested)
+    # OpenSCAD draws nothing of a polyhedron whose points are not 3-vectors: left out, warned
+    from isocsg.openscad import OpenSCADLenientWarning
+
+    nested = "polyhedron(points = " + "[" * 5000 + "]" * 5000 + ", faces = [[0, 1, 2]]);\ncube(size = 1);"
+    with pytest.warns(OpenSCADLenientWarning, match=re.escape("m.csg:1: polyhedron(): points[0] is not three")):
+        assert volume(load(nested)) == pytest.approx(1.0, rel=1e-12)
 
 
 MALFORMED = [
@@ -94,10 +97,6 @@ MALFORMED = [
     ("\nsphere(r = true);", "m.csg:2: sphere: r must be a finite number, got True"),
     ("cylinder(h = 1, r1 = 1, r2 = 1, center = 1);", "m.csg:1: cylinder: center must be true or false, got 1.0"),
     ("multmatrix(m = [[1, 0, 0]]) { cube(size = 1); }", "m.csg:1: multmatrix: m must be a 4 x 4 (or 3 x 4) matrix, got [[1.0, 0.0, 0.0]]"),
-    (
-        "multmatrix(m = [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 1, 1]]) { cube(size = 1); }",
-        "m.csg:1: multmatrix: m must be affine (last row [0, 0, 0, 1]), got [0.0, 0.0, 1.0, 1.0]",
-    ),
     ("polyhedron(points = [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]], faces = [[0, 1, 7]]);", "m.csg:1: polyhedron: faces must hold point indices 0 .. 3, got 7.0"),
     ("", "m.csg: the model is empty: nothing of it has a volume"),
     ("cube(size = 0);\nsphere(r = 0);", "m.csg: the model is empty: nothing of it has a volume"),
@@ -219,8 +218,7 @@ UNSUPPORTED = [
     ("hull", "hull() {\n  sphere(r = 1);\n  multmatrix([[1, 0, 0, 3], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]) cylinder(h = 2, r1 = 1, r2 = 1);\n}"),
     ("minkowski", "minkowski() {\n  cube(size = 1);\n  cylinder(h = 1, r1 = 0.1, r2 = 0);\n}"),
     ("roof", "linear_extrude(height = 1) {\n  roof() {\n    square(size = 1);\n  }\n}"),
-    ("import", "linear_extrude(height = 1) {\n  import(file = \"part.eps\", layer = \"\", origin = [0, 0], scale = 1);\n}"),
-    ("projection", "linear_extrude(height = 1) {\n  projection(cut = false) {\n    difference() {\n      sphere(r = 1);\n      sphere(r = 0.5);\n    }\n  }\n}"),
+    ("import", "linear_extrude(height = 1) {\n  import(file = \"part.nef3\", layer = \"\", origin = [0, 0], scale = 1);\n}"),
     ("fill", "fill() {\n  cube(size = 1);\n}"),
     ("frobnicate", "frobnicate(size = 3);"),
 ]

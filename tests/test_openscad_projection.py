@@ -25,7 +25,7 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from isocsg import Box, ConvexPolyhedron, Cylinder, Sphere, Truncus, volume
-from isocsg.errors import NotExactError, UnsupportedOpenSCADError
+from isocsg.errors import NotExactError
 from isocsg.openscad import read_openscad
 from isocsg.shapes2d import EMPTY, area, to_shapely
 from isocsg.shapes2d.projection import outline, projection, section_at
@@ -104,12 +104,13 @@ def test_outline_of_a_difference_is_not_the_difference_of_outlines() -> None:
 def test_outline_that_is_not_exact_is_refused_naming_the_node() -> None:
     with pytest.raises(NotExactError, match="not a vertical prism"):
         outline(Sphere((0, 0, 0), 2) - Sphere((0, 0, 1), 1))
+    # OpenSCAD's own outline then (isocsg.openscad.fallback): its sphere of r = 2 has 7 fragments
+    # and 4 rings, the widest at the polar angle 67.5 degrees; the shadow is that 7-gon
     text = "linear_extrude(height = 1) projection() difference() { sphere(2); sphere(1); }"
-    with pytest.raises(UnsupportedOpenSCADError, match=r"line 1: projection\(\) is not supported"):
-        read_openscad_text(text)
-    model = read_openscad_text(text + "\ncube(1);", skip_unsupported=True)
-    assert model.skipped == {"projection": 1}
-    assert "not a vertical prism" in model.left_out[0]
+    model = read_openscad_text(text)
+    assert len(model.polygonal) == 1 and "not a vertical prism" in model.polygonal[0]
+    r = 2 * math.sin(math.radians(67.5))
+    assert volume(model.solid) == pytest.approx(3.5 * r * r * math.sin(2 * math.pi / 7), rel=1e-8)
 
 
 def test_projection_beside_3d_objects_is_ignored() -> None:

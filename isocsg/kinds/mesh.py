@@ -32,6 +32,7 @@ Every operation is exact for the mesh:
 
 from __future__ import annotations
 
+import contextvars
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any, ClassVar
 
@@ -121,8 +122,14 @@ def _signed_volume(V: NDArray[np.float64], F: NDArray[np.int64]) -> float:
     return float(np.einsum("ij,ij->i", a, np.cross(b, d)).sum() / 6.0)
 
 
+#: Set while building a mesh known not to cross itself (an affine image of a checked mesh, a height
+#: map): the self-intersection check, the costly one (45 s for a 200 x 200 height map), is skipped.
+_SIMPLE: contextvars.ContextVar[bool] = contextvars.ContextVar("isocsg_mesh_simple", default=False)
+
+
 @register_kind("mesh", required=("vertices", "faces"))
 @dataclass(frozen=True, eq=False)
+
 class TriangleMesh(Primitive):
     """A closed triangle mesh as a solid (see the module docstring for validity and exactness).
 
@@ -181,7 +188,8 @@ class TriangleMesh(Primitive):
         object.__setattr__(self, "_bvh", None)
         object.__setattr__(self, "vertices", V)
         object.__setattr__(self, "faces", F)
-        self._check_crossings()
+        if not _SIMPLE.get():
+            self._check_crossings()
         cross = np.cross(V[F[:, 1]] - V[F[:, 0]], V[F[:, 2]] - V[F[:, 0]])
         norm = np.linalg.norm(cross, axis=1)
         normals = cross / np.where(norm > 0, norm, 1.0)[:, None]
@@ -195,6 +203,15 @@ class TriangleMesh(Primitive):
         import hashlib  # here: a model without meshes does not load it
 
         object.__setattr__(self, "_digest", hashlib.blake2b(V.tobytes() + b"|" + F.tobytes(), digest_size=16).digest())
+
+    @classmethod
+    def _simple(cls, vertices: ArrayLike, faces: ArrayLike) -> TriangleMesh:
+        """A mesh its caller knows not to cross itself (see ``_SIMPLE``): every other check is made."""
+        token = _SIMPLE.set(True)
+        try:
+            return cls(vertices, faces)
+        finally:
+            _SIMPLE.reset(token)
 
     def _check_crossings(self) -> None:
         """Refuse a mesh with an edge through a face that does not share its ends (a self-intersection;
@@ -445,4 +462,4 @@ class TriangleMesh(Primitive):
         """The mapped vertices; a reflection reverses every face."""
         V = self.vertices @ A.T + t
         F = self.faces[:, ::-1] if np.linalg.det(A) < 0 else self.faces
-        return TriangleMesh(V, F)
+        return TriangleMesh._simple(V, F)  # an affine image of a mesh that does not cross itself

@@ -20,7 +20,8 @@ from numpy.typing import ArrayLike, NDArray
 from ..errors import InvalidGeometryError, MissingDependencyError
 from .mesh import TriangleMesh
 
-__all__ = ["MESH_SUFFIXES", "read_mesh", "polygon_mesh", "height_map", "read_height_map", "MAX_HEIGHT_MAP_CELLS"]
+__all__ = ["MESH_SUFFIXES", "read_mesh", "polygon_mesh", "polygon_triangles", "reoriented", "bodies", "height_map",
+           "read_height_map", "MAX_HEIGHT_MAP_CELLS"]
 
 #: The file types :func:`read_mesh` reads.
 MESH_SUFFIXES = (".stl", ".off", ".obj", ".ply", ".3mf")
@@ -91,6 +92,13 @@ def polygon_mesh(points: ArrayLike, faces: list[list[int]], *, clockwise: bool =
     InvalidGeometryError
         When the faces do not bound a valid closed solid (see :class:`TriangleMesh`).
     """
+    P = np.asarray(points, dtype=np.float64)
+    return TriangleMesh(P, polygon_triangles(P, faces, clockwise=clockwise))
+
+
+def polygon_triangles(points: ArrayLike, faces: list[list[int]], *, clockwise: bool = True) -> NDArray[np.int64]:
+    """The triangles :func:`polygon_mesh` makes of the faces (counter-clockwise seen from outside
+    when the faces agree), before the mesh is checked."""
     from .polygon_faces import triangulate_faces
 
     P = np.asarray(points, dtype=np.float64)
@@ -102,7 +110,56 @@ def polygon_mesh(points: ArrayLike, faces: list[list[int]], *, clockwise: bool =
         a, b, d = P[T[:, 0]] - c, P[T[:, 1]] - c, P[T[:, 2]] - c
         if float(np.einsum("ij,ij->i", a, np.cross(b, d)).sum()) < 0:
             T = T[:, ::-1]
-    return TriangleMesh(P, T)
+    return T
+
+
+
+def reoriented(vertices: ArrayLike, faces: ArrayLike) -> TriangleMesh:
+    """The closed mesh of triangles some of which are wound the wrong way: each connected body's
+    faces turned to agree with their neighbours and to face outwards (trimesh's ``fix_normals``).
+    No vertex is merged, no face added or dropped.
+
+    Raises
+    ------
+    InvalidGeometryError
+        When an edge does not join exactly two faces (an open or non-manifold mesh, which no
+        orientation makes a solid), or the result is not a valid solid (:class:`TriangleMesh`).
+    """
+    import trimesh
+
+    V = np.asarray(vertices, dtype=np.float64)
+    F = np.asarray(faces, dtype=np.int64).reshape(-1, 3)
+    edges = np.sort(np.concatenate([F[:, [0, 1]], F[:, [1, 2]], F[:, [2, 0]]]), axis=1)
+    pairs, inverse, counts = np.unique(edges, axis=0, return_inverse=True, return_counts=True)
+    if len(counts) and np.any(counts % 2):
+        k = int(np.argmax(counts % 2))
+        raise InvalidGeometryError(
+            f"TriangleMesh.faces cannot be reoriented: the edge {pairs[k, 0]} -> {pairs[k, 1]} joins "
+            f"{counts[k]} faces (an open mesh)")
+    tm = trimesh.Trimesh(V, F, process=False)
+    trimesh.repair.fix_normals(tm, multibody=True)
+    return TriangleMesh(np.asarray(tm.vertices), np.asarray(tm.faces))
+
+
+def bodies(faces: ArrayLike) -> list[NDArray[np.int64]]:
+    """The faces of each body of a closed mesh whose bodies touch along edges (an edge joining 4,
+    6, ... faces): the sets of faces connected across the edges that join exactly two."""
+    import scipy.sparse as sp
+    from scipy.sparse.csgraph import connected_components
+
+    F = np.asarray(faces, dtype=np.int64).reshape(-1, 3)
+    edges = np.sort(np.concatenate([F[:, [0, 1]], F[:, [1, 2]], F[:, [2, 0]]]), axis=1)
+    _, inverse, counts = np.unique(edges, axis=0, return_inverse=True, return_counts=True)
+    inverse = inverse.reshape(-1)
+    owner = np.tile(np.arange(len(F)), 3)
+    order = np.argsort(inverse, kind="stable")
+    e, o = inverse[order], owner[order]
+    two = counts[e] == 2
+    first = np.flatnonzero(two & (np.r_[True, e[1:] != e[:-1]]))  # the first face of each manifold edge
+    a, b = o[first], o[first + 1]
+    graph = sp.coo_matrix((np.ones(len(a)), (a, b)), shape=(len(F), len(F)))
+    n, label = connected_components(graph, directed=False)
+    return [F[label == k] for k in range(n)]
 
 
 def height_map(heights: ArrayLike, *, center: bool = False, base: float | None = None) -> TriangleMesh:
@@ -157,7 +214,7 @@ def height_map(heights: ArrayLike, *, center: bool = False, base: float | None =
     bottom = np.stack([np.full(len(ring), bottom_c), dn1, dn0], axis=1)
     V = np.vstack([grid, centres, low, [[ox + (cols - 1) / 2.0, oy + (lines - 1) / 2.0, zb]]])
     F = np.vstack([top, walls, bottom]).astype(np.int64)
-    return TriangleMesh(V, F)
+    return TriangleMesh._simple(V, F)  # a height field over its grid, walls and a flat base: no crossing
 
 
 def read_height_map(path: str | os.PathLike[str], *, invert: bool = False) -> tuple[NDArray[np.float64], float]:

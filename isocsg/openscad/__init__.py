@@ -17,6 +17,7 @@ from pathlib import Path
 from ..errors import MissingDependencyError, OpenSCADError
 from ..kinds import Solid
 from .flat import FN_MAX, MixedDimensionsWarning
+from .lenient import OpenSCADLenientWarning
 from .lowering import UNSUPPORTED_NODES, LoweredModel, lower
 from .parser import MAX_CSG_TEXT, CSGCall, parse_csg
 from .program import _INSTALL, export_mesh, find_openscad, scad_to_csg
@@ -30,6 +31,7 @@ __all__ = [
     "dumps_openscad",
     "OpenSCADSkipWarning",
     "OpenSCADPolygonalWarning",
+    "OpenSCADLenientWarning",
     "LoweredModel",
     "CSGCall",
     "parse_csg",
@@ -180,8 +182,9 @@ def loads_openscad(text: str, *, source: str | None = None, skip_unsupported: bo
 
 
 class OpenSCADPolygonalWarning(UserWarning):
-    """Issued by :func:`load_openscad` with ``polygonal=True`` when nodes were made OpenSCAD's
-    polygonal solid; ``nodes`` lists them (``"model.csg:12: hull(): ..."``)."""
+    """Issued by :func:`load_openscad` when nodes were made OpenSCAD's polygonal solid (a
+    ``projection`` or twisted ``linear_extrude`` without an exact form; with ``polygonal=True`` also
+    a ``hull`` or ``minkowski``); ``nodes`` lists them (``"model.csg:12: hull(): ..."``)."""
 
     def __init__(self, message: str, nodes: tuple[str, ...]) -> None:
         super().__init__(message)

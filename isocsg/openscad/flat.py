@@ -28,6 +28,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from ..errors import InvalidGeometryError, InvalidParameterError
+from .lenient import dropped
 from .parser import CSGCall
 
 # The lowering context (lowering._Lowerer) that calls these functions; typed loosely so that this
@@ -273,10 +274,15 @@ def project(lw: _Lowerer, call: CSGCall) -> Any:
     try:
         return projection(solid, cut=cut)
     except NotExactError as exc:
-        lw.unsupported(call, str(exc).removeprefix("projection: "))
-        return None
+        reason = str(exc).removeprefix("projection: ")
+        if cut:
+            lw.unsupported(call, reason)
+            return None
     except InvalidGeometryError as exc:
         raise lw.fail(call, str(exc)) from None
+    from .fallback import polygonal_projection  # what OpenSCAD computes: its polyhedron's shadow
+
+    return polygonal_projection(lw, call, reason)
 
 
 def _kept(lw: _Lowerer, call: CSGCall) -> list[CSGCall]:
@@ -312,7 +318,9 @@ def shape_of(lw: _Lowerer, call: CSGCall, polygonal: bool = False) -> Any:
         node, kids, done = stack[-1]
         if len(done) < len(kids):
             child = kids[len(done)]
-            if child.name == "projection":  # 3D children: lowered as solids, then projected
+            if dropped(lw, child):  # drawn as nothing by OpenSCAD too (warned)
+                done.append(EMPTY)
+            elif child.name == "projection":  # 3D children: lowered as solids, then projected
                 done.append(project(lw, child))
             elif child.name == "minkowski":
                 from .sum2d import minkowski_shape
@@ -388,6 +396,14 @@ def extrude(lw: _Lowerer, call: CSGCall) -> Any:
             fn=max(details["$fn"], 0.0), fs=max(details["$fs"], 0.01), fa=max(details["$fa"], 0.01))
         return _as_boxes(solid)
     except InvalidGeometryError as exc:
+        if "turn per slice is too large" in str(exc):
+            from .fallback import polygonal_twist  # OpenSCAD's own polygon stack
+
+            polygons = shape_of(lw, call, polygonal=True) if "file" not in call.kwargs else shape
+            return polygonal_twist(lw, call, polygons, (-h / 2, h / 2) if center else (0.0, h), twist,
+                                   (float(scale_v[0]), float(scale_v[1])), int(n) if n >= 1 else None,
+                                   (max(details["$fn"], 0.0), max(details["$fs"], 0.01), max(details["$fa"], 0.01)),
+                                   str(exc).removeprefix("linear_extrude.slices: "))
         if "scale" in str(exc) or "twist" in str(exc) or "slices" in str(exc):
             lw.unsupported(call, str(exc))
             return None

@@ -64,7 +64,9 @@ from ..errors import InvalidGeometryError, InvalidParameterError, NotExactError,
 from ..kinds import Box, ConvexPolyhedron, Cylinder, Solid, Sphere, Truncus
 from ..kinds.mesh_io import MESH_SUFFIXES, height_map, polygon_mesh, read_height_map, read_mesh
 from ..kinds.polygon_faces import signed_volume
+from .amf import read_amf
 from .flat import MixedDimensionsWarning, cylinder_points, extrude, polygonal_sides, sphere_points
+from .lenient import affine_row, color_value, dropped, mesh
 from .parser import CSGCall
 from .revolve import revolve
 
@@ -109,8 +111,9 @@ class LoweredModel:
         innermost ``color`` wins, as in OpenSCAD), or None; empty when nothing is coloured. Pass
         it to :class:`~isocsg.SceneObject` to draw the model in its colours.
     polygonal : tuple of str
-        One line per ``hull`` or ``minkowski`` node made OpenSCAD's own polygonal solid because
-        it has no exact form (only with ``polygonal=True``; :mod:`isocsg.openscad.polygonal`):
+        One line per node made OpenSCAD's own polygonal solid because it has no exact form: a
+        ``projection`` or twisted ``linear_extrude`` (:mod:`isocsg.openscad.fallback`), and with
+        ``polygonal=True`` a ``hull`` or ``minkowski`` (:mod:`isocsg.openscad.polygonal`):
         ``"model.csg:12: hull(): a hull of Cylinder, Sphere ..."``.
     """
 
@@ -311,7 +314,7 @@ class _Lowerer:
         planar = np.all(off_plane <= off + 1e-9 * max(scale, 1.0))
         # a face off its plane by `off` encloses at most `off` x the hull's area (< 6 scale^2) more or less
         if not planar or abs(abs(enclosed) - hull.volume) > 6 * off * scale**2 + 1e-9 * max(hull.volume, scale**3):
-            return self.make(call, polygon_mesh, pts, faces)  # non-convex: a closed triangle mesh
+            return mesh(self, call, polygon_mesh, pts, faces)  # non-convex: a closed triangle mesh
         return hull
 
     def model_file(self, call: CSGCall, name: str) -> Path:
@@ -331,10 +334,11 @@ class _Lowerer:
         """``import(file)`` of a mesh (``convexity`` and ``layer`` do not matter to a mesh)."""
         value = self.arg(call, "file", 0, None)
         suffix = Path(value).suffix.lower() if isinstance(value, str) else ""
-        if isinstance(value, str) and suffix not in MESH_SUFFIXES:
-            self.unsupported(call, f"only 3D meshes ({', '.join(MESH_SUFFIXES)}) are imported, not {suffix or value!r}")
+        if isinstance(value, str) and suffix not in MESH_SUFFIXES + (".amf",):
+            self.unsupported(call, f"only 3D meshes ({', '.join(MESH_SUFFIXES)}, .amf) are imported, "
+                                   f"not {suffix or value!r}")
             return None
-        return self.make(call, read_mesh, self.model_file(call, "file"))
+        return mesh(self, call, read_amf if suffix == ".amf" else read_mesh, self.model_file(call, "file"))
 
     def surface(self, call: CSGCall) -> Solid | None:
         """``surface(file, center, invert)``: OpenSCAD's height-map solid (:func:`~isocsg.kinds.mesh_io.height_map`)."""
@@ -408,7 +412,7 @@ def _matrix(lw: _Lowerer, call: CSGCall) -> NDArray[np.float64]:
     m = np.eye(4)
     m[: len(value)] = [[lw.number(call, "m", x) for x in row] for row in value]
     if not np.array_equal(m[3], [0.0, 0.0, 0.0, 1.0]):
-        raise lw.fail(call, f"m must be affine (last row [0, 0, 0, 1]), got {m[3].tolist()}")
+        m[3] = affine_row(lw, call, m[3])  # OpenSCAD's transforms are affine: it ignores that row
     return m
 
 
@@ -538,8 +542,8 @@ def _color(lw: _Lowerer, call: CSGCall, solid: Any) -> None:
     """Give the leaves of a ``color()`` node's solid its colour, unless an inner one gave them theirs."""
     if not isinstance(solid, Solid):
         return
-    value = lw.arg(call, "c", 0, None)
-    if value is None or (isinstance(value, list) and any(isinstance(v, (int, float)) and v < 0 for v in value[:3])):
+    value = color_value(lw, call, lw.arg(call, "c", 0, None))  # clamped to [0, 1], as OpenSCAD draws it
+    if value is None:
         return  # OpenSCAD exports an unset colour (an unknown name, undef) as [-1, -1, -1, 1]: no colour
     try:
         rgb = parse_color(value, name="color")
@@ -627,6 +631,8 @@ def _enter(lw: _Lowerer, call: CSGCall, m: NDArray[np.float64] | None) -> tuple[
         warnings.warn(MixedDimensionsWarning(
             f"{lw.where(call)}ignoring the 2D object {name}() beside 3D objects, as OpenSCAD does"), stacklevel=4)
         return _DROP, m, False
+    if dropped(lw, call):
+        return None, m, False  # drawn as nothing by OpenSCAD too (warned)
     if name in UNSUPPORTED_NODES:
         lw.unsupported(call, UNSUPPORTED_NODES[name])
         return None, m, False
