@@ -28,8 +28,9 @@ differences add up to less than ``SAFETY * tol`` times the whole figure (the sum
 contributions, at least 1e-6 of the swept patches' whole area): a patch with nothing or little on
 the boundary (a thin rod's end disc inside another leaf) is not refined to ``tol`` of its own
 vanishing contribution. The reported error is that sum plus the area of pieces that could not be
-decided (a midpoint on another surface at an angle); that area is a band along other surfaces
-that finer sweeps measure again, so it does not ask for splits.
+decided (a midpoint on another surface at an angle); an interval whose error is mostly that
+is split to ``UNDECIDED_DEPTH`` of its sweep only (a band along another surface is measured
+again at every level; a node on a whole ring of another surface moves off it in a split or two).
 A box or convex polyhedron whose neighbours are all boxes or convex polyhedra is not swept: its
 faces' boundary parts are polygons (:mod:`isocsg.testing.planar`), exact up to a grid of 1e-12
 of each face's size, with the area and the volume's share taken in one pass.
@@ -93,6 +94,8 @@ SNAP = 1e-12
 #: the square-root ends of a chord family (a box face cut by a sphere) they understate the error
 #: (by a factor 1.7 on a sphere's cap at 1e-9); cheap, since the intervals there shrink fast.
 SAFETY = 0.1
+#: An interval whose error is mostly undecided area is not split below this fraction of its sweep.
+UNDECIDED_DEPTH = 2.0**-6
 #: Most sweep intervals per patch before the integration returns what it has.
 MAX_INTERVALS = 4000
 
@@ -449,39 +452,43 @@ class _PatchRule:
         return k_, np.abs(k_ - g_), (und @ GK_WK) * h
 
 
-#: An interval of the sweep: (-Kronrod-Gauss difference, patch, a, b, value, undecided area).
+#: An interval of the sweep: (-its error, patch, a, b, value, undecided area); the error is the
+#: Kronrod-Gauss difference plus the undecided area.
 _Interval = tuple[float, int, float, float, float, float]
 
 
 def _sweep(rules: list[_PatchRule], tol: float, scale: float, floor: float) -> tuple[float, float]:
-    """Adaptive Gauss-Kronrod over every patch at once: the intervals whose Kronrod-Gauss
-    differences carry half of the sum are split (all patches in one pass each), until that sum is
-    at most ``tol`` times the whole figure's size (``scale``, the closed and planar parts' absolute
-    values, plus the absolute values of every interval; at least ``floor``). Effort goes where
-    the differences are, whichever patch they are on: a patch with little or nothing on the
-    boundary is not refined to ``tol`` of its own (vanishing) contribution. The undecided
-    pieces' area is part of the error returned but does not ask for splits: it is a band along
-    other surfaces that finer sweeps measure again, not a quadrature error that shrinks.
-    Returns (value, error)."""
+    """Adaptive Gauss-Kronrod over every patch at once: the intervals whose errors carry half of
+    the sum are split (all patches in one pass each), until that sum is at most ``SAFETY * tol``
+    times the whole figure's size (``scale``, the closed and planar parts' absolute values, plus
+    the absolute values of every interval; at least ``floor``). Effort goes where the errors are,
+    whichever patch they are on: a patch with little or nothing on the boundary is not refined to
+    ``tol`` of its own (vanishing) contribution. An interval whose error is mostly undecided
+    area is split down to ``UNDECIDED_DEPTH`` of its patch's sweep only: a node on a curve where
+    another surface meets the patch (a whole ring undecided) moves off it after a split or two,
+    while a band along another surface (a thin rod's end disc inside the rod's copy) is measured
+    again at every level. Returns (value, error)."""
     heap: list[_Interval] = []
     for k, rule in enumerate(rules):
         a, b = rule.breaks[:-1], rule.breaks[1:]
         val, err, und = rule(a, b)
-        heap.extend(zip((-err).tolist(), [k] * len(a), a.tolist(), b.tolist(), val.tolist(), und.tolist()))
+        heap.extend(zip((-(err + und)).tolist(), [k] * len(a), a.tolist(), b.tolist(), val.tolist(), und.tolist()))
     heapq.heapify(heap)
     count = [len(r.breaks) - 1 for r in rules]
     done: list[_Interval] = []  # intervals that may not be split further (their patch's cap, or too short)
     while heap:
-        quad = math.fsum(-h[0] for h in heap) + math.fsum(-h[0] for h in done)
+        total = math.fsum(-h[0] for h in heap) + math.fsum(-h[0] for h in done)
         size = scale + math.fsum(abs(h[4]) for h in heap) + math.fsum(abs(h[4]) for h in done)
-        if quad <= SAFETY * tol * max(size, floor):
+        if total <= SAFETY * tol * max(size, floor):
             break
         take: dict[int, list[_Interval]] = {}
         acc, n = 0.0, 0
-        while heap and (acc < 0.5 * quad or n == 0) and n < 512:
+        while heap and (acc < 0.5 * total or n == 0) and n < 512:
             item = heapq.heappop(heap)
-            k, x, y = item[1], item[2], item[3]
-            if count[k] >= MAX_INTERVALS or y - x < 1e-14 * rules[k].span or item[0] == 0.0:
+            k, x, y, und_k = item[1], item[2], item[3], item[5]
+            width = (y - x) / rules[k].span
+            if (count[k] >= MAX_INTERVALS or width < 1e-14 or item[0] == 0.0
+                    or (2 * und_k > -item[0] and width < UNDECIDED_DEPTH)):
                 done.append(item)
                 continue
             take.setdefault(k, []).append(item)
@@ -493,11 +500,10 @@ def _sweep(rules: list[_PatchRule], tol: float, scale: float, floor: float) -> t
             mid = 0.5 * (xa + ya)
             lo, hi = np.concatenate([xa, mid]), np.concatenate([mid, ya])
             v2, e2, u2 = rules[k](lo, hi)
-            for item in zip((-e2).tolist(), [k] * len(lo), lo.tolist(), hi.tolist(), v2.tolist(), u2.tolist()):
+            for item in zip((-(e2 + u2)).tolist(), [k] * len(lo), lo.tolist(), hi.tolist(), v2.tolist(), u2.tolist()):
                 heapq.heappush(heap, item)
     every = heap + done
-    value = math.fsum(h[4] for h in every)
-    return value, math.fsum(-h[0] for h in every) + math.fsum(h[5] for h in every)
+    return math.fsum(h[4] for h in every), math.fsum(-h[0] for h in every)
 
 
 def surface_area(solid: Solid, *, tol: float = 1e-9, samples: int = 64) -> AreaResult:
