@@ -22,10 +22,15 @@ signed distance to machine precision), every piece between crossings is classifi
 midpoint and its area density integrated (Gauss-Legendre), giving the ring's measure ``m(s)``.
 ``m`` is integrated over the sweep parameter by adaptive Gauss-Kronrod (7-15), split first at
 the heights where other leaves start, end or have vertices (on a planar face also where two
-other planes meet on it, each on its leaf's surface: the ring measure's kinks), until the
-Kronrod-Gauss differences add up to less than ``tol`` times the patch's contribution (at least 1e-6 of its whole area).
-The reported error is that sum plus the area of pieces that could not be decided (a midpoint
-on another surface at an angle).
+other planes meet on it, each on its leaf's surface: the ring measure's kinks). All patches of
+the tree are refined together, the worst intervals wherever they are, until the Kronrod-Gauss
+differences add up to less than ``SAFETY * tol`` times the whole figure (the sum of the absolute
+contributions, at least 1e-6 of the swept patches' whole area): a patch with nothing or little on
+the boundary (a thin rod's end disc inside another leaf) is not refined to ``tol`` of its own
+vanishing contribution. The reported error is that sum plus the area of pieces that could not be
+decided (a midpoint on another surface at an angle); an interval whose error is mostly that
+is split to ``UNDECIDED_DEPTH`` of its sweep only (a band along another surface is measured
+again at every level; a node on a whole ring of another surface moves off it in a split or two).
 A box or convex polyhedron whose neighbours are all boxes or convex polyhedra is not swept: its
 faces' boundary parts are polygons (:mod:`isocsg.testing.planar`), exact up to a grid of 1e-12
 of each face's size, with the area and the volume's share taken in one pass.
@@ -85,6 +90,12 @@ MAX_SPLITS = 64
 #: in floating point can silently lose a piece where edges nearly coincide (a union of three
 #: valid polygons 0.03 short of their area, fuzz case 848); snap-rounding is robust.
 SNAP = 1e-12
+#: The Kronrod-Gauss differences must add up to this fraction of the error asked for: next to
+#: the square-root ends of a chord family (a box face cut by a sphere) they understate the error
+#: (by a factor 1.7 on a sphere's cap at 1e-9); cheap, since the intervals there shrink fast.
+SAFETY = 0.1
+#: An interval whose error is mostly undecided area is not split below this fraction of its sweep.
+UNDECIDED_DEPTH = 2.0**-6
 #: Most sweep intervals per patch before the integration returns what it has.
 MAX_INTERVALS = 4000
 
@@ -416,53 +427,83 @@ def _arrangement_heights(tree: _Tree, patch: Patch, rel: NDArray[np.int64]) -> F
     return x[on] @ patch.direction  # type: ignore[no-any-return]
 
 
-def _patch_area(
-    tree: _Tree, patch: Patch, rel: NDArray[np.int64], tol: float, samples: int, origin: F64 | None = None,
-) -> tuple[float, float]:
-    """Adaptive Gauss-Kronrod over the sweep parameter; returns (area, error), or with ``origin``
-    (the patch's share of the volume, error)."""
-    faces = [f for f in (tree.planes[j] for j in rel.tolist()) if f is not None]
-    curved = [j for j in rel.tolist() if not tree.planar[j]]
-    planes = None
-    if faces:
-        planes = (np.concatenate([f[0] for f in faces]), np.concatenate([f[1] for f in faces]))
-    br = _sweep_breaks(tree, patch, rel)
-    span = patch.s_hi - patch.s_lo
-    br = br[np.concatenate([[True], np.diff(br) > 1e-13 * span])]
-    floor = 1e-6 * patch.closed_area * (1.0 if origin is None else float(np.max(tree.hi - tree.lo)))
+class _PatchRule:
+    """Gauss-Kronrod 7-15 over intervals of one patch's sweep parameter: the ring measure's
+    integral, its Kronrod-Gauss difference, and the undecided pieces' area (or, with ``origin``,
+    the patch's share of the volume)."""
 
-    def gk(a: F64, b: F64) -> tuple[F64, F64]:
+    def __init__(self, tree: _Tree, patch: Patch, rel: NDArray[np.int64], samples: int, origin: F64 | None) -> None:
+        faces = [f for f in (tree.planes[j] for j in rel.tolist()) if f is not None]
+        self.tree, self.patch, self.rel, self.samples, self.origin = tree, patch, rel, samples, origin
+        self.curved = [j for j in rel.tolist() if not tree.planar[j]]
+        self.planes = None
+        if faces:
+            self.planes = (np.concatenate([f[0] for f in faces]), np.concatenate([f[1] for f in faces]))
+        br = _sweep_breaks(tree, patch, rel)
+        self.span = patch.s_hi - patch.s_lo
+        self.breaks = br[np.concatenate([[True], np.diff(br) > 1e-13 * self.span])]
+
+    def __call__(self, a: F64, b: F64) -> tuple[F64, F64, F64]:
         c, h = 0.5 * (a + b), 0.5 * (b - a)
         s = (c[:, None] + h[:, None] * GK_X[None, :]).ravel()
-        m, und = _ring_measure(tree, patch, rel, planes, curved, s, samples, origin)
+        m, und = _ring_measure(self.tree, self.patch, self.rel, self.planes, self.curved, s, self.samples, self.origin)
         m, und = m.reshape(-1, 15), und.reshape(-1, 15)
         k_, g_ = (m @ GK_WK) * h, (m @ GK_WG) * h
-        return k_, np.abs(k_ - g_) + (und @ GK_WK) * h
+        return k_, np.abs(k_ - g_), (und @ GK_WK) * h
 
-    a, b = br[:-1], br[1:]
-    val, err = gk(a, b)
-    heap = [(-float(e), float(x), float(y), float(v)) for e, x, y, v in zip(err, a, b, val)]
+
+#: An interval of the sweep: (-its error, patch, a, b, value, undecided area); the error is the
+#: Kronrod-Gauss difference plus the undecided area.
+_Interval = tuple[float, int, float, float, float, float]
+
+
+def _sweep(rules: list[_PatchRule], tol: float, scale: float, floor: float) -> tuple[float, float]:
+    """Adaptive Gauss-Kronrod over every patch at once: the intervals whose errors carry half of
+    the sum are split (all patches in one pass each), until that sum is at most ``SAFETY * tol``
+    times the whole figure's size (``scale``, the closed and planar parts' absolute values, plus
+    the absolute values of every interval; at least ``floor``). Effort goes where the errors are,
+    whichever patch they are on: a patch with little or nothing on the boundary is not refined to
+    ``tol`` of its own (vanishing) contribution. An interval whose error is mostly undecided
+    area is split down to ``UNDECIDED_DEPTH`` of its patch's sweep only: a node on a curve where
+    another surface meets the patch (a whole ring undecided) moves off it after a split or two,
+    while a band along another surface (a thin rod's end disc inside the rod's copy) is measured
+    again at every level. Returns (value, error)."""
+    heap: list[_Interval] = []
+    for k, rule in enumerate(rules):
+        a, b = rule.breaks[:-1], rule.breaks[1:]
+        val, err, und = rule(a, b)
+        heap.extend(zip((-(err + und)).tolist(), [k] * len(a), a.tolist(), b.tolist(), val.tolist(), und.tolist()))
     heapq.heapify(heap)
-    total_err = float(err.sum())
-    while total_err > tol * max(float(np.abs(val).sum()), floor) and len(heap) < MAX_INTERVALS:
-        # split the worst intervals that carry half of the error, all at once
-        take: list[tuple[float, float, float, float]] = []
-        acc = 0.0
-        while heap and (acc < 0.5 * total_err or not take) and len(take) < 256:
-            item = heapq.heappop(heap)
-            take.append(item)
-            acc += -item[0]
-        x = np.array([t[1] for t in take])
-        y = np.array([t[2] for t in take])
-        mid = 0.5 * (x + y)
-        v2, e2 = gk(np.concatenate([x, mid]), np.concatenate([mid, y]))
-        for e, xx, yy, v in zip(e2, np.concatenate([x, mid]), np.concatenate([mid, y]), v2):
-            heapq.heappush(heap, (-float(e), float(xx), float(yy), float(v)))
-        total_err = float(sum(-h[0] for h in heap))
-        val = np.array([h[3] for h in heap])
-        if np.all(y - x < 1e-14 * span):
+    count = [len(r.breaks) - 1 for r in rules]
+    done: list[_Interval] = []  # intervals that may not be split further (their patch's cap, or too short)
+    while heap:
+        total = math.fsum(-h[0] for h in heap) + math.fsum(-h[0] for h in done)
+        size = scale + math.fsum(abs(h[4]) for h in heap) + math.fsum(abs(h[4]) for h in done)
+        if total <= SAFETY * tol * max(size, floor):
             break
-    return float(sum(h[3] for h in heap)), total_err
+        take: dict[int, list[_Interval]] = {}
+        acc, n = 0.0, 0
+        while heap and (acc < 0.5 * total or n == 0) and n < 512:
+            item = heapq.heappop(heap)
+            k, x, y, und_k = item[1], item[2], item[3], item[5]
+            width = (y - x) / rules[k].span
+            if (count[k] >= MAX_INTERVALS or width < 1e-14 or item[0] == 0.0
+                    or (2 * und_k > -item[0] and width < UNDECIDED_DEPTH)):
+                done.append(item)
+                continue
+            take.setdefault(k, []).append(item)
+            count[k] += 1
+            acc, n = acc - item[0], n + 1
+        for k, items in take.items():
+            xa = np.array([t[2] for t in items])
+            ya = np.array([t[3] for t in items])
+            mid = 0.5 * (xa + ya)
+            lo, hi = np.concatenate([xa, mid]), np.concatenate([mid, ya])
+            v2, e2, u2 = rules[k](lo, hi)
+            for item in zip((-(e2 + u2)).tolist(), [k] * len(lo), lo.tolist(), hi.tolist(), v2.tolist(), u2.tolist()):
+                heapq.heappush(heap, item)
+    every = heap + done
+    return math.fsum(h[4] for h in every), math.fsum(-h[0] for h in every)
 
 
 def surface_area(solid: Solid, *, tol: float = 1e-9, samples: int = 64) -> AreaResult:
@@ -475,7 +516,7 @@ def surface_area(solid: Solid, *, tol: float = 1e-9, samples: int = 64) -> AreaR
     ----------
     solid : Solid
     tol : float, default 1e-9
-        Target relative error of each cut patch's contribution, in [1e-13, 0.1].
+        Target relative error of the whole area (the cut patches' error estimates together), in [1e-13, 0.1].
     samples : int, default 64
         Samples per ring at which crossings of curved leaves are looked for, 8 .. 4096.
 
@@ -542,6 +583,8 @@ def _boundary_integral(
     origin = centre if volume else None
     planar_cache = {} if planar_cache is None else planar_cache
     value, error, exact = 0.0, 0.0, True
+    abs_value, closed = 0.0, 0.0  # the closed and planar parts' size; the swept patches' whole area
+    rules: list[_PatchRule] = []
     for i, prim in enumerate(prog.leaves):
         rel = tree.relevant(i)
         if len(rel) and tree.planar[i] and all(tree.planar[j] for j in rel.tolist()):
@@ -551,6 +594,7 @@ def _boundary_integral(
             if planar_cache[i] is not None:
                 a, ae, v, ve = planar_cache[i]  # type: ignore[misc]
                 value, error = (value + v, error + ve) if volume else (value + a, error + ae)
+                abs_value += abs(v) if volume else a
                 continue
         try:
             patches = leaf_patches(i, prim)
@@ -564,13 +608,16 @@ def _boundary_integral(
             on, _ = tree.classify(i, rel, r.points(np.zeros(1, np.int64), t), p.normal(s, t))
             if bool(on[0]):
                 sign = 1.0 if bool(tree.last_inside_minus[0]) else -1.0
-                value += sign * float(prim.volume) if volume else closed_form_area(prim)
+                whole = sign * float(prim.volume) if volume else closed_form_area(prim)
+                value, abs_value = value + whole, abs_value + abs(whole)
             continue
         exact = False
-        for p in patches:
-            v, e = _patch_area(tree, p, rel, tol, samples, origin)
-            value += v
-            error += e
+        rules.extend(_PatchRule(tree, p, rel, samples, origin) for p in patches)
+        closed += sum(p.closed_area for p in patches)
+    if rules:
+        size = 1.0 if origin is None else float(np.max(tree.hi - tree.lo))
+        v, e = _sweep(rules, tol, abs_value, 1e-6 * closed * size)
+        value, error = value + v, error + e
     return AreaResult(value, error, exact)
 
 
