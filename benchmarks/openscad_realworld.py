@@ -63,17 +63,23 @@ SAMPLE = HERE / "openscad_realworld_sample.txt"
 HEAVY = HERE / "openscad_realworld_heavy.txt"
 
 
-def _stl_volume(model: Path, root: Path, timeout: float) -> float | None:
-    import trimesh
-
-    out = root / "_stl" / (str(model.relative_to(root)).replace("/", "__") + ".stl")
+def _export(model: Path, root: Path, suffix: str, timeout: float) -> Path | None:
+    """``openscad -o model.SUFFIX``, cached under ``DIR/_SUFFIX``; None when it timed out or wrote nothing."""
+    out = root / f"_{suffix}" / (str(model.relative_to(root)).replace("/", "__") + f".{suffix}")
     if not out.exists():
         try:
             subprocess.run(["openscad", "-o", str(out), model.name], cwd=model.parent, capture_output=True,
                            timeout=timeout, check=False)
         except subprocess.TimeoutExpired:
             return None
-    if not out.exists() or out.stat().st_size < 200:
+    return out if out.exists() else None
+
+
+def _stl_volume(model: Path, root: Path, timeout: float) -> float | None:
+    import trimesh
+
+    out = _export(model, root, "stl", timeout)
+    if out is None or out.stat().st_size < 200:
         return None
     mesh = trimesh.load(str(out), force="mesh")
     return float(abs(mesh.volume))
@@ -85,14 +91,8 @@ _SOLID_NODE = re.compile(r"\b(cube|sphere|cylinder|polyhedron|linear_extrude|rot
 
 def _has_3d_tree(model: Path, root: Path, timeout: float) -> bool:
     """Whether ``openscad -o model.csg`` (cached under ``DIR/_csg``) gives a tree with a 3D node."""
-    out = root / "_csg" / (str(model.relative_to(root)).replace("/", "__") + ".csg")
-    if not out.exists():
-        try:
-            subprocess.run(["openscad", "-o", str(out), model.name], cwd=model.parent, capture_output=True,
-                           timeout=timeout, check=False)
-        except subprocess.TimeoutExpired:
-            return False
-    return out.exists() and _SOLID_NODE.search(out.read_text(errors="replace")) is not None
+    out = _export(model, root, "csg", timeout)
+    return out is not None and _SOLID_NODE.search(out.read_text(errors="replace")) is not None
 
 
 def _kind(message: str) -> str:
