@@ -11,17 +11,21 @@ from __future__ import annotations
 
 import zipfile
 from pathlib import Path
-from typing import Any
-from xml.etree import ElementTree
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
 from ..errors import InvalidGeometryError
 
+if TYPE_CHECKING:
+    from xml.etree import ElementTree
+
 __all__ = ["read_amf"]
 
 
 def _xml(path: Path) -> ElementTree.Element:
+    from xml.etree import ElementTree  # here: a model without AMF files does not load it
+
     try:
         if zipfile.is_zipfile(path):
             with zipfile.ZipFile(path) as z:
