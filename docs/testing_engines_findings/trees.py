@@ -4,7 +4,7 @@ of one case (its number in the list the command draws); the comments say what wa
 from isocsg import *  # noqa: F403
 
 
-# case 4: over 60 s, skipped
+# case 4: over 120 s, skipped
 def case_4():
     p0 = Ellipsoid(center=(0.25, 0.0, 0.0), radii=(0.25, 0.25, 0.25))
     p1 = Sphere(center=(0.0, 0.0, 0.0), radius=0.25)
@@ -69,19 +69,9 @@ def case_11():
     return tree
 
 
-# case 12: over 60 s, skipped
+# case 12: over 120 s, skipped
 def case_12():
     p0 = Torus(center=(-1.0, -0.5, 0.0), axis=(0.0, 0.0, 1.0), major=2.25, minor=0.45)
-    p1 = Torus(center=(-0.25, -0.5, 0.75), axis=(0.0, 1.0, 0.0), major=1.0, minor=0.35)
-    n2 = Union(p0, p1)
-    p3 = Torus(center=(-0.25, -0.5, 0.75), axis=(0.0, 1.0, 0.0), major=1.0, minor=0.35)
-    tree = Intersection(n2, p3)
-    return tree
-
-
-# case 13: over 60 s, skipped
-def case_13():
-    p0 = Torus(center=(-0.25, -0.5, 0.75), axis=(0.0, 1.0, 0.0), major=1.0, minor=0.35)
     p1 = Torus(center=(-0.25, -0.5, 0.75), axis=(0.0, 1.0, 0.0), major=1.0, minor=0.35)
     n2 = Union(p0, p1)
     p3 = Torus(center=(-0.25, -0.5, 0.75), axis=(0.0, 1.0, 0.0), major=1.0, minor=0.35)
@@ -329,7 +319,7 @@ def case_54():
     return tree
 
 
-# case 55: over 60 s, skipped
+# case 55, trimesh-manifold: raised ValueError: Not all meshes are volumes!
 def case_55():
     p0 = Cylinder(center=(-0.75, 0.75, -1.0), axis=(0.22499999999999998, -0.375, 0.75), radius=0.25)
     p1 = Cylinder(center=(0.25, 0.25, 1.0), axis=(0.3, -0.5, 1.0), radius=0.001)
@@ -341,7 +331,7 @@ def case_55():
     return tree
 
 
-# case 56: over 60 s, skipped
+# case 56, trimesh-manifold: raised ValueError: Not all meshes are volumes!
 def case_56():
     p0 = Cylinder(center=(-0.75, -0.5, -1.0), axis=(0.22499999999999998, -0.375, 0.75), radius=0.25)
     p1 = Cylinder(center=(0.25, 0.25, 1.0), axis=(0.3, -0.5, 1.0), radius=0.001)
@@ -353,7 +343,12 @@ def case_56():
     return tree
 
 
-# case 57: over 60 s, skipped
+# case 57, trimesh-manifold: wrong hausdorff
+# volume    3.65575506e-06 (true 3.72610707e-06): error -7.035e-08, tessellation -7.036e-08, bound 1.098e-03 -> tessellation
+# area      0.00752308852 (true 0.00765975999): error -1.367e-04, tessellation -1.367e-04 -> tessellation
+# hausdorff mesh->true 4.115e-04, true->mesh 1.170e-04, tessellation 2.404e-04 -> wrong
+# topology  2 components, genus 0, watertight True, winding consistent True (true: 2, genus 0, from mesh) -> exact
+# verdict   WRONG: hausdorff
 def case_57():
     p0 = Cylinder(center=(-0.75, -0.5, -1.0), axis=(0.22499999999999998, -0.375, 0.75), radius=0.25)
     p1 = Cylinder(center=(0.25, 0.25, 1.0), axis=(0.3, -0.5, 1.0), radius=0.001)
@@ -395,7 +390,7 @@ def case_60():
     return tree
 
 
-# case 61: over 60 s, skipped
+# case 61: over 120 s, skipped
 def case_61():
     p0 = Ellipsoid(center=(0.75, -0.25, 0.0), radii=(1.5, 0.25, 0.75))
     p1 = Cylinder(center=(0.25, -1.0, 0.25), axis=(0.22499999999999998, -0.375, 0.75), radius=1.5)
@@ -460,7 +455,18 @@ def case_72():
     return tree
 
 
-# case 73: isocsg raised TypeError: intersection_all() got an unexpected keyword argument 'grid_size'
+# case 73, trimesh-manifold: wrong volume, area, hausdorff
+# volume    0.000100016594 (true 0.0001): error +1.659e-08, tessellation -1.388e-17, bound 1.331e-16 -> wrong
+# area      2.00040007 (true 2.0004): error +6.638e-08, tessellation +0.000e+00 -> wrong
+# hausdorff mesh->true 8.297e-09, true->mesh 8.297e-09, tessellation 5.509e-18 -> wrong
+# topology  1 components, genus 0, watertight True, winding consistent True (true: 1, genus 0, from polygons) -> exact
+# verdict   WRONG: volume, area, hausdorff
+# case 73, pyvista: wrong volume, area, hausdorff, topology
+# volume    0.000188896257 (true 0.0001): error +8.890e-05, tessellation -1.388e-17, bound 1.331e-16 -> wrong
+# area      3.6888081 (true 2.0004): error +1.688e+00, tessellation +0.000e+00 -> wrong
+# hausdorff mesh->true 8.297e-09, true->mesh 8.297e-09, tessellation 5.509e-18 -> wrong
+# topology  17 components, genus 17, watertight False, winding consistent False (true: 1, genus 0, from polygons) -> wrong
+# verdict   WRONG: volume, area, hausdorff, topology
 def case_73():
     p0 = Box(center=(0.25, 0.0, -0.75), size=(1.0, 1.0, 0.0001))
     p1 = Box(center=(-0.29237170472273677, 0.9563047559630354, -0.5), size=(0.5, 1.75, 0.75), orientation=((0.9563047559630354, -0.29237170472273677, 0.0), (0.29237170472273677, 0.9563047559630354, 0.0), (0.0, 0.0, 1.0)))
@@ -528,7 +534,12 @@ def case_79():
     return tree
 
 
-# case 86: over 60 s, skipped
+# case 86, trimesh-manifold: wrong topology
+# volume    0.000780351253 (true 0.000785398163): error -5.047e-06, tessellation -5.037e-06, bound 1.050e-01 -> tessellation
+# area      1.56389629 (true 1.57393792): error -1.004e-02, tessellation -1.008e-02 -> tessellation
+# hausdorff mesh->true 9.647e-05, true->mesh 1.831e-04, tessellation 1.831e-04 -> tessellation
+# topology  4 components, genus 1.5, watertight False, winding consistent False (true: 1, genus 0, from mesh) -> wrong
+# verdict   WRONG: topology
 def case_86():
     p0 = Cone(center=(-0.75, 0.75, 1.0), axis=(0.0, 1.5, 0.0), radius=1.25)
     p1 = Cylinder(center=(-0.25, -1.0, 0.25), axis=(0.0, 0.0, 0.001), radius=0.5)
@@ -629,7 +640,7 @@ def case_93():
     return tree
 
 
-# case 94: over 60 s, skipped
+# case 94: over 120 s, skipped
 def case_94():
     p0 = Box(center=(-1.0, -0.25, 0.25), size=(0.75, 0.5, 0.75))
     p1 = Cylinder(center=(-0.5, 0.25, 0.5), axis=(0.0, 0.0, 0.75), radius=2.0)
@@ -847,7 +858,7 @@ def case_117():
     return tree
 
 
-# case 126: over 60 s, skipped
+# case 126: over 120 s, skipped
 def case_126():
     p0 = Sphere(center=(0.5, -1.0, -0.25), radius=0.5)
     p1 = Cylinder(center=(-0.75, -0.75, -1.0), axis=(1.75, 1.75, 1.75), radius=1.5)
@@ -857,7 +868,7 @@ def case_126():
     return tree
 
 
-# case 127: over 60 s, skipped
+# case 127: over 120 s, skipped
 def case_127():
     p0 = Sphere(center=(0.5, -1.0, -0.25), radius=0.5)
     p1 = Cylinder(center=(-0.75, -0.75, -1.0), axis=(1.75, 1.75, 1.75), radius=1.5)
@@ -867,7 +878,7 @@ def case_127():
     return tree
 
 
-# case 128: over 60 s, skipped
+# case 128: over 120 s, skipped
 def case_128():
     p0 = Sphere(center=(0.5, -0.75, -0.25), radius=0.5)
     p1 = Cylinder(center=(-0.75, -0.75, -1.0), axis=(1.75, 1.75, 1.75), radius=1.5)
@@ -1115,7 +1126,7 @@ def case_151():
     return tree
 
 
-# case 152: over 60 s, skipped
+# case 152: over 120 s, skipped
 def case_152():
     p0 = Cylinder(center=(0.0, 1.0, 0.25), axis=(0.0, 0.5, 0.0), radius=0.25)
     p1 = Sphere(center=(0.0, 1.0, 0.25), radius=0.25)
@@ -1123,7 +1134,12 @@ def case_152():
     return tree
 
 
-# case 154: over 60 s, skipped
+# case 154, pyvista: wrong area, topology
+# volume    0.00411510414 (true 0.00310062421): error +1.014e-03, tessellation +1.218e-03, bound 9.420e-02 -> tessellation
+# area      0.468281265 (true 0.445737841): error +2.254e-02, tessellation +7.651e-03 -> wrong
+# hausdorff mesh->true 1.003e-02, true->mesh 9.510e-03, tessellation 9.615e-03 -> tessellation
+# topology  1 components, genus 1, watertight False, winding consistent False (true: 1, genus 0, from mesh) -> wrong
+# verdict   WRONG: area, topology
 def case_154():
     p0 = Cylinder(center=(0.0, 1.0, 0.25), axis=(0.0, 0.5, 0.0), radius=0.25)
     p1 = Sphere(center=(0.0, 0.25, 0.25), radius=1.0)
@@ -1131,7 +1147,12 @@ def case_154():
     return tree
 
 
-# case 158: over 60 s, skipped
+# case 158, trimesh-manifold: wrong area, hausdorff
+# volume    9.99569893e-05 (true 0.000100000017): error -4.303e-08, tessellation -1.652e-11, bound 4.664e-08 -> tessellation
+# area      2.00039983 (true 2.0004): error -1.721e-07, tessellation -8.561e-11 -> wrong
+# hausdorff mesh->true 5.131e-08, true->mesh 5.131e-08, tessellation 1.055e-16 -> wrong
+# topology  1 components, genus 0, watertight True, winding consistent True (true: 1, genus 0, from mesh) -> exact
+# verdict   WRONG: area, hausdorff
 def case_158():
     p0 = Cylinder(center=(-1.0, 0.0, -0.75), axis=(0.3, -0.5, 1.0), radius=0.001)
     p1 = Box(center=(-0.75, -0.75, -1.0), size=(1.0, 1.0, 0.0001))
@@ -1352,7 +1373,7 @@ def case_199():
     return tree
 
 
-# case 200: over 120 s, skipped
+# case 200, trimesh-manifold: raised ValueError: Not all meshes are volumes!
 def case_200():
     p0 = Cylinder(center=(-0.25, 0.75, -0.75), axis=(0.0, 1.0, 0.0), radius=0.001)
     p1 = Cone(center=(0.5, -1.0, 0.0), axis=(2.0, 2.0, 2.0), radius=0.75)
@@ -1366,7 +1387,7 @@ def case_200():
     return tree
 
 
-# case 201: over 60 s, skipped
+# case 201, trimesh-manifold: raised ValueError: Not all meshes are volumes!
 def case_201():
     p0 = Cylinder(center=(-0.25, 0.75, -0.75), axis=(0.0, 1.0, 0.0), radius=0.001)
     p1 = Cone(center=(-0.75, 0.0, -0.75), axis=(2.0, 2.0, 2.0), radius=0.75)
@@ -1380,7 +1401,7 @@ def case_201():
     return tree
 
 
-# case 202: over 120 s, skipped
+# case 202, trimesh-manifold: raised ValueError: Not all meshes are volumes!
 def case_202():
     p0 = Cylinder(center=(-0.25, 0.75, -0.75), axis=(0.0, 1.0, 0.0), radius=0.001)
     p1 = Cone(center=(0.5, -1.0, 0.25), axis=(2.0, 2.0, 2.0), radius=0.75)
@@ -1576,7 +1597,7 @@ def case_225():
     return tree
 
 
-# case 227: over 60 s, skipped
+# case 227: over 120 s, skipped
 def case_227():
     p0 = Truncus(center=(0.0, 1.0, -0.25), axis=(1.5, 0.0, 0.0), r1=1.5, r2=1.75)
     p1 = Truncus(center=(0.0, 1.0, -0.25), axis=(1.5, 0.0, 0.0), r1=1.5, r2=1.75)
@@ -1605,7 +1626,12 @@ def case_228():
     return tree
 
 
-# case 229: over 60 s, skipped
+# case 229, pyvista: wrong volume, area, hausdorff, topology
+# volume    0 (true 22.2747913): error -2.227e+01, tessellation -1.428e-01, bound 1.429e-01 -> wrong
+# area      0 (true 45.2624006): error -4.526e+01, tessellation -1.684e-01 -> wrong
+# hausdorff mesh->true inf, true->mesh inf, tessellation 8.427e-03 -> wrong
+# topology  0 components, genus 0, watertight True, winding consistent True (true: 1, genus 0, from mesh) -> wrong
+# verdict   WRONG: volume, area, hausdorff, topology
 def case_229():
     p0 = Cylinder(center=(-0.25, -0.25, 0.0), axis=(0.0, 0.0, 0.001), radius=0.5)
     p1 = Cylinder(center=(-0.75, 0.5, -0.75), axis=(0.6, -1.0, 2.0), radius=1.75)
@@ -1615,7 +1641,12 @@ def case_229():
     return tree
 
 
-# case 230: over 120 s, skipped
+# case 230, pyvista: wrong volume, area, hausdorff, topology
+# volume    0 (true 22.2747913): error -2.227e+01, tessellation -1.428e-01, bound 1.429e-01 -> wrong
+# area      0 (true 45.2624006): error -4.526e+01, tessellation -1.684e-01 -> wrong
+# hausdorff mesh->true inf, true->mesh inf, tessellation 8.426e-03 -> wrong
+# topology  0 components, genus 0, watertight True, winding consistent True (true: 1, genus 0, from mesh) -> wrong
+# verdict   WRONG: volume, area, hausdorff, topology
 def case_230():
     p0 = Cylinder(center=(-0.25, -0.25, 0.0), axis=(0.0, 0.0, 0.001), radius=0.5)
     p1 = Cylinder(center=(-0.75, 0.5, -0.75), axis=(0.6, -1.0, 2.0), radius=1.75)
@@ -1697,18 +1728,6 @@ def case_238():
     p0 = Sphere(center=(1.0, -0.25, 0.75), radius=0.75)
     p1 = Ellipsoid(center=(-0.5, -0.25, -0.25), radii=(0.75, 1.5, 2.0))
     tree = Union(p0, p1)
-    return tree
-
-
-# case 245: over 120 s, skipped
-def case_245():
-    p0 = Cylinder(center=(0.75, -0.5, 1.0), axis=(0.0, 1.0, 0.0), radius=0.001)
-    p1 = Cone(center=(0.75, -0.5, 1.0), axis=(0.0, 0.25, 0.0), radius=1.0)
-    n2 = Intersection(p0, p1)
-    p3 = Cylinder(center=(0.75, -0.5, 1.0), axis=(0.0, 0.0, 0.001), radius=0.5)
-    p4 = Cylinder(center=(-1.0, -1.0, 0.25), axis=(0.0, 0.0, 0.001), radius=0.5)
-    n5 = Intersection(p3, p4)
-    tree = Intersection(n2, n5)
     return tree
 
 
@@ -2246,7 +2265,12 @@ def case_315():
     return tree
 
 
-# case 319: over 120 s, skipped
+# case 319, pyvista: wrong volume, area, hausdorff, topology
+# volume    0 (true 1.39833581): error -1.398e+00, tessellation -2.768e-02, bound 1.872e-01 -> wrong
+# area      0 (true 7.07825228): error -7.078e+00, tessellation -8.795e-02 -> wrong
+# hausdorff mesh->true inf, true->mesh inf, tessellation 9.046e-03 -> wrong
+# topology  0 components, genus 0, watertight True, winding consistent True (true: 1, genus 0, from mesh) -> wrong
+# verdict   WRONG: volume, area, hausdorff, topology
 def case_319():
     p0 = Sphere(center=(1.0, -0.5, 0.75), radius=0.75)
     p1 = Truncus(center=(1.0, 1.0, 0.25), axis=(0.6, -1.0, 2.0), r1=1.0, r2=1.5)
@@ -2633,6 +2657,23 @@ def case_352():
     return tree
 
 
+# case 353, trimesh-manifold: wrong area
+# volume    0.139780031 (true 0.142966571): error -3.187e-03, tessellation -3.187e-03, bound 3.531e-02 -> tessellation
+# area      2.00157838 (true 1.85759983): error +1.440e-01, tessellation +4.649e-02 -> wrong
+# hausdorff mesh->true 6.533e-03, true->mesh 6.484e-03, tessellation 6.529e-03 -> tessellation
+# topology  1 components, genus 0.5, watertight False, winding consistent False (true: 2, genus 0) -> not comparable
+# verdict   WRONG: area
+def case_353():
+    p0 = Cylinder(center=(1.0, 1.0, 1.0), axis=(0.0, 0.25, 0.0), radius=1.25)
+    p1 = Cylinder(center=(1.0, 1.0, 1.0), axis=(0.0, 0.25, 0.0), radius=1.25)
+    p2 = Sphere(center=(0.25, 0.75, 0.75), radius=0.5)
+    n3 = Difference(p1, p2)
+    p4 = Cylinder(center=(1.0, 1.0, 1.0), axis=(0.0, 0.25, 0.0), radius=1.25)
+    n5 = Intersection(n3, p4)
+    tree = Difference(p0, n5)
+    return tree
+
+
 # case 354: over 120 s, skipped
 def case_354():
     p0 = Cylinder(center=(0.5, 1.0, 1.0), axis=(0.0, 0.25, 0.0), radius=1.25)
@@ -2645,6 +2686,20 @@ def case_354():
     return tree
 
 
+# case 357, trimesh-manifold: raised ValueError: Not all meshes are volumes!
+def case_357():
+    p0 = Box(center=(-1.0, 0.0, -1.0), size=(1.0, 1.0, 0.0001))
+    p1 = Box(center=(-0.5, -1.0, 0.25), size=(1.0, 1.0, 0.0001))
+    n2 = Union(p0, p1)
+    p3 = Cylinder(center=(0.0, 1.0, 0.0), axis=(0.0, 0.0, 0.25), radius=0.25)
+    n4 = Intersection(n2, p3)
+    p5 = Cylinder(center=(1.0, 0.25, 0.25), axis=(1.0, 0.0, 0.0), radius=0.001)
+    p6 = Cone(center=(0.0, 0.0, 0.0), axis=(0.0, 0.0, 0.25), radius=1.0)
+    n7 = Intersection(p5, p6)
+    tree = Union(n4, n7)
+    return tree
+
+
 # case 358, trimesh-manifold: raised ValueError: Not all meshes are volumes!
 def case_358():
     p0 = Box(center=(-1.0, 0.0, -1.0), size=(1.0, 1.0, 0.0001))
@@ -2653,6 +2708,20 @@ def case_358():
     p3 = Cylinder(center=(0.0, 1.0, 0.0), axis=(0.0, 0.0, 0.25), radius=0.25)
     n4 = Intersection(n2, p3)
     p5 = Cylinder(center=(1.0, 0.25, 0.25), axis=(1.0, 0.0, 0.0), radius=0.001)
+    p6 = Cone(center=(0.0, 0.0, 0.0), axis=(0.0, 0.0, 0.25), radius=1.0)
+    n7 = Intersection(p5, p6)
+    tree = Union(n4, n7)
+    return tree
+
+
+# case 359, trimesh-manifold: raised ValueError: Not all meshes are volumes!
+def case_359():
+    p0 = Box(center=(-1.0, 0.0, -1.0), size=(1.0, 1.0, 0.0001))
+    p1 = Box(center=(-0.5, 0.0, 0.25), size=(1.0, 1.0, 0.0001))
+    n2 = Union(p0, p1)
+    p3 = Cylinder(center=(0.0, 1.0, 0.0), axis=(0.0, 0.0, 0.25), radius=0.25)
+    n4 = Intersection(n2, p3)
+    p5 = Cylinder(center=(1.0, 0.25, 0.25), axis=(0.0, 0.0, 1.0), radius=0.001)
     p6 = Cone(center=(0.0, 0.0, 0.0), axis=(0.0, 0.0, 0.25), radius=1.0)
     n7 = Intersection(p5, p6)
     tree = Union(n4, n7)
@@ -2673,6 +2742,18 @@ def case_360():
     return tree
 
 
+# case 361: over 120 s, skipped
+def case_361():
+    p0 = Cylinder(center=(-0.25, -0.25, -0.25), axis=(0.25, 0.25, 0.25), radius=2.0)
+    p1 = Cone(center=(-1.0, -0.75, -0.25), axis=(1.25, 0.0, 0.0), radius=0.75)
+    p2 = Box(center=(1.0, 1.0, -0.75), size=(2.0, 0.75, 1.25))
+    p3 = Box(center=(-0.75, -0.75, 0.25), size=(1.0, 1.0, 0.0001))
+    n4 = Intersection(p2, p3)
+    n5 = Intersection(p1, n4)
+    tree = Union(p0, n5)
+    return tree
+
+
 # case 362, trimesh-manifold: raised ValueError: Not all meshes are volumes!
 def case_362():
     p0 = Cone(center=(-0.25, -0.25, -0.25), axis=(0.25, 0.25, 0.25), radius=2.0)
@@ -2682,6 +2763,42 @@ def case_362():
     n4 = Intersection(p2, p3)
     n5 = Intersection(p1, n4)
     tree = Union(p0, n5)
+    return tree
+
+
+# case 363: over 120 s, skipped
+def case_363():
+    p0 = Cone(center=(-0.25, -0.25, -0.25), axis=(0.25, 0.25, 0.25), radius=2.0)
+    p1 = Cone(center=(-1.0, -0.75, -0.25), axis=(1.25, 0.0, 0.0), radius=0.75)
+    p2 = Box(center=(1.0, 1.0, -0.75), size=(2.0, 0.75, 1.25))
+    p3 = Box(center=(-0.75, -0.75, 0.25), size=(1.0, 1.0, 0.0001))
+    n4 = Intersection(p2, p3)
+    n5 = Intersection(p1, n4)
+    tree = Intersection(p0, n5)
+    return tree
+
+
+# case 365: over 120 s, skipped
+def case_365():
+    p0 = Cone(center=(-0.25, -0.25, -0.25), axis=(0.25, 0.25, 0.25), radius=2.0)
+    p1 = Cone(center=(-1.0, -0.75, -0.25), axis=(1.25, 1.25, 1.25), radius=0.75)
+    p2 = Box(center=(1.0, 1.0, -0.75), size=(2.0, 0.75, 2.0))
+    p3 = Box(center=(-0.75, -0.75, 0.25), size=(1.0, 1.0, 0.0001))
+    n4 = Intersection(p2, p3)
+    n5 = Intersection(p1, n4)
+    tree = Intersection(p0, n5)
+    return tree
+
+
+# case 367: over 120 s, skipped
+def case_367():
+    p0 = Cone(center=(-0.25, -0.25, -0.25), axis=(0.25, 0.25, 0.25), radius=2.0)
+    p1 = Cone(center=(-0.25, -0.25, -0.25), axis=(0.25, 0.25, 0.25), radius=2.0)
+    p2 = Box(center=(1.0, 1.0, -0.75), size=(2.0, 0.75, 2.0))
+    p3 = Box(center=(-0.75, 0.0, 0.25), size=(1.0, 1.0, 0.0001))
+    n4 = Intersection(p2, p3)
+    n5 = Intersection(p1, n4)
+    tree = Intersection(p0, n5)
     return tree
 
 
@@ -2700,6 +2817,61 @@ def case_368():
     return tree
 
 
+# case 369, pyvista: wrong topology
+# volume    21.6162608 (true 21.7481997): error -1.319e-01, tessellation -1.406e-01, bound 1.560e-01 -> tessellation
+# area      44.534048 (true 44.6510541): error -1.170e-01, tessellation -1.583e-01 -> tessellation
+# hausdorff mesh->true 8.382e-03, true->mesh 8.367e-03, tessellation 8.367e-03 -> tessellation
+# topology  1 components, genus 1, watertight False, winding consistent False (true: 1, genus 0) -> wrong
+# verdict   WRONG: topology
+def case_369():
+    p0 = Truncus(center=(-1.0, 0.25, -1.0), axis=(1.5, 1.5, 1.5), r1=1.75, r2=1.5)
+    p1 = Cylinder(center=(0.75, -0.25, 0.0), axis=(0.0, 0.0, 0.001), radius=0.5)
+    n2 = Difference(p0, p1)
+    p3 = Ellipsoid(center=(0.25, -0.25, -1.0), radii=(0.75, 1.0, 0.25))
+    tree = Union(n2, p3)
+    return tree
+
+
+# case 375, pyvista: wrong area, hausdorff, topology
+# volume    0.401602923 (true 0.409562128): error -7.959e-03, tessellation -6.946e-03, bound 7.692e-01 -> tessellation
+# area      4.39806907 (true 4.39522613): error +2.843e-03, tessellation -2.759e-04 -> wrong
+# hausdorff mesh->true 8.387e-02, true->mesh 1.949e-02, tessellation 1.949e-02 -> wrong
+# topology  2 components, genus 1, watertight False, winding consistent False (true: 1, genus 0) -> wrong
+# verdict   WRONG: area, hausdorff, topology
+def case_375():
+    p0 = Torus(center=(0.5, 1.0, 0.0), axis=(0.0, 0.0, 1.0), major=1.0, minor=0.2)
+    p1 = Sphere(center=(0.75, -0.75, 0.25), radius=2.0)
+    tree = Difference(p0, p1)
+    return tree
+
+
+# case 377, pyvista: wrong topology
+# volume    0.375150046 (true 0.380724004): error -5.574e-03, tessellation -5.574e-03, bound 4.137e-02 -> tessellation
+# area      7.84154789 (true 7.89568416): error -5.414e-02, tessellation -5.414e-02 -> tessellation
+# hausdorff mesh->true 4.467e-03, true->mesh 4.467e-03, tessellation 4.467e-03 -> tessellation
+# topology  7 components, genus 9, watertight False, winding consistent False (true: 2, genus 0) -> wrong
+# verdict   WRONG: topology
+def case_377():
+    p0 = Torus(center=(0.5, 0.75, 0.0), axis=(0.0, 0.0, 1.0), major=1.0, minor=0.2)
+    p1 = Torus(center=(0.5, 1.0, 0.0), axis=(0.0, 0.0, 1.0), major=1.0, minor=0.2)
+    tree = Difference(p0, p1)
+    return tree
+
+
+# case 379: over 120 s, skipped
+def case_379():
+    p0 = Cylinder(center=(-0.25, 0.5, 0.5), axis=(1.0, 1.0, 1.0), radius=0.001)
+    p1 = Truncus(center=(0.0, 0.25, 0.25), axis=(0.25, 0.25, 0.25), r1=2.0, r2=1.5)
+    n2 = Intersection(p0, p1)
+    p3 = Torus(center=(1.0, -0.25, -0.75), axis=(0.0, 0.0, 1.0), major=1.75, minor=0.6124999999999999)
+    n4 = Intersection(n2, p3)
+    p5 = Torus(center=(0.5, 0.25, -0.5), axis=(0.0, 1.0, 0.0), major=1.0, minor=0.5)
+    n6 = Difference(n4, p5)
+    p7 = Cone(center=(1.0, -0.25, 0.5), axis=(0.0, 0.0, 0.75), radius=0.25)
+    tree = Union(n6, p7)
+    return tree
+
+
 # case 380, trimesh-manifold: raised ValueError: Not all meshes are volumes!
 def case_380():
     p0 = Cylinder(center=(-0.25, 0.5, 0.5), axis=(1.0, 1.0, 1.0), radius=0.001)
@@ -2708,6 +2880,20 @@ def case_380():
     p3 = Torus(center=(1.0, -0.25, -0.75), axis=(0.0, 0.0, 1.0), major=1.75, minor=0.6124999999999999)
     n4 = Intersection(n2, p3)
     p5 = Torus(center=(0.5, 0.25, -0.5), axis=(0.0, 1.0, 0.0), major=1.0, minor=0.35)
+    n6 = Difference(n4, p5)
+    p7 = Cone(center=(1.0, -0.25, 0.5), axis=(0.0, 0.0, 0.75), radius=0.25)
+    tree = Union(n6, p7)
+    return tree
+
+
+# case 381: over 120 s, skipped
+def case_381():
+    p0 = Cylinder(center=(-0.25, 0.5, 0.5), axis=(1.0, 1.0, 1.0), radius=0.001)
+    p1 = Truncus(center=(0.0, 0.25, 0.25), axis=(0.25, 0.25, 0.25), r1=2.0, r2=1.5)
+    n2 = Intersection(p0, p1)
+    p3 = Torus(center=(1.0, -0.25, -0.75), axis=(0.0, 0.0, 1.0), major=1.75, minor=0.6124999999999999)
+    n4 = Intersection(n2, p3)
+    p5 = Torus(center=(1.0, -0.25, -0.75), axis=(0.0, 1.0, 0.0), major=1.0, minor=0.35)
     n6 = Difference(n4, p5)
     p7 = Cone(center=(1.0, -0.25, 0.5), axis=(0.0, 0.0, 0.75), radius=0.25)
     tree = Union(n6, p7)
@@ -2725,4 +2911,3721 @@ def case_382():
     n6 = Difference(n4, p5)
     p7 = Cone(center=(1.0, -0.25, 0.5), axis=(0.0, 0.0, 0.75), radius=0.25)
     tree = Union(n6, p7)
+    return tree
+
+
+# case 383: over 120 s, skipped
+def case_383():
+    p0 = Cylinder(center=(-0.25, 0.5, 0.5), axis=(1.0, 1.0, 1.0), radius=0.001)
+    p1 = Truncus(center=(0.0, 0.25, 0.25), axis=(0.25, 0.25, 0.25), r1=2.0, r2=1.5)
+    n2 = Union(p0, p1)
+    p3 = Torus(center=(1.0, -0.25, -0.75), axis=(0.0, 0.0, 1.0), major=1.75, minor=0.6124999999999999)
+    n4 = Intersection(n2, p3)
+    p5 = Torus(center=(1.0, -0.25, -0.75), axis=(0.0, 0.0, 1.0), major=1.75, minor=0.6124999999999999)
+    n6 = Difference(n4, p5)
+    p7 = Cone(center=(1.0, -0.25, 0.5), axis=(0.0, 0.0, 0.75), radius=0.25)
+    tree = Union(n6, p7)
+    return tree
+
+
+# case 384: over 120 s, skipped
+def case_384():
+    p0 = Cylinder(center=(-0.25, 0.75, 0.5), axis=(1.0, 1.0, 1.0), radius=0.001)
+    p1 = Truncus(center=(0.0, 0.25, 0.25), axis=(0.25, 0.25, 0.25), r1=2.0, r2=1.5)
+    n2 = Union(p0, p1)
+    p3 = Torus(center=(1.0, -0.25, -0.75), axis=(0.0, 0.0, 1.0), major=1.75, minor=0.6124999999999999)
+    n4 = Intersection(n2, p3)
+    p5 = Torus(center=(1.0, -0.25, -0.75), axis=(0.0, 0.0, 1.0), major=1.75, minor=0.6124999999999999)
+    n6 = Difference(n4, p5)
+    p7 = Cone(center=(1.0, -0.25, 0.5), axis=(0.0, 0.0, 0.75), radius=0.25)
+    tree = Union(n6, p7)
+    return tree
+
+
+# case 385: over 120 s, skipped
+def case_385():
+    p0 = Cylinder(center=(-0.25, 0.75, 0.5), axis=(1.0, 1.0, 1.0), radius=0.001)
+    p1 = Truncus(center=(0.0, 0.25, 0.25), axis=(0.25, 0.25, 0.25), r1=2.0, r2=1.5)
+    n2 = Union(p0, p1)
+    p3 = Torus(center=(1.0, -0.25, -0.75), axis=(0.0, 0.0, 1.0), major=1.75, minor=0.6124999999999999)
+    n4 = Difference(n2, p3)
+    p5 = Torus(center=(1.0, -0.25, -0.75), axis=(0.0, 0.0, 1.0), major=1.75, minor=0.6124999999999999)
+    n6 = Difference(n4, p5)
+    p7 = Cone(center=(1.0, -0.25, 0.5), axis=(0.0, 0.0, 0.75), radius=0.25)
+    tree = Union(n6, p7)
+    return tree
+
+
+# case 386, trimesh-manifold: raised ValueError: Not all meshes are volumes!
+def case_386():
+    p0 = Cylinder(center=(-0.75, -1.0, -0.75), axis=(1.0, 0.0, 0.0), radius=0.001)
+    p1 = Box(center=(-0.1767766952966368, 0.8838834764831844, 0.25), size=(1.75, 2.0, 0.25), orientation=((0.7071067811865476, -0.7071067811865475, 0.0), (0.7071067811865475, 0.7071067811865476, 0.0), (0.0, 0.0, 1.0)))
+    n2 = Difference(p0, p1)
+    p3 = Cylinder(center=(0.25, 0.0, 0.25), axis=(0.0, 0.0, 1.0), radius=0.001)
+    p4 = Sphere(center=(0.75, -0.75, 0.75), radius=2.0)
+    p5 = Ellipsoid(center=(0.5, 0.5, 0.25), radii=(1.0, 1.0, 1.25))
+    n6 = Union(p4, p5)
+    n7 = Difference(p3, n6)
+    tree = Intersection(n2, n7)
+    return tree
+
+
+# case 387: over 120 s, skipped
+def case_387():
+    p0 = Cylinder(center=(0.25, 0.0, 0.25), axis=(0.0, 0.0, 1.0), radius=0.001)
+    p1 = Box(center=(-0.1767766952966368, 0.8838834764831844, 0.25), size=(1.75, 2.0, 0.25), orientation=((0.7071067811865476, -0.7071067811865475, 0.0), (0.7071067811865475, 0.7071067811865476, 0.0), (0.0, 0.0, 1.0)))
+    n2 = Difference(p0, p1)
+    p3 = Cylinder(center=(0.25, 0.0, 0.25), axis=(0.0, 0.0, 1.0), radius=0.001)
+    p4 = Sphere(center=(0.75, -0.75, 0.75), radius=2.0)
+    p5 = Ellipsoid(center=(0.5, 0.5, 0.25), radii=(1.0, 1.0, 1.25))
+    n6 = Union(p4, p5)
+    n7 = Difference(p3, n6)
+    tree = Intersection(n2, n7)
+    return tree
+
+
+# case 388: over 120 s, skipped
+def case_388():
+    p0 = Cylinder(center=(0.25, 0.0, 0.25), axis=(0.0, 0.0, 1.0), radius=0.001)
+    p1 = Box(center=(-0.1767766952966368, 0.8838834764831844, 0.25), size=(1.75, 0.25, 0.25), orientation=((0.7071067811865476, -0.7071067811865475, 0.0), (0.7071067811865475, 0.7071067811865476, 0.0), (0.0, 0.0, 1.0)))
+    n2 = Difference(p0, p1)
+    p3 = Cylinder(center=(0.25, 0.0, 0.25), axis=(0.0, 0.0, 1.0), radius=0.001)
+    p4 = Sphere(center=(0.75, -0.75, 0.75), radius=2.0)
+    p5 = Ellipsoid(center=(0.5, 0.5, 0.25), radii=(1.0, 1.0, 1.25))
+    n6 = Union(p4, p5)
+    n7 = Difference(p3, n6)
+    tree = Intersection(n2, n7)
+    return tree
+
+
+# case 389: over 120 s, skipped
+def case_389():
+    p0 = Cylinder(center=(0.25, 0.0, 0.25), axis=(0.0, 0.0, 1.0), radius=0.001)
+    p1 = Box(center=(-0.1767766952966368, 0.8838834764831844, 0.25), size=(1.75, 0.25, 0.25), orientation=((0.7071067811865476, -0.7071067811865475, 0.0), (0.7071067811865475, 0.7071067811865476, 0.0), (0.0, 0.0, 1.0)))
+    n2 = Difference(p0, p1)
+    p3 = Cylinder(center=(0.25, 0.0, 0.25), axis=(0.0, 0.0, 1.0), radius=0.001)
+    p4 = Sphere(center=(0.75, -0.75, 0.75), radius=2.0)
+    p5 = Ellipsoid(center=(0.5, 0.5, 0.25), radii=(0.25, 0.25, 0.25))
+    n6 = Union(p4, p5)
+    n7 = Difference(p3, n6)
+    tree = Intersection(n2, n7)
+    return tree
+
+
+# case 390: over 120 s, skipped
+def case_390():
+    p0 = Cylinder(center=(0.25, 0.0, 0.25), axis=(0.0, 0.0, 1.0), radius=0.001)
+    p1 = Box(center=(-0.1767766952966368, 0.8838834764831844, 0.25), size=(1.75, 0.25, 0.25), orientation=((0.7071067811865476, -0.7071067811865475, 0.0), (0.7071067811865475, 0.7071067811865476, 0.0), (0.0, 0.0, 1.0)))
+    n2 = Difference(p0, p1)
+    p3 = Cylinder(center=(0.25, 0.0, 0.25), axis=(0.0, 0.0, 1.0), radius=0.001)
+    p4 = Sphere(center=(0.75, -0.75, 0.75), radius=2.0)
+    p5 = Ellipsoid(center=(0.5, 0.75, 0.25), radii=(0.25, 0.25, 0.25))
+    n6 = Union(p4, p5)
+    n7 = Difference(p3, n6)
+    tree = Intersection(n2, n7)
+    return tree
+
+
+# case 391: over 120 s, skipped
+def case_391():
+    p0 = Cylinder(center=(0.25, 0.0, 0.25), axis=(0.0, 0.0, 1.0), radius=0.001)
+    p1 = Box(center=(-0.1767766952966368, 0.8838834764831844, 0.25), size=(1.75, 0.25, 0.25), orientation=((0.7071067811865476, -0.7071067811865475, 0.0), (0.7071067811865475, 0.7071067811865476, 0.0), (0.0, 0.0, 1.0)))
+    n2 = Difference(p0, p1)
+    p3 = Cylinder(center=(0.25, 0.0, 0.25), axis=(0.0, 0.0, 1.0), radius=0.001)
+    p4 = Sphere(center=(0.75, -0.75, 0.75), radius=2.0)
+    p5 = Ellipsoid(center=(0.5, 0.75, 0.25), radii=(0.25, 0.25, 0.25))
+    n6 = Union(p4, p5)
+    n7 = Difference(p3, n6)
+    tree = Difference(n2, n7)
+    return tree
+
+
+# case 394, trimesh-manifold: wrong volume, area, hausdorff
+# volume    0.000100016594 (true 0.0001): error +1.659e-08, tessellation -6.939e-18, bound 3.305e-17 -> wrong
+# area      2.00040007 (true 2.0004): error +6.638e-08, tessellation +0.000e+00 -> wrong
+# hausdorff mesh->true 8.297e-09, true->mesh 8.297e-09, tessellation 5.509e-18 -> wrong
+# topology  1 components, genus 0, watertight True, winding consistent True (true: 1, genus 0) -> exact
+# verdict   WRONG: volume, area, hausdorff
+def case_394():
+    p0 = Box(center=(-0.25, 0.5, 0.75), size=(1.0, 1.0, 0.0001))
+    p1 = Box(center=(-0.25, 1.0, 0.5), size=(1.0, 1.0, 0.0001))
+    n2 = Difference(p0, p1)
+    p3 = Box(center=(-0.25, 0.5, 0.75), size=(1.0, 1.0, 0.0001))
+    tree = Intersection(n2, p3)
+    return tree
+
+
+# case 395, trimesh-manifold: raised ValueError: Not all meshes are volumes!
+def case_395():
+    p0 = Box(center=(-0.25, 1.0, 0.5), size=(1.0, 1.0, 0.0001))
+    p1 = Box(center=(-0.25, 1.0, 0.5), size=(1.0, 1.0, 0.0001))
+    n2 = Difference(p0, p1)
+    p3 = Box(center=(-0.25, 0.5, 0.75), size=(1.0, 1.0, 0.0001))
+    tree = Intersection(n2, p3)
+    return tree
+
+
+# case 397, trimesh-manifold: wrong volume, area, hausdorff
+# volume    0.000100016594 (true 0.0001): error +1.659e-08, tessellation -1.102e-17, bound 3.305e-17 -> wrong
+# area      2.00040007 (true 2.0004): error +6.638e-08, tessellation +0.000e+00 -> wrong
+# hausdorff mesh->true 8.297e-09, true->mesh 8.297e-09, tessellation 5.509e-18 -> wrong
+# topology  1 components, genus 0, watertight True, winding consistent True (true: 1, genus 0) -> exact
+# verdict   WRONG: volume, area, hausdorff
+def case_397():
+    p0 = Box(center=(-0.25, 1.0, 0.5), size=(1.0, 1.0, 0.0001))
+    p1 = Box(center=(-0.25, 1.0, -0.25), size=(1.0, 1.0, 0.0001))
+    n2 = Difference(p0, p1)
+    p3 = Box(center=(-0.25, 0.5, 0.75), size=(1.0, 1.0, 0.0001))
+    tree = Difference(n2, p3)
+    return tree
+
+
+# case 398, trimesh-manifold: wrong volume, area, hausdorff
+# volume    0.000100016594 (true 0.0001): error +1.659e-08, tessellation -1.102e-17, bound 3.305e-17 -> wrong
+# area      2.00040007 (true 2.0004): error +6.638e-08, tessellation +0.000e+00 -> wrong
+# hausdorff mesh->true 8.297e-09, true->mesh 8.297e-09, tessellation 5.509e-18 -> wrong
+# topology  1 components, genus 0, watertight True, winding consistent True (true: 1, genus 0) -> exact
+# verdict   WRONG: volume, area, hausdorff
+def case_398():
+    p0 = Box(center=(-0.25, 1.0, 0.5), size=(1.0, 1.0, 0.0001))
+    p1 = Box(center=(-0.25, 0.5, 0.75), size=(1.0, 1.0, 0.0001))
+    n2 = Difference(p0, p1)
+    p3 = Box(center=(-0.25, 0.5, 0.75), size=(1.0, 1.0, 0.0001))
+    tree = Difference(n2, p3)
+    return tree
+
+
+# case 399, trimesh-manifold: wrong area, hausdorff
+# volume    0.500099995 (true 0.5001): error -4.885e-09, tessellation +1.110e-16, bound 1.220e-16 -> exact
+# area      6.00039998 (true 6.0004): error -1.558e-08, tessellation -8.882e-16 -> wrong
+# hausdorff mesh->true 3.810e-08, true->mesh 3.813e-08, tessellation 2.776e-16 -> wrong
+# topology  2 components, genus 0, watertight True, winding consistent True (true: 2, genus 0) -> exact
+# verdict   WRONG: area, hausdorff
+# case 399, pyvista: wrong volume, area, hausdorff, topology
+# volume    0 (true 0.5001): error -5.001e-01, tessellation +1.110e-16, bound 1.220e-16 -> wrong
+# area      0 (true 6.0004): error -6.000e+00, tessellation -8.882e-16 -> wrong
+# hausdorff mesh->true inf, true->mesh inf, tessellation 2.776e-16 -> wrong
+# topology  0 components, genus 0, watertight True, winding consistent True (true: 2, genus 0) -> wrong
+# verdict   WRONG: volume, area, hausdorff, topology
+def case_399():
+    p0 = Box(center=(0.17677669529663698, 1.2374368670764582, 0.25), size=(1.0, 0.5, 1.0), orientation=((0.7071067811865476, -0.7071067811865475, 0.0), (0.7071067811865475, 0.7071067811865476, 0.0), (0.0, 0.0, 1.0)))
+    p1 = Box(center=(0.5, -0.75, 0.25), size=(1.0, 1.0, 0.0001))
+    tree = Union(p0, p1)
+    return tree
+
+
+# case 400, pyvista: wrong topology
+# volume    0.0976402853 (true 0.0982698865): error -6.296e-04, tessellation -6.296e-04, bound 6.296e-04 -> tessellation
+# area      2.97932895 (true 2.98208314): error -2.754e-03, tessellation -2.520e-03 -> tessellation
+# hausdorff mesh->true 1.204e-03, true->mesh 1.204e-03, tessellation 1.204e-03 -> tessellation
+# topology  1 components, genus 0.5, watertight False, winding consistent True (true: 1, genus 0) -> wrong
+# verdict   WRONG: topology
+def case_400():
+    p0 = Box(center=(1.0, 0.75, 0.25), size=(1.0, 1.0, 0.0001))
+    p1 = Truncus(center=(0.5, 1.0, 0.5), axis=(0.0, 0.0, 0.5), r1=0.25, r2=0.25)
+    tree = Union(p0, p1)
+    return tree
+
+
+# case 402, pyvista: wrong area, hausdorff, topology
+# volume    0.227605378 (true 0.229074449): error -1.469e-03, tessellation -1.469e-03, bound 2.099e-03 -> tessellation
+# area      1.78454964 (true 2.29890028): error -5.144e-01, tessellation -9.675e-03 -> wrong
+# hausdorff mesh->true 2.131e-03, true->mesh 2.280e-01, tessellation 2.151e-03 -> wrong
+# topology  2 components, genus 3.5, watertight False, winding consistent False (true: 1, genus 0) -> wrong
+# verdict   WRONG: area, hausdorff, topology
+def case_402():
+    p0 = Truncus(center=(0.5, 1.0, 0.5), axis=(0.0, 0.0, 0.5), r1=0.25, r2=0.25)
+    p1 = Truncus(center=(0.5, 1.0, 0.5), axis=(0.0, 0.0, 0.5), r1=0.25, r2=0.5)
+    tree = Union(p0, p1)
+    return tree
+
+
+# case 403, pyvista: wrong area, hausdorff, topology
+# volume    0.300764248 (true 0.302705527): error -1.941e-03, tessellation -1.941e-03, bound 2.938e-03 -> tessellation
+# area      2.7133567 (true 3.10747437): error -3.941e-01, tessellation -1.402e-02 -> wrong
+# hausdorff mesh->true 2.135e-03, true->mesh 2.277e-01, tessellation 2.144e-03 -> wrong
+# topology  1 components, genus 2, watertight False, winding consistent False (true: 1, genus 0) -> wrong
+# verdict   WRONG: area, hausdorff, topology
+def case_403():
+    p0 = Truncus(center=(0.5, 1.0, 0.5), axis=(0.0, 0.0, 0.5), r1=0.5, r2=0.25)
+    p1 = Truncus(center=(0.5, 1.0, 0.5), axis=(0.0, 0.0, 0.5), r1=0.25, r2=0.5)
+    tree = Union(p0, p1)
+    return tree
+
+
+# case 405: over 120 s, skipped
+def case_405():
+    p0 = Cylinder(center=(0.0, 0.25, -0.75), axis=(0.075, -0.125, 0.25), radius=1.5)
+    p1 = Sphere(center=(0.75, 0.25, -1.0), radius=0.5)
+    n2 = Intersection(p0, p1)
+    p3 = Cylinder(center=(0.25, 0.25, 0.5), axis=(0.525, -0.875, 1.75), radius=0.5)
+    p4 = Cone(center=(-0.25, 0.5, 1.0), axis=(0.25, 0.0, 0.0), radius=1.75)
+    n5 = Intersection(p3, p4)
+    tree = Intersection(n2, n5)
+    return tree
+
+
+# case 406: over 120 s, skipped
+def case_406():
+    p0 = Cylinder(center=(0.0, 0.25, -0.75), axis=(0.075, -0.125, 0.25), radius=1.5)
+    p1 = Sphere(center=(0.75, 0.25, -1.0), radius=0.5)
+    n2 = Intersection(p0, p1)
+    p3 = Cylinder(center=(0.25, 0.25, 0.5), axis=(1.75, 0.0, 0.0), radius=0.5)
+    p4 = Cone(center=(-0.25, 0.5, 1.0), axis=(0.25, 0.0, 0.0), radius=1.75)
+    n5 = Intersection(p3, p4)
+    tree = Intersection(n2, n5)
+    return tree
+
+
+# case 407: over 120 s, skipped
+def case_407():
+    p0 = Cylinder(center=(0.0, 0.25, -0.75), axis=(0.075, -0.125, 0.25), radius=1.5)
+    p1 = Sphere(center=(0.75, 0.25, -1.0), radius=0.5)
+    n2 = Intersection(p0, p1)
+    p3 = Cylinder(center=(0.25, 0.25, 0.5), axis=(1.75, 0.0, 0.0), radius=0.5)
+    p4 = Cylinder(center=(0.0, 0.25, -0.75), axis=(0.075, -0.125, 0.25), radius=1.5)
+    n5 = Intersection(p3, p4)
+    tree = Intersection(n2, n5)
+    return tree
+
+
+# case 408: over 120 s, skipped
+def case_408():
+    p0 = Cylinder(center=(0.0, 0.25, -0.75), axis=(0.075, -0.125, 0.25), radius=1.5)
+    p1 = Sphere(center=(0.75, 0.25, 0.5), radius=0.5)
+    n2 = Intersection(p0, p1)
+    p3 = Cylinder(center=(0.25, 0.25, 0.5), axis=(1.75, 0.0, 0.0), radius=0.5)
+    p4 = Cylinder(center=(0.0, 0.25, -0.75), axis=(0.075, -0.125, 0.25), radius=1.5)
+    n5 = Intersection(p3, p4)
+    tree = Intersection(n2, n5)
+    return tree
+
+
+# case 409: over 120 s, skipped
+def case_409():
+    p0 = Cylinder(center=(0.25, 0.25, -0.75), axis=(0.075, -0.125, 0.25), radius=1.5)
+    p1 = Sphere(center=(0.75, 0.25, 0.5), radius=0.5)
+    n2 = Intersection(p0, p1)
+    p3 = Cylinder(center=(0.25, 0.25, 0.5), axis=(1.75, 0.0, 0.0), radius=0.5)
+    p4 = Cylinder(center=(0.0, 0.25, -0.75), axis=(0.075, -0.125, 0.25), radius=1.5)
+    n5 = Intersection(p3, p4)
+    tree = Intersection(n2, n5)
+    return tree
+
+
+# case 410: over 120 s, skipped
+def case_410():
+    p0 = Cylinder(center=(0.25, 0.25, -0.75), axis=(0.075, -0.125, 0.25), radius=1.5)
+    p1 = Sphere(center=(0.75, 0.25, 0.5), radius=0.5)
+    n2 = Intersection(p0, p1)
+    p3 = Cylinder(center=(0.25, 0.25, 0.5), axis=(1.75, 0.0, 0.0), radius=0.5)
+    p4 = Cylinder(center=(0.25, 0.25, 0.5), axis=(0.075, -0.125, 0.25), radius=1.5)
+    n5 = Intersection(p3, p4)
+    tree = Intersection(n2, n5)
+    return tree
+
+
+# case 411: over 120 s, skipped
+def case_411():
+    p0 = Cylinder(center=(0.25, 0.25, 0.5), axis=(1.75, 0.0, 0.0), radius=0.5)
+    p1 = Sphere(center=(0.75, 0.25, 0.5), radius=0.5)
+    n2 = Intersection(p0, p1)
+    p3 = Cylinder(center=(0.25, 0.25, 0.5), axis=(1.75, 0.0, 0.0), radius=0.5)
+    p4 = Cylinder(center=(0.25, 0.25, 0.5), axis=(0.075, -0.125, 0.25), radius=1.5)
+    n5 = Intersection(p3, p4)
+    tree = Intersection(n2, n5)
+    return tree
+
+
+# case 412, pyvista: wrong volume, area, hausdorff, topology
+# volume    0 (true 1.91450802): error -1.915e+00, tessellation -1.228e-02, bound 1.228e-02 -> wrong
+# area      0 (true 13.5258205): error -1.353e+01, tessellation -5.988e-02 -> wrong
+# hausdorff mesh->true inf, true->mesh inf, tessellation 4.990e-03 -> wrong
+# topology  0 components, genus 0, watertight True, winding consistent True (true: 2, genus 0) -> wrong
+# verdict   WRONG: volume, area, hausdorff, topology
+def case_412():
+    p0 = Truncus(center=(0.5, -1.0, 1.0), axis=(0.0, 0.75, 0.0), r1=0.5, r2=1.25)
+    p1 = Box(center=(0.25, -0.25, 0.25), size=(1.0, 1.0, 0.0001))
+    tree = Union(p0, p1)
+    return tree
+
+
+# case 413, trimesh-manifold: wrong volume, area, hausdorff
+# volume    0.0157249569 (true 0.015725): error -4.309e-08, tessellation +9.714e-17, bound 1.092e-16 -> wrong
+# area      2.37539983 (true 2.3754): error -1.733e-07, tessellation +8.882e-16 -> wrong
+# hausdorff mesh->true 5.131e-08, true->mesh 5.131e-08, tessellation 1.241e-16 -> wrong
+# topology  2 components, genus 0, watertight True, winding consistent True (true: 2, genus 0) -> exact
+# verdict   WRONG: volume, area, hausdorff
+# case 413, pyvista: wrong volume, area, hausdorff, topology
+# volume    0 (true 0.015725): error -1.572e-02, tessellation +9.714e-17, bound 1.092e-16 -> wrong
+# area      0 (true 2.3754): error -2.375e+00, tessellation +8.882e-16 -> wrong
+# hausdorff mesh->true inf, true->mesh inf, tessellation 1.241e-16 -> wrong
+# topology  0 components, genus 0, watertight True, winding consistent True (true: 2, genus 0) -> wrong
+# verdict   WRONG: volume, area, hausdorff, topology
+def case_413():
+    p0 = Box(center=(0.5, -1.0, 1.0), size=(1.0, 1.0, 0.0001))
+    p1 = Box(center=(0.39951905283832906, 0.8080127018922193, 0.0), size=(0.25, 0.25, 0.25), orientation=((0.8660254037844387, -0.49999999999999994, 0.0), (0.49999999999999994, 0.8660254037844387, 0.0), (0.0, 0.0, 1.0)))
+    tree = Union(p0, p1)
+    return tree
+
+
+# case 414, trimesh-manifold: wrong volume, area, hausdorff
+# volume    0.0157249569 (true 0.015725): error -4.309e-08, tessellation +9.714e-17, bound 1.046e-16 -> wrong
+# area      2.37539983 (true 2.3754): error -1.733e-07, tessellation +8.882e-16 -> wrong
+# hausdorff mesh->true 5.131e-08, true->mesh 5.131e-08, tessellation 1.241e-16 -> wrong
+# topology  2 components, genus 0, watertight True, winding consistent True (true: 2, genus 0) -> exact
+# verdict   WRONG: volume, area, hausdorff
+# case 414, pyvista: wrong volume, area, hausdorff, topology
+# volume    0 (true 0.015725): error -1.572e-02, tessellation +9.714e-17, bound 1.046e-16 -> wrong
+# area      0 (true 2.3754): error -2.375e+00, tessellation +8.882e-16 -> wrong
+# hausdorff mesh->true inf, true->mesh inf, tessellation 1.241e-16 -> wrong
+# topology  0 components, genus 0, watertight True, winding consistent True (true: 2, genus 0) -> wrong
+# verdict   WRONG: volume, area, hausdorff, topology
+def case_414():
+    p0 = Box(center=(0.5, 0.25, 1.0), size=(1.0, 1.0, 0.0001))
+    p1 = Box(center=(0.39951905283832906, 0.8080127018922193, 0.0), size=(0.25, 0.25, 0.25), orientation=((0.8660254037844387, -0.49999999999999994, 0.0), (0.49999999999999994, 0.8660254037844387, 0.0), (0.0, 0.0, 1.0)))
+    tree = Union(p0, p1)
+    return tree
+
+
+# case 415, trimesh-manifold: wrong volume, area, hausdorff
+# volume    0.125099942 (true 0.1251): error -5.804e-08, tessellation +8.327e-17, bound 1.463e-16 -> wrong
+# area      3.75039971 (true 3.7504): error -2.935e-07, tessellation +4.441e-16 -> wrong
+# hausdorff mesh->true 5.131e-08, true->mesh 5.131e-08, tessellation 1.249e-16 -> wrong
+# topology  2 components, genus 0, watertight True, winding consistent True (true: 2, genus 0) -> exact
+# verdict   WRONG: volume, area, hausdorff
+# case 415, pyvista: wrong volume, area, hausdorff, topology
+# volume    0 (true 0.1251): error -1.251e-01, tessellation +8.327e-17, bound 1.463e-16 -> wrong
+# area      0 (true 3.7504): error -3.750e+00, tessellation +4.441e-16 -> wrong
+# hausdorff mesh->true inf, true->mesh inf, tessellation 1.249e-16 -> wrong
+# topology  0 components, genus 0, watertight True, winding consistent True (true: 2, genus 0) -> wrong
+# verdict   WRONG: volume, area, hausdorff, topology
+def case_415():
+    p0 = Box(center=(0.5, 0.25, 1.0), size=(1.0, 1.0, 0.0001))
+    p1 = Box(center=(0.39951905283832906, 0.8080127018922193, 0.0), size=(0.5, 0.25, 1.0), orientation=((0.8660254037844387, -0.49999999999999994, 0.0), (0.49999999999999994, 0.8660254037844387, 0.0), (0.0, 0.0, 1.0)))
+    tree = Union(p0, p1)
+    return tree
+
+
+# case 416, trimesh-manifold: wrong volume, area, hausdorff
+# volume    9.99569893e-05 (true 0.0001): error -4.301e-08, tessellation +6.666e-17, bound 2.093e-16 -> wrong
+# area      2.00039983 (true 2.0004): error -1.720e-07, tessellation +8.882e-16 -> wrong
+# hausdorff mesh->true 5.131e-08, true->mesh 5.131e-08, tessellation 1.055e-16 -> wrong
+# topology  1 components, genus 0, watertight True, winding consistent True (true: 1, genus 0) -> exact
+# verdict   WRONG: volume, area, hausdorff
+def case_416():
+    p0 = Box(center=(0.5, 0.25, 1.0), size=(1.0, 1.0, 0.0001))
+    p1 = Box(center=(0.5, 0.25, 1.0), size=(1.0, 1.0, 0.0001))
+    tree = Union(p0, p1)
+    return tree
+
+
+# case 417, trimesh-manifold: wrong volume, area, hausdorff
+# volume    0.000124946237 (true 0.000125): error -5.376e-08, tessellation +8.332e-17, bound 2.139e-16 -> wrong
+# area      2.50044981 (true 2.50045): error -1.935e-07, tessellation +0.000e+00 -> wrong
+# hausdorff mesh->true 5.131e-08, true->mesh 5.131e-08, tessellation 1.055e-16 -> wrong
+# topology  1 components, genus 0, watertight True, winding consistent True (true: 1, genus 0) -> exact
+# verdict   WRONG: volume, area, hausdorff
+# case 417, pyvista: wrong volume, area, hausdorff, topology
+# volume    2.49892473e-05 (true 0.000125): error -1.000e-04, tessellation +8.332e-17, bound 2.139e-16 -> wrong
+# area      0.375237398 (true 2.50045): error -2.125e+00, tessellation +0.000e+00 -> wrong
+# hausdorff mesh->true 5.131e-08, true->mesh 3.742e-01, tessellation 1.055e-16 -> wrong
+# topology  4 components, genus 3.5, watertight False, winding consistent True (true: 1, genus 0) -> wrong
+# verdict   WRONG: volume, area, hausdorff, topology
+def case_417():
+    p0 = Box(center=(0.5, 0.25, 1.0), size=(1.0, 1.0, 0.0001))
+    p1 = Box(center=(0.5, 0.5, 1.0), size=(1.0, 1.0, 0.0001))
+    tree = Union(p0, p1)
+    return tree
+
+
+# case 418, trimesh-manifold: wrong volume, area, hausdorff
+# volume    9.99569893e-05 (true 0.0001): error -4.301e-08, tessellation +6.666e-17, bound 2.185e-16 -> wrong
+# area      2.00039983 (true 2.0004): error -1.720e-07, tessellation +8.882e-16 -> wrong
+# hausdorff mesh->true 5.131e-08, true->mesh 5.131e-08, tessellation 1.055e-16 -> wrong
+# topology  1 components, genus 0, watertight True, winding consistent True (true: 1, genus 0) -> exact
+# verdict   WRONG: volume, area, hausdorff
+def case_418():
+    p0 = Box(center=(0.5, 0.5, 1.0), size=(1.0, 1.0, 0.0001))
+    p1 = Box(center=(0.5, 0.5, 1.0), size=(1.0, 1.0, 0.0001))
+    tree = Union(p0, p1)
+    return tree
+
+
+# case 422: over 120 s, skipped
+def case_422():
+    p0 = Cylinder(center=(-0.25, -1.0, 0.5), axis=(2.0, 2.0, 2.0), radius=1.75)
+    p1 = Cylinder(center=(0.5, 0.25, 0.0), axis=(0.0, 1.0, 0.0), radius=0.001)
+    n2 = Union(p0, p1)
+    p3 = Cylinder(center=(0.5, 0.25, 0.0), axis=(0.0, 1.0, 0.0), radius=0.001)
+    tree = Union(n2, p3)
+    return tree
+
+
+# case 423: over 120 s, skipped
+def case_423():
+    p0 = Cylinder(center=(-0.25, 0.25, 0.5), axis=(2.0, 2.0, 2.0), radius=1.75)
+    p1 = Cylinder(center=(0.5, 0.25, 0.0), axis=(0.0, 1.0, 0.0), radius=0.001)
+    n2 = Union(p0, p1)
+    p3 = Cylinder(center=(0.5, 0.25, 0.0), axis=(0.0, 1.0, 0.0), radius=0.001)
+    tree = Union(n2, p3)
+    return tree
+
+
+# case 424: over 120 s, skipped
+def case_424():
+    p0 = Cylinder(center=(-0.25, 0.25, 0.5), axis=(0.5, 0.5, 0.5), radius=1.75)
+    p1 = Cylinder(center=(0.5, 0.25, 0.0), axis=(0.0, 1.0, 0.0), radius=0.001)
+    n2 = Union(p0, p1)
+    p3 = Cylinder(center=(0.5, 0.25, 0.0), axis=(0.0, 1.0, 0.0), radius=0.001)
+    tree = Union(n2, p3)
+    return tree
+
+
+# case 426, pyvista: wrong area, hausdorff, topology
+# volume    4.93594769 (true 4.94100111): error -5.053e-03, tessellation -8.676e-03, bound 3.295e-02 -> tessellation
+# area      30.165169 (true 29.8149414): error +3.502e-01, tessellation -9.560e-02 -> wrong
+# hausdorff mesh->true 3.460e-02, true->mesh 5.568e-03, tessellation 5.568e-03 -> wrong
+# topology  6 components, genus 4.5, watertight False, winding consistent False (true: 1, genus 0) -> wrong
+# verdict   WRONG: area, hausdorff, topology
+def case_426():
+    p0 = Box(center=(1.0, 0.25, 0.75), size=(1.5, 1.25, 1.75))
+    p1 = Truncus(center=(0.5, -0.5, 1.0), axis=(0.0, 0.5, 0.0), r1=0.25, r2=1.75)
+    n2 = Union(p0, p1)
+    p3 = Cone(center=(0.25, -1.0, -0.75), axis=(2.0, 0.0, 0.0), radius=1.25)
+    tree = Difference(n2, p3)
+    return tree
+
+
+# case 427, pyvista: wrong area, topology
+# volume    2.64947064 (true 2.6554536): error -5.983e-03, tessellation -9.605e-03, bound 3.295e-02 -> tessellation
+# area      24.1082544 (true 23.8586356): error +2.496e-01, tessellation -1.013e-01 -> wrong
+# hausdorff mesh->true 1.124e-02, true->mesh 7.540e-03, tessellation 7.540e-03 -> tessellation
+# topology  6 components, genus 4, watertight False, winding consistent False (true: 1, genus 0) -> wrong
+# verdict   WRONG: area, topology
+def case_427():
+    p0 = Box(center=(1.0, 0.25, 0.75), size=(1.5, 1.25, 0.5))
+    p1 = Truncus(center=(0.5, -0.5, 1.0), axis=(0.0, 0.5, 0.0), r1=0.25, r2=1.75)
+    n2 = Union(p0, p1)
+    p3 = Cone(center=(0.25, -1.0, -0.75), axis=(2.0, 0.0, 0.0), radius=1.25)
+    tree = Difference(n2, p3)
+    return tree
+
+
+# case 428, pyvista: wrong volume, area, topology
+# volume    5.98570009 (true 5.92793884): error +5.776e-02, tessellation -3.059e-02, bound 3.295e-02 -> wrong
+# area      37.2730788 (true 37.0024372): error +2.706e-01, tessellation -1.480e-01 -> wrong
+# hausdorff mesh->true 5.881e-03, true->mesh 7.765e-03, tessellation 7.765e-03 -> tessellation
+# topology  1 components, genus 0.5, watertight False, winding consistent False (true: 1, genus 0) -> wrong
+# verdict   WRONG: volume, area, topology
+def case_428():
+    p0 = Box(center=(1.0, 0.25, 0.75), size=(1.5, 1.25, 0.5))
+    p1 = Truncus(center=(0.5, -0.5, 1.0), axis=(0.0, 0.5, 0.0), r1=0.25, r2=1.75)
+    n2 = Union(p0, p1)
+    p3 = Cone(center=(0.25, -1.0, -0.75), axis=(2.0, 0.0, 0.0), radius=1.25)
+    tree = Union(n2, p3)
+    return tree
+
+
+# case 429, pyvista: wrong volume, area, hausdorff, topology
+# volume    6.00002991 (true 5.92793884): error +7.209e-02, tessellation -3.059e-02, bound 3.295e-02 -> wrong
+# area      37.3129515 (true 37.0024372): error +3.105e-01, tessellation -1.480e-01 -> wrong
+# hausdorff mesh->true 4.703e-02, true->mesh 5.439e-03, tessellation 5.439e-03 -> wrong
+# topology  1 components, genus 0.5, watertight False, winding consistent False (true: 1, genus 0) -> wrong
+# verdict   WRONG: volume, area, hausdorff, topology
+def case_429():
+    p0 = Box(center=(0.0, 0.25, 0.75), size=(1.5, 1.25, 0.5))
+    p1 = Truncus(center=(0.5, -0.5, 1.0), axis=(0.0, 0.5, 0.0), r1=0.25, r2=1.75)
+    n2 = Union(p0, p1)
+    p3 = Cone(center=(0.25, -1.0, -0.75), axis=(2.0, 0.0, 0.0), radius=1.25)
+    tree = Union(n2, p3)
+    return tree
+
+
+# case 430, pyvista: wrong volume, hausdorff, topology
+# volume    5.67637868 (true 5.83394107): error -1.576e-01, tessellation -3.105e-02, bound 3.295e-02 -> wrong
+# area      36.7424197 (true 36.6624512): error +7.997e-02, tessellation -1.500e-01 -> tessellation
+# hausdorff mesh->true 1.019e-01, true->mesh 6.301e-02, tessellation 7.126e-03 -> wrong
+# topology  1 components, genus 2, watertight False, winding consistent False (true: 1, genus 0) -> wrong
+# verdict   WRONG: volume, hausdorff, topology
+def case_430():
+    p0 = Box(center=(0.0, 0.25, 0.75), size=(1.5, 1.25, 0.5))
+    p1 = Truncus(center=(0.5, -0.5, 1.0), axis=(0.5, 0.0, 0.0), r1=0.25, r2=1.75)
+    n2 = Union(p0, p1)
+    p3 = Cone(center=(0.25, -1.0, -0.75), axis=(2.0, 0.0, 0.0), radius=1.25)
+    tree = Union(n2, p3)
+    return tree
+
+
+# case 431: over 120 s, skipped
+def case_431():
+    p0 = Cone(center=(0.25, -1.0, -0.75), axis=(2.0, 0.0, 0.0), radius=1.25)
+    p1 = Truncus(center=(0.5, -0.5, 1.0), axis=(0.5, 0.0, 0.0), r1=0.25, r2=1.75)
+    n2 = Union(p0, p1)
+    p3 = Cone(center=(0.25, -1.0, -0.75), axis=(2.0, 0.0, 0.0), radius=1.25)
+    tree = Union(n2, p3)
+    return tree
+
+
+# case 432: over 120 s, skipped
+def case_432():
+    p0 = Cone(center=(0.25, -1.0, -0.75), axis=(2.0, 0.0, 0.0), radius=1.25)
+    p1 = Truncus(center=(0.5, -0.5, 1.0), axis=(0.5, 0.0, 0.0), r1=0.25, r2=1.25)
+    n2 = Union(p0, p1)
+    p3 = Cone(center=(0.25, -1.0, -0.75), axis=(2.0, 0.0, 0.0), radius=1.25)
+    tree = Union(n2, p3)
+    return tree
+
+
+# case 433, pyvista: wrong area, hausdorff, topology
+# volume    0 (true 0.0342474831): error -3.425e-02, tessellation -3.678e-03, bound 3.158e-01 -> tessellation
+# area      0 (true 2.77738666): error -2.777e+00, tessellation -5.293e-02 -> wrong
+# hausdorff mesh->true inf, true->mesh inf, tessellation 2.167e-02 -> wrong
+# topology  0 components, genus 0, watertight True, winding consistent True (true: 2, genus 0) -> wrong
+# verdict   WRONG: area, hausdorff, topology
+def case_433():
+    p0 = Box(center=(-0.75, -0.5, 1.0), size=(1.0, 1.0, 0.0001))
+    p1 = Box(center=(0.019797410448706282, 0.7903214931529607, 0.5), size=(0.25, 1.75, 1.75), orientation=((0.9563047559630354, -0.29237170472273677, 0.0), (0.29237170472273677, 0.9563047559630354, 0.0), (0.0, 0.0, 1.0)))
+    p2 = Sphere(center=(-0.75, -0.75, -0.75), radius=1.5)
+    n3 = Intersection(p1, p2)
+    tree = Union(p0, n3)
+    return tree
+
+
+# case 434, pyvista: wrong area, hausdorff, topology
+# volume    0 (true 0.0342474831): error -3.425e-02, tessellation -3.678e-03, bound 3.158e-01 -> tessellation
+# area      0 (true 2.77738666): error -2.777e+00, tessellation -5.293e-02 -> wrong
+# hausdorff mesh->true inf, true->mesh inf, tessellation 2.078e-02 -> wrong
+# topology  0 components, genus 0, watertight True, winding consistent True (true: 2, genus 0) -> wrong
+# verdict   WRONG: area, hausdorff, topology
+def case_434():
+    p0 = Box(center=(-0.75, -0.75, -0.75), size=(1.0, 1.0, 0.0001))
+    p1 = Box(center=(0.019797410448706282, 0.7903214931529607, 0.5), size=(0.25, 1.75, 1.75), orientation=((0.9563047559630354, -0.29237170472273677, 0.0), (0.29237170472273677, 0.9563047559630354, 0.0), (0.0, 0.0, 1.0)))
+    p2 = Sphere(center=(-0.75, -0.75, -0.75), radius=1.5)
+    n3 = Intersection(p1, p2)
+    tree = Union(p0, n3)
+    return tree
+
+
+# case 440, trimesh-manifold: raised ValueError: Not all meshes are volumes!
+def case_440():
+    p0 = Cylinder(center=(-0.25, -0.5, 0.5), axis=(0.0, 0.0, 0.001), radius=0.5)
+    p1 = Sphere(center=(0.75, -0.5, 0.0), radius=0.5)
+    p2 = Cylinder(center=(0.25, 0.5, 0.25), axis=(1.0, 0.0, 0.0), radius=0.001)
+    n3 = Intersection(p1, p2)
+    n4 = Difference(p0, n3)
+    p5 = Box(center=(0.0, 0.5, 1.0), size=(1.0, 1.0, 0.0001))
+    p6 = Cylinder(center=(-1.0, 0.75, -0.5), axis=(1.0, 0.0, 0.0), radius=0.001)
+    n7 = Difference(p5, p6)
+    tree = Difference(n4, n7)
+    return tree
+
+
+# case 441: over 120 s, skipped
+def case_441():
+    p0 = Cylinder(center=(-0.25, -0.5, 0.5), axis=(0.0, 0.0, 0.001), radius=0.5)
+    p1 = Sphere(center=(0.75, -0.5, 0.0), radius=0.5)
+    p2 = Cylinder(center=(0.25, 0.5, 0.25), axis=(1.0, 0.0, 0.0), radius=0.001)
+    n3 = Intersection(p1, p2)
+    n4 = Difference(p0, n3)
+    p5 = Box(center=(0.0, 0.5, 1.0), size=(1.0, 1.0, 0.0001))
+    p6 = Cylinder(center=(0.25, 0.5, 0.25), axis=(1.0, 0.0, 0.0), radius=0.001)
+    n7 = Difference(p5, p6)
+    tree = Difference(n4, n7)
+    return tree
+
+
+# case 442: over 120 s, skipped
+def case_442():
+    p0 = Cylinder(center=(0.25, -0.5, 0.5), axis=(0.0, 0.0, 0.001), radius=0.5)
+    p1 = Sphere(center=(0.75, -0.5, 0.0), radius=0.5)
+    p2 = Cylinder(center=(0.25, 0.5, 0.25), axis=(1.0, 0.0, 0.0), radius=0.001)
+    n3 = Intersection(p1, p2)
+    n4 = Difference(p0, n3)
+    p5 = Box(center=(0.0, 0.5, 1.0), size=(1.0, 1.0, 0.0001))
+    p6 = Cylinder(center=(0.25, 0.5, 0.25), axis=(1.0, 0.0, 0.0), radius=0.001)
+    n7 = Difference(p5, p6)
+    tree = Difference(n4, n7)
+    return tree
+
+
+# case 443, trimesh-manifold: raised ValueError: Not all meshes are volumes!
+def case_443():
+    p0 = Cylinder(center=(0.25, -0.5, 0.5), axis=(0.0, 0.0, 0.001), radius=0.5)
+    p1 = Sphere(center=(0.75, -0.5, 0.0), radius=0.5)
+    p2 = Sphere(center=(0.25, 0.5, 0.25), radius=0.5)
+    n3 = Intersection(p1, p2)
+    n4 = Difference(p0, n3)
+    p5 = Box(center=(0.0, 0.5, 1.0), size=(1.0, 1.0, 0.0001))
+    p6 = Cylinder(center=(0.25, 0.5, 0.25), axis=(1.0, 0.0, 0.0), radius=0.001)
+    n7 = Difference(p5, p6)
+    tree = Difference(n4, n7)
+    return tree
+
+
+# case 444, trimesh-manifold: raised ValueError: Not all meshes are volumes!
+def case_444():
+    p0 = Cylinder(center=(0.25, -0.5, 0.5), axis=(0.0, 0.0, 0.001), radius=0.5)
+    p1 = Sphere(center=(0.75, -0.5, 0.0), radius=0.25)
+    p2 = Sphere(center=(0.25, 0.5, 0.25), radius=0.5)
+    n3 = Intersection(p1, p2)
+    n4 = Difference(p0, n3)
+    p5 = Box(center=(0.0, 0.5, 1.0), size=(1.0, 1.0, 0.0001))
+    p6 = Cylinder(center=(0.25, 0.5, 0.25), axis=(1.0, 0.0, 0.0), radius=0.001)
+    n7 = Difference(p5, p6)
+    tree = Difference(n4, n7)
+    return tree
+
+
+# case 452: over 120 s, skipped
+def case_452():
+    p0 = Cylinder(center=(0.0, -0.25, -0.75), axis=(0.0, 0.0, 1.0), radius=1.5)
+    p1 = Torus(center=(-0.75, 1.0, 0.25), axis=(0.25916052767440806, -0.4319342127906801, 0.8638684255813602), major=0.5, minor=0.25)
+    p2 = Cylinder(center=(-0.75, -0.25, -1.0), axis=(0.6, -1.0, 2.0), radius=0.5)
+    n3 = Intersection(p1, p2)
+    n4 = Difference(p0, n3)
+    p5 = Cylinder(center=(1.0, 1.0, -1.0), axis=(0.3, -0.5, 1.0), radius=0.001)
+    p6 = Ellipsoid(center=(-1.0, 0.75, -0.75), radii=(0.25, 2.0, 1.25))
+    n7 = Intersection(p5, p6)
+    tree = Union(n4, n7)
+    return tree
+
+
+# case 453: over 120 s, skipped
+def case_453():
+    p0 = Cylinder(center=(0.0, -0.25, -0.75), axis=(0.0, 0.0, 1.0), radius=1.5)
+    p1 = Torus(center=(-0.75, 1.0, 0.25), axis=(0.25916052767440806, -0.4319342127906801, 0.8638684255813602), major=0.5, minor=0.25)
+    p2 = Cylinder(center=(-0.75, -0.25, -1.0), axis=(0.6, -1.0, 2.0), radius=0.5)
+    n3 = Intersection(p1, p2)
+    n4 = Difference(p0, n3)
+    p5 = Cylinder(center=(1.0, 1.0, -1.0), axis=(0.3, -0.5, 1.0), radius=0.001)
+    p6 = Ellipsoid(center=(-0.75, -0.25, -1.0), radii=(0.25, 2.0, 1.25))
+    n7 = Intersection(p5, p6)
+    tree = Union(n4, n7)
+    return tree
+
+
+# case 454: over 120 s, skipped
+def case_454():
+    p0 = Cylinder(center=(0.0, -0.25, -0.75), axis=(0.0, 0.0, 1.0), radius=1.5)
+    p1 = Torus(center=(-0.75, 1.0, 0.25), axis=(0.25916052767440806, -0.4319342127906801, 0.8638684255813602), major=0.5, minor=0.25)
+    p2 = Cylinder(center=(-0.75, -0.25, -1.0), axis=(0.6, -1.0, 2.0), radius=0.5)
+    n3 = Intersection(p1, p2)
+    n4 = Difference(p0, n3)
+    p5 = Cylinder(center=(1.0, 1.0, -1.0), axis=(0.3, -0.5, 1.0), radius=0.001)
+    p6 = Cylinder(center=(-0.75, -0.25, -1.0), axis=(0.6, -1.0, 2.0), radius=0.5)
+    n7 = Intersection(p5, p6)
+    tree = Union(n4, n7)
+    return tree
+
+
+# case 455, trimesh-manifold: raised ValueError: Not all meshes are volumes!
+def case_455():
+    p0 = Cylinder(center=(-0.75, -0.25, -1.0), axis=(0.6, -1.0, 2.0), radius=0.5)
+    p1 = Torus(center=(-0.75, 1.0, 0.25), axis=(0.25916052767440806, -0.4319342127906801, 0.8638684255813602), major=0.5, minor=0.25)
+    p2 = Cylinder(center=(-0.75, -0.25, -1.0), axis=(0.6, -1.0, 2.0), radius=0.5)
+    n3 = Intersection(p1, p2)
+    n4 = Difference(p0, n3)
+    p5 = Cylinder(center=(1.0, 1.0, -1.0), axis=(0.3, -0.5, 1.0), radius=0.001)
+    p6 = Cylinder(center=(-0.75, -0.25, -1.0), axis=(0.6, -1.0, 2.0), radius=0.5)
+    n7 = Intersection(p5, p6)
+    tree = Union(n4, n7)
+    return tree
+
+
+# case 456, trimesh-manifold: raised ValueError: Not all meshes are volumes!
+def case_456():
+    p0 = Cylinder(center=(-0.75, -0.25, -1.0), axis=(0.6, -1.0, 2.0), radius=0.5)
+    p1 = Torus(center=(-0.75, 1.0, 0.25), axis=(0.25916052767440806, -0.4319342127906801, 0.8638684255813602), major=0.5, minor=0.25)
+    p2 = Cylinder(center=(-0.75, -0.25, -1.0), axis=(0.6, -1.0, 2.0), radius=2.0)
+    n3 = Intersection(p1, p2)
+    n4 = Difference(p0, n3)
+    p5 = Cylinder(center=(1.0, 1.0, -1.0), axis=(0.3, -0.5, 1.0), radius=0.001)
+    p6 = Cylinder(center=(-0.75, -0.25, -1.0), axis=(0.6, -1.0, 2.0), radius=0.5)
+    n7 = Intersection(p5, p6)
+    tree = Union(n4, n7)
+    return tree
+
+
+# case 457, trimesh-manifold: raised ValueError: Not all meshes are volumes!
+def case_457():
+    p0 = Cylinder(center=(-0.75, -0.25, -1.0), axis=(0.6, -1.0, 2.0), radius=0.5)
+    p1 = Torus(center=(-0.75, 1.0, 0.25), axis=(0.25916052767440806, -0.4319342127906801, 0.8638684255813602), major=0.5, minor=0.25)
+    p2 = Cylinder(center=(-1.0, -0.25, -1.0), axis=(0.6, -1.0, 2.0), radius=2.0)
+    n3 = Intersection(p1, p2)
+    n4 = Difference(p0, n3)
+    p5 = Cylinder(center=(1.0, 1.0, -1.0), axis=(0.3, -0.5, 1.0), radius=0.001)
+    p6 = Cylinder(center=(-0.75, -0.25, -1.0), axis=(0.6, -1.0, 2.0), radius=0.5)
+    n7 = Intersection(p5, p6)
+    tree = Union(n4, n7)
+    return tree
+
+
+# case 458, trimesh-manifold: raised ValueError: Not all meshes are volumes!
+def case_458():
+    p0 = Cylinder(center=(1.0, 1.0, -1.0), axis=(0.6, -1.0, 2.0), radius=0.5)
+    p1 = Torus(center=(-0.75, 1.0, 0.25), axis=(0.25916052767440806, -0.4319342127906801, 0.8638684255813602), major=0.5, minor=0.25)
+    p2 = Cylinder(center=(-1.0, -0.25, -1.0), axis=(0.6, -1.0, 2.0), radius=2.0)
+    n3 = Intersection(p1, p2)
+    n4 = Difference(p0, n3)
+    p5 = Cylinder(center=(1.0, 1.0, -1.0), axis=(0.3, -0.5, 1.0), radius=0.001)
+    p6 = Cylinder(center=(-0.75, -0.25, -1.0), axis=(0.6, -1.0, 2.0), radius=0.5)
+    n7 = Intersection(p5, p6)
+    tree = Union(n4, n7)
+    return tree
+
+
+# case 459, trimesh-manifold: raised ValueError: Not all meshes are volumes!
+def case_459():
+    p0 = Cone(center=(0.25, 0.0, -0.5), axis=(0.0, 0.5, 0.0), radius=0.5)
+    p1 = Box(center=(0.25, 0.0, -1.0), size=(1.0, 1.0, 0.0001))
+    n2 = Difference(p0, p1)
+    p3 = Cylinder(center=(-0.75, -0.25, 1.0), axis=(1.0, 1.0, 1.0), radius=0.001)
+    n4 = Intersection(n2, p3)
+    p5 = Box(center=(0.5915063509461096, -0.524519052838329, 1.0), size=(2.0, 0.75, 1.5), orientation=((0.8660254037844387, -0.49999999999999994, 0.0), (0.49999999999999994, 0.8660254037844387, 0.0), (0.0, 0.0, 1.0)))
+    tree = Difference(n4, p5)
+    return tree
+
+
+# case 460, trimesh-manifold: raised ValueError: Not all meshes are volumes!
+def case_460():
+    p0 = Box(center=(0.5915063509461096, -0.524519052838329, 1.0), size=(2.0, 0.75, 1.5), orientation=((0.8660254037844387, -0.49999999999999994, 0.0), (0.49999999999999994, 0.8660254037844387, 0.0), (0.0, 0.0, 1.0)))
+    p1 = Box(center=(0.25, 0.0, -1.0), size=(1.0, 1.0, 0.0001))
+    n2 = Difference(p0, p1)
+    p3 = Cylinder(center=(-0.75, -0.25, 1.0), axis=(1.0, 1.0, 1.0), radius=0.001)
+    n4 = Intersection(n2, p3)
+    p5 = Box(center=(0.5915063509461096, -0.524519052838329, 1.0), size=(2.0, 0.75, 1.5), orientation=((0.8660254037844387, -0.49999999999999994, 0.0), (0.49999999999999994, 0.8660254037844387, 0.0), (0.0, 0.0, 1.0)))
+    tree = Difference(n4, p5)
+    return tree
+
+
+# case 461, trimesh-manifold: raised ValueError: Not all meshes are volumes!
+def case_461():
+    p0 = Box(center=(0.5915063509461096, -0.524519052838329, 1.0), size=(2.0, 0.75, 1.5), orientation=((0.8660254037844387, -0.49999999999999994, 0.0), (0.49999999999999994, 0.8660254037844387, 0.0), (0.0, 0.0, 1.0)))
+    p1 = Box(center=(0.25, 0.0, -1.0), size=(1.0, 1.0, 0.0001))
+    n2 = Difference(p0, p1)
+    p3 = Cylinder(center=(0.25, 0.0, -1.0), axis=(1.0, 1.0, 1.0), radius=0.001)
+    n4 = Intersection(n2, p3)
+    p5 = Box(center=(0.5915063509461096, -0.524519052838329, 1.0), size=(2.0, 0.75, 1.5), orientation=((0.8660254037844387, -0.49999999999999994, 0.0), (0.49999999999999994, 0.8660254037844387, 0.0), (0.0, 0.0, 1.0)))
+    tree = Difference(n4, p5)
+    return tree
+
+
+# case 462, trimesh-manifold: raised ValueError: Not all meshes are volumes!
+def case_462():
+    p0 = Box(center=(0.5915063509461096, -0.524519052838329, 1.0), size=(2.0, 0.75, 1.5), orientation=((0.8660254037844387, -0.49999999999999994, 0.0), (0.49999999999999994, 0.8660254037844387, 0.0), (0.0, 0.0, 1.0)))
+    p1 = Box(center=(0.25, 0.0, 1.0), size=(1.0, 1.0, 0.0001))
+    n2 = Difference(p0, p1)
+    p3 = Cylinder(center=(0.25, 0.0, -1.0), axis=(1.0, 1.0, 1.0), radius=0.001)
+    n4 = Intersection(n2, p3)
+    p5 = Box(center=(0.5915063509461096, -0.524519052838329, 1.0), size=(2.0, 0.75, 1.5), orientation=((0.8660254037844387, -0.49999999999999994, 0.0), (0.49999999999999994, 0.8660254037844387, 0.0), (0.0, 0.0, 1.0)))
+    tree = Difference(n4, p5)
+    return tree
+
+
+# case 463, trimesh-manifold: wrong area, hausdorff
+# volume    0.0156250005 (true 0.015625): error +5.338e-10, tessellation -3.469e-18, bound 5.057e-06 -> tessellation
+# area      0.375000009 (true 0.375): error +8.541e-09, tessellation -3.331e-16 -> wrong
+# hausdorff mesh->true 1.542e-08, true->mesh 1.514e-08, tessellation 2.289e-16 -> wrong
+# topology  1 components, genus 0, watertight True, winding consistent True (true: 1, genus 0) -> exact
+# verdict   WRONG: area, hausdorff
+def case_463():
+    p0 = Box(center=(0.5915063509461096, -0.524519052838329, 1.0), size=(2.0, 0.75, 1.5), orientation=((0.8660254037844387, -0.49999999999999994, 0.0), (0.49999999999999994, 0.8660254037844387, 0.0), (0.0, 0.0, 1.0)))
+    p1 = Cylinder(center=(0.25, 0.0, 1.0), axis=(0.0, 0.0, 1.0), radius=0.001)
+    n2 = Difference(p0, p1)
+    p3 = Box(center=(0.29237170472273677, -0.9563047559630354, 0.75), size=(0.25, 0.25, 0.25), orientation=((0.9563047559630354, -0.29237170472273677, 0.0), (0.29237170472273677, 0.9563047559630354, 0.0), (0.0, 0.0, 1.0)))
+    n4 = Intersection(n2, p3)
+    p5 = Cylinder(center=(0.75, 0.0, 0.25), axis=(0.0, 0.0, 0.001), radius=0.5)
+    tree = Difference(n4, p5)
+    return tree
+
+
+# case 464, trimesh-manifold: wrong area, hausdorff
+# volume    0.00781250027 (true 0.0078125): error +2.669e-10, tessellation +6.418e-17, bound 5.057e-06 -> tessellation
+# area      0.250000006 (true 0.25): error +6.406e-09, tessellation +1.110e-16 -> wrong
+# hausdorff mesh->true 1.542e-08, true->mesh 1.519e-08, tessellation 2.289e-16 -> wrong
+# topology  1 components, genus 0, watertight True, winding consistent True (true: 1, genus 0) -> exact
+# verdict   WRONG: area, hausdorff
+def case_464():
+    p0 = Box(center=(0.5915063509461096, -0.524519052838329, 1.0), size=(2.0, 0.75, 1.5), orientation=((0.8660254037844387, -0.49999999999999994, 0.0), (0.49999999999999994, 0.8660254037844387, 0.0), (0.0, 0.0, 1.0)))
+    p1 = Cylinder(center=(0.25, 0.0, 1.0), axis=(0.0, 0.0, 1.0), radius=0.001)
+    n2 = Difference(p0, p1)
+    p3 = Box(center=(0.29237170472273677, -0.9563047559630354, 0.25), size=(0.25, 0.25, 0.25), orientation=((0.9563047559630354, -0.29237170472273677, 0.0), (0.29237170472273677, 0.9563047559630354, 0.0), (0.0, 0.0, 1.0)))
+    n4 = Intersection(n2, p3)
+    p5 = Cylinder(center=(0.75, 0.0, 0.25), axis=(0.0, 0.0, 0.001), radius=0.5)
+    tree = Difference(n4, p5)
+    return tree
+
+
+# case 472, trimesh-manifold: raised ValueError: Not all meshes are volumes!
+def case_472():
+    p0 = Sphere(center=(-0.75, 0.75, 0.0), radius=0.5)
+    p1 = Ellipsoid(center=(0.0, -0.5, 0.0), radii=(2.0, 1.25, 1.25))
+    n2 = Intersection(p0, p1)
+    p3 = Box(center=(0.6441356407915924, 0.45835496753281146, -0.5), size=(1.5, 2.0, 1.75), orientation=((0.9563047559630354, -0.29237170472273677, 0.0), (0.29237170472273677, 0.9563047559630354, 0.0), (0.0, 0.0, 1.0)))
+    n4 = Difference(n2, p3)
+    p5 = Cylinder(center=(0.75, 0.5, -0.75), axis=(0.0, 0.0, 0.25), radius=1.75)
+    p6 = Cylinder(center=(-0.75, -0.75, 0.75), axis=(0.0, 1.0, 0.0), radius=0.001)
+    n7 = Intersection(p5, p6)
+    tree = Difference(n4, n7)
+    return tree
+
+
+# case 473, trimesh-manifold: raised ValueError: Not all meshes are volumes!
+def case_473():
+    p0 = Sphere(center=(-0.75, 0.75, 0.0), radius=0.5)
+    p1 = Ellipsoid(center=(0.0, -0.5, 0.0), radii=(2.0, 1.25, 1.25))
+    n2 = Intersection(p0, p1)
+    p3 = Box(center=(0.8634144193336449, -0.25887359943946514, -0.5), size=(1.5, 2.0, 1.75), orientation=((0.9563047559630354, -0.29237170472273677, 0.0), (0.29237170472273677, 0.9563047559630354, 0.0), (0.0, 0.0, 1.0)))
+    n4 = Difference(n2, p3)
+    p5 = Cylinder(center=(0.75, 0.5, -0.75), axis=(0.0, 0.0, 0.25), radius=1.75)
+    p6 = Cylinder(center=(-0.75, -0.75, 0.75), axis=(0.0, 1.0, 0.0), radius=0.001)
+    n7 = Intersection(p5, p6)
+    tree = Difference(n4, n7)
+    return tree
+
+
+# case 474, trimesh-manifold: raised ValueError: Not all meshes are volumes!
+def case_474():
+    p0 = Sphere(center=(-0.75, 0.75, 0.0), radius=0.5)
+    p1 = Ellipsoid(center=(0.0, -0.5, 0.0), radii=(2.0, 1.25, 1.25))
+    n2 = Intersection(p0, p1)
+    p3 = Box(center=(0.8634144193336449, -0.25887359943946514, -0.5), size=(1.5, 2.0, 1.75), orientation=((0.9563047559630354, -0.29237170472273677, 0.0), (0.29237170472273677, 0.9563047559630354, 0.0), (0.0, 0.0, 1.0)))
+    n4 = Difference(n2, p3)
+    p5 = Cylinder(center=(0.75, 0.5, -0.75), axis=(0.0, 0.0, 0.25), radius=1.75)
+    p6 = Cylinder(center=(-0.75, -0.75, 0.75), axis=(0.0, 0.0, 1.0), radius=0.001)
+    n7 = Intersection(p5, p6)
+    tree = Difference(n4, n7)
+    return tree
+
+
+# case 475, trimesh-manifold: raised ValueError: Not all meshes are volumes!
+def case_475():
+    p0 = Box(center=(0.8634144193336449, -0.25887359943946514, -0.5), size=(1.5, 2.0, 1.75), orientation=((0.9563047559630354, -0.29237170472273677, 0.0), (0.29237170472273677, 0.9563047559630354, 0.0), (0.0, 0.0, 1.0)))
+    p1 = Ellipsoid(center=(0.0, -0.5, 0.0), radii=(2.0, 1.25, 1.25))
+    n2 = Intersection(p0, p1)
+    p3 = Box(center=(0.8634144193336449, -0.25887359943946514, -0.5), size=(1.5, 2.0, 1.75), orientation=((0.9563047559630354, -0.29237170472273677, 0.0), (0.29237170472273677, 0.9563047559630354, 0.0), (0.0, 0.0, 1.0)))
+    n4 = Difference(n2, p3)
+    p5 = Cylinder(center=(0.75, 0.5, -0.75), axis=(0.0, 0.0, 0.25), radius=1.75)
+    p6 = Cylinder(center=(-0.75, -0.75, 0.75), axis=(0.0, 0.0, 1.0), radius=0.001)
+    n7 = Intersection(p5, p6)
+    tree = Difference(n4, n7)
+    return tree
+
+
+# case 476, trimesh-manifold: raised ValueError: Not all meshes are volumes!
+def case_476():
+    p0 = Box(center=(0.8634144193336449, -0.25887359943946514, -0.5), size=(1.5, 2.0, 1.75), orientation=((0.9563047559630354, -0.29237170472273677, 0.0), (0.29237170472273677, 0.9563047559630354, 0.0), (0.0, 0.0, 1.0)))
+    p1 = Ellipsoid(center=(0.0, -0.5, 0.0), radii=(2.0, 1.25, 1.25))
+    n2 = Intersection(p0, p1)
+    p3 = Box(center=(0.8634144193336449, -0.25887359943946514, -0.5), size=(1.5, 2.0, 1.75), orientation=((0.9563047559630354, -0.29237170472273677, 0.0), (0.29237170472273677, 0.9563047559630354, 0.0), (0.0, 0.0, 1.0)))
+    n4 = Difference(n2, p3)
+    p5 = Cylinder(center=(0.75, 0.5, -0.75), axis=(0.0, 0.0, 0.25), radius=1.75)
+    p6 = Cylinder(center=(-0.75, -0.75, -0.5), axis=(0.0, 0.0, 1.0), radius=0.001)
+    n7 = Intersection(p5, p6)
+    tree = Difference(n4, n7)
+    return tree
+
+
+# case 477, trimesh-manifold: raised ValueError: Not all meshes are volumes!
+def case_477():
+    p0 = Box(center=(0.0, 0.0, 0.0), size=(1.5, 2.0, 1.75), orientation=((0.9563047559630354, -0.29237170472273677, 0.0), (0.29237170472273677, 0.9563047559630354, 0.0), (0.0, 0.0, 1.0)))
+    p1 = Ellipsoid(center=(0.0, -0.5, 0.0), radii=(2.0, 1.25, 1.25))
+    n2 = Intersection(p0, p1)
+    p3 = Box(center=(0.8634144193336449, -0.25887359943946514, -0.5), size=(1.5, 2.0, 1.75), orientation=((0.9563047559630354, -0.29237170472273677, 0.0), (0.29237170472273677, 0.9563047559630354, 0.0), (0.0, 0.0, 1.0)))
+    n4 = Difference(n2, p3)
+    p5 = Cylinder(center=(0.75, 0.5, -0.75), axis=(0.0, 0.0, 0.25), radius=1.75)
+    p6 = Cylinder(center=(-0.75, -0.75, -0.5), axis=(0.0, 0.0, 1.0), radius=0.001)
+    n7 = Intersection(p5, p6)
+    tree = Difference(n4, n7)
+    return tree
+
+
+# case 478: over 120 s, skipped
+def case_478():
+    p0 = Box(center=(0.0, 0.0, 0.0), size=(1.5, 2.0, 1.75), orientation=((0.9563047559630354, -0.29237170472273677, 0.0), (0.29237170472273677, 0.9563047559630354, 0.0), (0.0, 0.0, 1.0)))
+    p1 = Ellipsoid(center=(0.0, -0.5, 0.0), radii=(2.0, 1.25, 1.25))
+    n2 = Intersection(p0, p1)
+    p3 = Box(center=(0.8634144193336449, -0.25887359943946514, -0.5), size=(1.5, 2.0, 1.75), orientation=((0.9563047559630354, -0.29237170472273677, 0.0), (0.29237170472273677, 0.9563047559630354, 0.0), (0.0, 0.0, 1.0)))
+    n4 = Difference(n2, p3)
+    p5 = Cylinder(center=(0.75, 0.5, -0.75), axis=(0.0, 0.0, 0.25), radius=1.75)
+    p6 = Ellipsoid(center=(0.0, -0.5, 0.0), radii=(2.0, 1.25, 1.25))
+    n7 = Intersection(p5, p6)
+    tree = Difference(n4, n7)
+    return tree
+
+
+# case 479, trimesh-manifold: raised ValueError: Not all meshes are volumes!
+def case_479():
+    p0 = Box(center=(-0.7903214931529607, 0.019797410448706282, 0.5), size=(0.75, 0.5, 1.25), orientation=((0.9563047559630354, -0.29237170472273677, 0.0), (0.29237170472273677, 0.9563047559630354, 0.0), (0.0, 0.0, 1.0)))
+    p1 = Box(center=(-0.25, 0.25, 0.75), size=(1.0, 1.0, 0.0001))
+    n2 = Intersection(p0, p1)
+    p3 = Torus(center=(0.25, -0.75, -0.25), axis=(0.0, 1.0, 0.0), major=2.25, minor=0.7875)
+    p4 = Box(center=(-0.75, 0.25, -0.5), size=(1.0, 1.0, 0.0001))
+    p5 = Cylinder(center=(0.0, 0.0, -0.5), axis=(0.0, 0.0, 0.001), radius=0.5)
+    n6 = Union(p4, p5)
+    n7 = Intersection(p3, n6)
+    tree = Union(n2, n7)
+    return tree
+
+
+# case 480, trimesh-manifold: raised ValueError: Not all meshes are volumes!
+def case_480():
+    p0 = Box(center=(-0.7903214931529607, 0.019797410448706282, 0.5), size=(0.75, 0.5, 1.25), orientation=((0.9563047559630354, -0.29237170472273677, 0.0), (0.29237170472273677, 0.9563047559630354, 0.0), (0.0, 0.0, 1.0)))
+    p1 = Box(center=(-0.75, 0.25, -0.5), size=(1.0, 1.0, 0.0001))
+    n2 = Intersection(p0, p1)
+    p3 = Torus(center=(0.25, -0.75, -0.25), axis=(0.0, 1.0, 0.0), major=2.25, minor=0.7875)
+    p4 = Box(center=(-0.75, 0.25, -0.5), size=(1.0, 1.0, 0.0001))
+    p5 = Cylinder(center=(0.0, 0.0, -0.5), axis=(0.0, 0.0, 0.001), radius=0.5)
+    n6 = Union(p4, p5)
+    n7 = Intersection(p3, n6)
+    tree = Union(n2, n7)
+    return tree
+
+
+# case 481, trimesh-manifold: raised ValueError: Not all meshes are volumes!
+def case_481():
+    p0 = Box(center=(-0.7903214931529607, 0.019797410448706282, 0.5), size=(0.75, 0.5, 1.25), orientation=((0.9563047559630354, -0.29237170472273677, 0.0), (0.29237170472273677, 0.9563047559630354, 0.0), (0.0, 0.0, 1.0)))
+    p1 = Box(center=(-0.75, 0.25, -0.5), size=(1.0, 1.0, 0.0001))
+    n2 = Intersection(p0, p1)
+    p3 = Torus(center=(0.25, -0.75, -0.25), axis=(0.0, 1.0, 0.0), major=2.25, minor=0.7875)
+    p4 = Box(center=(0.25, 0.25, -0.5), size=(1.0, 1.0, 0.0001))
+    p5 = Cylinder(center=(0.0, 0.0, -0.5), axis=(0.0, 0.0, 0.001), radius=0.5)
+    n6 = Union(p4, p5)
+    n7 = Intersection(p3, n6)
+    tree = Union(n2, n7)
+    return tree
+
+
+# case 482, trimesh-manifold: raised ValueError: Not all meshes are volumes!
+def case_482():
+    p0 = Box(center=(0.5710427146109082, 0.6974311565235702, 0.0), size=(0.75, 0.5, 1.25), orientation=((0.9563047559630354, -0.29237170472273677, 0.0), (0.29237170472273677, 0.9563047559630354, 0.0), (0.0, 0.0, 1.0)))
+    p1 = Box(center=(-0.75, 0.25, -0.5), size=(1.0, 1.0, 0.0001))
+    n2 = Intersection(p0, p1)
+    p3 = Torus(center=(0.25, -0.75, -0.25), axis=(0.0, 1.0, 0.0), major=2.25, minor=0.7875)
+    p4 = Box(center=(-0.75, 0.25, -0.5), size=(1.0, 1.0, 0.0001))
+    p5 = Cylinder(center=(0.0, 0.0, -0.5), axis=(0.0, 0.0, 0.001), radius=0.5)
+    n6 = Union(p4, p5)
+    n7 = Intersection(p3, n6)
+    tree = Union(n2, n7)
+    return tree
+
+
+# case 483, trimesh-manifold: raised ValueError: Not all meshes are volumes!
+def case_483():
+    p0 = Box(center=(0.5710427146109082, 0.6974311565235702, 0.0), size=(0.75, 0.5, 0.25), orientation=((0.9563047559630354, -0.29237170472273677, 0.0), (0.29237170472273677, 0.9563047559630354, 0.0), (0.0, 0.0, 1.0)))
+    p1 = Box(center=(-0.75, 0.25, -0.5), size=(1.0, 1.0, 0.0001))
+    n2 = Intersection(p0, p1)
+    p3 = Torus(center=(0.25, -0.75, -0.25), axis=(0.0, 1.0, 0.0), major=2.25, minor=0.7875)
+    p4 = Box(center=(-0.75, 0.25, -0.5), size=(1.0, 1.0, 0.0001))
+    p5 = Cylinder(center=(0.0, 0.0, -0.5), axis=(0.0, 0.0, 0.001), radius=0.5)
+    n6 = Union(p4, p5)
+    n7 = Intersection(p3, n6)
+    tree = Union(n2, n7)
+    return tree
+
+
+# case 484, trimesh-manifold: raised ValueError: Not all meshes are volumes!
+def case_484():
+    p0 = Box(center=(0.5710427146109082, 0.6974311565235702, 0.0), size=(0.75, 0.5, 0.25), orientation=((0.9563047559630354, -0.29237170472273677, 0.0), (0.29237170472273677, 0.9563047559630354, 0.0), (0.0, 0.0, 1.0)))
+    p1 = Box(center=(-0.75, 0.25, -0.5), size=(1.0, 1.0, 0.0001))
+    n2 = Intersection(p0, p1)
+    p3 = Torus(center=(0.25, -0.75, 0.5), axis=(0.0, 1.0, 0.0), major=2.25, minor=0.7875)
+    p4 = Box(center=(-0.75, 0.25, -0.5), size=(1.0, 1.0, 0.0001))
+    p5 = Cylinder(center=(0.0, 0.0, -0.5), axis=(0.0, 0.0, 0.001), radius=0.5)
+    n6 = Union(p4, p5)
+    n7 = Intersection(p3, n6)
+    tree = Union(n2, n7)
+    return tree
+
+
+# case 485, trimesh-manifold: wrong area, hausdorff
+# volume    0.000100016594 (true 0.0001): error +1.659e-08, tessellation +1.153e-16, bound 7.484e-01 -> tessellation
+# area      2.00040007 (true 2.0004): error +6.638e-08, tessellation +6.661e-15 -> wrong
+# hausdorff mesh->true 8.297e-09, true->mesh 8.297e-09, tessellation 5.509e-18 -> wrong
+# topology  1 components, genus 0, watertight True, winding consistent True (true: 1, genus 0) -> exact
+# verdict   WRONG: area, hausdorff
+def case_485():
+    p0 = Box(center=(-0.75, 0.25, -0.5), size=(1.0, 1.0, 0.0001))
+    p1 = Box(center=(-0.75, 0.25, -0.5), size=(1.0, 1.0, 0.0001))
+    n2 = Intersection(p0, p1)
+    p3 = Torus(center=(0.25, -0.75, 0.5), axis=(0.0, 1.0, 0.0), major=2.25, minor=0.7875)
+    p4 = Box(center=(-0.75, 0.25, -0.5), size=(1.0, 1.0, 0.0001))
+    p5 = Cylinder(center=(0.0, 0.0, -0.5), axis=(0.0, 0.0, 0.001), radius=0.5)
+    n6 = Union(p4, p5)
+    n7 = Intersection(p3, n6)
+    tree = Union(n2, n7)
+    return tree
+
+
+# case 486, trimesh-manifold: raised ValueError: Not all meshes are volumes!
+def case_486():
+    p0 = Cylinder(center=(1.0, 0.75, 1.0), axis=(0.5, 0.0, 0.0), radius=2.0)
+    p1 = Cylinder(center=(0.5, 0.0, 0.5), axis=(0.3, -0.5, 1.0), radius=0.001)
+    n2 = Union(p0, p1)
+    p3 = Cylinder(center=(-1.0, 0.0, -0.5), axis=(1.0, 0.0, 0.0), radius=0.001)
+    n4 = Intersection(n2, p3)
+    p5 = Ellipsoid(center=(1.0, -0.25, 0.75), radii=(1.0, 0.5, 1.75))
+    p6 = Box(center=(-0.75, 0.25, 1.0), size=(1.75, 0.75, 1.75))
+    n7 = Union(p5, p6)
+    tree = Union(n4, n7)
+    return tree
+
+
+# case 487, trimesh-manifold: raised ValueError: Not all meshes are volumes!
+def case_487():
+    p0 = Cylinder(center=(1.0, 1.0, 1.0), axis=(0.5, 0.0, 0.0), radius=2.0)
+    p1 = Cylinder(center=(0.5, 0.0, 0.5), axis=(0.3, -0.5, 1.0), radius=0.001)
+    n2 = Union(p0, p1)
+    p3 = Cylinder(center=(-1.0, 0.0, -0.5), axis=(1.0, 0.0, 0.0), radius=0.001)
+    n4 = Intersection(n2, p3)
+    p5 = Ellipsoid(center=(1.0, -0.25, 0.75), radii=(1.0, 0.5, 1.75))
+    p6 = Box(center=(-0.75, 0.25, 1.0), size=(1.75, 0.75, 1.75))
+    n7 = Union(p5, p6)
+    tree = Union(n4, n7)
+    return tree
+
+
+# case 488, trimesh-manifold: raised ValueError: Not all meshes are volumes!
+def case_488():
+    p0 = Cylinder(center=(1.0, 1.0, 1.0), axis=(0.15, -0.25, 0.5), radius=2.0)
+    p1 = Cylinder(center=(0.5, 0.0, 0.5), axis=(0.3, -0.5, 1.0), radius=0.001)
+    n2 = Union(p0, p1)
+    p3 = Cylinder(center=(-1.0, 0.0, -0.5), axis=(1.0, 0.0, 0.0), radius=0.001)
+    n4 = Intersection(n2, p3)
+    p5 = Ellipsoid(center=(1.0, -0.25, 0.75), radii=(1.0, 0.5, 1.75))
+    p6 = Box(center=(-0.75, 0.25, 1.0), size=(1.75, 0.75, 1.75))
+    n7 = Union(p5, p6)
+    tree = Union(n4, n7)
+    return tree
+
+
+# case 489: over 120 s, skipped
+def case_489():
+    p0 = Cylinder(center=(1.0, 1.0, 1.0), axis=(0.15, -0.25, 0.5), radius=2.0)
+    p1 = Cylinder(center=(-1.0, 0.0, -0.5), axis=(1.0, 0.0, 0.0), radius=0.001)
+    n2 = Union(p0, p1)
+    p3 = Cylinder(center=(-1.0, 0.0, -0.5), axis=(1.0, 0.0, 0.0), radius=0.001)
+    n4 = Intersection(n2, p3)
+    p5 = Ellipsoid(center=(1.0, -0.25, 0.75), radii=(1.0, 0.5, 1.75))
+    p6 = Box(center=(-0.75, 0.25, 1.0), size=(1.75, 0.75, 1.75))
+    n7 = Union(p5, p6)
+    tree = Union(n4, n7)
+    return tree
+
+
+# case 490: over 120 s, skipped
+def case_490():
+    p0 = Cylinder(center=(1.0, 1.0, 1.0), axis=(0.15, -0.25, 0.5), radius=2.0)
+    p1 = Cylinder(center=(-1.0, 0.0, -0.5), axis=(1.0, 0.0, 0.0), radius=0.001)
+    n2 = Union(p0, p1)
+    p3 = Cylinder(center=(-1.0, 0.0, -0.5), axis=(1.0, 0.0, 0.0), radius=0.001)
+    n4 = Intersection(n2, p3)
+    p5 = Ellipsoid(center=(1.0, -0.25, 0.75), radii=(1.0, 0.25, 1.75))
+    p6 = Box(center=(-0.75, 0.25, 1.0), size=(1.75, 0.75, 1.75))
+    n7 = Union(p5, p6)
+    tree = Union(n4, n7)
+    return tree
+
+
+# case 491: over 120 s, skipped
+def case_491():
+    p0 = Cylinder(center=(1.0, 1.0, 1.0), axis=(0.075, -0.125, 0.25), radius=2.0)
+    p1 = Cylinder(center=(-1.0, 0.0, -0.5), axis=(1.0, 0.0, 0.0), radius=0.001)
+    n2 = Union(p0, p1)
+    p3 = Cylinder(center=(-1.0, 0.0, -0.5), axis=(1.0, 0.0, 0.0), radius=0.001)
+    n4 = Intersection(n2, p3)
+    p5 = Ellipsoid(center=(1.0, -0.25, 0.75), radii=(1.0, 0.25, 1.75))
+    p6 = Box(center=(-0.75, 0.25, 1.0), size=(1.75, 0.75, 1.75))
+    n7 = Union(p5, p6)
+    tree = Union(n4, n7)
+    return tree
+
+
+# case 493, pyvista: wrong hausdorff, topology
+# volume    5.69283834 (true 5.72812619): error -3.529e-02, tessellation -3.529e-02, bound 3.715e-02 -> tessellation
+# area      18.9525582 (true 18.90972): error +4.284e-02, tessellation -4.707e-02 -> tessellation
+# hausdorff mesh->true 4.791e-02, true->mesh 4.815e-03, tessellation 4.815e-03 -> wrong
+# topology  1 components, genus 1, watertight False, winding consistent False (true: 1, genus 0) -> wrong
+# verdict   WRONG: hausdorff, topology
+def case_493():
+    p0 = Truncus(center=(-0.5, -0.75, -0.5), axis=(1.75, 0.0, 0.0), r1=1.0, r2=1.0)
+    p1 = Cylinder(center=(-0.25, 0.25, 0.0), axis=(0.0, 0.0, 1.5), radius=0.25)
+    tree = Union(p0, p1)
+    return tree
+
+
+# case 494, pyvista: wrong topology
+# volume    6.00859124 (true 6.04223149): error -3.364e-02, tessellation -3.770e-02, bound 3.977e-02 -> tessellation
+# area      28.0488515 (true 28.1476872): error -9.884e-02, tessellation -1.102e-01 -> tessellation
+# hausdorff mesh->true 4.815e-03, true->mesh 4.815e-03, tessellation 4.815e-03 -> tessellation
+# topology  1 components, genus 1.5, watertight False, winding consistent False (true: 1, genus 0) -> wrong
+# verdict   WRONG: topology
+def case_494():
+    p0 = Cylinder(center=(-0.5, -0.75, -0.5), axis=(1.75, 0.0, 0.0), radius=1.0)
+    p1 = Truncus(center=(0.5, -0.25, 0.25), axis=(0.0, 0.0, 0.25), r1=1.5, r2=0.25)
+    tree = Union(p0, p1)
+    return tree
+
+
+# case 496, pyvista: wrong area, hausdorff, topology
+# volume    5.46252906 (true 5.49778714): error -3.526e-02, tessellation -3.526e-02, bound 4.030e-02 -> tessellation
+# area      12.2289371 (true 17.2787596): error -5.050e+00, tessellation -5.795e-02 -> wrong
+# hausdorff mesh->true 4.815e-03, true->mesh 1.677e-01, tessellation 4.815e-03 -> wrong
+# topology  21 components, genus 26, watertight False, winding consistent True (true: 1, genus 0) -> wrong
+# verdict   WRONG: area, hausdorff, topology
+def case_496():
+    p0 = Cylinder(center=(-0.5, -0.75, -0.5), axis=(0.25, 0.0, 0.0), radius=1.0)
+    p1 = Cylinder(center=(-0.5, -0.75, -0.5), axis=(1.75, 0.0, 0.0), radius=1.0)
+    tree = Union(p0, p1)
+    return tree
+
+
+# case 497, pyvista: wrong area, hausdorff, topology
+# volume    5.4625291 (true 5.49778714): error -3.526e-02, tessellation -3.526e-02, bound 5.541e-02 -> tessellation
+# area      9.17290271 (true 17.2787596): error -8.106e+00, tessellation -5.795e-02 -> wrong
+# hausdorff mesh->true 4.815e-03, true->mesh 4.994e-01, tessellation 4.815e-03 -> wrong
+# topology  22 components, genus 28.5, watertight False, winding consistent True (true: 1, genus 0) -> wrong
+# verdict   WRONG: area, hausdorff, topology
+def case_497():
+    p0 = Cylinder(center=(-0.5, -0.75, -0.5), axis=(1.75, 0.0, 0.0), radius=1.0)
+    p1 = Cylinder(center=(-0.5, -0.75, -0.5), axis=(1.0, 0.0, 0.0), radius=1.0)
+    tree = Union(p0, p1)
+    return tree
+
+
+# case 498, pyvista: wrong hausdorff, topology
+# volume    5.96865811 (true 5.99648203): error -2.782e-02, tessellation -3.703e-02, bound 5.541e-02 -> tessellation
+# area      18.7361959 (true 18.7774609): error -4.127e-02, tessellation -6.039e-02 -> tessellation
+# hausdorff mesh->true 3.201e-02, true->mesh 4.815e-03, tessellation 4.815e-03 -> wrong
+# topology  1 components, genus 0.5, watertight False, winding consistent False (true: 1, genus 0) -> wrong
+# verdict   WRONG: hausdorff, topology
+def case_498():
+    p0 = Cylinder(center=(-0.5, -0.75, -0.75), axis=(1.75, 0.0, 0.0), radius=1.0)
+    p1 = Cylinder(center=(-0.5, -0.75, -0.5), axis=(1.0, 0.0, 0.0), radius=1.0)
+    tree = Union(p0, p1)
+    return tree
+
+
+# case 501, pyvista: wrong volume, area, hausdorff, topology
+# volume    8.68122061 (true 8.86903751): error -1.878e-01, tessellation -1.772e-01, bound 1.846e-01 -> wrong
+# area      24.8202902 (true 25.0496924): error -2.294e-01, tessellation -1.411e-01 -> wrong
+# hausdorff mesh->true 1.576e-02, true->mesh 6.309e-02, tessellation 1.641e-02 -> wrong
+# topology  1 components, genus 2.5, watertight False, winding consistent False (true: 1, genus 1) -> wrong
+# verdict   WRONG: volume, area, hausdorff, topology
+def case_501():
+    p0 = Cone(center=(-0.25, -0.25, -0.75), axis=(0.0, 0.0, 0.25), radius=0.5)
+    p1 = Sphere(center=(-0.75, -1.0, -0.25), radius=1.25)
+    n2 = Union(p0, p1)
+    p3 = Box(center=(0.25, -0.25, 0.5), size=(1.0, 1.0, 0.0001))
+    p4 = Box(center=(-0.24999999999999997, 0.43301270189221935, 0.0), size=(1.0, 0.75, 1.0), orientation=((0.8660254037844387, -0.49999999999999994, 0.0), (0.49999999999999994, 0.8660254037844387, 0.0), (0.0, 0.0, 1.0)))
+    n5 = Union(p3, p4)
+    p6 = Sphere(center=(0.0, 0.25, 0.0), radius=0.25)
+    n7 = Union(n5, p6)
+    tree = Union(n2, n7)
+    return tree
+
+
+# case 507, pyvista: wrong topology
+# volume    6.97122911 (true 7.11756821): error -1.463e-01, tessellation -1.452e-01, bound 2.188e-01 -> tessellation
+# area      19.994427 (true 20.1694846): error -1.751e-01, tessellation -1.829e-01 -> tessellation
+# hausdorff mesh->true 1.457e-02, true->mesh 1.492e-02, tessellation 1.492e-02 -> tessellation
+# topology  3 components, genus 2, watertight False, winding consistent False (true: 1, genus 0) -> wrong
+# verdict   WRONG: topology
+def case_507():
+    p0 = Ellipsoid(center=(0.0, 1.0, -0.25), radii=(1.25, 1.25, 1.0))
+    p1 = Cone(center=(0.0, 1.0, -0.25), axis=(2.0, 0.0, 0.0), radius=1.75)
+    p2 = Cylinder(center=(0.25, 0.0, 0.75), axis=(0.0, 0.0, 1.0), radius=1.25)
+    n3 = Intersection(p1, p2)
+    tree = Union(p0, n3)
+    return tree
+
+
+# case 508, pyvista: wrong volume, area, hausdorff, topology
+# volume    0 (true 7.5612276): error -7.561e+00, tessellation -1.386e-01, bound 2.188e-01 -> wrong
+# area      0 (true 22.1752268): error -2.218e+01, tessellation -1.618e-01 -> wrong
+# hausdorff mesh->true inf, true->mesh inf, tessellation 1.474e-02 -> wrong
+# topology  0 components, genus 0, watertight True, winding consistent True (true: 1, genus 0) -> wrong
+# verdict   WRONG: volume, area, hausdorff, topology
+def case_508():
+    p0 = Ellipsoid(center=(0.0, 1.0, -0.25), radii=(1.25, 1.25, 1.0))
+    p1 = Cone(center=(0.0, 1.0, -0.25), axis=(0.0, 0.0, 2.0), radius=1.75)
+    p2 = Cylinder(center=(0.25, 0.0, 0.75), axis=(0.0, 0.0, 1.0), radius=1.25)
+    n3 = Intersection(p1, p2)
+    tree = Union(p0, n3)
+    return tree
+
+
+# case 509: over 120 s, skipped
+def case_509():
+    p0 = Ellipsoid(center=(0.0, 1.0, -0.25), radii=(1.25, 1.25, 1.0))
+    p1 = Cone(center=(0.0, 1.0, -0.25), axis=(0.0, 0.0, 2.0), radius=1.75)
+    p2 = Cylinder(center=(0.25, 0.0, 0.75), axis=(0.0, 0.0, 1.0), radius=1.25)
+    n3 = Union(p1, p2)
+    tree = Union(p0, n3)
+    return tree
+
+
+# case 510, pyvista: wrong area, hausdorff, topology
+# volume    13.0656293 (true 13.0021738): error +6.346e-02, tessellation -1.299e-01, bound 2.188e-01 -> tessellation
+# area      34.4807363 (true 34.7768294): error -2.961e-01, tessellation -1.450e-01 -> wrong
+# hausdorff mesh->true 4.734e-02, true->mesh 5.153e-02, tessellation 1.475e-02 -> wrong
+# topology  7 components, genus 7, watertight False, winding consistent False (true: 1, genus 0) -> wrong
+# verdict   WRONG: area, hausdorff, topology
+def case_510():
+    p0 = Ellipsoid(center=(0.0, 1.0, 1.0), radii=(1.25, 1.25, 1.0))
+    p1 = Cone(center=(0.0, 1.0, -0.25), axis=(0.0, 0.0, 2.0), radius=1.75)
+    p2 = Cylinder(center=(0.25, 0.0, 0.75), axis=(0.0, 0.0, 1.0), radius=1.25)
+    n3 = Union(p1, p2)
+    tree = Union(p0, n3)
+    return tree
+
+
+# case 511, pyvista: wrong volume, area, hausdorff, topology
+# volume    0 (true 11.2601116): error -1.126e+01, tessellation -1.232e-01, bound 2.188e-01 -> wrong
+# area      0 (true 30.6643825): error -3.066e+01, tessellation -1.490e-01 -> wrong
+# hausdorff mesh->true inf, true->mesh inf, tessellation 1.485e-02 -> wrong
+# topology  0 components, genus 0, watertight True, winding consistent True (true: 1, genus 0) -> wrong
+# verdict   WRONG: volume, area, hausdorff, topology
+def case_511():
+    p0 = Ellipsoid(center=(0.0, 1.0, 1.0), radii=(1.25, 1.25, 1.0))
+    p1 = Cone(center=(0.0, 1.0, -0.25), axis=(0.0, 0.0, 2.0), radius=1.75)
+    p2 = Cylinder(center=(0.25, 1.0, 0.75), axis=(0.0, 0.0, 1.0), radius=1.25)
+    n3 = Union(p1, p2)
+    tree = Union(p0, n3)
+    return tree
+
+
+# case 512: over 120 s, skipped
+def case_512():
+    p0 = Cylinder(center=(0.0, 1.0, 1.0), axis=(0.0, 0.0, 1.25), radius=1.0)
+    p1 = Cone(center=(0.0, 1.0, -0.25), axis=(0.0, 0.0, 2.0), radius=1.75)
+    p2 = Cylinder(center=(0.25, 1.0, 0.75), axis=(0.0, 0.0, 1.0), radius=1.25)
+    n3 = Union(p1, p2)
+    tree = Union(p0, n3)
+    return tree
+
+
+# case 514, pyvista: wrong volume, area, hausdorff, topology
+# volume    0 (true 0.0654498469): error -6.545e-02, tessellation -4.197e-04, bound 4.197e-04 -> wrong
+# area      0 (true 1.6635): error -1.664e+00, tessellation -9.822e-03 -> wrong
+# hausdorff mesh->true inf, true->mesh inf, tessellation 2.214e-03 -> wrong
+# topology  0 components, genus 0, watertight True, winding consistent True (true: 1, genus 0) -> wrong
+# verdict   WRONG: volume, area, hausdorff, topology
+def case_514():
+    p0 = Cone(center=(0.25, -1.0, 0.5), axis=(0.25, 0.0, 0.0), radius=0.5)
+    p1 = Box(center=(0.0, -0.25, -0.75), size=(1.0, 1.0, 0.0001))
+    tree = Difference(p0, p1)
+    return tree
+
+
+# case 515, pyvista: wrong volume, area, hausdorff, topology
+# volume    0 (true 0.0654498469): error -6.545e-02, tessellation -4.197e-04, bound 4.197e-04 -> wrong
+# area      0 (true 1.6635): error -1.664e+00, tessellation -9.822e-03 -> wrong
+# hausdorff mesh->true inf, true->mesh inf, tessellation 1.656e-03 -> wrong
+# topology  0 components, genus 0, watertight True, winding consistent True (true: 1, genus 0) -> wrong
+# verdict   WRONG: volume, area, hausdorff, topology
+def case_515():
+    p0 = Cone(center=(0.25, -1.0, 0.5), axis=(0.25, 0.0, 0.0), radius=0.5)
+    p1 = Box(center=(0.0, 0.0, -0.75), size=(1.0, 1.0, 0.0001))
+    tree = Difference(p0, p1)
+    return tree
+
+
+# case 516, pyvista: wrong volume, area, hausdorff, topology
+# volume    0 (true 0.0654498469): error -6.545e-02, tessellation -4.197e-04, bound 4.197e-04 -> wrong
+# area      0 (true 1.6635): error -1.664e+00, tessellation -9.822e-03 -> wrong
+# hausdorff mesh->true inf, true->mesh inf, tessellation 1.710e-03 -> wrong
+# topology  0 components, genus 0, watertight True, winding consistent True (true: 1, genus 0) -> wrong
+# verdict   WRONG: volume, area, hausdorff, topology
+def case_516():
+    p0 = Cone(center=(0.5, -1.0, 0.5), axis=(0.25, 0.0, 0.0), radius=0.5)
+    p1 = Box(center=(0.0, 0.0, -0.75), size=(1.0, 1.0, 0.0001))
+    tree = Difference(p0, p1)
+    return tree
+
+
+# case 517, pyvista: wrong volume, area, hausdorff, topology
+# volume    0 (true 0.130899694): error -1.309e-01, tessellation -8.395e-04, bound 8.395e-04 -> wrong
+# area      0 (true 1.8961189): error -1.896e+00, tessellation -9.487e-03 -> wrong
+# hausdorff mesh->true inf, true->mesh inf, tessellation 1.929e-03 -> wrong
+# topology  0 components, genus 0, watertight True, winding consistent True (true: 1, genus 0) -> wrong
+# verdict   WRONG: volume, area, hausdorff, topology
+def case_517():
+    p0 = Cone(center=(0.5, -1.0, 0.5), axis=(0.5, 0.0, 0.0), radius=0.5)
+    p1 = Box(center=(0.0, 0.0, -0.75), size=(1.0, 1.0, 0.0001))
+    tree = Difference(p0, p1)
+    return tree
+
+
+# case 518: over 120 s, skipped
+def case_518():
+    p0 = Cone(center=(0.0, 0.0, -0.75), axis=(0.5, 0.0, 0.0), radius=0.5)
+    p1 = Box(center=(0.0, 0.0, -0.75), size=(1.0, 1.0, 0.0001))
+    tree = Difference(p0, p1)
+    return tree
+
+
+# case 519, manifold3d: wrong volume
+# volume    0.130047715 (true 0.130887198): error -8.395e-04, tessellation -8.395e-04, bound 8.395e-04 -> wrong
+# area      2.13655613 (true 2.14580402): error -9.248e-03, tessellation -9.248e-03 -> tessellation
+# hausdorff mesh->true 1.683e-03, true->mesh 1.691e-03, tessellation 1.691e-03 -> tessellation
+# topology  1 components, genus 0, watertight True, winding consistent True (true: 1, genus 0) -> exact
+# verdict   WRONG: volume
+# case 519, trimesh-manifold: wrong volume
+# volume    0.13004771 (true 0.130887198): error -8.395e-04, tessellation -8.395e-04, bound 8.395e-04 -> wrong
+# area      2.13655609 (true 2.14580402): error -9.248e-03, tessellation -9.248e-03 -> tessellation
+# hausdorff mesh->true 1.687e-03, true->mesh 1.691e-03, tessellation 1.691e-03 -> tessellation
+# topology  1 components, genus 0, watertight True, winding consistent True (true: 1, genus 0) -> exact
+# verdict   WRONG: volume
+# case 519, pyvista: wrong topology
+# volume    0.130053842 (true 0.130887198): error -8.334e-04, tessellation -8.395e-04, bound 8.395e-04 -> tessellation
+# area      2.13658061 (true 2.14580402): error -9.223e-03, tessellation -9.248e-03 -> tessellation
+# hausdorff mesh->true 1.691e-03, true->mesh 1.691e-03, tessellation 1.691e-03 -> tessellation
+# topology  1 components, genus 0, watertight True, winding consistent False (true: 1, genus 0) -> wrong
+# verdict   WRONG: topology
+def case_519():
+    p0 = Cone(center=(0.0, 0.0, -0.75), axis=(0.5, 0.0, 0.0), radius=0.5)
+    p1 = Box(center=(0.0, 0.5, -0.75), size=(1.0, 1.0, 0.0001))
+    tree = Difference(p0, p1)
+    return tree
+
+
+# case 520, manifold3d: wrong volume
+# volume    0.0650238574 (true 0.0654436052): error -4.197e-04, tessellation -4.197e-04, bound 4.197e-04 -> wrong
+# area      1.77859425 (true 1.78793081): error -9.337e-03, tessellation -9.337e-03 -> tessellation
+# hausdorff mesh->true 1.070e-03, true->mesh 1.328e-03, tessellation 1.328e-03 -> tessellation
+# topology  1 components, genus 0, watertight True, winding consistent True (true: 1, genus 0) -> exact
+# verdict   WRONG: volume
+# case 520, trimesh-manifold: wrong volume
+# volume    0.0650238549 (true 0.0654436052): error -4.198e-04, tessellation -4.197e-04, bound 4.197e-04 -> wrong
+# area      1.7785942 (true 1.78793081): error -9.337e-03, tessellation -9.337e-03 -> tessellation
+# hausdorff mesh->true 1.054e-03, true->mesh 1.328e-03, tessellation 1.328e-03 -> tessellation
+# topology  1 components, genus 0, watertight True, winding consistent True (true: 1, genus 0) -> exact
+# verdict   WRONG: volume
+# case 520, pyvista: wrong volume
+# volume    0.0650238554 (true 0.0654436052): error -4.197e-04, tessellation -4.197e-04, bound 4.197e-04 -> wrong
+# area      1.7785942 (true 1.78793081): error -9.337e-03, tessellation -9.337e-03 -> tessellation
+# hausdorff mesh->true 1.065e-03, true->mesh 1.328e-03, tessellation 1.328e-03 -> tessellation
+# topology  1 components, genus 0, watertight True, winding consistent True (true: 1, genus 0) -> exact
+# verdict   WRONG: volume
+def case_520():
+    p0 = Cone(center=(0.0, 0.0, -0.75), axis=(0.25, 0.0, 0.0), radius=0.5)
+    p1 = Box(center=(0.0, 0.5, -0.75), size=(1.0, 1.0, 0.0001))
+    tree = Difference(p0, p1)
+    return tree
+
+
+# case 521, pyvista: wrong volume, area, hausdorff, topology
+# volume    0 (true 25.1948075): error -2.519e+01, tessellation -1.616e-01, bound 1.616e-01 -> wrong
+# area      0 (true 47.7441097): error -4.774e+01, tessellation -1.578e-01 -> wrong
+# hausdorff mesh->true inf, true->mesh inf, tessellation 8.386e-03 -> wrong
+# topology  0 components, genus 0, watertight True, winding consistent True (true: 1, genus 0) -> wrong
+# verdict   WRONG: volume, area, hausdorff, topology
+def case_521():
+    p0 = Truncus(center=(-0.75, 0.25, 0.0), axis=(1.75, 1.75, 1.75), r1=1.75, r2=1.5)
+    p1 = Cylinder(center=(1.0, -0.25, 0.25), axis=(1.0, 1.0, 1.0), radius=0.001)
+    n2 = Union(p0, p1)
+    p3 = Cylinder(center=(-0.75, -0.75, -0.75), axis=(1.0, 0.0, 0.0), radius=0.001)
+    tree = Union(n2, p3)
+    return tree
+
+
+# case 522, manifold3d: wrong volume
+# volume    25.0332313 (true 25.19483): error -1.616e-01, tessellation -1.616e-01, bound 1.616e-01 -> wrong
+# area      47.5898522 (true 47.747604): error -1.578e-01, tessellation -1.578e-01 -> tessellation
+# hausdorff mesh->true 8.376e-03, true->mesh 8.380e-03, tessellation 8.380e-03 -> tessellation
+# topology  1 components, genus 0, watertight True, winding consistent True (true: 1, genus 0) -> exact
+# verdict   WRONG: volume
+# case 522, trimesh-manifold: wrong volume
+# volume    25.0332311 (true 25.19483): error -1.616e-01, tessellation -1.616e-01, bound 1.616e-01 -> wrong
+# area      47.5898518 (true 47.747604): error -1.578e-01, tessellation -1.578e-01 -> tessellation
+# hausdorff mesh->true 8.376e-03, true->mesh 8.380e-03, tessellation 8.380e-03 -> tessellation
+# topology  1 components, genus 0, watertight True, winding consistent True (true: 1, genus 0) -> exact
+# verdict   WRONG: volume
+# case 522, pyvista: wrong volume, area, hausdorff, topology
+# volume    0 (true 25.19483): error -2.519e+01, tessellation -1.616e-01, bound 1.616e-01 -> wrong
+# area      0 (true 47.747604): error -4.775e+01, tessellation -1.578e-01 -> wrong
+# hausdorff mesh->true inf, true->mesh inf, tessellation 8.380e-03 -> wrong
+# topology  0 components, genus 0, watertight True, winding consistent True (true: 1, genus 0) -> wrong
+# verdict   WRONG: volume, area, hausdorff, topology
+def case_522():
+    p0 = Truncus(center=(-0.75, 0.25, 0.25), axis=(1.75, 1.75, 1.75), r1=1.75, r2=1.5)
+    p1 = Cylinder(center=(1.0, -0.25, 0.25), axis=(1.0, 1.0, 1.0), radius=0.001)
+    n2 = Union(p0, p1)
+    p3 = Cylinder(center=(-0.75, -0.75, -0.75), axis=(1.0, 0.0, 0.0), radius=0.001)
+    tree = Union(n2, p3)
+    return tree
+
+
+# case 523, trimesh-manifold: wrong volume
+# volume    25.0332286 (true 25.1948068): error -1.616e-01, tessellation -1.616e-01, bound 1.616e-01 -> wrong
+# area      47.5848501 (true 47.7427494): error -1.579e-01, tessellation -1.579e-01 -> tessellation
+# hausdorff mesh->true 8.377e-03, true->mesh 8.381e-03, tessellation 8.389e-03 -> tessellation
+# topology  1 components, genus 0, watertight True, winding consistent True (true: 1, genus 0) -> exact
+# verdict   WRONG: volume
+def case_523():
+    p0 = Truncus(center=(-0.75, 0.25, 0.25), axis=(1.75, 1.75, 1.75), r1=1.75, r2=1.5)
+    p1 = Cylinder(center=(-0.75, -0.25, 0.25), axis=(1.0, 1.0, 1.0), radius=0.001)
+    n2 = Union(p0, p1)
+    p3 = Cylinder(center=(-0.75, -0.75, -0.75), axis=(1.0, 0.0, 0.0), radius=0.001)
+    tree = Union(n2, p3)
+    return tree
+
+
+# case 524, manifold3d: wrong volume
+# volume    14.6805443 (true 14.7753022): error -9.476e-02, tessellation -9.476e-02, bound 9.476e-02 -> wrong
+# area      36.7617593 (true 36.919573): error -1.578e-01, tessellation -1.578e-01 -> tessellation
+# hausdorff mesh->true 8.834e-03, true->mesh 8.813e-03, tessellation 8.813e-03 -> tessellation
+# topology  1 components, genus 0, watertight True, winding consistent True (true: 1, genus 0) -> exact
+# verdict   WRONG: volume
+# case 524, trimesh-manifold: wrong volume
+# volume    14.6805444 (true 14.7753022): error -9.476e-02, tessellation -9.476e-02, bound 9.476e-02 -> wrong
+# area      36.7617594 (true 36.919573): error -1.578e-01, tessellation -1.578e-01 -> tessellation
+# hausdorff mesh->true 8.834e-03, true->mesh 8.813e-03, tessellation 8.813e-03 -> tessellation
+# topology  1 components, genus 0, watertight True, winding consistent True (true: 1, genus 0) -> exact
+# verdict   WRONG: volume
+# case 524, pyvista: wrong topology
+# volume    14.6805537 (true 14.7753022): error -9.475e-02, tessellation -9.476e-02, bound 9.476e-02 -> tessellation
+# area      36.7619134 (true 36.919573): error -1.577e-01, tessellation -1.578e-01 -> tessellation
+# hausdorff mesh->true 8.703e-03, true->mesh 8.813e-03, tessellation 8.813e-03 -> tessellation
+# topology  1 components, genus 4.5, watertight False, winding consistent False (true: 1, genus 0) -> wrong
+# verdict   WRONG: topology
+def case_524():
+    p0 = Truncus(center=(-0.5, 0.75, 1.0), axis=(1.75, 0.0, 0.0), r1=2.0, r2=1.25)
+    p1 = Cylinder(center=(-0.25, 0.25, -0.75), axis=(1.0, 1.0, 1.0), radius=0.001)
+    tree = Difference(p0, p1)
+    return tree
+
+
+# case 525, manifold3d: wrong volume
+# volume    25.4274513 (true 25.5915806): error -1.641e-01, tessellation -1.641e-01, bound 1.641e-01 -> wrong
+# area      49.1872759 (true 49.3595436): error -1.723e-01, tessellation -1.723e-01 -> tessellation
+# hausdorff mesh->true 9.333e-03, true->mesh 9.252e-03, tessellation 9.252e-03 -> tessellation
+# topology  1 components, genus 0, watertight True, winding consistent True (true: 1, genus 0) -> exact
+# verdict   WRONG: volume
+# case 525, trimesh-manifold: wrong volume
+# volume    25.4274514 (true 25.5915806): error -1.641e-01, tessellation -1.641e-01, bound 1.641e-01 -> wrong
+# area      49.1872761 (true 49.3595436): error -1.723e-01, tessellation -1.723e-01 -> tessellation
+# hausdorff mesh->true 9.333e-03, true->mesh 9.252e-03, tessellation 9.252e-03 -> tessellation
+# topology  1 components, genus 0, watertight True, winding consistent True (true: 1, genus 0) -> exact
+# verdict   WRONG: volume
+# case 525, pyvista: wrong topology
+# volume    25.4277146 (true 25.5915806): error -1.639e-01, tessellation -1.641e-01, bound 1.641e-01 -> tessellation
+# area      49.1886285 (true 49.3595436): error -1.709e-01, tessellation -1.723e-01 -> tessellation
+# hausdorff mesh->true 9.326e-03, true->mesh 9.252e-03, tessellation 9.252e-03 -> tessellation
+# topology  1 components, genus 0, watertight True, winding consistent False (true: 1, genus 0) -> wrong
+# verdict   WRONG: topology
+def case_525():
+    p0 = Truncus(center=(-0.5, 0.75, 1.0), axis=(1.75, 1.75, 1.75), r1=2.0, r2=1.25)
+    p1 = Cylinder(center=(-0.25, 0.25, -0.75), axis=(1.0, 1.0, 1.0), radius=0.001)
+    tree = Difference(p0, p1)
+    return tree
+
+
+# case 526, pyvista: wrong topology
+# volume    25.4274508 (true 25.5915734): error -1.641e-01, tessellation -1.641e-01, bound 1.641e-01 -> tessellation
+# area      49.1883667 (true 49.3604549): error -1.721e-01, tessellation -1.721e-01 -> tessellation
+# hausdorff mesh->true 9.319e-03, true->mesh 9.256e-03, tessellation 9.256e-03 -> tessellation
+# topology  1 components, genus 5, watertight False, winding consistent True (true: 1, genus 0) -> wrong
+# verdict   WRONG: topology
+def case_526():
+    p0 = Truncus(center=(0.5, 0.75, 1.0), axis=(1.75, 1.75, 1.75), r1=2.0, r2=1.25)
+    p1 = Cylinder(center=(-0.25, 0.25, -0.75), axis=(1.0, 1.0, 1.0), radius=0.001)
+    tree = Difference(p0, p1)
+    return tree
+
+
+# case 527, pyvista: wrong volume, area, hausdorff, topology
+# volume    0 (true 25.5915754): error -2.559e+01, tessellation -1.641e-01, bound 1.641e-01 -> wrong
+# area      0 (true 49.3563739): error -4.936e+01, tessellation -1.721e-01 -> wrong
+# hausdorff mesh->true inf, true->mesh inf, tessellation 9.361e-03 -> wrong
+# topology  0 components, genus 0, watertight True, winding consistent True (true: 1, genus 0) -> wrong
+# verdict   WRONG: volume, area, hausdorff, topology
+def case_527():
+    p0 = Truncus(center=(0.5, -0.25, 1.0), axis=(1.75, 1.75, 1.75), r1=2.0, r2=1.25)
+    p1 = Cylinder(center=(-0.25, 0.25, -0.75), axis=(1.0, 1.0, 1.0), radius=0.001)
+    tree = Difference(p0, p1)
+    return tree
+
+
+# case 528, pyvista: wrong volume, area, hausdorff, topology
+# volume    0 (true 25.59157): error -2.559e+01, tessellation -1.641e-01, bound 1.641e-01 -> wrong
+# area      0 (true 49.3672629): error -4.937e+01, tessellation -1.721e-01 -> wrong
+# hausdorff mesh->true inf, true->mesh inf, tessellation 9.274e-03 -> wrong
+# topology  0 components, genus 0, watertight True, winding consistent True (true: 2, genus 0) -> wrong
+# verdict   WRONG: volume, area, hausdorff, topology
+def case_528():
+    p0 = Truncus(center=(0.5, -0.25, 1.0), axis=(1.75, 1.75, 1.75), r1=2.0, r2=1.25)
+    p1 = Cylinder(center=(0.5, -0.25, 1.0), axis=(1.0, 1.0, 1.0), radius=0.001)
+    tree = Difference(p0, p1)
+    return tree
+
+
+# case 529, pyvista: wrong volume, area, hausdorff, topology
+# volume    0 (true 8.58299075e-06): error -8.583e-06, tessellation -5.504e-08, bound 5.504e-08 -> wrong
+# area      0 (true 0.0171785479): error -1.718e-02, tessellation -2.764e-05 -> wrong
+# hausdorff mesh->true inf, true->mesh inf, tessellation 4.815e-06 -> wrong
+# topology  0 components, genus 0, watertight True, winding consistent True (true: 2, genus 0) -> wrong
+# verdict   WRONG: volume, area, hausdorff, topology
+def case_529():
+    p0 = Cylinder(center=(0.5, -0.25, 1.0), axis=(1.0, 1.0, 1.0), radius=0.001)
+    p1 = Cylinder(center=(0.0, 0.0, 0.0), axis=(1.0, 0.0, 0.0), radius=0.001)
+    tree = Union(p0, p1)
+    return tree
+
+
+# case 530: over 120 s, skipped
+def case_530():
+    p0 = Cylinder(center=(0.5, -0.25, 1.0), axis=(1.0, 1.0, 1.0), radius=0.001)
+    p1 = Cylinder(center=(0.5, -0.25, 1.0), axis=(1.0, 1.0, 1.0), radius=0.001)
+    tree = Union(p0, p1)
+    return tree
+
+
+# case 531, pyvista: wrong volume, area, hausdorff, topology
+# volume    0 (true 0.000785398163): error -7.854e-04, tessellation -5.037e-06, bound 1.007e-05 -> wrong
+# area      0 (true 1.57393792): error -1.574e+00, tessellation -1.008e-02 -> wrong
+# hausdorff mesh->true inf, true->mesh inf, tessellation 2.145e-03 -> wrong
+# topology  0 components, genus 0, watertight True, winding consistent True (true: 1, genus 0) -> wrong
+# verdict   WRONG: volume, area, hausdorff, topology
+def case_531():
+    p0 = Cylinder(center=(-1.0, -0.25, 0.0), axis=(0.0, 0.0, 0.001), radius=0.5)
+    p1 = Cylinder(center=(1.0, 0.25, 1.0), axis=(0.0, 0.0, 0.001), radius=0.5)
+    tree = Difference(p0, p1)
+    return tree
+
+
+# case 533, pyvista: wrong area, hausdorff, topology
+# volume    0.000669381221 (true 0.000672070156): error -2.689e-06, tessellation -2.680e-06, bound 1.007e-05 -> tessellation
+# area      1.57901784 (true 1.34728163): error +2.317e-01, tessellation -5.365e-03 -> wrong
+# hausdorff mesh->true 4.014e-01, true->mesh 4.285e-02, tessellation 2.036e-03 -> wrong
+# topology  5 components, genus 11.5, watertight False, winding consistent False (true: 1, genus 0) -> wrong
+# verdict   WRONG: area, hausdorff, topology
+def case_533():
+    p0 = Cylinder(center=(1.0, 1.0, 1.0), axis=(0.0, 0.0, 0.001), radius=0.5)
+    p1 = Cylinder(center=(1.0, 0.25, 1.0), axis=(0.0, 0.0, 0.001), radius=0.5)
+    tree = Difference(p0, p1)
+    return tree
+
+
+# case 535, pyvista: wrong area, hausdorff, topology
+# volume    0.00047656899 (true 0.000478305266): error -1.736e-06, tessellation -1.730e-06, bound 1.007e-05 -> tessellation
+# area      1.66567573 (true 0.959750232): error +7.059e-01, tessellation -3.463e-03 -> wrong
+# hausdorff mesh->true 4.808e-01, true->mesh 5.259e-02, tessellation 2.387e-03 -> wrong
+# topology  9 components, genus 23, watertight False, winding consistent False (true: 1, genus 0) -> wrong
+# verdict   WRONG: area, hausdorff, topology
+def case_535():
+    p0 = Cylinder(center=(1.0, 1.0, 1.0), axis=(0.0, 0.0, 0.001), radius=0.5)
+    p1 = Cylinder(center=(0.5, 1.0, 1.0), axis=(0.0, 0.0, 0.001), radius=0.5)
+    tree = Difference(p0, p1)
+    return tree
+
+
+# case 536, pyvista: wrong volume, area, hausdorff, topology
+# volume    0 (true 0.000785398163): error -7.854e-04, tessellation -5.037e-06, bound 1.007e-05 -> wrong
+# area      0 (true 1.57393792): error -1.574e+00, tessellation -1.008e-02 -> wrong
+# hausdorff mesh->true inf, true->mesh inf, tessellation 2.168e-03 -> wrong
+# topology  0 components, genus 0, watertight True, winding consistent True (true: 1, genus 0) -> wrong
+# verdict   WRONG: volume, area, hausdorff, topology
+def case_536():
+    p0 = Cylinder(center=(1.0, 1.0, 1.0), axis=(0.0, 0.0, 0.001), radius=0.5)
+    p1 = Cylinder(center=(1.0, 1.0, 0.5), axis=(0.0, 0.0, 0.001), radius=0.5)
+    tree = Difference(p0, p1)
+    return tree
+
+
+# case 537: over 120 s, skipped
+def case_537():
+    p0 = Cylinder(center=(-1.0, 0.75, 0.75), axis=(0.0, 0.0, 0.001), radius=0.5)
+    p1 = Torus(center=(1.0, 0.0, 0.75), axis=(0.5773502691896258, 0.5773502691896258, 0.5773502691896258), major=1.75, minor=0.6124999999999999)
+    n2 = Difference(p0, p1)
+    p3 = Box(center=(-0.25, 0.75, 0.5), size=(1.25, 1.75, 0.5))
+    p4 = Cylinder(center=(0.0, 1.0, 0.25), axis=(0.0, 0.75, 0.0), radius=0.75)
+    n5 = Difference(p3, p4)
+    n6 = Intersection(n2, n5)
+    p7 = Box(center=(-0.774519052838329, -0.1584936490538903, 0.75), size=(1.75, 2.0, 1.75), orientation=((0.8660254037844387, -0.49999999999999994, 0.0), (0.49999999999999994, 0.8660254037844387, 0.0), (0.0, 0.0, 1.0)))
+    tree = Union(n6, p7)
+    return tree
+
+
+# case 538: over 120 s, skipped
+def case_538():
+    p0 = Cylinder(center=(-1.0, 0.75, 0.75), axis=(0.0, 0.0, 0.001), radius=0.5)
+    p1 = Torus(center=(1.0, 0.0, 0.75), axis=(0.5773502691896258, 0.5773502691896258, 0.5773502691896258), major=1.75, minor=0.6124999999999999)
+    n2 = Difference(p0, p1)
+    p3 = Box(center=(-0.25, 0.75, 0.5), size=(1.25, 1.75, 0.5))
+    p4 = Cylinder(center=(0.0, 1.0, 0.25), axis=(0.0, 0.75, 0.0), radius=0.75)
+    n5 = Difference(p3, p4)
+    n6 = Intersection(n2, n5)
+    p7 = Box(center=(-0.25, 0.75, 0.5), size=(1.25, 1.75, 0.5))
+    tree = Union(n6, p7)
+    return tree
+
+
+# case 539: over 120 s, skipped
+def case_539():
+    p0 = Cylinder(center=(-1.0, 0.75, 0.75), axis=(0.0, 0.0, 0.001), radius=0.5)
+    p1 = Torus(center=(1.0, 0.0, 0.75), axis=(0.5773502691896258, 0.5773502691896258, 0.5773502691896258), major=1.75, minor=0.6124999999999999)
+    n2 = Difference(p0, p1)
+    p3 = Box(center=(-0.25, 0.75, 0.5), size=(1.25, 1.75, 0.5))
+    p4 = Cylinder(center=(0.0, 1.0, 0.25), axis=(0.0, 0.75, 0.0), radius=0.75)
+    n5 = Difference(p3, p4)
+    n6 = Intersection(n2, n5)
+    p7 = Box(center=(-0.25, 0.75, 0.5), size=(0.25, 0.75, 0.5))
+    tree = Union(n6, p7)
+    return tree
+
+
+# case 540: over 120 s, skipped
+def case_540():
+    p0 = Cylinder(center=(-1.0, 0.75, 0.75), axis=(0.0, 0.0, 0.001), radius=0.5)
+    p1 = Torus(center=(1.0, 0.0, 0.75), axis=(0.5773502691896258, 0.5773502691896258, 0.5773502691896258), major=1.75, minor=0.6124999999999999)
+    n2 = Difference(p0, p1)
+    p3 = Box(center=(-0.25, 0.75, 0.5), size=(1.25, 1.75, 0.5))
+    p4 = Cylinder(center=(0.0, 1.0, 0.25), axis=(0.75, 0.75, 0.75), radius=0.75)
+    n5 = Difference(p3, p4)
+    n6 = Intersection(n2, n5)
+    p7 = Box(center=(-0.25, 0.75, 0.5), size=(0.25, 0.75, 0.5))
+    tree = Union(n6, p7)
+    return tree
+
+
+# case 541: over 120 s, skipped
+def case_541():
+    p0 = Cylinder(center=(-1.0, 0.75, 0.75), axis=(0.0, 0.0, 0.001), radius=0.5)
+    p1 = Torus(center=(1.0, 0.0, 0.75), axis=(0.5773502691896258, 0.5773502691896258, 0.5773502691896258), major=1.75, minor=0.6124999999999999)
+    n2 = Difference(p0, p1)
+    p3 = Box(center=(-0.25, 0.75, 0.5), size=(1.25, 1.75, 0.5))
+    p4 = Cylinder(center=(0.0, 1.0, 0.25), axis=(0.75, 0.75, 0.75), radius=0.75)
+    p5 = Cylinder(center=(0.75, 0.25, 0.5), axis=(0.0, 0.0, 0.001), radius=0.5)
+    n6 = Intersection(p4, p5)
+    n7 = Union(p3, n6)
+    tree = Difference(n2, n7)
+    return tree
+
+
+# case 542: over 120 s, skipped
+def case_542():
+    p0 = Cylinder(center=(0.75, 0.25, 0.5), axis=(0.0, 0.0, 0.001), radius=0.5)
+    p1 = Torus(center=(1.0, 0.0, 0.75), axis=(0.5773502691896258, 0.5773502691896258, 0.5773502691896258), major=1.75, minor=0.6124999999999999)
+    n2 = Difference(p0, p1)
+    p3 = Box(center=(-0.25, 0.75, 0.5), size=(1.25, 1.75, 0.5))
+    p4 = Cylinder(center=(0.0, 1.0, 0.25), axis=(0.75, 0.75, 0.75), radius=0.75)
+    p5 = Cylinder(center=(0.75, 0.25, 0.5), axis=(0.0, 0.0, 0.001), radius=0.5)
+    n6 = Intersection(p4, p5)
+    n7 = Union(p3, n6)
+    tree = Difference(n2, n7)
+    return tree
+
+
+# case 547, pyvista: wrong hausdorff, topology
+# volume    0.304777523 (true 0.321218044): error -1.644e-02, tessellation -1.667e-02, bound 1.521e-01 -> tessellation
+# area      3.27622561 (true 3.3829984): error -1.068e-01, tessellation -1.084e-01 -> tessellation
+# hausdorff mesh->true 2.197e-02, true->mesh 1.444e-02, tessellation 1.444e-02 -> wrong
+# topology  2 components, genus 1, watertight False, winding consistent False (true: 1, genus 0) -> wrong
+# verdict   WRONG: hausdorff, topology
+def case_547():
+    p0 = Sphere(center=(-0.5, 0.75, -0.25), radius=1.0)
+    p1 = Ellipsoid(center=(0.25, -0.25, -0.25), radii=(0.25, 1.25, 2.0))
+    tree = Intersection(p0, p1)
+    return tree
+
+
+# case 549, pyvista: wrong area, hausdorff, topology
+# volume    0 (true 0.0654498469): error -6.545e-02, tessellation -1.462e-03, bound 9.503e-02 -> tessellation
+# area      0 (true 0.785398163): error -7.854e-01, tessellation -9.569e-03 -> wrong
+# hausdorff mesh->true inf, true->mesh inf, tessellation 3.226e-03 -> wrong
+# topology  0 components, genus 0, watertight True, winding consistent True (true: 1, genus 0) -> wrong
+# verdict   WRONG: area, hausdorff, topology
+def case_549():
+    p0 = Sphere(center=(0.25, -0.25, -0.25), radius=1.0)
+    p1 = Ellipsoid(center=(0.25, -0.25, -0.25), radii=(0.25, 0.25, 0.25))
+    tree = Intersection(p0, p1)
+    return tree
+
+
+# case 551, trimesh-manifold: wrong volume
+# volume    1.62820552 (true 1.6399019): error -1.170e-02, tessellation -1.170e-02, bound 1.170e-02 -> wrong
+# area      13.0790102 (true 13.1172851): error -3.827e-02, tessellation -3.827e-02 -> tessellation
+# hausdorff mesh->true 6.206e-03, true->mesh 6.358e-03, tessellation 6.358e-03 -> tessellation
+# topology  2 components, genus 0, watertight True, winding consistent True (true: 2, genus 0) -> exact
+# verdict   WRONG: volume
+def case_551():
+    p0 = Box(center=(1.3660254037844386, -0.36602540378443876, 1.0), size=(1.25, 1.0, 0.75), orientation=((0.8660254037844387, -0.49999999999999994, 0.0), (0.49999999999999994, 0.8660254037844387, 0.0), (0.0, 0.0, 1.0)))
+    p1 = Box(center=(1.0, -0.5, 0.25), size=(1.0, 1.0, 0.0001))
+    n2 = Union(p0, p1)
+    p3 = Sphere(center=(0.0, -1.0, -0.25), radius=0.5)
+    p4 = Box(center=(0.7071067811865476, 0.35355339059327373, 0.5), size=(0.25, 1.5, 0.5), orientation=((0.7071067811865476, -0.7071067811865475, 0.0), (0.7071067811865475, 0.7071067811865476, 0.0), (0.0, 0.0, 1.0)))
+    n5 = Union(p3, p4)
+    tree = Union(n2, n5)
+    return tree
+
+
+# case 556, trimesh-manifold: wrong volume
+# volume    1.62137744 (true 1.63307378): error -1.170e-02, tessellation -1.170e-02, bound 1.170e-02 -> wrong
+# area      13.0412179 (true 13.0794927): error -3.827e-02, tessellation -3.827e-02 -> tessellation
+# hausdorff mesh->true 6.278e-03, true->mesh 6.045e-03, tessellation 6.520e-03 -> tessellation
+# topology  3 components, genus 0, watertight True, winding consistent True (true: 3, genus 0) -> exact
+# verdict   WRONG: volume
+def case_556():
+    p0 = Box(center=(1.3660254037844386, -0.36602540378443876, 1.0), size=(1.25, 1.0, 0.75), orientation=((0.8660254037844387, -0.49999999999999994, 0.0), (0.49999999999999994, 0.8660254037844387, 0.0), (0.0, 0.0, 1.0)))
+    p1 = Box(center=(0.0, -0.5, 0.25), size=(1.0, 1.0, 0.0001))
+    n2 = Union(p0, p1)
+    p3 = Sphere(center=(1.0, -1.0, -0.5), radius=0.5)
+    p4 = Box(center=(0.774519052838329, 0.1584936490538903, 0.5), size=(0.25, 1.5, 0.5), orientation=((0.8660254037844387, -0.49999999999999994, 0.0), (0.49999999999999994, 0.8660254037844387, 0.0), (0.0, 0.0, 1.0)))
+    n5 = Union(p3, p4)
+    tree = Union(n2, n5)
+    return tree
+
+
+# case 557, trimesh-manifold: wrong volume
+# volume    1.62137744 (true 1.63307378): error -1.170e-02, tessellation -1.170e-02, bound 1.170e-02 -> wrong
+# area      13.0412179 (true 13.0794927): error -3.827e-02, tessellation -3.827e-02 -> tessellation
+# hausdorff mesh->true 6.037e-03, true->mesh 6.393e-03, tessellation 6.550e-03 -> tessellation
+# topology  3 components, genus 0, watertight True, winding consistent True (true: 3, genus 0) -> exact
+# verdict   WRONG: volume
+def case_557():
+    p0 = Box(center=(1.3660254037844386, -0.36602540378443876, 1.0), size=(1.25, 1.0, 0.75), orientation=((0.8660254037844387, -0.49999999999999994, 0.0), (0.49999999999999994, 0.8660254037844387, 0.0), (0.0, 0.0, 1.0)))
+    p1 = Box(center=(0.0, -0.5, 0.25), size=(1.0, 1.0, 0.0001))
+    n2 = Union(p0, p1)
+    p3 = Sphere(center=(1.0, 0.5, -0.5), radius=0.5)
+    p4 = Box(center=(0.774519052838329, 0.1584936490538903, 0.5), size=(0.25, 1.5, 0.5), orientation=((0.8660254037844387, -0.49999999999999994, 0.0), (0.49999999999999994, 0.8660254037844387, 0.0), (0.0, 0.0, 1.0)))
+    n5 = Union(p3, p4)
+    tree = Union(n2, n5)
+    return tree
+
+
+# case 558, pyvista: wrong volume, topology
+# volume    0.763837882 (true 0.786101058): error -2.226e-02, tessellation -5.042e-03, bound 5.042e-03 -> wrong
+# area      8.4709469 (true 8.47230069): error -1.354e-03, tessellation -4.599e-02 -> tessellation
+# hausdorff mesh->true 2.864e-03, true->mesh 2.977e-03, tessellation 2.977e-03 -> tessellation
+# topology  1 components, genus 0, watertight True, winding consistent False (true: 1, genus 0) -> wrong
+# verdict   WRONG: volume, topology
+def case_558():
+    p0 = Cone(center=(0.5, 0.25, 0.5), axis=(0.75, 0.0, 0.0), radius=1.0)
+    p1 = Cylinder(center=(1.0, -0.5, 1.0), axis=(0.0, 0.0, 0.001), radius=0.5)
+    tree = Union(p0, p1)
+    return tree
+
+
+# case 559, pyvista: wrong topology
+# volume    0.781173352 (true 0.786044225): error -4.871e-03, tessellation -5.040e-03, bound 5.042e-03 -> tessellation
+# area      8.32539082 (true 8.36442256): error -3.903e-02, tessellation -4.705e-02 -> tessellation
+# hausdorff mesh->true 2.842e-03, true->mesh 3.409e-03, tessellation 3.409e-03 -> tessellation
+# topology  1 components, genus 0, watertight True, winding consistent False (true: 1, genus 0) -> wrong
+# verdict   WRONG: topology
+def case_559():
+    p0 = Cone(center=(0.5, 0.25, 0.5), axis=(0.75, 0.0, 0.0), radius=1.0)
+    p1 = Cylinder(center=(1.0, -0.5, 0.5), axis=(0.0, 0.0, 0.001), radius=0.5)
+    tree = Union(p0, p1)
+    return tree
+
+
+# case 560, pyvista: wrong topology
+# volume    0.781764176 (true 0.785660015): error -3.896e-03, tessellation -5.041e-03, bound 5.042e-03 -> tessellation
+# area      7.54815175 (true 7.59271239): error -4.456e-02, tessellation -4.587e-02 -> tessellation
+# hausdorff mesh->true 2.866e-03, true->mesh 4.168e-03, tessellation 4.168e-03 -> tessellation
+# topology  1 components, genus 2, watertight False, winding consistent False (true: 1, genus 0) -> wrong
+# verdict   WRONG: topology
+def case_560():
+    p0 = Cone(center=(0.5, 0.25, 0.5), axis=(0.75, 0.0, 0.0), radius=1.0)
+    p1 = Cylinder(center=(0.5, 0.25, 0.5), axis=(0.0, 0.0, 0.001), radius=0.5)
+    tree = Union(p0, p1)
+    return tree
+
+
+# case 561, pyvista: wrong volume, area, hausdorff, topology
+# volume    0 (true 0.197134939): error -1.971e-01, tessellation -1.264e-03, bound 1.264e-03 -> wrong
+# area      0 (true 3.93013241): error -3.930e+00, tessellation -2.141e-02 -> wrong
+# hausdorff mesh->true inf, true->mesh inf, tessellation 2.408e-03 -> wrong
+# topology  0 components, genus 0, watertight True, winding consistent True (true: 2, genus 0) -> wrong
+# verdict   WRONG: volume, area, hausdorff, topology
+def case_561():
+    p0 = Cylinder(center=(0.5, 0.25, 0.5), axis=(0.0, 0.0, 0.001), radius=0.5)
+    p1 = Cylinder(center=(0.75, 1.0, 0.0), axis=(0.25, 0.0, 0.0), radius=0.5)
+    tree = Union(p0, p1)
+    return tree
+
+
+# case 562, pyvista: wrong volume, area, hausdorff, topology
+# volume    0 (true 0.196887735): error -1.969e-01, tessellation -1.264e-03, bound 1.264e-03 -> wrong
+# area      0 (true 3.43295087): error -3.433e+00, tessellation -1.989e-02 -> wrong
+# hausdorff mesh->true inf, true->mesh inf, tessellation 2.408e-03 -> wrong
+# topology  0 components, genus 0, watertight True, winding consistent True (true: 1, genus 0) -> wrong
+# verdict   WRONG: volume, area, hausdorff, topology
+def case_562():
+    p0 = Cylinder(center=(0.5, 0.25, 0.5), axis=(0.0, 0.0, 0.001), radius=0.5)
+    p1 = Cylinder(center=(0.5, 0.25, 0.5), axis=(0.25, 0.0, 0.0), radius=0.5)
+    tree = Union(p0, p1)
+    return tree
+
+
+# case 563, pyvista: wrong topology
+# volume    0.195910671 (true 0.196948754): error -1.038e-03, tessellation -1.264e-03, bound 1.264e-03 -> tessellation
+# area      3.53597186 (true 3.55579128): error -1.982e-02, tessellation -2.063e-02 -> tessellation
+# hausdorff mesh->true 2.408e-03, true->mesh 2.408e-03, tessellation 2.408e-03 -> tessellation
+# topology  1 components, genus 0.5, watertight False, winding consistent False (true: 1, genus 0) -> wrong
+# verdict   WRONG: topology
+def case_563():
+    p0 = Cylinder(center=(0.5, 0.25, 0.5), axis=(0.0, 0.0, 0.001), radius=0.5)
+    p1 = Cylinder(center=(0.5, 0.5, 0.5), axis=(0.25, 0.0, 0.0), radius=0.5)
+    tree = Union(p0, p1)
+    return tree
+
+
+# case 564, pyvista: wrong volume, area, hausdorff, topology
+# volume    0 (true 7.34738191): error -7.347e+00, tessellation -1.721e-01, bound 1.721e-01 -> wrong
+# area      0 (true 37.8359406): error -3.784e+01, tessellation -2.384e-01 -> wrong
+# hausdorff mesh->true inf, true->mesh inf, tessellation 8.937e-03 -> wrong
+# topology  0 components, genus 0, watertight True, winding consistent True (true: 2, genus 1) -> wrong
+# verdict   WRONG: volume, area, hausdorff, topology
+def case_564():
+    p0 = Cone(center=(-0.25, -0.75, 0.0), axis=(0.0, 0.0, 1.75), radius=0.75)
+    p1 = Torus(center=(1.0, 1.0, 0.5), axis=(1.0, 0.0, 0.0), major=2.0, minor=0.4)
+    tree = Union(p0, p1)
+    return tree
+
+
+# case 565, pyvista: wrong topology
+# volume    12.2982237 (true 12.6272888): error -3.291e-01, tessellation -3.294e-01, bound 3.310e-01 -> tessellation
+# area      62.4144967 (true 62.7932016): error -3.787e-01, tessellation -3.790e-01 -> tessellation
+# hausdorff mesh->true 8.938e-03, true->mesh 8.937e-03, tessellation 8.937e-03 -> tessellation
+# topology  1 components, genus 2.5, watertight False, winding consistent False (true: 1, genus 2) -> wrong
+# verdict   WRONG: topology
+def case_565():
+    p0 = Torus(center=(-0.25, -0.75, 0.0), axis=(0.0, 0.0, 1.0), major=2.0, minor=0.4)
+    p1 = Torus(center=(1.0, 1.0, 0.5), axis=(1.0, 0.0, 0.0), major=2.0, minor=0.4)
+    tree = Union(p0, p1)
+    return tree
+
+
+# case 569, pyvista: wrong volume, area, hausdorff, topology
+# volume    0 (true 6.41524286): error -6.415e+00, tessellation -1.681e-01, bound 1.681e-01 -> wrong
+# area      0 (true 33.556655): error -3.356e+01, tessellation -2.301e-01 -> wrong
+# hausdorff mesh->true inf, true->mesh inf, tessellation 8.938e-03 -> wrong
+# topology  0 components, genus 0, watertight True, winding consistent True (true: 2, genus 2) -> wrong
+# verdict   WRONG: volume, area, hausdorff, topology
+def case_569():
+    p0 = Torus(center=(-0.25, -0.75, 0.5), axis=(0.0, 0.0, 1.0), major=2.0, minor=0.4)
+    p1 = Torus(center=(-0.25, -0.75, 0.5), axis=(0.0, 0.0, 1.0), major=0.5, minor=0.1)
+    tree = Union(p0, p1)
+    return tree
+
+
+# case 576: over 120 s, skipped
+def case_576():
+    p0 = Ellipsoid(center=(0.5, -0.25, -1.0), radii=(1.0, 1.0, 2.0))
+    p1 = Sphere(center=(0.0, 0.75, -1.0), radius=1.0)
+    n2 = Difference(p0, p1)
+    p3 = Torus(center=(1.0, 0.5, -0.75), axis=(0.0, 0.0, 1.0), major=2.25, minor=0.7875)
+    p4 = Cylinder(center=(0.25, -0.25, -0.75), axis=(0.0, 0.0, 1.75), radius=0.75)
+    n5 = Difference(p3, p4)
+    p6 = Box(center=(1.149519052838329, -0.49102540378443876, -1.0), size=(1.5, 0.25, 1.5), orientation=((0.8660254037844387, -0.49999999999999994, 0.0), (0.49999999999999994, 0.8660254037844387, 0.0), (0.0, 0.0, 1.0)))
+    n7 = Difference(n5, p6)
+    tree = Intersection(n2, n7)
+    return tree
+
+
+# case 577, pyvista: wrong area, hausdorff, topology
+# volume    0.189165043 (true 0.235571571): error -4.641e-02, tessellation -1.592e-02, bound 1.457e+00 -> tessellation
+# area      4.66894657 (true 3.49227424): error +1.177e+00, tessellation -1.210e-01 -> wrong
+# hausdorff mesh->true 1.627e+00, true->mesh 2.808e-02, tessellation 2.808e-02 -> wrong
+# topology  6 components, genus 4.5, watertight False, winding consistent False (true: 1, genus 0) -> wrong
+# verdict   WRONG: area, hausdorff, topology
+def case_577():
+    p0 = Ellipsoid(center=(0.5, -0.25, -1.0), radii=(1.0, 1.0, 2.0))
+    p1 = Sphere(center=(0.0, 0.75, -1.0), radius=1.75)
+    n2 = Difference(p0, p1)
+    p3 = Torus(center=(1.0, 0.5, -0.75), axis=(0.0, 0.0, 1.0), major=2.25, minor=0.7875)
+    p4 = Cylinder(center=(0.25, -0.25, -0.75), axis=(0.0, 0.0, 1.75), radius=0.75)
+    n5 = Difference(p3, p4)
+    p6 = Box(center=(1.149519052838329, -0.49102540378443876, -1.0), size=(1.5, 0.25, 1.5), orientation=((0.8660254037844387, -0.49999999999999994, 0.0), (0.49999999999999994, 0.8660254037844387, 0.0), (0.0, 0.0, 1.0)))
+    n7 = Difference(n5, p6)
+    tree = Intersection(n2, n7)
+    return tree
+
+
+# case 582, trimesh-manifold: raised ValueError: Not all meshes are volumes!
+def case_582():
+    p0 = Sphere(center=(0.0, 0.75, -1.0), radius=1.75)
+    p1 = Sphere(center=(0.0, 0.75, -1.0), radius=1.75)
+    n2 = Difference(p0, p1)
+    p3 = Torus(center=(1.0, 0.5, -0.75), axis=(0.0, 0.0, 1.0), major=2.25, minor=0.7875)
+    p4 = Cylinder(center=(0.25, -0.25, -0.75), axis=(0.0, 0.0, 1.75), radius=0.75)
+    n5 = Difference(p3, p4)
+    p6 = Torus(center=(1.0, 0.5, -0.75), axis=(0.0, 0.0, 1.0), major=2.25, minor=0.7875)
+    n7 = Difference(n5, p6)
+    tree = Difference(n2, n7)
+    return tree
+
+
+# case 583, pyvista: wrong volume, area, hausdorff, topology
+# volume    0 (true 0.724942769): error -7.249e-01, tessellation -1.076e-02, bound 1.702e-02 -> wrong
+# area      0 (true 13.6058407): error -1.361e+01, tessellation -7.072e-02 -> wrong
+# hausdorff mesh->true inf, true->mesh inf, tessellation 5.290e-03 -> wrong
+# topology  0 components, genus 0, watertight True, winding consistent True (true: 1, genus 2) -> wrong
+# verdict   WRONG: volume, area, hausdorff, topology
+def case_583():
+    p0 = Cone(center=(-0.75, 0.0, -0.75), axis=(0.25, 0.0, 0.0), radius=1.25)
+    p1 = Torus(center=(-0.25, 0.0, -0.25), axis=(0.5773502691896258, 0.5773502691896258, 0.5773502691896258), major=0.75, minor=0.15000000000000002)
+    n2 = Union(p0, p1)
+    p3 = Truncus(center=(0.5, 1.0, 0.75), axis=(0.5, 0.0, 0.0), r1=0.75, r2=0.75)
+    tree = Difference(n2, p3)
+    return tree
+
+
+# case 584, pyvista: wrong volume, area, hausdorff, topology
+# volume    0 (true 0.721457158): error -7.215e-01, tessellation -1.074e-02, bound 1.702e-02 -> wrong
+# area      0 (true 13.727371): error -1.373e+01, tessellation -7.434e-02 -> wrong
+# hausdorff mesh->true inf, true->mesh inf, tessellation 4.089e-03 -> wrong
+# topology  0 components, genus 0, watertight True, winding consistent True (true: 1, genus 2) -> wrong
+# verdict   WRONG: volume, area, hausdorff, topology
+def case_584():
+    p0 = Cone(center=(-0.75, 0.5, -0.75), axis=(0.25, 0.0, 0.0), radius=1.25)
+    p1 = Torus(center=(-0.25, 0.0, -0.25), axis=(0.5773502691896258, 0.5773502691896258, 0.5773502691896258), major=0.75, minor=0.15000000000000002)
+    n2 = Union(p0, p1)
+    p3 = Truncus(center=(0.5, 1.0, 0.75), axis=(0.5, 0.0, 0.0), r1=0.75, r2=0.75)
+    tree = Difference(n2, p3)
+    return tree
+
+
+# case 585, pyvista: wrong volume, area, hausdorff, topology
+# volume    0 (true 1.01598147): error -1.016e+00, tessellation -1.263e-02, bound 1.324e-02 -> wrong
+# area      0 (true 17.6183619): error -1.762e+01, tessellation -9.615e-02 -> wrong
+# hausdorff mesh->true inf, true->mesh inf, tessellation 4.398e-03 -> wrong
+# topology  0 components, genus 0, watertight True, winding consistent True (true: 2, genus 2) -> wrong
+# verdict   WRONG: volume, area, hausdorff, topology
+def case_585():
+    p0 = Cone(center=(-0.75, 0.5, -0.75), axis=(0.25, 0.0, 0.0), radius=1.25)
+    p1 = Torus(center=(-0.25, 0.0, -0.25), axis=(0.5773502691896258, 0.5773502691896258, 0.5773502691896258), major=0.75, minor=0.15000000000000002)
+    n2 = Union(p0, p1)
+    p3 = Cone(center=(0.5, 1.0, 0.75), axis=(0.5, 0.0, 0.0), radius=0.75)
+    tree = Union(n2, p3)
+    return tree
+
+
+# case 586, pyvista: wrong volume, area, hausdorff, topology
+# volume    0 (true 1.41060996): error -1.411e+00, tessellation -1.487e-02, bound 1.586e-02 -> wrong
+# area      0 (true 17.8453709): error -1.785e+01, tessellation -1.019e-01 -> wrong
+# hausdorff mesh->true inf, true->mesh inf, tessellation 3.313e-03 -> wrong
+# topology  0 components, genus 0, watertight True, winding consistent True (true: 2, genus 2) -> wrong
+# verdict   WRONG: volume, area, hausdorff, topology
+def case_586():
+    p0 = Cone(center=(-0.75, 0.5, -0.75), axis=(0.5, 0.0, 0.0), radius=1.25)
+    p1 = Torus(center=(-0.25, 0.0, -0.25), axis=(0.5773502691896258, 0.5773502691896258, 0.5773502691896258), major=0.75, minor=0.15000000000000002)
+    n2 = Union(p0, p1)
+    p3 = Cone(center=(0.5, 1.0, 0.75), axis=(0.5, 0.0, 0.0), radius=0.75)
+    tree = Union(n2, p3)
+    return tree
+
+
+# case 587: over 120 s, skipped
+def case_587():
+    p0 = Cone(center=(-0.75, 0.5, -0.75), axis=(0.5, 0.0, 0.0), radius=1.25)
+    p1 = Torus(center=(-0.25, 0.0, -0.25), axis=(0.5773502691896258, 0.5773502691896258, 0.5773502691896258), major=0.75, minor=0.15000000000000002)
+    n2 = Union(p0, p1)
+    p3 = Torus(center=(-0.25, 0.0, -0.25), axis=(0.5773502691896258, 0.5773502691896258, 0.5773502691896258), major=0.75, minor=0.15000000000000002)
+    tree = Union(n2, p3)
+    return tree
+
+
+# case 588, pyvista: wrong volume, area, hausdorff, topology
+# volume    0 (true 0.447297322): error -4.473e-01, tessellation -9.087e-03, bound 1.829e-02 -> wrong
+# area      0 (true 5.9492388): error -5.949e+00, tessellation -3.361e-02 -> wrong
+# hausdorff mesh->true inf, true->mesh inf, tessellation 3.352e-03 -> wrong
+# topology  0 components, genus 0, watertight True, winding consistent True (true: 1, genus 1) -> wrong
+# verdict   WRONG: volume, area, hausdorff, topology
+def case_588():
+    p0 = Cone(center=(-0.75, 0.5, -0.75), axis=(0.5, 0.0, 0.0), radius=0.5)
+    p1 = Torus(center=(-0.25, 0.0, -0.25), axis=(0.5773502691896258, 0.5773502691896258, 0.5773502691896258), major=0.75, minor=0.15000000000000002)
+    n2 = Union(p0, p1)
+    p3 = Torus(center=(-0.25, 0.0, -0.25), axis=(0.5773502691896258, 0.5773502691896258, 0.5773502691896258), major=0.75, minor=0.15000000000000002)
+    tree = Union(n2, p3)
+    return tree
+
+
+# case 590, pyvista: wrong area, hausdorff, topology
+# volume    0 (true 0.000785398163): error -7.854e-04, tessellation -5.037e-06, bound 1.099e+00 -> tessellation
+# area      0 (true 1.57393792): error -1.574e+00, tessellation -1.008e-02 -> wrong
+# hausdorff mesh->true inf, true->mesh inf, tessellation 1.773e-03 -> wrong
+# topology  0 components, genus 0, watertight True, winding consistent True (true: 1, genus 0) -> wrong
+# verdict   WRONG: area, hausdorff, topology
+def case_590():
+    p0 = Cylinder(center=(0.25, 0.75, -0.5), axis=(0.0, 0.0, 0.001), radius=0.5)
+    p1 = Sphere(center=(0.75, -0.75, -0.25), radius=1.75)
+    p2 = Sphere(center=(-0.25, 1.0, 1.0), radius=1.5)
+    p3 = Torus(center=(-1.0, -1.0, 0.75), axis=(0.0, 1.0, 0.0), major=1.25, minor=0.625)
+    n4 = Union(p2, p3)
+    n5 = Union(p1, n4)
+    p6 = Torus(center=(0.25, -1.0, 0.5), axis=(0.5773502691896258, 0.5773502691896258, 0.5773502691896258), major=0.75, minor=0.15000000000000002)
+    n7 = Intersection(n5, p6)
+    tree = Difference(p0, n7)
+    return tree
+
+
+# case 591, pyvista: wrong area, hausdorff, topology
+# volume    0 (true 0.000785398163): error -7.854e-04, tessellation -5.037e-06, bound 1.099e+00 -> tessellation
+# area      0 (true 1.57393792): error -1.574e+00, tessellation -1.008e-02 -> wrong
+# hausdorff mesh->true inf, true->mesh inf, tessellation 2.157e-03 -> wrong
+# topology  0 components, genus 0, watertight True, winding consistent True (true: 1, genus 0) -> wrong
+# verdict   WRONG: area, hausdorff, topology
+def case_591():
+    p0 = Cylinder(center=(0.25, 0.75, -0.5), axis=(0.0, 0.0, 0.001), radius=0.5)
+    p1 = Sphere(center=(0.75, -0.75, -0.25), radius=1.75)
+    p2 = Sphere(center=(-0.25, 1.0, 1.0), radius=1.5)
+    p3 = Torus(center=(-1.0, -1.0, 0.75), axis=(0.0, 1.0, 0.0), major=1.25, minor=0.625)
+    n4 = Union(p2, p3)
+    n5 = Union(p1, n4)
+    p6 = Torus(center=(0.25, -1.0, 0.5), axis=(0.0, 1.0, 0.0), major=0.75, minor=0.15000000000000002)
+    n7 = Intersection(n5, p6)
+    tree = Difference(p0, n7)
+    return tree
+
+
+# case 592: over 120 s, skipped
+def case_592():
+    p0 = Cylinder(center=(0.25, 0.75, -0.5), axis=(0.0, 0.0, 0.001), radius=0.5)
+    p1 = Sphere(center=(0.75, -0.75, -0.25), radius=1.75)
+    p2 = Sphere(center=(-0.25, 1.0, 1.0), radius=1.5)
+    p3 = Torus(center=(-1.0, -1.0, 0.75), axis=(0.0, 1.0, 0.0), major=1.25, minor=0.625)
+    n4 = Union(p2, p3)
+    n5 = Union(p1, n4)
+    p6 = Torus(center=(-1.0, -1.0, 0.75), axis=(0.0, 1.0, 0.0), major=1.25, minor=0.625)
+    n7 = Intersection(n5, p6)
+    tree = Difference(p0, n7)
+    return tree
+
+
+# case 593, pyvista: wrong area, hausdorff, topology
+# volume    0 (true 0.000785398163): error -7.854e-04, tessellation -5.037e-06, bound 1.363e+00 -> tessellation
+# area      0 (true 1.57393792): error -1.574e+00, tessellation -1.008e-02 -> wrong
+# hausdorff mesh->true inf, true->mesh inf, tessellation 2.164e-03 -> wrong
+# topology  0 components, genus 0, watertight True, winding consistent True (true: 1, genus 0) -> wrong
+# verdict   WRONG: area, hausdorff, topology
+def case_593():
+    p0 = Cylinder(center=(0.25, 0.75, -0.5), axis=(0.0, 0.0, 0.001), radius=0.5)
+    p1 = Sphere(center=(0.75, -0.75, -0.25), radius=1.75)
+    p2 = Sphere(center=(-0.25, 1.0, 1.0), radius=1.5)
+    p3 = Torus(center=(-1.0, -1.0, 0.75), axis=(0.0, 1.0, 0.0), major=1.25, minor=0.625)
+    n4 = Union(p2, p3)
+    n5 = Union(p1, n4)
+    p6 = Torus(center=(-1.0, -1.0, 1.0), axis=(0.0, 1.0, 0.0), major=1.25, minor=0.625)
+    n7 = Intersection(n5, p6)
+    tree = Difference(p0, n7)
+    return tree
+
+
+# case 595, pyvista: wrong area, hausdorff, topology
+# volume    0 (true 0.000785398163): error -7.854e-04, tessellation -5.037e-06, bound 7.110e-01 -> tessellation
+# area      0 (true 1.57393792): error -1.574e+00, tessellation -1.008e-02 -> wrong
+# hausdorff mesh->true inf, true->mesh inf, tessellation 2.020e-03 -> wrong
+# topology  0 components, genus 0, watertight True, winding consistent True (true: 1, genus 0) -> wrong
+# verdict   WRONG: area, hausdorff, topology
+def case_595():
+    p0 = Cylinder(center=(0.25, 0.75, -0.5), axis=(0.0, 0.0, 0.001), radius=0.5)
+    p1 = Sphere(center=(-0.25, 1.0, 1.0), radius=1.5)
+    p2 = Torus(center=(-0.25, 1.0, 1.0), axis=(0.0, 0.0, 1.0), major=1.75, minor=0.35000000000000003)
+    p3 = Sphere(center=(0.75, 0.25, 1.0), radius=0.5)
+    n4 = Union(p2, p3)
+    n5 = Union(p1, n4)
+    p6 = Torus(center=(-1.0, -1.0, 1.0), axis=(0.0, 1.0, 0.0), major=1.25, minor=0.625)
+    n7 = Intersection(n5, p6)
+    tree = Difference(p0, n7)
+    return tree
+
+
+# case 598, pyvista: wrong volume, area, hausdorff, topology
+# volume    0 (true 3.31798006): error -3.318e+00, tessellation -2.422e-02, bound 2.317e-01 -> wrong
+# area      0 (true 22.0443066): error -2.204e+01, tessellation -1.192e-01 -> wrong
+# hausdorff mesh->true inf, true->mesh inf, tessellation 1.143e-02 -> wrong
+# topology  0 components, genus 0, watertight True, winding consistent True (true: 1, genus 1) -> wrong
+# verdict   WRONG: volume, area, hausdorff, topology
+def case_598():
+    p0 = Cylinder(center=(0.25, 0.25, -0.5), axis=(0.25, 0.0, 0.0), radius=1.25)
+    p1 = Sphere(center=(0.0, -0.75, -0.75), radius=1.0)
+    n2 = Intersection(p0, p1)
+    p3 = Cone(center=(-0.25, 0.0, 0.25), axis=(1.75, 1.75, 1.75), radius=1.75)
+    p4 = Truncus(center=(0.0, -0.5, -0.5), axis=(0.3, -0.5, 1.0), r1=1.5, r2=0.25)
+    n5 = Difference(p3, p4)
+    p6 = Truncus(center=(0.75, 0.0, 0.25), axis=(0.0, 1.0, 0.0), r1=1.0, r2=2.0)
+    n7 = Intersection(n5, p6)
+    tree = Union(n2, n7)
+    return tree
+
+
+# case 599: over 120 s, skipped
+def case_599():
+    p0 = Cylinder(center=(0.25, 0.25, -0.5), axis=(0.25, 0.0, 0.0), radius=1.25)
+    p1 = Sphere(center=(0.0, -0.75, 0.0), radius=1.0)
+    n2 = Intersection(p0, p1)
+    p3 = Cone(center=(-0.25, 0.0, 0.25), axis=(1.75, 1.75, 1.75), radius=1.75)
+    p4 = Truncus(center=(0.0, -0.5, -0.5), axis=(0.3, -0.5, 1.0), r1=1.5, r2=0.25)
+    n5 = Difference(p3, p4)
+    p6 = Truncus(center=(0.75, 0.0, 0.25), axis=(0.0, 1.0, 0.0), r1=1.0, r2=2.0)
+    n7 = Intersection(n5, p6)
+    tree = Union(n2, n7)
+    return tree
+
+
+# case 601: over 120 s, skipped
+def case_601():
+    p0 = Cylinder(center=(0.25, 0.25, -0.5), axis=(0.25, 0.0, 0.0), radius=1.25)
+    p1 = Sphere(center=(0.0, -0.75, 0.0), radius=1.0)
+    n2 = Union(p0, p1)
+    p3 = Cone(center=(-0.25, 0.0, 0.25), axis=(1.75, 1.75, 1.75), radius=1.75)
+    n4 = Union(n2, p3)
+    p5 = Sphere(center=(0.0, -0.5, -0.5), radius=1.0)
+    p6 = Truncus(center=(0.0, 0.25, 1.0), axis=(0.25, 0.25, 0.25), r1=0.25, r2=0.75)
+    n7 = Intersection(p5, p6)
+    tree = Intersection(n4, n7)
+    return tree
+
+
+# case 603: over 120 s, skipped
+def case_603():
+    p0 = Cylinder(center=(0.25, 0.25, -0.5), axis=(0.25, 0.0, 0.0), radius=1.25)
+    p1 = Sphere(center=(0.0, -0.75, 0.0), radius=1.0)
+    n2 = Union(p0, p1)
+    p3 = Cone(center=(-0.25, 0.0, 0.25), axis=(1.75, 1.75, 1.75), radius=1.75)
+    n4 = Union(n2, p3)
+    p5 = Sphere(center=(0.0, -0.5, -0.5), radius=1.0)
+    p6 = Truncus(center=(0.0, -0.75, 0.0), axis=(0.25, 0.25, 0.25), r1=0.25, r2=0.75)
+    n7 = Intersection(p5, p6)
+    tree = Union(n4, n7)
+    return tree
+
+
+# case 605, trimesh-manifold: raised ValueError: Not all meshes are volumes!
+def case_605():
+    p0 = Cone(center=(-0.75, -1.0, 0.25), axis=(0.0, 0.75, 0.0), radius=1.75)
+    p1 = Box(center=(-0.25, -0.25, -0.5), size=(1.0, 1.0, 0.25))
+    p2 = Box(center=(-0.25, -0.25, -0.5), size=(1.0, 1.0, 0.25))
+    n3 = Difference(p1, p2)
+    tree = Intersection(p0, n3)
+    return tree
+
+
+# case 606: over 120 s, skipped
+def case_606():
+    p0 = Cone(center=(-0.75, -1.0, 0.25), axis=(0.0, 0.75, 0.0), radius=1.75)
+    p1 = Box(center=(-0.25, -0.25, -0.5), size=(1.0, 1.0, 0.25))
+    p2 = Box(center=(0.5, -0.25, -0.5), size=(1.0, 1.0, 0.25))
+    n3 = Difference(p1, p2)
+    tree = Intersection(p0, n3)
+    return tree
+
+
+# case 607, trimesh-manifold: raised ValueError: Not all meshes are volumes!
+def case_607():
+    p0 = Cone(center=(-0.75, -1.0, 0.25), axis=(0.0, 0.75, 0.0), radius=1.75)
+    p1 = Box(center=(0.5, -0.25, -0.5), size=(1.0, 1.0, 0.25))
+    p2 = Box(center=(0.5, -0.25, -0.5), size=(1.0, 1.0, 0.25))
+    n3 = Difference(p1, p2)
+    tree = Intersection(p0, n3)
+    return tree
+
+
+# case 608, trimesh-manifold: wrong topology
+# volume    9.82681689e-11 (true 0): error +9.827e-11, tessellation +0.000e+00, bound 3.085e-02 -> exact
+# area      0.0511328632 (true 0): error +5.113e-02, tessellation +3.904e-02 -> tessellation
+# hausdorff mesh->true 3.299e-03, true->mesh 0.000e+00, tessellation 3.215e-03 -> tessellation
+# topology  4 components, genus 1.5, watertight False, winding consistent False (true: 0, genus 0) -> wrong
+# verdict   WRONG: topology
+def case_608():
+    p0 = Cone(center=(-0.75, -1.0, 0.25), axis=(0.0, 0.75, 0.0), radius=1.75)
+    p1 = Box(center=(0.5, -0.25, -0.5), size=(1.0, 1.0, 0.25))
+    p2 = Cone(center=(-0.75, -1.0, 0.25), axis=(0.0, 0.75, 0.0), radius=1.75)
+    n3 = Difference(p1, p2)
+    tree = Intersection(p0, n3)
+    return tree
+
+
+# case 609: over 120 s, skipped
+def case_609():
+    p0 = Cone(center=(-0.75, -1.0, 0.25), axis=(0.0, 0.75, 0.0), radius=1.75)
+    p1 = Box(center=(1.0, -0.75, 0.25), size=(1.0, 1.0, 0.25))
+    p2 = Cone(center=(-0.75, -1.0, 0.25), axis=(0.0, 0.75, 0.0), radius=1.75)
+    n3 = Difference(p1, p2)
+    tree = Intersection(p0, n3)
+    return tree
+
+
+# case 610: over 120 s, skipped
+def case_610():
+    p0 = Cone(center=(-0.75, -1.0, 0.25), axis=(0.0, 0.75, 0.0), radius=1.75)
+    p1 = Box(center=(1.0, -0.75, 0.25), size=(1.0, 1.0, 0.25))
+    p2 = Cone(center=(-0.75, -1.0, 0.25), axis=(0.0, 0.75, 0.0), radius=1.75)
+    n3 = Intersection(p1, p2)
+    tree = Intersection(p0, n3)
+    return tree
+
+
+# case 611, pyvista: wrong hausdorff, topology
+# volume    8.44667499 (true 8.42161038): error +2.506e-02, tessellation -2.929e-02, bound 1.548e-01 -> tessellation
+# area      32.8062457 (true 32.8250704): error -1.882e-02, tessellation -1.692e-01 -> tessellation
+# hausdorff mesh->true 4.081e-02, true->mesh 1.278e-02, tessellation 1.278e-02 -> wrong
+# topology  1 components, genus 0.5, watertight False, winding consistent False (true: 1, genus 0) -> wrong
+# verdict   WRONG: hausdorff, topology
+def case_611():
+    p0 = Truncus(center=(-1.0, -0.25, 1.0), axis=(0.44999999999999996, -0.75, 1.5), r1=0.5, r2=2.0)
+    p1 = Sphere(center=(-1.0, 0.5, 0.0), radius=1.0)
+    tree = Difference(p0, p1)
+    return tree
+
+
+# case 614, pyvista: wrong topology
+# volume    1.02978279 (true 1.02938211): error +4.007e-04, tessellation -2.227e-03, bound 1.004e-01 -> tessellation
+# area      7.53683193 (true 7.56364918): error -2.682e-02, tessellation -4.154e-02 -> tessellation
+# hausdorff mesh->true 1.252e-02, true->mesh 1.178e-02, tessellation 1.178e-02 -> tessellation
+# topology  1 components, genus 0, watertight True, winding consistent False (true: 1, genus 0) -> wrong
+# verdict   WRONG: topology
+def case_614():
+    p0 = Truncus(center=(-1.0, -0.25, 1.0), axis=(0.15, -0.25, 0.5), r1=0.5, r2=1.0)
+    p1 = Sphere(center=(-1.0, 0.5, 0.0), radius=1.0)
+    tree = Difference(p0, p1)
+    return tree
+
+
+# case 616, pyvista: wrong hausdorff, topology
+# volume    0.00789989068 (true 0.00486793696): error +3.032e-03, tessellation +1.080e-03, bound 1.004e-01 -> tessellation
+# area      0.891765348 (true 0.803144074): error +8.862e-02, tessellation +8.180e-02 -> tessellation
+# hausdorff mesh->true 1.992e-02, true->mesh 1.193e-02, tessellation 1.205e-02 -> wrong
+# topology  1 components, genus 2, watertight False, winding consistent False (true: 1, genus 1) -> wrong
+# verdict   WRONG: hausdorff, topology
+def case_616():
+    p0 = Truncus(center=(-1.0, -0.25, 1.0), axis=(0.15, -0.25, 0.5), r1=0.5, r2=1.0)
+    p1 = Sphere(center=(-1.0, -0.25, 1.0), radius=1.0)
+    tree = Difference(p0, p1)
+    return tree
+
+
+# case 617, pyvista: wrong hausdorff, topology
+# volume    0.0062614087 (true 0.00352870091): error +2.733e-03, tessellation +7.803e-04, bound 9.867e-02 -> tessellation
+# area      0.784019158 (true 0.706120059): error +7.790e-02, tessellation +7.107e-02 -> tessellation
+# hausdorff mesh->true 1.826e-02, true->mesh 1.162e-02, tessellation 1.205e-02 -> wrong
+# topology  1 components, genus 2, watertight False, winding consistent False (true: 1, genus 1) -> wrong
+# verdict   WRONG: hausdorff, topology
+def case_617():
+    p0 = Truncus(center=(-1.0, -0.25, 1.0), axis=(0.15, -0.25, 0.5), r1=0.25, r2=1.0)
+    p1 = Sphere(center=(-1.0, -0.25, 1.0), radius=1.0)
+    tree = Difference(p0, p1)
+    return tree
+
+
+# case 618: over 120 s, skipped
+def case_618():
+    p0 = Sphere(center=(0.0, 1.0, 1.0), radius=1.0)
+    p1 = Cylinder(center=(1.0, 0.5, 0.25), axis=(0.15, -0.25, 0.5), radius=2.0)
+    p2 = Sphere(center=(-1.0, 0.75, -1.0), radius=1.75)
+    p3 = Cylinder(center=(-1.0, 1.0, 0.5), axis=(0.0, 0.0, 1.0), radius=1.5)
+    p4 = Ellipsoid(center=(0.0, 1.0, 0.75), radii=(0.25, 0.25, 0.5))
+    n5 = Union(p3, p4)
+    n6 = Intersection(p2, n5)
+    n7 = Intersection(p1, n6)
+    tree = Intersection(p0, n7)
+    return tree
+
+
+# case 619, pyvista: wrong volume, area, hausdorff, topology
+# volume    2.82902187 (true 0.115950596): error +2.713e+00, tessellation -1.365e-02, bound 6.987e-01 -> wrong
+# area      6.98598032 (true 1.97698342): error +5.009e+00, tessellation -1.385e-01 -> wrong
+# hausdorff mesh->true 1.748e+00, true->mesh 2.443e-02, tessellation 2.443e-02 -> wrong
+# topology  10 components, genus 8.5, watertight False, winding consistent False (true: 1, genus 0, from mesh) -> wrong
+# verdict   WRONG: volume, area, hausdorff, topology
+def case_619():
+    p0 = Sphere(center=(0.0, 1.0, 1.0), radius=1.0)
+    p1 = Cylinder(center=(1.0, 0.5, 0.25), axis=(0.15, -0.25, 0.5), radius=2.0)
+    p2 = Sphere(center=(-1.0, 0.75, -1.0), radius=1.75)
+    p3 = Cylinder(center=(-1.0, 1.0, 0.5), axis=(0.0, 0.0, 1.0), radius=1.5)
+    p4 = Ellipsoid(center=(0.0, 1.0, 0.75), radii=(0.25, 1.0, 0.5))
+    n5 = Union(p3, p4)
+    n6 = Intersection(p2, n5)
+    n7 = Intersection(p1, n6)
+    tree = Intersection(p0, n7)
+    return tree
+
+
+# case 620, pyvista: wrong volume, area, hausdorff, topology
+# volume    1.39828131 (true 0.0180427532): error +1.380e+00, tessellation -3.496e-03, bound 7.456e-01 -> wrong
+# area      7.74034715 (true 0.476188027): error +7.264e+00, tessellation -5.836e-02 -> wrong
+# hausdorff mesh->true 2.475e+00, true->mesh 2.157e-02, tessellation 2.157e-02 -> wrong
+# topology  11 components, genus 9.5, watertight False, winding consistent False (true: 1, genus 0) -> wrong
+# verdict   WRONG: volume, area, hausdorff, topology
+def case_620():
+    p0 = Sphere(center=(0.0, 1.0, 1.0), radius=1.0)
+    p1 = Ellipsoid(center=(1.0, 0.5, 0.25), radii=(1.0, 0.5, 2.0))
+    p2 = Sphere(center=(-1.0, 0.75, -1.0), radius=1.75)
+    p3 = Cylinder(center=(-1.0, 1.0, 0.5), axis=(0.0, 0.0, 1.0), radius=1.5)
+    p4 = Ellipsoid(center=(0.0, 1.0, 0.75), radii=(0.25, 1.0, 0.5))
+    n5 = Union(p3, p4)
+    n6 = Intersection(p2, n5)
+    n7 = Intersection(p1, n6)
+    tree = Intersection(p0, n7)
+    return tree
+
+
+# case 621, pyvista: wrong volume, area, hausdorff, topology
+# volume    1.39828131 (true 0.018042848): error +1.380e+00, tessellation -3.497e-03, bound 7.369e-01 -> wrong
+# area      7.90326743 (true 0.476188432): error +7.427e+00, tessellation -5.836e-02 -> wrong
+# hausdorff mesh->true 2.412e+00, true->mesh 2.203e-02, tessellation 2.203e-02 -> wrong
+# topology  11 components, genus 9, watertight False, winding consistent False (true: 1, genus 0, from mesh) -> wrong
+# verdict   WRONG: volume, area, hausdorff, topology
+def case_621():
+    p0 = Sphere(center=(0.0, 1.0, 1.0), radius=1.0)
+    p1 = Ellipsoid(center=(1.0, 0.5, 0.25), radii=(1.0, 0.5, 2.0))
+    p2 = Sphere(center=(-1.0, 0.75, -1.0), radius=1.75)
+    p3 = Cylinder(center=(-1.0, 1.0, 0.5), axis=(0.0, 0.0, 1.0), radius=1.5)
+    p4 = Ellipsoid(center=(0.0, 1.0, 0.75), radii=(0.25, 0.25, 0.5))
+    n5 = Union(p3, p4)
+    n6 = Intersection(p2, n5)
+    n7 = Intersection(p1, n6)
+    tree = Intersection(p0, n7)
+    return tree
+
+
+# case 622, pyvista: wrong topology
+# volume    0.978612778 (true 1.04168606): error -6.307e-02, tessellation -6.302e-02, bound 7.369e-01 -> tessellation
+# area      7.47238885 (true 7.69289811): error -2.205e-01, tessellation -2.277e-01 -> tessellation
+# hausdorff mesh->true 3.290e-02, true->mesh 2.274e-02, tessellation 2.274e-02 -> tessellation
+# topology  3 components, genus 2.5, watertight False, winding consistent False (true: 1, genus 0) -> wrong
+# verdict   WRONG: topology
+def case_622():
+    p0 = Sphere(center=(0.0, 1.0, 1.0), radius=1.0)
+    p1 = Ellipsoid(center=(1.0, 0.5, 0.25), radii=(1.0, 0.5, 2.0))
+    p2 = Sphere(center=(-1.0, 0.75, -1.0), radius=1.75)
+    p3 = Cylinder(center=(-1.0, 1.0, 0.5), axis=(0.0, 0.0, 1.0), radius=1.5)
+    p4 = Ellipsoid(center=(0.0, 1.0, 0.75), radii=(0.25, 0.25, 0.5))
+    n5 = Union(p3, p4)
+    n6 = Intersection(p2, n5)
+    n7 = Union(p1, n6)
+    tree = Intersection(p0, n7)
+    return tree
+
+
+# case 623, pyvista: wrong hausdorff, topology
+# volume    1.43773369 (true 1.5049302): error -6.720e-02, tessellation -6.427e-02, bound 7.369e-01 -> tessellation
+# area      9.53384339 (true 9.69401538): error -1.602e-01, tessellation -1.913e-01 -> tessellation
+# hausdorff mesh->true 6.239e-02, true->mesh 2.299e-02, tessellation 2.299e-02 -> wrong
+# topology  3 components, genus 5, watertight False, winding consistent False (true: 1, genus 0, from mesh) -> wrong
+# verdict   WRONG: hausdorff, topology
+def case_623():
+    p0 = Sphere(center=(0.0, 1.0, 0.0), radius=1.0)
+    p1 = Ellipsoid(center=(1.0, 0.5, 0.25), radii=(1.0, 0.5, 2.0))
+    p2 = Sphere(center=(-1.0, 0.75, -1.0), radius=1.75)
+    p3 = Cylinder(center=(-1.0, 1.0, 0.5), axis=(0.0, 0.0, 1.0), radius=1.5)
+    p4 = Ellipsoid(center=(0.0, 1.0, 0.75), radii=(0.25, 0.25, 0.5))
+    n5 = Union(p3, p4)
+    n6 = Intersection(p2, n5)
+    n7 = Union(p1, n6)
+    tree = Intersection(p0, n7)
+    return tree
+
+
+# case 628: over 120 s, skipped
+def case_628():
+    p0 = Sphere(center=(1.0, 0.5, -0.75), radius=2.0)
+    p1 = Cylinder(center=(1.0, -1.0, 1.0), axis=(0.0, 1.5, 0.0), radius=1.0)
+    n2 = Intersection(p0, p1)
+    p3 = Cylinder(center=(1.0, -1.0, 1.0), axis=(0.0, 1.5, 0.0), radius=1.0)
+    p4 = Box(center=(-1.0, -1.0, -0.25), size=(1.0, 1.0, 0.0001))
+    n5 = Intersection(p3, p4)
+    tree = Intersection(n2, n5)
+    return tree
+
+
+# case 630: over 120 s, skipped
+def case_630():
+    p0 = Sphere(center=(1.0, 0.5, 0.0), radius=2.0)
+    p1 = Cylinder(center=(1.0, -1.0, 1.0), axis=(0.0, 1.5, 0.0), radius=1.0)
+    n2 = Intersection(p0, p1)
+    p3 = Cylinder(center=(1.0, -1.0, 1.0), axis=(0.0, 1.5, 0.0), radius=1.0)
+    p4 = Cylinder(center=(1.0, -1.0, 1.0), axis=(0.0, 1.5, 0.0), radius=1.0)
+    n5 = Intersection(p3, p4)
+    tree = Intersection(n2, n5)
+    return tree
+
+
+# case 631: over 120 s, skipped
+def case_631():
+    p0 = Sphere(center=(1.0, 0.5, 0.0), radius=2.0)
+    p1 = Cylinder(center=(1.0, -1.0, 1.0), axis=(0.0, 1.5, 0.0), radius=1.0)
+    n2 = Intersection(p0, p1)
+    p3 = Cylinder(center=(0.0, -1.0, 1.0), axis=(0.0, 1.5, 0.0), radius=1.0)
+    p4 = Cylinder(center=(1.0, -1.0, 1.0), axis=(0.0, 1.5, 0.0), radius=1.0)
+    n5 = Intersection(p3, p4)
+    tree = Intersection(n2, n5)
+    return tree
+
+
+# case 632, trimesh-manifold: raised ValueError: Not all meshes are volumes!
+def case_632():
+    p0 = Cylinder(center=(-0.5, 0.0, -0.25), axis=(0.0, 0.0, 0.001), radius=0.5)
+    p1 = Box(center=(-0.25, 0.75, 0.25), size=(1.0, 1.0, 0.0001))
+    p2 = Cone(center=(0.5, 0.75, 1.0), axis=(0.25, 0.25, 0.25), radius=0.75)
+    n3 = Intersection(p1, p2)
+    n4 = Union(p0, n3)
+    p5 = Box(center=(0.17677669529663698, 1.2374368670764582, 0.0), size=(0.5, 2.0, 0.75), orientation=((0.7071067811865476, -0.7071067811865475, 0.0), (0.7071067811865475, 0.7071067811865476, 0.0), (0.0, 0.0, 1.0)))
+    tree = Difference(n4, p5)
+    return tree
+
+
+# case 633, trimesh-manifold: raised ValueError: Not all meshes are volumes!
+def case_633():
+    p0 = Cylinder(center=(-0.5, 0.0, -0.25), axis=(0.0, 0.0, 0.001), radius=0.5)
+    p1 = Box(center=(-0.25, 0.75, 0.25), size=(1.0, 1.0, 0.0001))
+    p2 = Cone(center=(0.5, 0.75, 1.0), axis=(0.25, 0.25, 0.25), radius=0.75)
+    n3 = Intersection(p1, p2)
+    n4 = Union(p0, n3)
+    p5 = Box(center=(0.17677669529663698, 1.2374368670764582, 0.0), size=(0.25, 0.75, 0.25), orientation=((0.7071067811865476, -0.7071067811865475, 0.0), (0.7071067811865475, 0.7071067811865476, 0.0), (0.0, 0.0, 1.0)))
+    tree = Difference(n4, p5)
+    return tree
+
+
+# case 634, trimesh-manifold: raised ValueError: Not all meshes are volumes!
+def case_634():
+    p0 = Cylinder(center=(-0.5, 0.0, -0.25), axis=(0.0, 0.0, 0.001), radius=0.5)
+    p1 = Cylinder(center=(-0.25, 0.75, 0.25), axis=(0.0, 0.0, 0.001), radius=0.5)
+    p2 = Cone(center=(0.5, 0.75, 1.0), axis=(0.25, 0.25, 0.25), radius=0.75)
+    n3 = Intersection(p1, p2)
+    n4 = Union(p0, n3)
+    p5 = Box(center=(0.17677669529663698, 1.2374368670764582, 0.0), size=(0.25, 0.75, 0.25), orientation=((0.7071067811865476, -0.7071067811865475, 0.0), (0.7071067811865475, 0.7071067811865476, 0.0), (0.0, 0.0, 1.0)))
+    tree = Difference(n4, p5)
+    return tree
+
+
+# case 635, trimesh-manifold: raised ValueError: Not all meshes are volumes!
+def case_635():
+    p0 = Cylinder(center=(-0.5, 0.0, -0.25), axis=(0.0, 0.0, 0.001), radius=0.5)
+    p1 = Cylinder(center=(0.75, 0.75, 0.25), axis=(0.0, 0.0, 0.001), radius=0.5)
+    p2 = Cone(center=(0.5, 0.75, 1.0), axis=(0.25, 0.25, 0.25), radius=0.75)
+    n3 = Intersection(p1, p2)
+    n4 = Union(p0, n3)
+    p5 = Box(center=(0.17677669529663698, 1.2374368670764582, 0.0), size=(0.25, 0.75, 0.25), orientation=((0.7071067811865476, -0.7071067811865475, 0.0), (0.7071067811865475, 0.7071067811865476, 0.0), (0.0, 0.0, 1.0)))
+    tree = Difference(n4, p5)
+    return tree
+
+
+# case 636, trimesh-manifold: raised ValueError: Not all meshes are volumes!
+def case_636():
+    p0 = Cylinder(center=(-0.5, 0.0, -0.25), axis=(0.0, 0.0, 0.001), radius=0.5)
+    p1 = Cylinder(center=(0.75, 0.75, 0.25), axis=(0.0, 0.0, 0.001), radius=0.5)
+    p2 = Cone(center=(0.5, 0.75, 1.0), axis=(0.25, 0.25, 0.25), radius=0.75)
+    n3 = Intersection(p1, p2)
+    n4 = Union(p0, n3)
+    p5 = Box(center=(0.17677669529663698, 1.2374368670764582, 0.0), size=(1.0, 0.75, 0.25), orientation=((0.7071067811865476, -0.7071067811865475, 0.0), (0.7071067811865475, 0.7071067811865476, 0.0), (0.0, 0.0, 1.0)))
+    tree = Difference(n4, p5)
+    return tree
+
+
+# case 637, trimesh-manifold: raised ValueError: Not all meshes are volumes!
+def case_637():
+    p0 = Cylinder(center=(0.75, 0.75, 0.25), axis=(0.0, 0.0, 0.001), radius=0.5)
+    p1 = Cylinder(center=(0.75, 0.75, 0.25), axis=(0.0, 0.0, 0.001), radius=0.5)
+    p2 = Cone(center=(0.5, 0.75, 1.0), axis=(0.25, 0.25, 0.25), radius=0.75)
+    n3 = Intersection(p1, p2)
+    n4 = Union(p0, n3)
+    p5 = Box(center=(0.17677669529663698, 1.2374368670764582, 0.0), size=(1.0, 0.75, 0.25), orientation=((0.7071067811865476, -0.7071067811865475, 0.0), (0.7071067811865475, 0.7071067811865476, 0.0), (0.0, 0.0, 1.0)))
+    tree = Difference(n4, p5)
+    return tree
+
+
+# case 638, trimesh-manifold: raised ValueError: Not all meshes are volumes!
+def case_638():
+    p0 = Cylinder(center=(0.75, 0.75, 0.25), axis=(0.0, 0.0, 0.001), radius=0.5)
+    p1 = Cylinder(center=(0.75, 0.75, 0.25), axis=(0.0, 0.0, 0.001), radius=0.5)
+    p2 = Cone(center=(0.5, 0.75, 1.0), axis=(0.25, 0.25, 0.25), radius=0.75)
+    n3 = Intersection(p1, p2)
+    n4 = Union(p0, n3)
+    p5 = Box(center=(0.17677669529663698, 1.2374368670764582, 0.0), size=(0.25, 0.75, 0.25), orientation=((0.7071067811865476, -0.7071067811865475, 0.0), (0.7071067811865475, 0.7071067811865476, 0.0), (0.0, 0.0, 1.0)))
+    tree = Difference(n4, p5)
+    return tree
+
+
+# case 639, pyvista: wrong volume, area, hausdorff, topology
+# volume    0 (true 1.64761086): error -1.648e+00, tessellation +1.554e-02, bound 1.458e-01 -> wrong
+# area      0 (true 11.0565013): error -1.106e+01, tessellation +4.348e-02 -> wrong
+# hausdorff mesh->true inf, true->mesh inf, tessellation 1.044e-02 -> wrong
+# topology  0 components, genus 0, watertight True, winding consistent True (true: 1, genus 0, from mesh) -> wrong
+# verdict   WRONG: volume, area, hausdorff, topology
+def case_639():
+    p0 = Box(center=(0.49794978843022397, 0.9365073455143291, 1.0), size=(1.5, 1.25, 1.25), orientation=((0.9563047559630354, -0.29237170472273677, 0.0), (0.29237170472273677, 0.9563047559630354, 0.0), (0.0, 0.0, 1.0)))
+    p1 = Torus(center=(0.25, 0.5, -0.25), axis=(0.0, 1.0, 0.0), major=1.25, minor=0.4375)
+    p2 = Torus(center=(0.5, -1.0, -0.5), axis=(0.5773502691896258, 0.5773502691896258, 0.5773502691896258), major=0.5, minor=0.25)
+    n3 = Union(p1, p2)
+    tree = Difference(p0, n3)
+    return tree
+
+
+# case 640, pyvista: wrong volume, area, hausdorff, topology
+# volume    0 (true 6.37037023): error -6.370e+00, tessellation -1.128e-01, bound 1.458e-01 -> wrong
+# area      0 (true 27.3658083): error -2.737e+01, tessellation -1.119e-01 -> wrong
+# hausdorff mesh->true inf, true->mesh inf, tessellation 1.051e-02 -> wrong
+# topology  0 components, genus 0, watertight True, winding consistent True (true: 1, genus 1, from mesh) -> wrong
+# verdict   WRONG: volume, area, hausdorff, topology
+def case_640():
+    p0 = Box(center=(0.49794978843022397, 0.9365073455143291, 1.0), size=(1.5, 1.25, 1.25), orientation=((0.9563047559630354, -0.29237170472273677, 0.0), (0.29237170472273677, 0.9563047559630354, 0.0), (0.0, 0.0, 1.0)))
+    p1 = Torus(center=(0.25, 0.5, -0.25), axis=(0.0, 1.0, 0.0), major=1.25, minor=0.4375)
+    n2 = Union(p0, p1)
+    p3 = Torus(center=(0.5, -1.0, -0.5), axis=(0.5773502691896258, 0.5773502691896258, 0.5773502691896258), major=0.5, minor=0.25)
+    tree = Difference(n2, p3)
+    return tree
+
+
+# case 641, pyvista: wrong volume, area, hausdorff, topology
+# volume    0 (true 6.3703724): error -6.370e+00, tessellation -1.128e-01, bound 1.458e-01 -> wrong
+# area      0 (true 27.3658083): error -2.737e+01, tessellation -1.119e-01 -> wrong
+# hausdorff mesh->true inf, true->mesh inf, tessellation 1.050e-02 -> wrong
+# topology  0 components, genus 0, watertight True, winding consistent True (true: 1, genus 1, from mesh) -> wrong
+# verdict   WRONG: volume, area, hausdorff, topology
+def case_641():
+    p0 = Box(center=(0.49794978843022397, 0.9365073455143291, 1.0), size=(1.5, 1.25, 1.25), orientation=((0.9563047559630354, -0.29237170472273677, 0.0), (0.29237170472273677, 0.9563047559630354, 0.0), (0.0, 0.0, 1.0)))
+    p1 = Torus(center=(0.25, 0.5, -0.25), axis=(0.0, 1.0, 0.0), major=1.25, minor=0.4375)
+    n2 = Union(p0, p1)
+    p3 = Torus(center=(0.5, -1.0, -0.5), axis=(0.0, 1.0, 0.0), major=0.5, minor=0.25)
+    tree = Difference(n2, p3)
+    return tree
+
+
+# case 642: over 120 s, skipped
+def case_642():
+    p0 = Box(center=(0.49794978843022397, 0.9365073455143291, 1.0), size=(1.5, 1.25, 1.25), orientation=((0.9563047559630354, -0.29237170472273677, 0.0), (0.29237170472273677, 0.9563047559630354, 0.0), (0.0, 0.0, 1.0)))
+    p1 = Torus(center=(0.25, 0.5, -0.25), axis=(0.0, 1.0, 0.0), major=1.25, minor=0.625)
+    n2 = Union(p0, p1)
+    p3 = Torus(center=(0.5, -1.0, -0.5), axis=(0.0, 1.0, 0.0), major=0.5, minor=0.25)
+    tree = Difference(n2, p3)
+    return tree
+
+
+# case 645, trimesh-manifold: raised ValueError: Not all meshes are volumes!
+def case_645():
+    p0 = Box(center=(-0.75, -0.75, -0.75), size=(1.5, 1.75, 0.25))
+    p1 = Cylinder(center=(0.75, 0.25, 1.0), axis=(0.0, 0.0, 0.001), radius=0.5)
+    p2 = Cone(center=(0.0, -1.0, -0.75), axis=(0.0, 0.0, 1.5), radius=1.75)
+    n3 = Difference(p1, p2)
+    p4 = Sphere(center=(-0.5, -0.5, -0.25), radius=0.75)
+    p5 = Ellipsoid(center=(-0.5, 0.75, -1.0), radii=(0.25, 1.75, 0.75))
+    n6 = Intersection(p4, p5)
+    n7 = Intersection(n3, n6)
+    tree = Difference(p0, n7)
+    return tree
+
+
+# case 646, trimesh-manifold: raised ValueError: Not all meshes are volumes!
+def case_646():
+    p0 = Box(center=(-0.75, -0.75, -0.75), size=(1.5, 1.75, 0.25))
+    p1 = Cylinder(center=(0.75, 0.25, 1.0), axis=(0.0, 0.0, 0.001), radius=0.5)
+    p2 = Cone(center=(0.0, -1.0, -0.75), axis=(0.0, 0.0, 1.5), radius=1.75)
+    n3 = Difference(p1, p2)
+    p4 = Sphere(center=(0.0, 0.0, 0.25), radius=0.75)
+    p5 = Ellipsoid(center=(-0.5, 0.75, -1.0), radii=(0.25, 1.75, 0.75))
+    n6 = Intersection(p4, p5)
+    n7 = Intersection(n3, n6)
+    tree = Difference(p0, n7)
+    return tree
+
+
+# case 647, trimesh-manifold: raised ValueError: Not all meshes are volumes!
+def case_647():
+    p0 = Box(center=(0.0, -0.75, -0.75), size=(1.5, 1.75, 0.25))
+    p1 = Cylinder(center=(0.75, 0.25, 1.0), axis=(0.0, 0.0, 0.001), radius=0.5)
+    p2 = Cone(center=(0.0, -1.0, -0.75), axis=(0.0, 0.0, 1.5), radius=1.75)
+    n3 = Difference(p1, p2)
+    p4 = Sphere(center=(0.0, 0.0, 0.25), radius=0.75)
+    p5 = Ellipsoid(center=(-0.5, 0.75, -1.0), radii=(0.25, 1.75, 0.75))
+    n6 = Intersection(p4, p5)
+    n7 = Intersection(n3, n6)
+    tree = Difference(p0, n7)
+    return tree
+
+
+# case 648, trimesh-manifold: raised ValueError: Not all meshes are volumes!
+def case_648():
+    p0 = Box(center=(0.0, -0.75, -0.75), size=(1.5, 1.75, 0.25))
+    p1 = Cylinder(center=(0.75, 0.25, 1.0), axis=(0.0, 0.0, 0.001), radius=0.5)
+    p2 = Cone(center=(0.0, -1.0, -0.75), axis=(0.0, 0.0, 1.5), radius=1.75)
+    n3 = Difference(p1, p2)
+    p4 = Sphere(center=(0.0, 0.0, 0.25), radius=0.75)
+    p5 = Ellipsoid(center=(-0.5, 0.75, -1.0), radii=(0.25, 1.25, 0.75))
+    n6 = Intersection(p4, p5)
+    n7 = Intersection(n3, n6)
+    tree = Difference(p0, n7)
+    return tree
+
+
+# case 649, trimesh-manifold: raised ValueError: Not all meshes are volumes!
+def case_649():
+    p0 = Box(center=(0.0, -0.75, -0.75), size=(1.5, 1.75, 0.25))
+    p1 = Cylinder(center=(0.75, 0.25, 1.0), axis=(0.0, 0.0, 0.001), radius=0.5)
+    p2 = Cone(center=(0.0, -1.0, -0.75), axis=(0.0, 0.0, 1.5), radius=1.75)
+    n3 = Difference(p1, p2)
+    p4 = Sphere(center=(0.0, 0.0, 0.25), radius=0.75)
+    p5 = Ellipsoid(center=(-0.5, 0.75, -1.0), radii=(0.25, 1.5, 0.75))
+    n6 = Intersection(p4, p5)
+    n7 = Intersection(n3, n6)
+    tree = Difference(p0, n7)
+    return tree
+
+
+# case 650, trimesh-manifold: raised ValueError: Not all meshes are volumes!
+def case_650():
+    p0 = Box(center=(0.0, -0.75, -0.75), size=(1.5, 1.75, 0.25))
+    p1 = Cylinder(center=(0.75, 0.25, 1.0), axis=(0.0, 0.0, 0.001), radius=0.5)
+    p2 = Cone(center=(0.0, -1.0, -0.75), axis=(0.0, 0.0, 1.5), radius=1.75)
+    n3 = Difference(p1, p2)
+    p4 = Sphere(center=(0.0, 0.75, 0.25), radius=0.75)
+    p5 = Ellipsoid(center=(-0.5, 0.75, -1.0), radii=(0.25, 1.5, 0.75))
+    n6 = Intersection(p4, p5)
+    n7 = Intersection(n3, n6)
+    tree = Difference(p0, n7)
+    return tree
+
+
+# case 657, pyvista: wrong hausdorff, topology
+# volume    0.557111714 (true 0.535360536): error +2.175e-02, tessellation +1.889e-02, bound 7.632e-01 -> tessellation
+# area      7.206844 (true 7.04650871): error +1.603e-01, tessellation +1.497e-01 -> tessellation
+# hausdorff mesh->true 6.065e-02, true->mesh 1.761e-02, tessellation 1.817e-02 -> wrong
+# topology  2 components, genus 1.5, watertight False, winding consistent False (true: 1, genus 0, from mesh) -> wrong
+# verdict   WRONG: hausdorff, topology
+def case_657():
+    p0 = Cylinder(center=(0.0, 0.0, -0.5), axis=(0.75, 0.0, 0.0), radius=1.0)
+    p1 = Torus(center=(-0.75, 0.0, 0.75), axis=(0.0, 1.0, 0.0), major=1.75, minor=0.875)
+    tree = Difference(p0, p1)
+    return tree
+
+
+# case 658, pyvista: wrong topology
+# volume    2.32107 (true 2.32781756): error -6.748e-03, tessellation -1.359e-02, bound 3.256e-02 -> tessellation
+# area      10.953386 (true 10.9820954): error -2.871e-02, tessellation -4.694e-02 -> tessellation
+# hausdorff mesh->true 6.343e-03, true->mesh 6.264e-03, tessellation 6.269e-03 -> tessellation
+# topology  1 components, genus 0, watertight True, winding consistent False (true: 1, genus 0, from mesh) -> wrong
+# verdict   WRONG: topology
+def case_658():
+    p0 = Cylinder(center=(0.0, 0.0, -0.5), axis=(0.75, 0.0, 0.0), radius=1.0)
+    p1 = Torus(center=(-0.75, 0.0, 0.75), axis=(0.0, 1.0, 0.0), major=0.5, minor=0.25)
+    tree = Difference(p0, p1)
+    return tree
+
+
+# case 659, pyvista: wrong hausdorff, topology
+# volume    2.24180557 (true 2.25215954): error -1.035e-02, tessellation -1.172e-02, bound 3.256e-02 -> tessellation
+# area      11.2150801 (true 11.2586319): error -4.355e-02, tessellation -4.719e-02 -> tessellation
+# hausdorff mesh->true 3.168e-02, true->mesh 2.582e-02, tessellation 6.355e-03 -> wrong
+# topology  1 components, genus 0.5, watertight False, winding consistent False (true: 1, genus 0, from mesh) -> wrong
+# verdict   WRONG: hausdorff, topology
+def case_659():
+    p0 = Cylinder(center=(0.0, 0.0, -0.5), axis=(0.75, 0.0, 0.0), radius=1.0)
+    p1 = Torus(center=(-0.75, 0.0, 0.25), axis=(0.0, 1.0, 0.0), major=0.5, minor=0.25)
+    tree = Difference(p0, p1)
+    return tree
+
+
+# case 660, pyvista: wrong hausdorff, topology
+# volume    2.3431446 (true 2.3426934): error +4.512e-04, tessellation -1.480e-02, bound 1.637e-02 -> tessellation
+# area      11.0976815 (true 11.0985458): error -8.643e-04, tessellation -5.016e-02 -> tessellation
+# hausdorff mesh->true 3.536e-02, true->mesh 4.815e-03, tessellation 4.815e-03 -> wrong
+# topology  2 components, genus 1, watertight False, winding consistent False (true: 1, genus 0, from mesh) -> wrong
+# verdict   WRONG: hausdorff, topology
+def case_660():
+    p0 = Cylinder(center=(0.0, 0.0, -0.5), axis=(0.75, 0.0, 0.0), radius=1.0)
+    p1 = Cylinder(center=(-0.75, 0.0, 0.25), axis=(0.0, 0.25, 0.0), radius=0.5)
+    tree = Difference(p0, p1)
+    return tree
+
+
+# case 662, pyvista: wrong volume, area, hausdorff, topology
+# volume    -1.05330468 (true 1.09804564): error -2.151e+00, tessellation -3.767e-03, bound 3.022e-02 -> wrong
+# area      9.67049206 (true 7.64050932): error +2.030e+00, tessellation -1.761e-02 -> wrong
+# hausdorff mesh->true 6.762e-01, true->mesh 1.993e-01, tessellation 4.815e-03 -> wrong
+# topology  9 components, genus 31.5, watertight False, winding consistent False (true: 1, genus 0, from mesh) -> wrong
+# verdict   WRONG: volume, area, hausdorff, topology
+def case_662():
+    p0 = Cylinder(center=(0.0, 0.0, -0.5), axis=(0.75, 0.0, 0.0), radius=1.0)
+    p1 = Cylinder(center=(0.0, 0.75, -0.5), axis=(0.75, 0.0, 0.0), radius=1.0)
+    tree = Difference(p0, p1)
+    return tree
+
+
+# case 666, trimesh-manifold: raised ValueError: Not all meshes are volumes!
+def case_666():
+    p0 = Sphere(center=(-0.25, -0.25, 0.5), radius=0.25)
+    p1 = Cylinder(center=(0.75, -1.0, -0.5), axis=(1.5, 1.5, 1.5), radius=1.25)
+    n2 = Union(p0, p1)
+    p3 = Cylinder(center=(0.0, 0.0, 0.0), axis=(0.0, 0.0, 1.0), radius=0.001)
+    p4 = Truncus(center=(-0.25, 0.25, 0.5), axis=(1.75, 0.0, 0.0), r1=1.25, r2=1.75)
+    p5 = Cylinder(center=(0.75, 0.5, -0.5), axis=(0.0, 0.0, 1.0), radius=0.001)
+    n6 = Union(p4, p5)
+    n7 = Difference(p3, n6)
+    tree = Intersection(n2, n7)
+    return tree
+
+
+# case 671, pyvista: wrong topology
+# volume    12.8829144 (true 13.1710095): error -2.881e-01, tessellation -2.880e-01, bound 2.983e-01 -> tessellation
+# area      29.0227475 (true 29.3417078): error -3.190e-01, tessellation -3.192e-01 -> tessellation
+# hausdorff mesh->true 1.848e-02, true->mesh 1.875e-02, tessellation 1.877e-02 -> tessellation
+# topology  1 components, genus 1, watertight False, winding consistent False (true: 1, genus 0, from mesh) -> wrong
+# verdict   WRONG: topology
+def case_671():
+    p0 = Sphere(center=(-0.5, 0.75, 0.5), radius=0.5)
+    p1 = Ellipsoid(center=(-1.0, -0.25, 0.0), radii=(1.75, 1.0, 1.75))
+    tree = Union(p0, p1)
+    return tree
+
+
+# case 672, pyvista: wrong topology
+# volume    4.06171769 (true 4.15156196): error -8.984e-02, tessellation -8.973e-02, bound 9.357e-02 -> tessellation
+# area      16.2099805 (true 16.3678766): error -1.579e-01, tessellation -1.593e-01 -> tessellation
+# hausdorff mesh->true 1.538e-02, true->mesh 1.531e-02, tessellation 1.555e-02 -> tessellation
+# topology  1 components, genus 0.5, watertight False, winding consistent False (true: 1, genus 0, from mesh) -> wrong
+# verdict   WRONG: topology
+def case_672():
+    p0 = Sphere(center=(-0.5, 0.75, 0.5), radius=0.5)
+    p1 = Ellipsoid(center=(-1.0, -0.25, 0.0), radii=(1.75, 1.0, 0.5))
+    tree = Union(p0, p1)
+    return tree
+
+
+# case 673, pyvista: wrong topology
+# volume    1.14593919 (true 1.1710621): error -2.512e-02, tessellation -2.520e-02, bound 2.632e-02 -> tessellation
+# area      7.639833 (true 7.70740678): error -6.757e-02, tessellation -6.654e-02 -> tessellation
+# hausdorff mesh->true 1.013e-02, true->mesh 1.018e-02, tessellation 1.025e-02 -> tessellation
+# topology  1 components, genus 0.5, watertight False, winding consistent True (true: 1, genus 0, from mesh) -> wrong
+# verdict   WRONG: topology
+def case_673():
+    p0 = Ellipsoid(center=(-0.5, 0.75, 0.5), radii=(0.5, 1.25, 0.25))
+    p1 = Sphere(center=(0.0, 0.0, 1.0), radius=0.5)
+    tree = Union(p0, p1)
+    return tree
+
+
+# case 675, pyvista: wrong volume, area, hausdorff, topology
+# volume    0 (true 1.17809725): error -1.178e+00, tessellation -2.632e-02, bound 2.632e-02 -> wrong
+# area      0 (true 8.0337342): error -8.034e+00, tessellation -9.485e-02 -> wrong
+# hausdorff mesh->true inf, true->mesh inf, tessellation 1.052e-02 -> wrong
+# topology  0 components, genus 0, watertight True, winding consistent True (true: 2, genus 0, from mesh) -> wrong
+# verdict   WRONG: volume, area, hausdorff, topology
+def case_675():
+    p0 = Ellipsoid(center=(-0.5, 0.75, 0.5), radii=(0.5, 1.25, 0.25))
+    p1 = Sphere(center=(0.5, 0.0, 0.25), radius=0.5)
+    tree = Union(p0, p1)
+    return tree
+
+
+# case 676, pyvista: wrong volume, area, hausdorff, topology
+# volume    0 (true 0.719948316): error -7.199e-01, tessellation -1.608e-02, bound 1.608e-02 -> wrong
+# area      0 (true 5.67753971): error -5.678e+00, tessellation -6.614e-02 -> wrong
+# hausdorff mesh->true inf, true->mesh inf, tessellation 1.064e-02 -> wrong
+# topology  0 components, genus 0, watertight True, winding consistent True (true: 2, genus 0, from mesh) -> wrong
+# verdict   WRONG: volume, area, hausdorff, topology
+def case_676():
+    p0 = Ellipsoid(center=(-0.5, 0.75, 0.5), radii=(0.5, 1.25, 0.25))
+    p1 = Sphere(center=(0.5, 0.0, 0.25), radius=0.25)
+    tree = Union(p0, p1)
+    return tree
+
+
+# case 677, pyvista: wrong volume, area, hausdorff, topology
+# volume    0 (true 0.719948316): error -7.199e-01, tessellation -1.608e-02, bound 1.608e-02 -> wrong
+# area      0 (true 5.67753971): error -5.678e+00, tessellation -6.614e-02 -> wrong
+# hausdorff mesh->true inf, true->mesh inf, tessellation 1.056e-02 -> wrong
+# topology  0 components, genus 0, watertight True, winding consistent True (true: 2, genus 0, from mesh) -> wrong
+# verdict   WRONG: volume, area, hausdorff, topology
+def case_677():
+    p0 = Ellipsoid(center=(-0.5, 0.75, 0.0), radii=(0.5, 1.25, 0.25))
+    p1 = Sphere(center=(0.5, 0.0, 0.25), radius=0.25)
+    tree = Union(p0, p1)
+    return tree
+
+
+# case 678, trimesh-manifold: raised ValueError: Not all meshes are volumes!
+def case_678():
+    p0 = Box(center=(-0.25, -0.5, 0.0), size=(1.0, 1.0, 0.0001))
+    p1 = Truncus(center=(0.0, 0.0, 0.5), axis=(0.0, 0.5, 0.0), r1=0.75, r2=0.25)
+    p2 = Cylinder(center=(-0.25, 0.0, -0.25), axis=(1.0, 1.0, 1.0), radius=0.001)
+    n3 = Intersection(p1, p2)
+    p4 = Cylinder(center=(-1.0, 0.5, -0.25), axis=(0.0, 0.0, 0.001), radius=0.5)
+    n5 = Intersection(n3, p4)
+    tree = Union(p0, n5)
+    return tree
+
+
+# case 679, trimesh-manifold: raised ValueError: Not all meshes are volumes!
+def case_679():
+    p0 = Cylinder(center=(-0.25, -0.5, 0.0), axis=(0.0, 0.0, 0.001), radius=0.5)
+    p1 = Truncus(center=(0.0, 0.0, 0.5), axis=(0.0, 0.5, 0.0), r1=0.75, r2=0.25)
+    p2 = Cylinder(center=(-0.25, 0.0, -0.25), axis=(1.0, 1.0, 1.0), radius=0.001)
+    n3 = Intersection(p1, p2)
+    p4 = Cylinder(center=(-1.0, 0.5, -0.25), axis=(0.0, 0.0, 0.001), radius=0.5)
+    n5 = Intersection(n3, p4)
+    tree = Union(p0, n5)
+    return tree
+
+
+# case 680, trimesh-manifold: raised ValueError: Not all meshes are volumes!
+def case_680():
+    p0 = Cylinder(center=(-0.25, -0.5, 0.0), axis=(0.0, 0.0, 0.001), radius=0.5)
+    p1 = Truncus(center=(0.0, -0.5, 0.5), axis=(0.0, 0.5, 0.0), r1=0.75, r2=0.25)
+    p2 = Cylinder(center=(-0.25, 0.0, -0.25), axis=(1.0, 1.0, 1.0), radius=0.001)
+    n3 = Intersection(p1, p2)
+    p4 = Cylinder(center=(-1.0, 0.5, -0.25), axis=(0.0, 0.0, 0.001), radius=0.5)
+    n5 = Intersection(n3, p4)
+    tree = Union(p0, n5)
+    return tree
+
+
+# case 681, trimesh-manifold: raised ValueError: Not all meshes are volumes!
+def case_681():
+    p0 = Cylinder(center=(-0.25, -0.5, 0.0), axis=(0.0, 0.0, 0.001), radius=0.5)
+    p1 = Truncus(center=(0.0, -0.5, 0.5), axis=(0.0, 0.5, 0.0), r1=0.75, r2=0.25)
+    p2 = Cylinder(center=(-0.25, 0.0, -0.25), axis=(1.0, 1.0, 1.0), radius=0.001)
+    n3 = Intersection(p1, p2)
+    p4 = Cylinder(center=(0.25, 0.5, -0.25), axis=(0.0, 0.0, 0.001), radius=0.5)
+    n5 = Intersection(n3, p4)
+    tree = Union(p0, n5)
+    return tree
+
+
+# case 682, trimesh-manifold: raised ValueError: Not all meshes are volumes!
+def case_682():
+    p0 = Cylinder(center=(-0.25, -0.5, 0.0), axis=(0.0, 0.0, 0.001), radius=0.5)
+    p1 = Truncus(center=(0.0, -0.5, 0.5), axis=(0.0, 0.5, 0.0), r1=0.75, r2=0.25)
+    p2 = Cylinder(center=(-0.25, 0.0, -0.25), axis=(1.0, 1.0, 1.0), radius=0.001)
+    n3 = Intersection(p1, p2)
+    p4 = Cylinder(center=(0.25, -0.25, -0.25), axis=(0.0, 0.0, 0.001), radius=0.5)
+    n5 = Intersection(n3, p4)
+    tree = Union(p0, n5)
+    return tree
+
+
+# case 683, trimesh-manifold: raised ValueError: Not all meshes are volumes!
+def case_683():
+    p0 = Cylinder(center=(0.25, -0.25, -0.25), axis=(0.0, 0.0, 0.001), radius=0.5)
+    p1 = Truncus(center=(0.0, -0.5, 0.5), axis=(0.0, 0.5, 0.0), r1=0.75, r2=0.25)
+    p2 = Cylinder(center=(-0.25, 0.0, -0.25), axis=(1.0, 1.0, 1.0), radius=0.001)
+    n3 = Intersection(p1, p2)
+    p4 = Cylinder(center=(0.25, -0.25, -0.25), axis=(0.0, 0.0, 0.001), radius=0.5)
+    n5 = Intersection(n3, p4)
+    tree = Union(p0, n5)
+    return tree
+
+
+# case 684, trimesh-manifold: raised ValueError: Not all meshes are volumes!
+def case_684():
+    p0 = Cylinder(center=(0.25, -0.25, -0.25), axis=(0.0, 0.0, 0.001), radius=0.5)
+    p1 = Truncus(center=(0.0, -0.5, 0.5), axis=(0.0, 0.5, 0.0), r1=0.75, r2=0.25)
+    p2 = Cylinder(center=(-0.25, 0.0, -0.25), axis=(0.0, 1.0, 0.0), radius=0.001)
+    n3 = Intersection(p1, p2)
+    p4 = Cylinder(center=(0.25, -0.25, -0.25), axis=(0.0, 0.0, 0.001), radius=0.5)
+    n5 = Intersection(n3, p4)
+    tree = Union(p0, n5)
+    return tree
+
+
+# case 692, pyvista: wrong volume, area, hausdorff, topology
+# volume    0 (true 1.04719755): error -1.047e+00, tessellation -2.339e-02, bound 2.339e-02 -> wrong
+# area      0 (true 7.10888319): error -7.109e+00, tessellation -8.445e-02 -> wrong
+# hausdorff mesh->true inf, true->mesh inf, tessellation 8.794e-03 -> wrong
+# topology  0 components, genus 0, watertight True, winding consistent True (true: 2, genus 0, from mesh) -> wrong
+# verdict   WRONG: volume, area, hausdorff, topology
+def case_692():
+    p0 = Sphere(center=(0.25, 0.25, -1.0), radius=0.5)
+    p1 = Ellipsoid(center=(0.0, -0.75, -0.25), radii=(0.5, 0.25, 1.0))
+    tree = Union(p0, p1)
+    return tree
+
+
+# case 694, pyvista: wrong volume, area, hausdorff, topology
+# volume    0 (true 1.04719755): error -1.047e+00, tessellation -2.339e-02, bound 2.339e-02 -> wrong
+# area      0 (true 7.93458108): error -7.935e+00, tessellation -9.236e-02 -> wrong
+# hausdorff mesh->true inf, true->mesh inf, tessellation 8.781e-03 -> wrong
+# topology  0 components, genus 0, watertight True, winding consistent True (true: 2, genus 0, from mesh) -> wrong
+# verdict   WRONG: volume, area, hausdorff, topology
+def case_694():
+    p0 = Ellipsoid(center=(0.0, 1.0, -0.25), radii=(0.5, 0.25, 1.0))
+    p1 = Ellipsoid(center=(0.0, -0.75, -0.25), radii=(0.5, 0.25, 1.0))
+    tree = Union(p0, p1)
+    return tree
+
+
+# case 695, pyvista: wrong volume, area, hausdorff, topology
+# volume    0 (true 0.654498469): error -6.545e-01, tessellation -1.462e-02, bound 1.462e-02 -> wrong
+# area      0 (true 5.30969275): error -5.310e+00, tessellation -6.233e-02 -> wrong
+# hausdorff mesh->true inf, true->mesh inf, tessellation 8.680e-03 -> wrong
+# topology  0 components, genus 0, watertight True, winding consistent True (true: 2, genus 0, from mesh) -> wrong
+# verdict   WRONG: volume, area, hausdorff, topology
+def case_695():
+    p0 = Ellipsoid(center=(0.0, 1.0, -0.25), radii=(0.5, 0.25, 1.0))
+    p1 = Ellipsoid(center=(0.0, -0.75, -0.25), radii=(0.5, 0.25, 0.25))
+    tree = Union(p0, p1)
+    return tree
+
+
+# case 696, pyvista: wrong volume, area, hausdorff, topology
+# volume    0 (true 0.654498469): error -6.545e-01, tessellation -1.462e-02, bound 1.462e-02 -> wrong
+# area      0 (true 5.30969275): error -5.310e+00, tessellation -6.233e-02 -> wrong
+# hausdorff mesh->true inf, true->mesh inf, tessellation 8.561e-03 -> wrong
+# topology  0 components, genus 0, watertight True, winding consistent True (true: 2, genus 0, from mesh) -> wrong
+# verdict   WRONG: volume, area, hausdorff, topology
+def case_696():
+    p0 = Ellipsoid(center=(0.0, 1.0, -0.25), radii=(0.5, 0.25, 1.0))
+    p1 = Ellipsoid(center=(0.0, -0.25, -0.25), radii=(0.5, 0.25, 0.25))
+    tree = Union(p0, p1)
+    return tree
+
+
+# case 697, pyvista: wrong volume, area, hausdorff, topology
+# volume    0 (true 0.392699082): error -3.927e-01, tessellation -8.772e-03, bound 8.772e-03 -> wrong
+# area      0 (true 3.87349595): error -3.873e+00, tessellation -4.610e-02 -> wrong
+# hausdorff mesh->true inf, true->mesh inf, tessellation 7.670e-03 -> wrong
+# topology  0 components, genus 0, watertight True, winding consistent True (true: 2, genus 0, from mesh) -> wrong
+# verdict   WRONG: volume, area, hausdorff, topology
+def case_697():
+    p0 = Ellipsoid(center=(0.0, 1.0, -0.25), radii=(0.25, 1.0, 0.25))
+    p1 = Ellipsoid(center=(0.0, -0.25, -0.25), radii=(0.5, 0.25, 0.25))
+    tree = Union(p0, p1)
+    return tree
+
+
+# case 706, pyvista: wrong topology
+# volume    6.37297286 (true 6.41410927): error -4.114e-02, tessellation -4.114e-02, bound 4.113e-02 -> tessellation
+# area      24.580007 (true 24.6726203): error -9.261e-02, tessellation -1.081e-01 -> tessellation
+# hausdorff mesh->true 6.263e-03, true->mesh 8.322e-03, tessellation 8.322e-03 -> tessellation
+# topology  1 components, genus 1, watertight False, winding consistent False (true: 1, genus 0, from mesh) -> wrong
+# verdict   WRONG: topology
+def case_706():
+    p0 = Cone(center=(0.75, -0.75, -0.75), axis=(0.0, 2.0, 0.0), radius=1.75)
+    p1 = Box(center=(1.0, -0.25, 0.25), size=(1.0, 1.0, 0.0001))
+    tree = Union(p0, p1)
+    return tree
+
+
+# case 707, pyvista: wrong topology
+# volume    6.37295097 (true 6.41408404): error -4.113e-02, tessellation -4.113e-02, bound 4.113e-02 -> tessellation
+# area      24.1250576 (true 24.2406271): error -1.156e-01, tessellation -1.156e-01 -> tessellation
+# hausdorff mesh->true 6.312e-03, true->mesh 7.559e-03, tessellation 7.559e-03 -> tessellation
+# topology  1 components, genus 0.5, watertight False, winding consistent True (true: 1, genus 0, from mesh) -> wrong
+# verdict   WRONG: topology
+def case_707():
+    p0 = Cone(center=(1.0, -0.25, 0.25), axis=(0.0, 2.0, 0.0), radius=1.75)
+    p1 = Box(center=(1.0, -0.25, 0.25), size=(1.0, 1.0, 0.0001))
+    tree = Union(p0, p1)
+    return tree
+
+
+# case 708, trimesh-manifold: wrong volume, area, hausdorff
+# volume    0.000100001693 (true 0.0001): error +1.693e-09, tessellation -7.345e-18, bound 2.204e-17 -> wrong
+# area      2.00040001 (true 2.0004): error +6.771e-09, tessellation +0.000e+00 -> wrong
+# hausdorff mesh->true 8.297e-09, true->mesh 8.297e-09, tessellation 5.509e-18 -> wrong
+# topology  1 components, genus 0, watertight True, winding consistent True (true: 1, genus 0, from polygons) -> exact
+# verdict   WRONG: volume, area, hausdorff
+def case_708():
+    p0 = Box(center=(1.0, -0.25, 0.25), size=(1.0, 1.0, 0.0001))
+    p1 = Box(center=(1.0, -0.25, 0.25), size=(1.0, 1.0, 0.0001))
+    tree = Union(p0, p1)
+    return tree
+
+
+# case 709, trimesh-manifold: wrong area, hausdorff
+# volume    0.000175002962 (true 0.000175): error +2.962e-09, tessellation -1.285e-17, bound 2.204e-17 -> exact
+# area      3.50055001 (true 3.50055): error +9.310e-09, tessellation -4.441e-16 -> wrong
+# hausdorff mesh->true 8.297e-09, true->mesh 8.297e-09, tessellation 5.509e-18 -> wrong
+# topology  1 components, genus 0, watertight True, winding consistent True (true: 1, genus 0, from polygons) -> exact
+# verdict   WRONG: area, hausdorff
+# case 709, pyvista: wrong area, hausdorff, topology
+# volume    0.000175002962 (true 0.000175): error +2.962e-09, tessellation -1.285e-17, bound 2.204e-17 -> exact
+# area      2.50035001 (true 3.50055): error -1.000e+00, tessellation -4.441e-16 -> wrong
+# hausdorff mesh->true 8.297e-09, true->mesh 9.999e-05, tessellation 5.509e-18 -> wrong
+# topology  2 components, genus 2, watertight False, winding consistent True (true: 1, genus 0, from polygons) -> wrong
+# verdict   WRONG: area, hausdorff, topology
+def case_709():
+    p0 = Box(center=(0.25, -0.25, 0.25), size=(1.0, 1.0, 0.0001))
+    p1 = Box(center=(1.0, -0.25, 0.25), size=(1.0, 1.0, 0.0001))
+    tree = Union(p0, p1)
+    return tree
+
+
+# case 710, trimesh-manifold: wrong volume, area, hausdorff
+# volume    0.000100001693 (true 0.0001): error +1.693e-09, tessellation -7.345e-18, bound 2.204e-17 -> wrong
+# area      2.00040001 (true 2.0004): error +6.771e-09, tessellation +0.000e+00 -> wrong
+# hausdorff mesh->true 8.297e-09, true->mesh 8.297e-09, tessellation 5.509e-18 -> wrong
+# topology  1 components, genus 0, watertight True, winding consistent True (true: 1, genus 0, from polygons) -> exact
+# verdict   WRONG: volume, area, hausdorff
+def case_710():
+    p0 = Box(center=(0.25, -0.25, 0.25), size=(1.0, 1.0, 0.0001))
+    p1 = Box(center=(0.25, -0.25, 0.25), size=(1.0, 1.0, 0.0001))
+    tree = Union(p0, p1)
+    return tree
+
+
+# case 711, trimesh-manifold: wrong volume, area, hausdorff
+# volume    0.000200003386 (true 0.0002): error +3.386e-09, tessellation -2.204e-17, bound 2.204e-17 -> wrong
+# area      4.00080001 (true 4.0008): error +1.354e-08, tessellation +0.000e+00 -> wrong
+# hausdorff mesh->true 8.297e-09, true->mesh 8.297e-09, tessellation 5.509e-18 -> wrong
+# topology  2 components, genus 0, watertight True, winding consistent True (true: 2, genus 0, from polygons) -> exact
+# verdict   WRONG: volume, area, hausdorff
+# case 711, pyvista: wrong volume, area, hausdorff, topology
+# volume    0 (true 0.0002): error -2.000e-04, tessellation -2.204e-17, bound 2.204e-17 -> wrong
+# area      0 (true 4.0008): error -4.001e+00, tessellation +0.000e+00 -> wrong
+# hausdorff mesh->true inf, true->mesh inf, tessellation 5.509e-18 -> wrong
+# topology  0 components, genus 0, watertight True, winding consistent True (true: 2, genus 0, from polygons) -> wrong
+# verdict   WRONG: volume, area, hausdorff, topology
+def case_711():
+    p0 = Box(center=(0.25, -0.25, -0.25), size=(1.0, 1.0, 0.0001))
+    p1 = Box(center=(0.25, -0.25, 0.25), size=(1.0, 1.0, 0.0001))
+    tree = Union(p0, p1)
+    return tree
+
+
+# case 712, trimesh-manifold: wrong volume, area, hausdorff
+# volume    0.000100001693 (true 0.0001): error +1.693e-09, tessellation -7.345e-18, bound 2.204e-17 -> wrong
+# area      2.00040001 (true 2.0004): error +6.771e-09, tessellation +0.000e+00 -> wrong
+# hausdorff mesh->true 8.297e-09, true->mesh 8.297e-09, tessellation 5.509e-18 -> wrong
+# topology  1 components, genus 0, watertight True, winding consistent True (true: 1, genus 0, from polygons) -> exact
+# verdict   WRONG: volume, area, hausdorff
+def case_712():
+    p0 = Box(center=(0.25, -0.25, -0.25), size=(1.0, 1.0, 0.0001))
+    p1 = Box(center=(0.25, -0.25, -0.25), size=(1.0, 1.0, 0.0001))
+    tree = Union(p0, p1)
+    return tree
+
+
+# case 722, pyvista: wrong volume, area, hausdorff, topology
+# volume    12.1492678 (true 5.49778744): error +6.651e+00, tessellation -3.526e-02, bound 1.432e-01 -> wrong
+# area      24.8575909 (true 17.2787602): error +7.579e+00, tessellation -5.795e-02 -> wrong
+# hausdorff mesh->true 7.500e-01, true->mesh 4.815e-03, tessellation 4.815e-03 -> wrong
+# topology  50 components, genus 56, watertight False, winding consistent False (true: 1, genus 0, from mesh) -> wrong
+# verdict   WRONG: volume, area, hausdorff, topology
+def case_722():
+    p0 = Cylinder(center=(0.25, 0.0, 1.0), axis=(1.75, 0.0, 0.0), radius=1.75)
+    p1 = Cylinder(center=(0.25, 0.0, 1.0), axis=(1.75, 0.0, 0.0), radius=1.0)
+    tree = Intersection(p0, p1)
+    return tree
+
+
+# case 723, pyvista: wrong area, hausdorff, topology
+# volume    4.68216763 (true 4.71238898): error -3.022e-02, tessellation -3.022e-02, bound 7.052e-02 -> tessellation
+# area      26.4554246 (true 15.7079633): error +1.075e+01, tessellation -5.543e-02 -> wrong
+# hausdorff mesh->true 2.500e-01, true->mesh 4.815e-03, tessellation 4.815e-03 -> wrong
+# topology  106 components, genus 116, watertight False, winding consistent False (true: 1, genus 0, from mesh) -> wrong
+# verdict   WRONG: area, hausdorff, topology
+def case_723():
+    p0 = Cylinder(center=(0.0, 0.0, 1.0), axis=(1.75, 0.0, 0.0), radius=1.0)
+    p1 = Cylinder(center=(0.25, 0.0, 1.0), axis=(1.75, 0.0, 0.0), radius=1.0)
+    tree = Intersection(p0, p1)
+    return tree
+
+
+# case 724, pyvista: wrong volume, area, hausdorff, topology
+# volume    0.739405816 (true 0.343611696): error +3.958e-01, tessellation -2.204e-03, bound 3.746e-02 -> wrong
+# area      3.58718968 (true 3.14159265): error +4.456e-01, tessellation -6.932e-03 -> wrong
+# hausdorff mesh->true 7.500e-01, true->mesh 1.204e-03, tessellation 1.204e-03 -> wrong
+# topology  46 components, genus 40.5, watertight False, winding consistent False (true: 1, genus 0, from mesh) -> wrong
+# verdict   WRONG: volume, area, hausdorff, topology
+def case_724():
+    p0 = Cylinder(center=(0.25, 0.0, 1.0), axis=(1.75, 0.0, 0.0), radius=0.25)
+    p1 = Cylinder(center=(0.25, 0.0, 1.0), axis=(1.75, 0.0, 0.0), radius=1.0)
+    tree = Intersection(p0, p1)
+    return tree
+
+
+# case 727, trimesh-manifold: wrong volume
+# volume    2.42098619 (true 2.42602316): error -5.037e-03, tessellation -5.037e-03, bound 5.037e-03 -> wrong
+# area      15.9050583 (true 15.9435835): error -3.853e-02, tessellation -3.852e-02 -> tessellation
+# hausdorff mesh->true 2.862e-03, true->mesh 3.298e-03, tessellation 3.298e-03 -> tessellation
+# topology  2 components, genus 0, watertight True, winding consistent True (true: 2, genus 0, from mesh) -> exact
+# verdict   WRONG: volume
+# case 727, pyvista: wrong volume, area, hausdorff, topology
+# volume    0 (true 2.42602316): error -2.426e+00, tessellation -5.037e-03, bound 5.037e-03 -> wrong
+# area      0 (true 15.9435835): error -1.594e+01, tessellation -3.852e-02 -> wrong
+# hausdorff mesh->true inf, true->mesh inf, tessellation 3.298e-03 -> wrong
+# topology  0 components, genus 0, watertight True, winding consistent True (true: 2, genus 0, from mesh) -> wrong
+# verdict   WRONG: volume, area, hausdorff, topology
+def case_727():
+    p0 = Box(center=(0.14618585236136838, -0.4781523779815177, 0.0), size=(1.25, 0.75, 1.75), orientation=((0.9563047559630354, -0.29237170472273677, 0.0), (0.29237170472273677, 0.9563047559630354, 0.0), (0.0, 0.0, 1.0)))
+    p1 = Cone(center=(-0.5, 1.0, 0.75), axis=(0.0, 0.75, 0.0), radius=1.0)
+    tree = Union(p0, p1)
+    return tree
+
+
+# case 729, pyvista: wrong volume, area, hausdorff, topology
+# volume    1.37340528 (true 1.5377352): error -1.643e-01, tessellation -9.099e-03, bound 1.007e-02 -> wrong
+# area      11.1377095 (true 13.1172154): error -1.980e+00, tessellation -5.681e-02 -> wrong
+# hausdorff mesh->true 2.773e-03, true->mesh 2.242e-01, tessellation 4.461e-03 -> wrong
+# topology  4 components, genus 6, watertight False, winding consistent True (true: 1, genus 0, from mesh) -> wrong
+# verdict   WRONG: volume, area, hausdorff, topology
+def case_729():
+    p0 = Cone(center=(-0.5, 1.0, 0.75), axis=(0.0, 0.75, 0.0), radius=1.0)
+    p1 = Cone(center=(1.0, 1.0, 0.75), axis=(0.0, 0.75, 0.0), radius=1.0)
+    tree = Union(p0, p1)
+    return tree
+
+
+# case 730, pyvista: wrong volume, topology
+# volume    0.3781008 (true 0.392426351): error -1.433e-02, tessellation -8.556e-03, bound 8.820e-03 -> wrong
+# area      4.51907579 (true 4.52462334): error -5.548e-03, tessellation -1.824e-02 -> tessellation
+# hausdorff mesh->true 4.202e-03, true->mesh 4.201e-03, tessellation 4.201e-03 -> tessellation
+# topology  1 components, genus 2, watertight True, winding consistent False (true: 1, genus 2, from mesh) -> wrong
+# verdict   WRONG: volume, topology
+def case_730():
+    p0 = Cone(center=(1.0, 1.0, -1.0), axis=(0.375, -0.625, 1.25), radius=0.25)
+    p1 = Torus(center=(0.75, 1.0, -1.0), axis=(0.5773502691896258, 0.5773502691896258, 0.5773502691896258), major=0.5, minor=0.175)
+    tree = Union(p0, p1)
+    return tree
+
+
+# case 731, pyvista: wrong hausdorff, topology
+# volume    0.374490149 (true 0.381696305): error -7.206e-03, tessellation -8.231e-03, bound 8.820e-03 -> tessellation
+# area      4.38463332 (true 4.38808924): error -3.456e-03, tessellation -1.863e-02 -> tessellation
+# hausdorff mesh->true 8.067e-03, true->mesh 4.193e-03, tessellation 4.193e-03 -> wrong
+# topology  1 components, genus 3.5, watertight False, winding consistent False (true: 1, genus 2, from mesh) -> wrong
+# verdict   WRONG: hausdorff, topology
+def case_731():
+    p0 = Cone(center=(0.75, 1.0, -1.0), axis=(0.375, -0.625, 1.25), radius=0.25)
+    p1 = Torus(center=(0.75, 1.0, -1.0), axis=(0.5773502691896258, 0.5773502691896258, 0.5773502691896258), major=0.5, minor=0.175)
+    tree = Union(p0, p1)
+    return tree
+
+
+# case 732, pyvista: wrong volume, area, hausdorff, topology
+# volume    0.103673164 (true 0.109749032): error -6.076e-03, tessellation -6.686e-04, bound 7.891e-04 -> wrong
+# area      1.59220402 (true 1.6139755): error -2.177e-02, tessellation -4.093e-03 -> wrong
+# hausdorff mesh->true 6.167e-03, true->mesh 6.730e-03, tessellation 1.171e-03 -> wrong
+# topology  1 components, genus 3, watertight False, winding consistent False (true: 1, genus 0, from mesh) -> wrong
+# verdict   WRONG: volume, area, hausdorff, topology
+def case_732():
+    p0 = Cone(center=(0.75, 1.0, -1.0), axis=(0.375, -0.625, 1.25), radius=0.25)
+    p1 = Cone(center=(0.75, 1.0, -1.0), axis=(0.25, 0.25, 0.25), radius=0.25)
+    tree = Union(p0, p1)
+    return tree
+
+
+# case 733, pyvista: wrong volume, area, hausdorff, topology
+# volume    0 (true 0.123045209): error -1.230e-01, tessellation -7.891e-04, bound 7.891e-04 -> wrong
+# area      0 (true 1.93869058): error -1.939e+00, tessellation -5.632e-03 -> wrong
+# hausdorff mesh->true inf, true->mesh inf, tessellation 1.175e-03 -> wrong
+# topology  0 components, genus 0, watertight True, winding consistent True (true: 2, genus 0, from mesh) -> wrong
+# verdict   WRONG: volume, area, hausdorff, topology
+def case_733():
+    p0 = Cone(center=(0.75, 1.0, -1.0), axis=(0.375, -0.625, 1.25), radius=0.25)
+    p1 = Cone(center=(0.75, 1.0, 0.75), axis=(0.25, 0.25, 0.25), radius=0.25)
+    tree = Union(p0, p1)
+    return tree
+
+
+# case 735, pyvista: wrong volume, area, hausdorff, topology
+# volume    0 (true 0.189409188): error -1.894e-01, tessellation -1.215e-03, bound 1.215e-03 -> wrong
+# area      0 (true 2.69928392): error -2.699e+00, tessellation -6.543e-03 -> wrong
+# hausdorff mesh->true inf, true->mesh inf, tessellation 1.186e-03 -> wrong
+# topology  0 components, genus 0, watertight True, winding consistent True (true: 2, genus 0, from mesh) -> wrong
+# verdict   WRONG: volume, area, hausdorff, topology
+def case_735():
+    p0 = Cone(center=(0.75, 1.0, -1.0), axis=(0.375, -0.625, 1.25), radius=0.25)
+    p1 = Cone(center=(0.75, 0.0, -1.0), axis=(0.375, -0.625, 1.25), radius=0.25)
+    tree = Union(p0, p1)
+    return tree
+
+
+# case 736, pyvista: wrong volume, area, hausdorff, topology
+# volume    0 (true 0.189409188): error -1.894e-01, tessellation -1.215e-03, bound 1.215e-03 -> wrong
+# area      0 (true 2.69928392): error -2.699e+00, tessellation -6.543e-03 -> wrong
+# hausdorff mesh->true inf, true->mesh inf, tessellation 1.185e-03 -> wrong
+# topology  0 components, genus 0, watertight True, winding consistent True (true: 2, genus 0, from mesh) -> wrong
+# verdict   WRONG: volume, area, hausdorff, topology
+def case_736():
+    p0 = Cone(center=(0.75, 1.0, -1.0), axis=(0.375, -0.625, 1.25), radius=0.25)
+    p1 = Cone(center=(0.75, 0.25, -1.0), axis=(0.375, -0.625, 1.25), radius=0.25)
+    tree = Union(p0, p1)
+    return tree
+
+
+# case 737, trimesh-manifold: raised ValueError: Not all meshes are volumes!
+def case_737():
+    p0 = Ellipsoid(center=(0.0, -0.25, -0.5), radii=(1.5, 1.5, 1.5))
+    p1 = Box(center=(0.5, 1.0, 1.0), size=(1.0, 1.0, 0.0001))
+    n2 = Intersection(p0, p1)
+    p3 = Cylinder(center=(1.0, 0.25, 1.0), axis=(0.0, 0.0, 0.001), radius=0.5)
+    p4 = Cylinder(center=(0.5, -0.5, -1.0), axis=(0.0, 0.5, 0.0), radius=1.25)
+    n5 = Difference(p3, p4)
+    n6 = Difference(n2, n5)
+    p7 = Cylinder(center=(0.75, -0.75, 0.75), axis=(0.0, 0.0, 0.001), radius=0.5)
+    tree = Difference(n6, p7)
+    return tree
+
+
+# case 738, trimesh-manifold: raised ValueError: Not all meshes are volumes!
+def case_738():
+    p0 = Ellipsoid(center=(0.0, -0.25, -0.5), radii=(1.5, 1.5, 1.5))
+    p1 = Box(center=(0.5, 1.0, 1.0), size=(1.0, 1.0, 0.0001))
+    n2 = Intersection(p0, p1)
+    p3 = Cylinder(center=(0.75, -0.75, 0.75), axis=(0.0, 0.0, 0.001), radius=0.5)
+    p4 = Cylinder(center=(0.5, -0.5, -1.0), axis=(0.0, 0.5, 0.0), radius=1.25)
+    n5 = Difference(p3, p4)
+    n6 = Difference(n2, n5)
+    p7 = Cylinder(center=(0.75, -0.75, 0.75), axis=(0.0, 0.0, 0.001), radius=0.5)
+    tree = Difference(n6, p7)
+    return tree
+
+
+# case 739, trimesh-manifold: raised ValueError: Not all meshes are volumes!
+def case_739():
+    p0 = Cylinder(center=(0.5, -0.5, -1.0), axis=(0.0, 0.5, 0.0), radius=1.25)
+    p1 = Box(center=(0.5, 1.0, 1.0), size=(1.0, 1.0, 0.0001))
+    n2 = Intersection(p0, p1)
+    p3 = Cylinder(center=(0.75, -0.75, 0.75), axis=(0.0, 0.0, 0.001), radius=0.5)
+    p4 = Cylinder(center=(0.5, -0.5, -1.0), axis=(0.0, 0.5, 0.0), radius=1.25)
+    n5 = Difference(p3, p4)
+    n6 = Difference(n2, n5)
+    p7 = Cylinder(center=(0.75, -0.75, 0.75), axis=(0.0, 0.0, 0.001), radius=0.5)
+    tree = Difference(n6, p7)
+    return tree
+
+
+# case 740, trimesh-manifold: wrong area, hausdorff
+# volume    4.99784946e-05 (true 5e-05): error -2.151e-08, tessellation +1.685e-15, bound 3.149e-02 -> tessellation
+# area      1.00029987 (true 1.0003): error -1.290e-07, tessellation +1.310e-14 -> wrong
+# hausdorff mesh->true 5.131e-08, true->mesh 5.131e-08, tessellation 1.055e-16 -> wrong
+# topology  1 components, genus 0, watertight True, winding consistent True (true: 1, genus 0, from mesh) -> exact
+# verdict   WRONG: area, hausdorff
+def case_740():
+    p0 = Cylinder(center=(0.5, -0.5, -1.0), axis=(0.0, 0.5, 0.0), radius=1.25)
+    p1 = Box(center=(0.5, -0.5, -1.0), size=(1.0, 1.0, 0.0001))
+    n2 = Intersection(p0, p1)
+    p3 = Cylinder(center=(0.75, -0.75, 0.75), axis=(0.0, 0.0, 0.001), radius=0.5)
+    p4 = Cylinder(center=(0.5, -0.5, -1.0), axis=(0.0, 0.5, 0.0), radius=1.25)
+    n5 = Difference(p3, p4)
+    n6 = Difference(n2, n5)
+    p7 = Cylinder(center=(0.75, -0.75, 0.75), axis=(0.0, 0.0, 0.001), radius=0.5)
+    tree = Difference(n6, p7)
+    return tree
+
+
+# case 741, trimesh-manifold: wrong area, hausdorff
+# volume    4.99784946e-05 (true 5e-05): error -2.151e-08, tessellation +1.685e-15, bound 3.149e-02 -> tessellation
+# area      1.00029987 (true 1.0003): error -1.290e-07, tessellation +1.310e-14 -> wrong
+# hausdorff mesh->true 5.131e-08, true->mesh 5.131e-08, tessellation 1.055e-16 -> wrong
+# topology  1 components, genus 0, watertight True, winding consistent True (true: 1, genus 0, from mesh) -> exact
+# verdict   WRONG: area, hausdorff
+def case_741():
+    p0 = Cylinder(center=(0.5, -0.5, -1.0), axis=(0.0, 0.5, 0.0), radius=1.25)
+    p1 = Box(center=(0.5, -0.5, -1.0), size=(1.0, 1.0, 0.0001))
+    n2 = Intersection(p0, p1)
+    p3 = Cylinder(center=(0.75, -0.75, 0.75), axis=(0.0, 0.0, 0.001), radius=0.5)
+    p4 = Cylinder(center=(-1.0, -0.5, -1.0), axis=(0.0, 0.5, 0.0), radius=1.25)
+    n5 = Difference(p3, p4)
+    n6 = Difference(n2, n5)
+    p7 = Cylinder(center=(0.75, -0.75, 0.75), axis=(0.0, 0.0, 0.001), radius=0.5)
+    tree = Difference(n6, p7)
+    return tree
+
+
+# case 742, trimesh-manifold: raised ValueError: Not all meshes are volumes!
+def case_742():
+    p0 = Cylinder(center=(0.75, -0.75, 0.75), axis=(0.0, 0.0, 0.001), radius=0.5)
+    p1 = Box(center=(0.5, -0.5, -1.0), size=(1.0, 1.0, 0.0001))
+    n2 = Intersection(p0, p1)
+    p3 = Cylinder(center=(0.75, -0.75, 0.75), axis=(0.0, 0.0, 0.001), radius=0.5)
+    p4 = Cylinder(center=(-1.0, -0.5, -1.0), axis=(0.0, 0.5, 0.0), radius=1.25)
+    n5 = Difference(p3, p4)
+    n6 = Difference(n2, n5)
+    p7 = Cylinder(center=(0.75, -0.75, 0.75), axis=(0.0, 0.0, 0.001), radius=0.5)
+    tree = Difference(n6, p7)
+    return tree
+
+
+# case 743, trimesh-manifold: raised ValueError: Not all meshes are volumes!
+def case_743():
+    p0 = Cylinder(center=(0.75, -0.75, 0.75), axis=(0.0, 0.0, 0.001), radius=0.5)
+    p1 = Box(center=(0.5, -0.5, -1.0), size=(1.0, 1.0, 0.0001))
+    n2 = Intersection(p0, p1)
+    p3 = Cylinder(center=(0.75, -0.75, 0.75), axis=(0.0, 0.0, 0.001), radius=0.5)
+    p4 = Cylinder(center=(0.0, -0.5, -1.0), axis=(0.0, 0.5, 0.0), radius=1.25)
+    n5 = Difference(p3, p4)
+    n6 = Difference(n2, n5)
+    p7 = Cylinder(center=(0.75, -0.75, 0.75), axis=(0.0, 0.0, 0.001), radius=0.5)
+    tree = Difference(n6, p7)
+    return tree
+
+
+# case 751, trimesh-manifold: wrong volume
+# volume    9.55945062 (true 9.6211525): error -6.170e-02, tessellation -6.170e-02, bound 6.170e-02 -> wrong
+# area      30.5968209 (true 30.7378793): error -1.411e-01, tessellation -1.411e-01 -> tessellation
+# hausdorff mesh->true 8.426e-03, true->mesh 8.427e-03, tessellation 8.427e-03 -> tessellation
+# topology  1 components, genus 0, watertight True, winding consistent True (true: 1, genus 0, from mesh) -> exact
+# verdict   WRONG: volume
+# case 751, pyvista: wrong volume, topology
+# volume    9.5547207 (true 9.6211525): error -6.643e-02, tessellation -6.170e-02, bound 6.170e-02 -> wrong
+# area      30.6062807 (true 30.7378793): error -1.316e-01, tessellation -1.411e-01 -> tessellation
+# hausdorff mesh->true 8.427e-03, true->mesh 8.427e-03, tessellation 8.427e-03 -> tessellation
+# topology  1 components, genus 0, watertight True, winding consistent False (true: 1, genus 0, from mesh) -> wrong
+# verdict   WRONG: volume, topology
+def case_751():
+    p0 = Box(center=(-0.75, -1.0, 0.75), size=(1.0, 1.0, 0.0001))
+    p1 = Cylinder(center=(-1.0, -1.0, -0.5), axis=(1.0, 0.0, 0.0), radius=1.75)
+    tree = Union(p0, p1)
+    return tree
+
+
+# case 752, pyvista: wrong volume, area, hausdorff, topology
+# volume    0 (true 0.196449541): error -1.964e-01, tessellation -1.259e-03, bound 1.259e-03 -> wrong
+# area      0 (true 3.96389541): error -3.964e+00, tessellation -5.041e-03 -> wrong
+# hausdorff mesh->true inf, true->mesh inf, tessellation 1.204e-03 -> wrong
+# topology  0 components, genus 0, watertight True, winding consistent True (true: 2, genus 0, from mesh) -> wrong
+# verdict   WRONG: volume, area, hausdorff, topology
+def case_752():
+    p0 = Box(center=(-0.75, -1.0, 0.75), size=(1.0, 1.0, 0.0001))
+    p1 = Cylinder(center=(-1.0, -1.0, -0.5), axis=(1.0, 0.0, 0.0), radius=0.25)
+    tree = Union(p0, p1)
+    return tree
+
+
+# case 753, trimesh-manifold: wrong volume, area, hausdorff
+# volume    0.000100016594 (true 0.0001): error +1.659e-08, tessellation -7.345e-18, bound 2.204e-17 -> wrong
+# area      2.00040007 (true 2.0004): error +6.638e-08, tessellation +0.000e+00 -> wrong
+# hausdorff mesh->true 8.297e-09, true->mesh 8.297e-09, tessellation 5.509e-18 -> wrong
+# topology  1 components, genus 0, watertight True, winding consistent True (true: 1, genus 0, from polygons) -> exact
+# verdict   WRONG: volume, area, hausdorff
+def case_753():
+    p0 = Box(center=(-0.75, -1.0, 0.75), size=(1.0, 1.0, 0.0001))
+    p1 = Box(center=(-0.75, -1.0, 0.75), size=(1.0, 1.0, 0.0001))
+    tree = Union(p0, p1)
+    return tree
+
+
+# case 754, trimesh-manifold: wrong volume, area, hausdorff
+# volume    0.000199973583 (true 0.0002): error -2.642e-08, tessellation +8.899e-17, bound 1.203e-16 -> wrong
+# area      4.00079989 (true 4.0008): error -1.057e-07, tessellation +0.000e+00 -> wrong
+# hausdorff mesh->true 5.131e-08, true->mesh 5.131e-08, tessellation 1.055e-16 -> wrong
+# topology  2 components, genus 0, watertight True, winding consistent True (true: 2, genus 0, from polygons) -> exact
+# verdict   WRONG: volume, area, hausdorff
+# case 754, pyvista: wrong volume, area, hausdorff, topology
+# volume    0 (true 0.0002): error -2.000e-04, tessellation +8.899e-17, bound 1.203e-16 -> wrong
+# area      0 (true 4.0008): error -4.001e+00, tessellation +0.000e+00 -> wrong
+# hausdorff mesh->true inf, true->mesh inf, tessellation 1.055e-16 -> wrong
+# topology  0 components, genus 0, watertight True, winding consistent True (true: 2, genus 0, from polygons) -> wrong
+# verdict   WRONG: volume, area, hausdorff, topology
+def case_754():
+    p0 = Box(center=(-0.75, -1.0, -1.0), size=(1.0, 1.0, 0.0001))
+    p1 = Box(center=(-0.75, -1.0, 0.75), size=(1.0, 1.0, 0.0001))
+    tree = Union(p0, p1)
+    return tree
+
+
+# case 755, trimesh-manifold: wrong volume, area, hausdorff
+# volume    9.99569893e-05 (true 0.0001): error -4.301e-08, tessellation +6.666e-17, bound 2.185e-16 -> wrong
+# area      2.00039983 (true 2.0004): error -1.720e-07, tessellation +8.882e-16 -> wrong
+# hausdorff mesh->true 5.131e-08, true->mesh 5.131e-08, tessellation 1.055e-16 -> wrong
+# topology  1 components, genus 0, watertight True, winding consistent True (true: 1, genus 0, from polygons) -> exact
+# verdict   WRONG: volume, area, hausdorff
+def case_755():
+    p0 = Box(center=(-0.75, -1.0, -1.0), size=(1.0, 1.0, 0.0001))
+    p1 = Box(center=(-0.75, -1.0, -1.0), size=(1.0, 1.0, 0.0001))
+    tree = Union(p0, p1)
+    return tree
+
+
+# case 761, trimesh-manifold: raised ValueError: Not all meshes are volumes!
+def case_761():
+    p0 = Cylinder(center=(0.5, 0.25, 1.0), axis=(0.3, -0.5, 1.0), radius=0.001)
+    p1 = Box(center=(0.5, 0.5, -0.75), size=(1.0, 1.0, 0.0001))
+    n2 = Difference(p0, p1)
+    p3 = Cylinder(center=(0.5, 0.25, 1.0), axis=(0.3, -0.5, 1.0), radius=0.001)
+    n4 = Difference(n2, p3)
+    p5 = Cone(center=(0.0, 1.0, 1.0), axis=(0.44999999999999996, -0.75, 1.5), radius=0.5)
+    n6 = Union(n4, p5)
+    p7 = Cylinder(center=(0.5, 0.25, 1.0), axis=(0.3, -0.5, 1.0), radius=0.001)
+    tree = Difference(n6, p7)
+    return tree
+
+
+# case 763, trimesh-manifold: wrong volume
+# volume    0.130160169 (true 0.130999694): error -8.395e-04, tessellation -8.395e-04, bound 8.395e-04 -> wrong
+# area      3.88703174 (true 3.8965189): error -9.487e-03, tessellation -9.487e-03 -> tessellation
+# hausdorff mesh->true 1.668e-03, true->mesh 1.685e-03, tessellation 1.693e-03 -> tessellation
+# topology  2 components, genus 0, watertight True, winding consistent True (true: 2, genus 0, from mesh) -> exact
+# verdict   WRONG: volume
+# case 763, pyvista: wrong volume, area, hausdorff, topology
+# volume    0 (true 0.130999694): error -1.310e-01, tessellation -8.395e-04, bound 8.395e-04 -> wrong
+# area      0 (true 3.8965189): error -3.897e+00, tessellation -9.487e-03 -> wrong
+# hausdorff mesh->true inf, true->mesh inf, tessellation 1.693e-03 -> wrong
+# topology  0 components, genus 0, watertight True, winding consistent True (true: 2, genus 0, from mesh) -> wrong
+# verdict   WRONG: volume, area, hausdorff, topology
+def case_763():
+    p0 = Box(center=(1.0, 0.0, 1.0), size=(1.0, 1.0, 0.0001))
+    p1 = Cone(center=(-0.75, -0.5, 0.0), axis=(0.0, 0.5, 0.0), radius=0.5)
+    tree = Union(p0, p1)
+    return tree
+
+
+# case 765, pyvista: wrong area, hausdorff, topology
+# volume    0.188565287 (true 0.189613181): error -1.048e-03, tessellation -1.048e-03, bound 1.679e-03 -> tessellation
+# area      1.83351632 (true 2.49332485): error -6.598e-01, tessellation -1.047e-02 -> wrong
+# hausdorff mesh->true 1.687e-03, true->mesh 3.283e-01, tessellation 2.333e-03 -> wrong
+# topology  1 components, genus 1, watertight False, winding consistent True (true: 1, genus 0, from mesh) -> wrong
+# verdict   WRONG: area, hausdorff, topology
+def case_765():
+    p0 = Cone(center=(-0.75, -0.5, 0.0), axis=(0.0, 0.5, 0.0), radius=0.5)
+    p1 = Cone(center=(-0.5, -0.5, 0.0), axis=(0.0, 0.5, 0.0), radius=0.5)
+    tree = Union(p0, p1)
+    return tree
+
+
+# case 766, pyvista: wrong volume, area, hausdorff, topology
+# volume    0.165762057 (true 0.240327986): error -7.457e-02, tessellation -1.338e-03, bound 1.679e-03 -> wrong
+# area      2.62950801 (true 3.17168298): error -5.422e-01, tessellation -1.230e-02 -> wrong
+# hausdorff mesh->true 1.682e-03, true->mesh 2.171e-01, tessellation 1.738e-03 -> wrong
+# topology  6 components, genus 7.5, watertight False, winding consistent True (true: 1, genus 0, from mesh) -> wrong
+# verdict   WRONG: volume, area, hausdorff, topology
+def case_766():
+    p0 = Cone(center=(-0.75, -0.5, -0.5), axis=(0.0, 0.5, 0.0), radius=0.5)
+    p1 = Cone(center=(-0.5, -0.5, 0.0), axis=(0.0, 0.5, 0.0), radius=0.5)
+    tree = Union(p0, p1)
+    return tree
+
+
+# case 768, pyvista: wrong volume, area, hausdorff, topology
+# volume    0.235983214 (true 0.232983424): error +3.000e-03, tessellation -1.281e-03, bound 1.679e-03 -> wrong
+# area      2.59205465 (true 3.05085135): error -4.588e-01, tessellation -1.203e-02 -> wrong
+# hausdorff mesh->true 1.658e-03, true->mesh 2.203e-01, tessellation 2.212e-03 -> wrong
+# topology  3 components, genus 4.5, watertight False, winding consistent True (true: 1, genus 0, from mesh) -> wrong
+# verdict   WRONG: volume, area, hausdorff, topology
+def case_768():
+    p0 = Cone(center=(-0.5, -0.5, 0.0), axis=(0.0, 0.5, 0.0), radius=0.5)
+    p1 = Cone(center=(-0.5, -0.5, 0.5), axis=(0.0, 0.5, 0.0), radius=0.5)
+    tree = Union(p0, p1)
+    return tree
+
+
+# case 769, pyvista: wrong volume, area, hausdorff, topology
+# volume    0.235983214 (true 0.232983424): error +3.000e-03, tessellation -1.281e-03, bound 1.679e-03 -> wrong
+# area      2.59205465 (true 3.05085135): error -4.588e-01, tessellation -1.203e-02 -> wrong
+# hausdorff mesh->true 1.684e-03, true->mesh 2.377e-01, tessellation 2.008e-03 -> wrong
+# topology  3 components, genus 4.5, watertight False, winding consistent True (true: 1, genus 0, from mesh) -> wrong
+# verdict   WRONG: volume, area, hausdorff, topology
+def case_769():
+    p0 = Cone(center=(-0.5, -0.5, 0.5), axis=(0.0, 0.5, 0.0), radius=0.5)
+    p1 = Cone(center=(-0.5, -0.5, 0.0), axis=(0.0, 0.5, 0.0), radius=0.5)
+    tree = Union(p0, p1)
+    return tree
+
+
+# case 775, trimesh-manifold: raised ValueError: Not all meshes are volumes!
+def case_775():
+    p0 = Sphere(center=(-0.25, -0.75, 0.0), radius=0.25)
+    p1 = Cone(center=(0.0, 0.0, 0.0), axis=(0.0, 1.0, 0.0), radius=1.0)
+    p2 = Cone(center=(0.0, 0.0, 0.0), axis=(0.0, 1.0, 0.0), radius=1.0)
+    n3 = Difference(p1, p2)
+    n4 = Difference(p0, n3)
+    p5 = Sphere(center=(-0.25, -0.75, 0.0), radius=0.25)
+    tree = Intersection(n4, p5)
+    return tree
+
+
+# case 777, trimesh-manifold: raised ValueError: Not all meshes are volumes!
+def case_777():
+    p0 = Torus(center=(-1.0, 0.25, -1.0), axis=(0.5773502691896258, 0.5773502691896258, 0.5773502691896258), major=1.0, minor=0.5)
+    p1 = Sphere(center=(1.0, -0.75, -0.75), radius=0.5)
+    n2 = Intersection(p0, p1)
+    p3 = Cylinder(center=(-1.0, 1.0, -0.5), axis=(0.0, 0.0, 0.001), radius=0.5)
+    n4 = Difference(n2, p3)
+    p5 = Cylinder(center=(0.5, 0.5, 0.25), axis=(0.3, -0.5, 1.0), radius=0.001)
+    tree = Difference(n4, p5)
+    return tree
+
+
+# case 778, trimesh-manifold: raised ValueError: Not all meshes are volumes!
+def case_778():
+    p0 = Torus(center=(-1.0, 0.25, -1.0), axis=(0.5773502691896258, 0.5773502691896258, 0.5773502691896258), major=1.0, minor=0.5)
+    p1 = Sphere(center=(1.0, -0.75, -0.75), radius=0.5)
+    n2 = Intersection(p0, p1)
+    p3 = Torus(center=(-1.0, 0.25, -1.0), axis=(0.5773502691896258, 0.5773502691896258, 0.5773502691896258), major=1.0, minor=0.5)
+    n4 = Difference(n2, p3)
+    p5 = Cylinder(center=(0.5, 0.5, 0.25), axis=(0.3, -0.5, 1.0), radius=0.001)
+    tree = Difference(n4, p5)
+    return tree
+
+
+# case 779, trimesh-manifold: raised ValueError: Not all meshes are volumes!
+def case_779():
+    p0 = Torus(center=(-1.0, 0.25, -1.0), axis=(0.5773502691896258, 0.5773502691896258, 0.5773502691896258), major=1.0, minor=0.5)
+    p1 = Sphere(center=(1.0, -0.75, -0.75), radius=0.5)
+    n2 = Intersection(p0, p1)
+    p3 = Torus(center=(-1.0, 0.25, -1.0), axis=(0.5773502691896258, 0.5773502691896258, 0.5773502691896258), major=1.0, minor=0.5)
+    n4 = Difference(n2, p3)
+    p5 = Cylinder(center=(0.5, -1.0, 0.25), axis=(0.3, -0.5, 1.0), radius=0.001)
+    tree = Difference(n4, p5)
+    return tree
+
+
+# case 780, trimesh-manifold: raised ValueError: Not all meshes are volumes!
+def case_780():
+    p0 = Torus(center=(-1.0, 0.25, -1.0), axis=(0.25916052767440806, -0.4319342127906801, 0.8638684255813602), major=1.0, minor=0.5)
+    p1 = Sphere(center=(1.0, -0.75, -0.75), radius=0.5)
+    n2 = Intersection(p0, p1)
+    p3 = Torus(center=(-1.0, 0.25, -1.0), axis=(0.5773502691896258, 0.5773502691896258, 0.5773502691896258), major=1.0, minor=0.5)
+    n4 = Difference(n2, p3)
+    p5 = Cylinder(center=(0.5, -1.0, 0.25), axis=(0.3, -0.5, 1.0), radius=0.001)
+    tree = Difference(n4, p5)
+    return tree
+
+
+# case 781, trimesh-manifold: raised ValueError: Not all meshes are volumes!
+def case_781():
+    p0 = Torus(center=(-1.0, 0.25, -1.0), axis=(0.5773502691896258, 0.5773502691896258, 0.5773502691896258), major=1.0, minor=0.5)
+    p1 = Sphere(center=(1.0, -0.75, -0.75), radius=0.5)
+    n2 = Intersection(p0, p1)
+    p3 = Torus(center=(0.5, 0.25, -1.0), axis=(0.5773502691896258, 0.5773502691896258, 0.5773502691896258), major=1.0, minor=0.5)
+    n4 = Difference(n2, p3)
+    p5 = Cylinder(center=(0.5, -1.0, 0.25), axis=(0.3, -0.5, 1.0), radius=0.001)
+    tree = Difference(n4, p5)
+    return tree
+
+
+# case 782, trimesh-manifold: raised ValueError: Not all meshes are volumes!
+def case_782():
+    p0 = Torus(center=(1.0, -0.75, -0.75), axis=(0.5773502691896258, 0.5773502691896258, 0.5773502691896258), major=1.0, minor=0.5)
+    p1 = Sphere(center=(1.0, -0.75, -0.75), radius=0.5)
+    n2 = Intersection(p0, p1)
+    p3 = Torus(center=(0.5, 0.25, -1.0), axis=(0.5773502691896258, 0.5773502691896258, 0.5773502691896258), major=1.0, minor=0.5)
+    n4 = Difference(n2, p3)
+    p5 = Cylinder(center=(0.5, -1.0, 0.25), axis=(0.3, -0.5, 1.0), radius=0.001)
+    tree = Difference(n4, p5)
+    return tree
+
+
+# case 783, trimesh-manifold: raised ValueError: Not all meshes are volumes!
+def case_783():
+    p0 = Torus(center=(1.0, -0.75, -0.75), axis=(0.5773502691896258, 0.5773502691896258, 0.5773502691896258), major=1.0, minor=0.5)
+    p1 = Sphere(center=(1.0, -0.75, -0.75), radius=0.5)
+    n2 = Intersection(p0, p1)
+    p3 = Torus(center=(1.0, -0.75, -0.75), axis=(0.5773502691896258, 0.5773502691896258, 0.5773502691896258), major=1.0, minor=0.5)
+    n4 = Difference(n2, p3)
+    p5 = Cylinder(center=(0.5, -1.0, 0.25), axis=(0.3, -0.5, 1.0), radius=0.001)
+    tree = Difference(n4, p5)
+    return tree
+
+
+# case 784, pyvista: wrong volume, area, hausdorff, topology
+# volume    0 (true 8.18123087): error -8.181e+00, tessellation -1.828e-01, bound 2.930e-01 -> wrong
+# area      0 (true 19.6349541): error -1.963e+01, tessellation -2.392e-01 -> wrong
+# hausdorff mesh->true inf, true->mesh inf, tessellation 1.610e-02 -> wrong
+# topology  0 components, genus 0, watertight True, winding consistent True (true: 1, genus 0, from mesh) -> wrong
+# verdict   WRONG: volume, area, hausdorff, topology
+def case_784():
+    p0 = Sphere(center=(1.0, -0.75, -0.75), radius=1.25)
+    p1 = Cylinder(center=(0.5, -0.75, 0.0), axis=(1.0, 1.0, 1.0), radius=1.75)
+    p2 = Cone(center=(0.0, 0.25, 0.25), axis=(0.525, -0.875, 1.75), radius=0.5)
+    n3 = Intersection(p1, p2)
+    tree = Difference(p0, n3)
+    return tree
+
+
+# case 785, pyvista: wrong volume, area, hausdorff, topology
+# volume    0 (true 8.18123087): error -8.181e+00, tessellation -1.828e-01, bound 2.576e-01 -> wrong
+# area      0 (true 19.6349541): error -1.963e+01, tessellation -2.392e-01 -> wrong
+# hausdorff mesh->true inf, true->mesh inf, tessellation 1.641e-02 -> wrong
+# topology  0 components, genus 0, watertight True, winding consistent True (true: 1, genus 0, from mesh) -> wrong
+# verdict   WRONG: volume, area, hausdorff, topology
+def case_785():
+    p0 = Sphere(center=(1.0, -0.75, -0.75), radius=1.25)
+    p1 = Cylinder(center=(0.5, -0.75, 0.0), axis=(0.3, -0.5, 1.0), radius=1.75)
+    p2 = Cone(center=(0.0, 0.25, 0.25), axis=(0.525, -0.875, 1.75), radius=0.5)
+    n3 = Intersection(p1, p2)
+    tree = Difference(p0, n3)
+    return tree
+
+
+# case 786: over 120 s, skipped
+def case_786():
+    p0 = Sphere(center=(1.0, -0.75, -0.75), radius=1.25)
+    p1 = Cylinder(center=(0.5, -0.75, 0.0), axis=(0.3, -0.5, 1.0), radius=1.75)
+    p2 = Sphere(center=(1.0, -0.75, -0.75), radius=1.25)
+    n3 = Intersection(p1, p2)
+    tree = Difference(p0, n3)
+    return tree
+
+
+# case 787: over 120 s, skipped
+def case_787():
+    p0 = Sphere(center=(1.0, -0.75, -0.75), radius=1.25)
+    p1 = Cylinder(center=(0.5, -0.75, 0.0), axis=(0.3, -0.5, 1.0), radius=1.75)
+    p2 = Sphere(center=(1.0, -0.75, -0.75), radius=1.25)
+    n3 = Intersection(p1, p2)
+    tree = Intersection(p0, n3)
+    return tree
+
+
+# case 789, pyvista: wrong volume, area, hausdorff, topology
+# volume    0 (true 1.59351471): error -1.594e+00, tessellation -5.193e-02, bound 4.369e-01 -> wrong
+# area      0 (true 7.99043394): error -7.990e+00, tessellation -1.515e-01 -> wrong
+# hausdorff mesh->true inf, true->mesh inf, tessellation 1.631e-02 -> wrong
+# topology  0 components, genus 0, watertight True, winding consistent True (true: 1, genus 0, from mesh) -> wrong
+# verdict   WRONG: volume, area, hausdorff, topology
+def case_789():
+    p0 = Sphere(center=(1.0, -0.75, -0.75), radius=1.25)
+    p1 = Cylinder(center=(0.5, -0.75, 0.0), axis=(0.3, -0.5, 1.0), radius=1.75)
+    p2 = Sphere(center=(0.0, -0.75, -0.75), radius=1.25)
+    n3 = Intersection(p1, p2)
+    tree = Intersection(p0, n3)
+    return tree
+
+
+# case 792, pyvista: wrong topology
+# volume    0.600884763 (true 0.592151439): error +8.733e-03, tessellation -4.131e-03, bound 3.117e-02 -> tessellation
+# area      4.1554276 (true 4.14532876): error +1.010e-02, tessellation -1.730e-02 -> tessellation
+# hausdorff mesh->true 3.265e-03, true->mesh 3.161e-03, tessellation 3.231e-03 -> tessellation
+# topology  12 components, genus 8.5, watertight False, winding consistent False (true: 1, genus 0, from mesh) -> wrong
+# verdict   WRONG: topology
+def case_792():
+    p0 = Cone(center=(1.0, 1.0, 0.75), axis=(1.25, 0.0, 0.0), radius=0.75)
+    p1 = Cone(center=(1.0, 1.0, 0.75), axis=(0.0, 1.75, 0.0), radius=1.5)
+    tree = Intersection(p0, p1)
+    return tree
+
+
+# case 794, trimesh-manifold: raised ValueError: Not all meshes are volumes!
+def case_794():
+    p0 = Sphere(center=(-0.75, -1.0, 0.25), radius=2.0)
+    p1 = Box(center=(0.75, -0.5, 1.0), size=(1.0, 1.0, 0.0001))
+    p2 = Box(center=(0.07309292618068419, -0.23907618899075886, -1.0), size=(0.25, 1.75, 0.5), orientation=((0.9563047559630354, -0.29237170472273677, 0.0), (0.29237170472273677, 0.9563047559630354, 0.0), (0.0, 0.0, 1.0)))
+    p3 = Sphere(center=(-0.25, -0.5, 0.25), radius=2.0)
+    n4 = Difference(p2, p3)
+    n5 = Difference(p1, n4)
+    tree = Union(p0, n5)
+    return tree
+
+
+# case 795, trimesh-manifold: raised ValueError: Not all meshes are volumes!
+def case_795():
+    p0 = Sphere(center=(-0.75, -1.0, 0.5), radius=2.0)
+    p1 = Box(center=(0.75, -0.5, 1.0), size=(1.0, 1.0, 0.0001))
+    p2 = Box(center=(0.07309292618068419, -0.23907618899075886, -1.0), size=(0.25, 1.75, 0.5), orientation=((0.9563047559630354, -0.29237170472273677, 0.0), (0.29237170472273677, 0.9563047559630354, 0.0), (0.0, 0.0, 1.0)))
+    p3 = Sphere(center=(-0.25, -0.5, 0.25), radius=2.0)
+    n4 = Difference(p2, p3)
+    n5 = Difference(p1, n4)
+    tree = Union(p0, n5)
+    return tree
+
+
+# case 796, trimesh-manifold: raised ValueError: Not all meshes are volumes!
+def case_796():
+    p0 = Sphere(center=(-0.75, -1.0, 0.5), radius=2.0)
+    p1 = Box(center=(0.75, -0.5, 1.0), size=(1.0, 1.0, 0.0001))
+    p2 = Box(center=(0.07309292618068419, -0.23907618899075886, -1.0), size=(0.25, 0.5, 0.5), orientation=((0.9563047559630354, -0.29237170472273677, 0.0), (0.29237170472273677, 0.9563047559630354, 0.0), (0.0, 0.0, 1.0)))
+    p3 = Sphere(center=(-0.25, -0.5, 0.25), radius=2.0)
+    n4 = Difference(p2, p3)
+    n5 = Difference(p1, n4)
+    tree = Union(p0, n5)
+    return tree
+
+
+# case 797, trimesh-manifold: raised ValueError: Not all meshes are volumes!
+def case_797():
+    p0 = Sphere(center=(-0.75, -1.0, 0.5), radius=2.0)
+    p1 = Box(center=(0.25, 0.5, 0.5), size=(1.0, 1.0, 0.0001))
+    p2 = Box(center=(0.07309292618068419, -0.23907618899075886, -1.0), size=(0.25, 0.5, 0.5), orientation=((0.9563047559630354, -0.29237170472273677, 0.0), (0.29237170472273677, 0.9563047559630354, 0.0), (0.0, 0.0, 1.0)))
+    p3 = Sphere(center=(-0.25, -0.5, 0.25), radius=2.0)
+    n4 = Difference(p2, p3)
+    n5 = Difference(p1, n4)
+    tree = Union(p0, n5)
     return tree
