@@ -7,7 +7,7 @@ import time
 from collections.abc import Callable, Sequence
 from typing import Any
 
-__all__ = ["median_time", "format_table", "print_table", "fmt_seconds", "fmt_rate", "run_child"]
+__all__ = ["median_time", "format_table", "print_table", "fmt_seconds", "fmt_rate", "run_child", "openscad_export"]
 
 
 def median_time(fn: Callable[[], Any], repeats: int, *, warmup: int = 0) -> tuple[float, Any]:
@@ -105,3 +105,17 @@ def run_child(argv: Sequence[str], timeout: float, *, env: dict[str, str] | None
                 continue
     peak = max([peak] + [float(r.get("maxrss_mb", 0.0)) for r in records])
     return records, status, peak
+
+
+def openscad_export(model: Any, out: Any, timeout: float) -> bool:
+    """``openscad -o OUT MODEL`` (run in the model's folder) unless ``out`` exists; whether ``out``
+    exists afterwards (False when the program timed out or wrote nothing)."""
+    import subprocess
+
+    if not out.exists():
+        try:
+            subprocess.run(["openscad", "-o", str(out), model.name], cwd=model.parent, capture_output=True,
+                           timeout=timeout, check=False)
+        except subprocess.TimeoutExpired:
+            return False
+    return bool(out.exists())

@@ -23,22 +23,19 @@ from __future__ import annotations
 import argparse
 import collections
 import signal
-import subprocess
+import sys
 import warnings
 from pathlib import Path
 from typing import Any
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from _common import openscad_export  # noqa: E402
 
 
 def _solid(model: Path, root: Path, cache: Path, timeout: float) -> bool:
     """Whether OpenSCAD's STL export of ``model`` has facets (exported once, then read from ``cache``)."""
     out = cache / ("._" + str(model.relative_to(root)).replace("/", "_") + ".stl")
-    if not out.exists():
-        try:
-            subprocess.run(["openscad", "-o", str(out), model.name], cwd=model.parent, capture_output=True,
-                           timeout=timeout, check=False)
-        except subprocess.TimeoutExpired:
-            return False
-    return out.exists() and out.stat().st_size > 0 and b"facet" in out.read_bytes()[:4096]
+    return openscad_export(model, out, timeout) and out.stat().st_size > 0 and b"facet" in out.read_bytes()[:4096]
 
 
 class _Timeout(Exception):

@@ -52,13 +52,15 @@ import collections
 import multiprocessing as mp
 import re
 import statistics
-import subprocess
 import sys
 import time
 import warnings
 from pathlib import Path
 
 HERE = Path(__file__).resolve().parent
+sys.path.insert(0, str(HERE))
+from _common import openscad_export  # noqa: E402
+
 SAMPLE = HERE / "openscad_realworld_sample.txt"
 HEAVY = HERE / "openscad_realworld_heavy.txt"
 
@@ -66,13 +68,7 @@ HEAVY = HERE / "openscad_realworld_heavy.txt"
 def _export(model: Path, root: Path, suffix: str, timeout: float) -> Path | None:
     """``openscad -o model.SUFFIX``, cached under ``DIR/_SUFFIX``; None when it timed out or wrote nothing."""
     out = root / f"_{suffix}" / (str(model.relative_to(root)).replace("/", "__") + f".{suffix}")
-    if not out.exists():
-        try:
-            subprocess.run(["openscad", "-o", str(out), model.name], cwd=model.parent, capture_output=True,
-                           timeout=timeout, check=False)
-        except subprocess.TimeoutExpired:
-            return None
-    return out if out.exists() else None
+    return out if openscad_export(model, out, timeout) else None
 
 
 def _stl_volume(model: Path, root: Path, timeout: float) -> float | None:
