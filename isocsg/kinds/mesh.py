@@ -129,7 +129,6 @@ _SIMPLE: contextvars.ContextVar[bool] = contextvars.ContextVar("isocsg_mesh_simp
 
 @register_kind("mesh", required=("vertices", "faces"))
 @dataclass(frozen=True, eq=False)
-
 class TriangleMesh(Primitive):
     """A closed triangle mesh as a solid (see the module docstring for validity and exactness).
 
