@@ -163,6 +163,7 @@ class _Tree:
         #: the tangency probes' distance: at 1e-4 of the size, sd differences of 5e-9 of the size at
         #: unit relative curvature, far above the tolerance
         self.probe = 1e-4 * scale
+        self._same: dict[tuple[int, int], bool] = {}
         self.last_inside_minus = np.zeros(0, bool)
         # every part of the surface flat, and the planes all of it (a convex polytope)
         self.planar = [bool(p.polyhedral and p.convex) for p in self.leaves]
@@ -216,7 +217,7 @@ class _Tree:
             if len(on):
                 d = np.einsum("ij,ij->i", self.normals(j, p[on], n[on]), n[on])
                 same, opp = d > 1 - 1e-6, d < -(1 - 1e-6)
-                if not (self.planar[i] and self.planar[j]):  # two planes are coincident or cross
+                if not (self.planar[i] and self.planar[j]) and not self._equal(i, j):  # planes: coincide or cross
                     side = self._tangent_side(i, j, p[on], n[on], np.where(opp, -1.0, 1.0), same | opp)
                     touch = side != 0
                     pl[on[touch]] = mi[on[touch]] = side[touch] < 0
@@ -232,6 +233,13 @@ class _Tree:
         rm = self.prog.evaluate(lambda a, _: minus.get(a, empty), combine_masks)
         self.last_inside_minus = rm  # the result's side: outward normal n where it lies on the minus side
         return (rp != rm) & ~skip, undecided
+
+    def _equal(self, i: int, j: int) -> bool:
+        """Whether leaves ``i`` and ``j`` are the same primitive (their surfaces coincide everywhere)."""
+        key = (min(i, j), max(i, j))
+        if key not in self._same:
+            self._same[key] = bool(self.leaves[i] == self.leaves[j])
+        return self._same[key]
 
     def _flat_at(self, j: int, p: F64, n: F64) -> NDArray[np.bool_]:
         """Whether leaf ``j``'s surface is flat at points ``p`` on it with normals ``+-n``: on one
