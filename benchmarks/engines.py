@@ -18,6 +18,11 @@ The distributions are printed, and every case judged wrong is listed with its re
 
     python benchmarks/engines.py --n 200 --seed 1 [--fuzz 0.2] [--max-cubes 100] [--tol 1e-5] [--findings FILE]
 
+isocsg's work on a tree (reference, comparisons) has ``--budget`` seconds; each engine has
+``--engine-budget`` seconds of its own, and one past it (VTK's Booleans hang now and then) is
+recorded as over the budget for that tree while the others are still judged. ``--only K,K,...``
+judges only those trees.
+
 ``--rejudge-topology RESULTS --rejudged OUT`` (with the arguments or ``--cases`` that drew the
 trees) judges only the topology again, with the current truth (``isocsg.testing.true_topology``:
 an all-planar tree's from its exact boundary polygons), for the all-planar trees of a results
