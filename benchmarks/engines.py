@@ -18,6 +18,11 @@ The distributions are printed, and every case judged wrong is listed with its re
 
     python benchmarks/engines.py --n 200 --seed 1 [--fuzz 0.2] [--max-cubes 100] [--tol 1e-5] [--findings FILE]
 
+isocsg's work on a tree (reference, comparisons) has ``--budget`` seconds; each engine has
+``--engine-budget`` seconds of its own, and one past it (VTK's Booleans hang now and then) is
+recorded as over the budget for that tree while the others are still judged. ``--only K,K,...``
+judges only those trees.
+
 ``--rejudge-topology RESULTS --rejudged OUT`` (with the arguments or ``--cases`` that drew the
 trees) judges only the topology again, with the current truth (``isocsg.testing.true_topology``:
 an all-planar tree's from its exact boundary polygons), for the all-planar trees of a results
@@ -136,10 +141,54 @@ class EngineCrash(RuntimeError):
     """The engine killed the process it ran in (a segmentation fault)."""
 
 
+class EngineOverBudget(RuntimeError):
+    """The engine did not return within its own time budget (``--engine-budget``)."""
+
+
+def raise_timeout(*_: Any) -> None:
+    """The ``SIGALRM`` handler of every time budget here."""
+    raise TimeoutError
+
+
+class Clock:
+    """Seconds left for one tree's isocsg work (its reference and comparisons, ``--budget``):
+    ``with clock:`` runs a phase under ``SIGALRM`` for what is left and counts the time it took,
+    so that an engine's own time (``engine_timer``) is not charged to the tree."""
+
+    def __init__(self, seconds: float) -> None:
+        self.left = float(seconds)
+
+    def __enter__(self) -> Clock:
+        if self.left <= 0:
+            raise TimeoutError
+        self.t0 = time.time()
+        signal.setitimer(signal.ITIMER_REAL, self.left)
+        return self
+
+    def __exit__(self, *exc: Any) -> None:
+        signal.setitimer(signal.ITIMER_REAL, 0)
+        self.left -= time.time() - self.t0
+
+
+def engine_timer(eng: str, tree: Any, mf: list[Any], seconds: float) -> Any:
+    """:func:`engine_mesh` under its own ``SIGALRM`` of ``seconds`` (a forked engine gets that as its
+    timeout and a few seconds more to be stopped); :class:`EngineOverBudget` past it."""
+    signal.setitimer(signal.ITIMER_REAL, seconds + 10.0)
+    try:
+        return engine_mesh(eng, tree, mf, seconds)
+    except TimeoutError:
+        raise EngineOverBudget(f"over its budget of {seconds:.0f} s") from None
+    finally:
+        signal.setitimer(signal.ITIMER_REAL, 0)
+
+
 def isolated(fn: Any, *args: Any, timeout: float = 120.0) -> Any:
     """``fn(*args)`` (a mesh) computed in a forked process: an engine that crashes (VTK's Booleans
-    can end in a segmentation fault) or hangs becomes a finding instead of ending the run."""
+    can end in a segmentation fault) or hangs becomes a finding instead of ending the run. The
+    wait ends as soon as the process has sent its mesh or has died (its sentinel): a crash is not
+    waited for until the timeout."""
     import multiprocessing as mp
+    from multiprocessing.connection import wait
 
     import trimesh
 
@@ -156,15 +205,25 @@ def isolated(fn: Any, *args: Any, timeout: float = 120.0) -> Any:
 
     proc = ctx.Process(target=target, daemon=True)  # never keeps the run from ending
     proc.start()
+    send.close()  # the child's copy is the only writer left: its death closes the pipe
+    res, ready = None, []
     try:
-        res = recv.recv() if recv.poll(timeout) else None
+        ready = wait([recv, proc.sentinel], timeout)
+        if recv in ready or recv.poll(0):
+            try:
+                res = recv.recv()
+            except EOFError:  # died without a word
+                res = None
         proc.join(5)
     finally:  # also when the tree's time budget interrupts the wait: no process left behind
         if proc.is_alive():
             proc.kill()
             proc.join()
+        recv.close()
     if res is None:
-        raise EngineCrash(f"crashed (exit code {proc.exitcode})" if proc.exitcode else f"hung over {timeout:.0f} s")
+        if not ready:
+            raise EngineOverBudget(f"hung over {timeout:.0f} s")
+        raise EngineCrash(f"crashed (exit code {proc.exitcode})")
     if res[0] == "raised":
         raise RuntimeError(res[1])
     if res[1] is None:
@@ -174,31 +233,41 @@ def isolated(fn: Any, *args: Any, timeout: float = 120.0) -> Any:
 
 def judge_tree(k: int, tree: Any, args: Any, engines: list[str]) -> tuple[dict[str, Any], list[str]]:
     """One tree: its reference, every engine's result and its comparison; the record written to
-    the results file and the findings (reproducers) of the cases judged wrong, raised or crashed."""
+    the results file and the findings (reproducers) of the cases judged wrong, raised, crashed
+    or over the budget.
+
+    isocsg's work on the tree (reference, leaf meshes, comparisons) has ``args.budget`` seconds
+    in all (``TimeoutError`` past it: the tree is not judged); each engine has
+    ``args.engine_budget`` seconds of its own, and one that takes longer is recorded as over the
+    budget for this tree while the other engines are still judged."""
     t0 = time.time()
-    ref = reference(tree, tol=args.tol)
+    signal.signal(signal.SIGALRM, raise_timeout)
+    clock = Clock(args.budget)
+    with clock:
+        ref = reference(tree, tol=args.tol)
     rec: dict[str, Any] = {"k": k, "leaves": solid_program(tree).n_leaves, "ref_seconds": time.time() - t0,
                            "engines": {}}
     notes: list[str] = []
     prog = solid_program(tree)
-    mf = [to_manifold(p, args.segments) for p in prog.leaves]
+    with clock:
+        mf = [to_manifold(p, args.segments) for p in prog.leaves]
     size = float(np.max(ref.bounds[1] - ref.bounds[0]))
     if not size > 0:  # an empty result's box: the leaves' scale
         size = max(float(np.max(np.asarray(p.bounds)[1] - np.asarray(p.bounds)[0])) for p in prog.leaves)
     for eng in engines:
         t1 = time.time()
         try:
-            mesh = engine_mesh(eng, tree, mf)
-        except TimeoutError:
-            raise  # the tree's time budget, not the engine
+            mesh = engine_timer(eng, tree, mf, getattr(args, "engine_budget", None) or args.budget)
         except Exception as exc:  # noqa: BLE001 - an engine's failure is a finding
-            crashed = isinstance(exc, EngineCrash)
-            what = str(exc) if crashed else f"raised {type(exc).__name__}: {exc}"
-            rec["engines"][eng] = {"status": "crashed" if crashed else "raised", "what": what[:300]}
+            status = ("over budget" if isinstance(exc, EngineOverBudget) else
+                      "crashed" if isinstance(exc, EngineCrash) else "raised")
+            what = f"raised {type(exc).__name__}: {exc}" if status == "raised" else str(exc)
+            rec["engines"][eng] = {"status": status, "what": what[:300], "stopped_after": time.time() - t1}
             notes.append(f"# case {k}, {eng}: {what}\n{to_python(tree)}\n")
             continue
         dt = time.time() - t1
-        c = compare_mesh(mesh, tree, segments=args.segments, samples=args.samples, ref=ref, seed=k)
+        with clock:
+            c = compare_mesh(mesh, tree, segments=args.segments, samples=args.samples, ref=ref, seed=k)
         vol_rel = abs(c.volume_error) / ref.volume if ref.volume > 0 else abs(c.volume_error) / size**3
         area_rel = abs(c.area_error) / ref.area if ref.area > 0 else abs(c.area_error) / size**2
         rec["engines"][eng] = {
@@ -210,11 +279,13 @@ def judge_tree(k: int, tree: Any, args: Any, engines: list[str]) -> tuple[dict[s
             notes.append(f"# case {k}, {eng}: wrong {', '.join(c.wrong)}\n# "
                          + c.summary().replace("\n", "\n# ") + f"\n{to_python(tree)}\n")
     rec["seconds"] = time.time() - t0
+    rec["isocsg_seconds"] = args.budget - clock.left
     return rec, notes
 
 
-def engine_mesh(eng: str, tree: Any, mf: list[Any]) -> Any:
-    """One engine's result for ``tree`` from the leaf meshes ``mf`` (manifold3d solids)."""
+def engine_mesh(eng: str, tree: Any, mf: list[Any], timeout: float = 120.0) -> Any:
+    """One engine's result for ``tree`` from the leaf meshes ``mf`` (manifold3d solids); pyvista's
+    in a forked process stopped after ``timeout`` seconds."""
     import pyvista as pv
 
     if eng == "manifold3d":
@@ -223,7 +294,7 @@ def engine_mesh(eng: str, tree: Any, mf: list[Any]) -> Any:
         return mesh
     if eng.startswith("trimesh-"):
         return run_trimesh(tree, [as_trimesh(m) for m in mf], eng.split("-", 1)[1])
-    return isolated(run_pyvista, tree, [pv.wrap(as_trimesh(m)) for m in mf])
+    return isolated(run_pyvista, tree, [pv.wrap(as_trimesh(m)) for m in mf], timeout=timeout)
 
 
 def rejudge_topology(cases: list[Any], records: list[dict[str, Any]], args: Any, out: str) -> None:
@@ -287,7 +358,12 @@ def main() -> None:
     ap.add_argument("--samples", type=int, default=1500)
     ap.add_argument("--tol", type=float, default=1e-5, help="relative accuracy of the reference figures")
     ap.add_argument("--engines", default="manifold3d,trimesh-manifold,pyvista")
-    ap.add_argument("--budget", type=int, default=60, help="seconds for one tree (reference and comparisons)")
+    ap.add_argument("--budget", type=int, default=60,
+                    help="seconds for isocsg's work on one tree (reference and comparisons; the engines' time aside)")
+    ap.add_argument("--engine-budget", type=int, default=None,
+                    help="seconds for one engine on one tree (default: --budget); past it that engine is recorded "
+                         "as over the budget and the others are still judged")
+    ap.add_argument("--only", default=None, help="judge only these trees: K,K,... (their positions in the list)")
     ap.add_argument("--findings", default=None, help="append every wrong case with its reproducer here")
     ap.add_argument("--results", default=None,
                     help="append one JSON line per tree here; trees already in it are skipped (a run resumes)")
@@ -329,6 +405,7 @@ def main() -> None:
             with open(args.cases, "wb") as fh:
                 pickle.dump(cases, fh)
     print(f"{len(cases)} trees drawn in {time.time() - t0:.1f} s; segments {args.segments}", flush=True)
+    signal.signal(signal.SIGALRM, raise_timeout)
     engines = args.engines.split(",")
     if args.rejudge_topology:
         if not args.rejudged:
@@ -337,8 +414,9 @@ def main() -> None:
         rejudge_topology(cases, records, args, args.rejudged)
         return
     if args.phases:
+        picks = None if args.only is None else [int(x) for x in args.only.split(",") if x.strip()]
         time_phases(cases, len(cases) - int(round(len(cases) * args.fuzz)), [int(x) for x in args.phases.split(",")],
-                    args, engines)
+                    args, engines, picks)
         return
     done: set[int] = set()
     if args.results and os.path.exists(args.results):
@@ -350,16 +428,12 @@ def main() -> None:
             with open(path, "a") as fh:
                 fh.write(text + "\n")
 
-    def alarm(*_: Any) -> None:
-        raise TimeoutError
-
-    signal.signal(signal.SIGALRM, alarm)
     n_random = len(cases) - int(round(len(cases) * args.fuzz))
+    only = None if args.only is None else {int(x) for x in args.only.split(",") if x.strip()}
     for k in judging_order(len(cases), n_random):
         tree = cases[k]
-        if k % shards != shard or k in done:
+        if k % shards != shard or k in done or (only is not None and k not in only):
             continue
-        signal.alarm(args.budget)
         try:
             rec, notes = judge_tree(k, tree, args, engines)
         except TimeoutError:
@@ -369,7 +443,7 @@ def main() -> None:
             rec, notes = {"k": k, "skipped": f"{type(exc).__name__}: {exc}"[:300]}, [
                 f"# case {k}: isocsg raised {type(exc).__name__}: {exc}\n{to_python(tree)}\n"]
         finally:
-            signal.alarm(0)
+            signal.setitimer(signal.ITIMER_REAL, 0)
         rec["fuzz"] = k >= n_random
         records.append(rec)
         write(args.results, json.dumps(rec))
@@ -383,23 +457,33 @@ def main() -> None:
     report(engines, records, f"{len(records)} trees in {time.time() - t0:.0f} s")
 
 
-def time_phases(cases: list[Any], n_random: int, counts: list[int], args: Any, engines: list[str]) -> None:
-    """Where one tree's time goes: the reference, each engine's Booleans (nan where it raised),
-    and the rest: the comparisons (tessellation reference meshes, sampling, distances) and the
-    time of an engine that raised (VTK's forked process may run to its timeout first)."""
-    picks = list(range(min(3, n_random)))
+def time_phases(
+    cases: list[Any], n_random: int, counts: list[int], args: Any, engines: list[str], only: list[int] | None = None,
+) -> None:
+    """Where one tree's time goes: the reference, each engine (its Booleans, or the time until it
+    raised, crashed or went over its budget: the status follows the seconds), and the rest: the
+    comparisons (tessellation reference meshes, sampling, distances). The trees are ``only``, or
+    the first 3 random ones and the fuzz trees nearest the cube ``counts``; a tree whose isocsg
+    work goes over ``--budget`` prints ``over``."""
+    picks = list(range(min(3, n_random))) if only is None else list(only)
     fuzz = list(range(n_random, len(cases)))
-    for c in counts:
+    for c in counts if only is None else []:
         if fuzz:
             picks.append(min(fuzz, key=lambda k: abs(solid_program(cases[k]).n_leaves - c)))
     print("| tree | leaves | reference s | " + " | ".join(f"{e} s" for e in engines) + " | rest s | total s |")
     print("|---|---|---|" + "---|" * len(engines) + "---|---|")
     for k in picks:
-        rec, _ = judge_tree(k, cases[k], args, engines)
-        eng = [rec["engines"][e].get("seconds", float("nan")) for e in engines]
-        rest = rec["seconds"] - rec["ref_seconds"] - sum(x for x in eng if x == x)
         kind = "fuzz" if k >= n_random else "random"
-        print(f"| {kind} {k} | {rec['leaves']} | {rec['ref_seconds']:.2f} | " + " | ".join(f"{x:.2f}" for x in eng)
+        try:
+            rec, _ = judge_tree(k, cases[k], args, engines)
+        except TimeoutError:
+            print(f"| {kind} {k} | {solid_program(cases[k]).n_leaves} | over {args.budget} s |", flush=True)
+            continue
+        eng = [rec["engines"][e].get("seconds", rec["engines"][e].get("stopped_after", float("nan"))) for e in engines]
+        rest = rec["seconds"] - rec["ref_seconds"] - sum(x for x in eng if x == x)
+        status = [rec["engines"][e]["status"] for e in engines]
+        cells = [f"{x:.2f}" + ("" if st in ("ok", "wrong") else f" ({st})") for x, st in zip(eng, status)]
+        print(f"| {kind} {k} | {rec['leaves']} | {rec['ref_seconds']:.2f} | " + " | ".join(cells)
               + f" | {rest:.2f} | {rec['seconds']:.2f} |", flush=True)
 
 
@@ -454,18 +538,21 @@ def report(engines: list[str], records: list[dict[str, Any]], title: str) -> Non
 
 
 def report_group(engines: list[str], records: list[dict[str, Any]], title: str) -> None:
-    skipped = sum(1 for r in records if "skipped" in r or any(
-        e.get("what", "").startswith("raised TimeoutError") for e in r.get("engines", {}).values()))
-    print(f"\n{title} ({skipped} over the time budget: skipped, or an engine stopped)\n")
-    print("| engine | judged | raised | crashed | OK | wrong | wrong volume | wrong area | wrong hausdorff "
-          "| wrong topology | topology not comparable |")
-    print("|---|---|---|---|---|---|---|---|---|---|---|")
+    skipped = sum(1 for r in records if "skipped" in r)
+    stopped = sum(1 for r in records if "skipped" not in r and any(
+        _over(e) for e in r.get("engines", {}).values()))
+    print(f"\n{title} ({skipped} over the time budget: not judged; {stopped} judged with an engine over "
+          "its budget)\n")
+    print("| engine | judged | raised | crashed | over the budget | OK | wrong | wrong volume | wrong area "
+          "| wrong hausdorff | wrong topology | topology not comparable |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|---|")
     for eng in engines:
         rs = [r["engines"][eng] for r in records if eng in r.get("engines", {})]
-        st = Counter("budget" if r.get("what", "").startswith("raised TimeoutError") else r["status"] for r in rs)
+        st = Counter("over budget" if _over(r) else r["status"] for r in rs)
         bad = Counter(name for r in rs for name, v in r.get("verdicts", {}).items() if v == "wrong")
         nc = sum(1 for r in rs if r.get("verdicts", {}).get("topology") == "not comparable")
-        print(f"| {eng} | {st['ok'] + st['wrong']} | {st['raised']} | {st['crashed']} | {st['ok']} | {st['wrong']} | "
+        print(f"| {eng} | {st['ok'] + st['wrong']} | {st['raised']} | {st['crashed']} | {st['over budget']} | "
+              f"{st['ok']} | {st['wrong']} | "
               f"{bad['volume']} | {bad['area']} | {bad['hausdorff']} | {bad['topology']} | {nc} |")
     print("\n| engine | figure | median | 90 % | 99 % | max |")
     print("|---|---|---|---|---|---|")
@@ -477,6 +564,12 @@ def report_group(engines: list[str], records: list[dict[str, Any]], title: str) 
                 q = np.quantile(v, [0.5, 0.9, 0.99, 1.0], method="higher")
                 print(f"| {eng} | {fig} | " + " | ".join(f"{x:.2e}" for x in q) + " |")
     print_times(records)
+
+
+def _over(engine_record: dict[str, Any]) -> bool:
+    """An engine that went over its own budget (earlier runs: the tree's alarm inside the engine)."""
+    return bool(engine_record.get("status") == "over budget"
+                or engine_record.get("what", "").startswith("raised TimeoutError"))
 
 
 def print_times(records: list[dict[str, Any]]) -> None:

@@ -17,9 +17,9 @@ on leaf ``i``'s surface is on the result's boundary when the tree, evaluated jus
 gives two different answers. Each leaf's surface is swept as a family of rings
 (:mod:`isocsg.testing.patches`); on each ring the points where another leaf's surface crosses
 it are found (exactly for planar faces: the ring meets a plane at closed-form parameters; for
-curved leaves by sampling ``samples`` points per ring and bisecting each sign change of the
-signed distance to machine precision), every piece between crossings is classified at its
-midpoint and its area density integrated (Gauss-Legendre), giving the ring's measure ``m(s)``.
+curved leaves by sampling ``samples`` points per ring and narrowing each sign change of the
+signed distance to machine precision, 16 sections a step), every piece between crossings is
+classified at its midpoint and its area density integrated (Gauss-Legendre), giving the ring's measure ``m(s)``.
 ``m`` is integrated over the sweep parameter by adaptive Gauss-Kronrod (7-15), split first at
 the heights where other leaves start, end or have vertices (on a planar face also where two
 other planes meet on it, each on its leaf's surface: the ring measure's kinks). All patches of
@@ -43,8 +43,11 @@ with the same or the opposite normal (a planar leaf's normal is that of its face
 normal says (in on the side its interior is), so two boxes stacked in a union lose their
 shared face and a face common to ``A`` and ``B`` in ``A - B`` is removed. A face shared by
 several leaves is counted once, by the leaf of lowest index (the others skip it), and only
-where the CSG rule keeps it. The split test assumes signed distances that are 1-Lipschitz
-(exact ones are); two crossings closer than 2**-30 of a ring (tangencies) are not in the error estimate.
+where the CSG rule keeps it. Where a curved surface only touches another (a sphere inscribed in
+a cylinder), probes on either side tell the tangency from a coincidence, and the points of the
+tolerance band take the side the surface is on (``_Tree._tangent_side``). The split test
+assumes signed distances that are 1-Lipschitz (exact ones are); two crossings closer than
+2**-30 of a ring (tangencies) are not in the error estimate.
 """
 
 from __future__ import annotations
@@ -157,6 +160,10 @@ class _Tree:
         scale = float(max(np.max(self.hi - self.lo), np.max(np.abs(boxes))))
         self.tol = COINCIDENT * scale
         self.step = 1e-7 * scale
+        #: the tangency probes' distance: at 1e-4 of the size, sd differences of 5e-9 of the size at
+        #: unit relative curvature, far above the tolerance
+        self.probe = 1e-4 * scale
+        self._same: dict[tuple[int, int], bool] = {}
         self.last_inside_minus = np.zeros(0, bool)
         # every part of the surface flat, and the planes all of it (a convex polytope)
         self.planar = [bool(p.polyhedral and p.convex) for p in self.leaves]
@@ -210,6 +217,11 @@ class _Tree:
             if len(on):
                 d = np.einsum("ij,ij->i", self.normals(j, p[on], n[on]), n[on])
                 same, opp = d > 1 - 1e-6, d < -(1 - 1e-6)
+                if not (self.planar[i] and self.planar[j]) and not self._equal(i, j):  # planes: coincide or cross
+                    side = self._tangent_side(i, j, p[on], n[on], np.where(opp, -1.0, 1.0), same | opp)
+                    touch = side != 0
+                    pl[on[touch]] = mi[on[touch]] = side[touch] < 0
+                    on, same, opp = on[~touch], same[~touch], opp[~touch]
                 pl[on] = opp
                 mi[on] = same
                 if owner and j < i:
@@ -221,6 +233,70 @@ class _Tree:
         rm = self.prog.evaluate(lambda a, _: minus.get(a, empty), combine_masks)
         self.last_inside_minus = rm  # the result's side: outward normal n where it lies on the minus side
         return (rp != rm) & ~skip, undecided
+
+    def _equal(self, i: int, j: int) -> bool:
+        """Whether leaves ``i`` and ``j`` are the same primitive (their surfaces coincide everywhere)."""
+        key = (min(i, j), max(i, j))
+        if key not in self._same:
+            self._same[key] = bool(self.leaves[i] == self.leaves[j])
+        return self._same[key]
+
+    def _flat_at(self, j: int, p: F64, n: F64) -> NDArray[np.bool_]:
+        """Whether leaf ``j``'s surface is flat at points ``p`` on it with normals ``+-n``: on one
+        of its planes (a truncus' end too) with that plane's normal."""
+        faces = self.planes[j]
+        if faces is None:
+            return np.zeros(len(p), bool)
+        if self.planar[j]:
+            return np.ones(len(p), bool)
+        N, D = faces
+        on = (np.abs(p @ N.T - D) <= self.tol) & (np.abs(n @ N.T) > 1 - 1e-6)
+        return np.any(on, axis=1)  # type: ignore[no-any-return]
+
+    def _tangent_side(
+        self, i: int, j: int, p: F64, n: F64, sigma: F64, aligned: NDArray[np.bool_],
+    ) -> NDArray[np.int8]:
+        """For points ``p`` on leaf ``i`` (normals ``n``) within the tolerance of leaf ``j``'s
+        surface with (anti)parallel normals (``aligned``; ``sigma`` -1 where opposite): -1 or +1
+        (inside or outside ``j``) where the two surfaces only touch there, 0 where they coincide.
+
+        Within the tolerance band of a tangency (about ``sqrt(2 r tol)`` wide: 5e-6 of the size
+        at 1e-11, a sphere inscribed in a cylinder along its equator) the points were otherwise
+        taken as on a coincident surface and dropped, with an error estimate that cannot see
+        them. Probes ``q = p +- delta w`` along two tangent directions ``w``: ``D(q) = sd_j(q) -
+        sigma sd_i(q)`` is ``sd_j`` at the point of ``i`` next to ``q``, 0 where the surfaces
+        coincide and about ``delta^2 (k_i - k_j) / 2`` at a tangency (the curvatures along
+        ``w``). Where both probes of one direction leave ``j`` to the same side, the surfaces touch
+        and ``p`` is on that side; where they leave it to opposite sides (a tangency at ``j``'s
+        rim, a sphere's equator on a cylinder's end circle), they cross at ``p`` and ``sd_j(p)``
+        says its side (exact but for rounding: the band it cannot decide is about 1e-9 of the size
+        wide). At the edge of a coincident region only the probe across the edge leaves ``j``.
+        Two flat surfaces are coincident or cross: only a pair with a curved one is probed (a
+        coincident region of two curved surfaces has smooth edges: their rims)."""
+        out = np.zeros(len(p), np.int8)
+        sel = np.flatnonzero(aligned & ~(self._flat_at(i, p, n) & self._flat_at(j, p, n)))
+        if len(sel) == 0:
+            return out
+        p, n, sigma = p[sel], n[sel], sigma[sel]
+        u = np.cross(n, np.where(np.abs(n[:, :1]) < 0.9, [[1.0, 0.0, 0.0]], [[0.0, 1.0, 0.0]]))
+        u /= np.linalg.norm(u, axis=1, keepdims=True)
+        v = np.cross(n, u)
+        delta = self.probe
+        prim_i, prim_j = self.leaves[i], self.leaves[j]
+        side = np.zeros(len(p), np.int8)
+        cross = np.zeros(len(p), bool)
+        for w in (u, v):
+            q = np.concatenate([p + delta * w, p - delta * w])
+            D = np.asarray(prim_j.signed_distance(q)) - np.tile(sigma, 2) * np.asarray(prim_i.signed_distance(q))
+            s = _state(D, self.tol).reshape(2, -1)
+            both = (s[0] == s[1]) & (s[0] != 0) & (side == 0)
+            side[both] = s[0][both]
+            cross |= (s[0] * s[1]) < 0
+        cross &= side == 0
+        if cross.any():
+            side[cross] = np.sign(np.asarray(prim_j.signed_distance(p[cross]))).astype(np.int8)
+        out[sel] = side
+        return out
 
     def state(self, j: int, p: F64) -> NDArray[np.int8]:
         return _state(np.asarray(self.leaves[j].signed_distance(p)), self.tol)
@@ -299,17 +375,40 @@ def _curved_crossings(
         if len(ri) == 0:
             continue
         lo, hi, sl = np.concatenate(found_a), np.concatenate(found_b), np.concatenate(found_s)
-        for _ in range(52):
-            mid = 0.5 * (lo + hi)
-            same = tree.state(j, rings.points(ri, mid)) == sl
-            lo, hi = np.where(same, mid, lo), np.where(same, hi, mid)
-            if np.all(hi - lo <= 4e-16 * np.maximum(np.abs(hi), 1.0)):
-                break
+        lo, hi = _section_search(tree, j, rings, ri, lo, hi, sl)
         out_r.append(ri)
         out_t.append(0.5 * (lo + hi))
     if not out_r:
         return np.zeros(0, np.int64), np.zeros(0)
     return np.concatenate(out_r), np.concatenate(out_t)
+
+
+#: Points per bracket and step of the crossing search: 16 sections, 4 bits a step.
+SECTIONS = 15
+
+
+def _section_search(
+    tree: _Tree, j: int, rings: Rings, ri: NDArray[np.int64], lo: F64, hi: F64, sl: NDArray[np.int8],
+) -> tuple[F64, F64]:
+    """Brackets ``[lo, hi]`` on rings ``ri`` whose ends' states differ (``sl`` at ``lo``) shrunk to
+    rounding around a change of leaf ``j``'s state: bisection, ``SECTIONS`` points a step (one
+    signed-distance call per step costs about the same for 15 points a bracket as for one, and
+    takes 4 bits instead of 1: 13 steps instead of 52). The bracket kept is the first section
+    whose right end's state differs from ``sl``, so the invariant and the precision are
+    bisection's."""
+    frac = np.arange(1, SECTIONS + 1) / (SECTIONS + 1)
+    for _ in range(20):
+        width = hi - lo
+        t = lo[:, None] + width[:, None] * frac[None, :]
+        st = tree.state(j, rings.points(np.repeat(ri, SECTIONS), t.ravel())).reshape(-1, SECTIONS)
+        differs = st != sl[:, None]
+        first = np.where(differs.any(axis=1), np.argmax(differs, axis=1), SECTIONS)  # section index 0..SECTIONS
+        grid = np.concatenate([lo[:, None], t, hi[:, None]], axis=1)
+        rows = np.arange(len(lo))
+        lo, hi = grid[rows, first], grid[rows, first + 1]
+        if np.all(hi - lo <= 4e-16 * np.maximum(np.abs(hi), 1.0)):
+            break
+    return lo, hi
 
 
 def _ring_boxes(rings: Rings) -> tuple[F64, F64]:
