@@ -15,11 +15,13 @@ were cut by different neighbours) splits that edge. Then, with no mesh in betwee
   touching sheets are kept apart, as manifold3d keeps them (the boundary of the solid shrunk by
   an infinitesimal amount); the components are the polygons so joined;
 - a vertex counts once for each fan of corners joined through those edges (a vertex where sheets
-  touch counts once per sheet);
-- ``chi = V - E + sum over polygons of chi(open polygon)``, with ``chi(open polygon) = 1 - h``
-  where ``h`` counts its holes (holes that touch each other count once, a hole that touches the
-  outer ring not at all: such an open polygon is still simply connected), per component; its
-  genus is ``(2 - chi) / 2`` and must be a whole number (else ``None``);
+  touch counts once per sheet); where a polygon's rings pass through a vertex more than once (a
+  hole touching the outer ring or another hole, as at a corner that many cubes share), its
+  corners there are the sectors between its edges in angular order, not the rings' successions;
+- ``chi = V - E + sum over polygons of chi(open polygon)``, with ``chi(open polygon) =
+  1 - h - (V_b - E_b)`` where ``h`` counts its holes and ``V_b``, ``E_b`` the distinct vertices
+  and edges of its rings (``1 - h`` where the rings do not touch), per component; its genus is
+  ``(2 - chi) / 2`` and must be a whole number (else ``None``);
 - a component whose enclosed volume (the flux of ``x / 3`` through its polygons) is negative is a
   void: the inner shell of a cavity;
 - ``touching`` also where a corner of a leaf lies on another leaf's face plane without a face of
@@ -266,6 +268,7 @@ def _complex(polys: list[BoundaryPolygon], tol: float) -> ComplexTopology | str:
         return ComplexTopology(0, 0, 0, 0, False, ())
     src, dst, poly, nxt = (np.concatenate(a).astype(np.int64) for a in (src_l, dst_l, poly_l, nxt_l))
     normals = np.stack([p.normal for p in polys])
+    _pinched_corners(P, src, dst, poly, nxt, normals)
     nv = len(P)
     key = np.minimum(src, dst) * nv + np.maximum(src, dst)
     order = np.argsort(key, kind="stable")
@@ -306,22 +309,53 @@ def _complex(polys: list[BoundaryPolygon], tol: float) -> ComplexTopology | str:
                            tuple(int(c) for c in chi))
 
 
+def _pinched_corners(P: F64, src: I64, dst: I64, poly: I64, nxt: I64, normals: F64) -> None:
+    """Where a polygon's rings pass through one vertex more than once (a hole touching the outer
+    ring or another hole there), its corners at that vertex are the sectors between its edges
+    in angular order, not the rings' own successions: each incoming edge is followed (``nxt``,
+    in place) by the first outgoing edge clockwise from it, seen from outside (the polygon lies
+    to the left of its edges)."""
+    key = poly * len(P) + src
+    order = np.argsort(key, kind="stable")
+    bounds = np.flatnonzero(np.diff(key[order])) + 1
+    prev = np.empty_like(nxt)
+    prev[nxt] = np.arange(len(nxt))
+    for grp in np.split(order, bounds):
+        if len(grp) < 2:
+            continue
+        n = normals[poly[grp[0]]]
+        e1 = np.cross(n, np.eye(3)[int(np.argmin(np.abs(n)))])
+        e1 /= np.linalg.norm(e1)
+        e2 = np.cross(n, e1)
+        outs, ins = grp, prev[grp]  # the half-edges leaving the vertex, and those arriving
+        d_out = P[dst[outs]] - P[src[outs]]
+        d_in = P[src[ins]] - P[dst[ins]]  # from the vertex back along the arriving edge
+        ang = np.concatenate([np.arctan2(d_out @ e2, d_out @ e1), np.arctan2(d_in @ e2, d_in @ e1)])
+        kind = np.concatenate([np.ones(len(outs), np.int64), np.zeros(len(ins), np.int64)])
+        ids = np.concatenate([outs, ins])
+        srt = np.lexsort((kind, ang))  # at equal angles the arriving edge first: a slit's sides bound no sector
+        k = len(srt)
+        for j in range(k):
+            if kind[srt[j]] == 0:  # an arriving edge: the sector runs clockwise to an outgoing one
+                o = srt[(j - 1) % k]
+                if kind[o] == 1:
+                    nxt[ids[srt[j]]] = ids[o]
+
+
 def _open_euler(rings: list[I64]) -> int:
-    """The Euler characteristic of an open polygon: 1 minus its holes, where holes that share a
-    vertex count once and a hole that shares one with the outer ring not at all."""
-    if len(rings) <= 1:
-        return 1 if rings else 0
-    a: list[int] = []
-    b: list[int] = []
-    owner: dict[int, int] = {}
-    for k, r in enumerate(rings):
-        for v in r.tolist():
-            if v in owner and owner[v] != k:
-                a.append(owner[v])
-                b.append(k)
-            owner[v] = k
-    n, _ = _groups(len(rings), np.asarray(a, dtype=np.int64), np.asarray(b, dtype=np.int64))
-    return 1 - (n - 1)  # the outer ring's group is not a hole
+    """The Euler characteristic (with compact support) of an open polygon: its closure, a
+    connected plane region with one bounded gap per hole, has ``1 - h``; its boundary, the graph
+    of its rings, ``V - E`` (distinct vertices and edges: rings that touch at a vertex or share an
+    edge, where the merged vertices pinch a sliver, count them once); the open polygon is the
+    difference. Disjoint holes give ``1 - h``; a hole touching the outer ring at one vertex
+    leaves a disc (1), at two vertices two discs (2)."""
+    if not rings:
+        return 0
+    verts = np.concatenate(rings)
+    a = verts
+    b = np.concatenate([np.roll(r, -1) for r in rings])
+    edges = np.unique(np.minimum(a, b) * (int(verts.max()) + 1) + np.maximum(a, b))
+    return 1 - (len(rings) - 1) - len(np.unique(verts)) + len(edges)
 
 
 def planar_topology(solid: Solid) -> ComplexTopology | None:
