@@ -18,10 +18,12 @@ were cut by different neighbours) splits that edge. Then, with no mesh in betwee
   touch counts once per sheet); where a polygon's rings pass through a vertex more than once (a
   hole touching the outer ring or another hole, as at a corner that many cubes share), its
   corners there are the sectors between its edges in angular order, not the rings' successions;
-- ``chi = V - E + sum over polygons of chi(open polygon)``, with ``chi(open polygon) =
-  1 - h - (V_b - E_b)`` where ``h`` counts its holes and ``V_b``, ``E_b`` the distinct vertices
-  and edges of its rings (``1 - h`` where the rings do not touch), per component; its genus is
-  ``(2 - chi) / 2`` and must be a whole number (else ``None``);
+  where they do not alternate around the vertex (edges that cross within the merging
+  tolerance) the polygons are refused;
+- ``chi = V - E + sum over polygons of chi(open polygon)`` per component, with
+  ``chi(open polygon) = 2 * pieces - walks``: its boundary walks corner by corner bound planar
+  pieces, each with one counter-clockwise walk (``1 - h`` for a polygon with ``h`` holes that
+  touch nothing); its genus is ``(2 - chi) / 2`` and must be a whole number (else ``None``);
 - a component whose enclosed volume (the flux of ``x / 3`` through its polygons) is negative is a
   void: the inner shell of a cavity;
 - ``touching`` also where a corner of a leaf lies on another leaf's face plane without a face of
@@ -29,8 +31,8 @@ were cut by different neighbours) splits that edge. Then, with no mesh in betwee
   engine may join or separate the sheets either way (and the polygons' counts were not always
   right on grid trees with such contacts).
 
-Where the polygons do not close into an oriented surface, or a component's characteristic is
-odd or above 2, :func:`planar_topology` returns None and :func:`refusal` says why: the caller
+Where the polygons do not close into an oriented surface, a polygon's edges cross at a vertex
+its rings pass twice, or a component's characteristic is odd or above 2, :func:`planar_topology` returns None and :func:`refusal` says why: the caller
 (:func:`isocsg.testing.compare.true_topology`) then reads the topology from a mesh, and says so.
 """
 
@@ -268,7 +270,8 @@ def _complex(polys: list[BoundaryPolygon], tol: float) -> ComplexTopology | str:
         return ComplexTopology(0, 0, 0, 0, False, ())
     src, dst, poly, nxt = (np.concatenate(a).astype(np.int64) for a in (src_l, dst_l, poly_l, nxt_l))
     normals = np.stack([p.normal for p in polys])
-    _pinched_corners(P, src, dst, poly, nxt, normals)
+    if not _pinched_corners(P, src, dst, poly, nxt, normals):
+        return "a polygon's edges at a vertex its rings pass twice cross within the merging tolerance"
     nv = len(P)
     key = np.minimum(src, dst) * nv + np.maximum(src, dst)
     order = np.argsort(key, kind="stable")
@@ -296,7 +299,7 @@ def _complex(polys: list[BoundaryPolygon], tol: float) -> ComplexTopology | str:
     touching = touching or bool(np.any(at_vertex > 1))
     V = np.bincount(comp[poly[np.unique(corner, return_index=True)[1]]], minlength=n_comp)
     E = np.bincount(comp[poly], minlength=n_comp) // 2
-    F = np.bincount(comp, weights=[_open_euler(rs) for rs in rings], minlength=n_comp).astype(np.int64)
+    F = np.bincount(comp, weights=_open_euler(P, src, dst, poly, nxt, normals), minlength=n_comp).astype(np.int64)
     chi = V - E + F
     if np.any(chi % 2) or np.any(chi > 2):
         return f"components' Euler characteristics {chi.tolist()}"
@@ -309,12 +312,13 @@ def _complex(polys: list[BoundaryPolygon], tol: float) -> ComplexTopology | str:
                            tuple(int(c) for c in chi))
 
 
-def _pinched_corners(P: F64, src: I64, dst: I64, poly: I64, nxt: I64, normals: F64) -> None:
+def _pinched_corners(P: F64, src: I64, dst: I64, poly: I64, nxt: I64, normals: F64) -> bool:
     """Where a polygon's rings pass through one vertex more than once (a hole touching the outer
     ring or another hole there), its corners at that vertex are the sectors between its edges
     in angular order, not the rings' own successions: each incoming edge is followed (``nxt``,
     in place) by the first outgoing edge clockwise from it, seen from outside (the polygon lies
-    to the left of its edges)."""
+    to the left of its edges). False where they do not alternate (arriving, leaving) around the
+    vertex: a polygon's edges cross there within the merging tolerance."""
     key = poly * len(P) + src
     order = np.argsort(key, kind="stable")
     bounds = np.flatnonzero(np.diff(key[order])) + 1
@@ -335,27 +339,36 @@ def _pinched_corners(P: F64, src: I64, dst: I64, poly: I64, nxt: I64, normals: F
         ids = np.concatenate([outs, ins])
         srt = np.lexsort((kind, ang))  # at equal angles the arriving edge first: a slit's sides bound no sector
         k = len(srt)
+        pairs = {}
         for j in range(k):
             if kind[srt[j]] == 0:  # an arriving edge: the sector runs clockwise to an outgoing one
                 o = srt[(j - 1) % k]
                 if kind[o] == 1:
-                    nxt[ids[srt[j]]] = ids[o]
+                    pairs[int(ids[srt[j]])] = int(ids[o])
+        if len(pairs) != len(ins) or len(set(pairs.values())) != len(outs):
+            return False  # the edges interleave within the tolerance: no sectors
+        nxt[list(pairs)] = list(pairs.values())
+    return True
 
 
-def _open_euler(rings: list[I64]) -> int:
-    """The Euler characteristic (with compact support) of an open polygon: its closure, a
-    connected plane region with one bounded gap per hole, has ``1 - h``; its boundary, the graph
-    of its rings, ``V - E`` (distinct vertices and edges: rings that touch at a vertex or share an
-    edge, where the merged vertices pinch a sliver, count them once); the open polygon is the
-    difference. Disjoint holes give ``1 - h``; a hole touching the outer ring at one vertex
-    leaves a disc (1), at two vertices two discs (2)."""
-    if not rings:
-        return 0
-    verts = np.concatenate(rings)
-    a = verts
-    b = np.concatenate([np.roll(r, -1) for r in rings])
-    edges = np.unique(np.minimum(a, b) * (int(verts.max()) + 1) + np.maximum(a, b))
-    return 1 - (len(rings) - 1) - len(np.unique(verts)) + len(edges)
+def _open_euler(P: F64, src: I64, dst: I64, poly: I64, nxt: I64, normals: F64) -> F64:
+    """Each open polygon's Euler characteristic (with compact support): its boundary walks (the
+    cycles of ``nxt``: rings, joined or split where they touch, corner by corner) bound planar
+    pieces, each with exactly one walk counter-clockwise seen from outside (positive area) and
+    the others its holes; so ``chi = 2 * pieces - walks``: ``1 - h`` for a polygon with ``h``
+    holes, 1 where a hole touches the outer ring, 2 where the outer ring is pinched into two."""
+    n = len(nxt)
+    _, walk = _groups(n, np.arange(n), nxt)
+    first = np.full(len(normals), n, dtype=np.int64)
+    np.minimum.at(first, poly, np.arange(n))
+    o = P[src[first[poly]]]  # a corner of each polygon: small coordinates, exact enough areas
+    area = np.einsum("ij,ij->i", np.cross(P[src] - o, P[dst] - o), normals[poly])
+    walks = np.unique(walk)
+    signed = np.bincount(walk, weights=area, minlength=len(walks))
+    owner = np.zeros(len(walks), dtype=np.int64)
+    owner[walk] = poly
+    chi = np.bincount(owner[walks], weights=np.where(signed[walks] > 0, 2.0, 0.0) - 1.0, minlength=len(normals))
+    return np.asarray(chi, dtype=np.float64)
 
 
 def planar_topology(solid: Solid) -> ComplexTopology | None:
