@@ -32,8 +32,9 @@ were cut by different neighbours) splits that edge. Then, with no mesh in betwee
   right on grid trees with such contacts).
 
 Where the polygons do not close into an oriented surface, a polygon's edges cross at a vertex
-its rings pass twice, or a component's characteristic is odd or above 2, :func:`planar_topology` returns None and :func:`refusal` says why: the caller
-(:func:`isocsg.testing.compare.true_topology`) then reads the topology from a mesh, and says so.
+its rings pass twice, or a component's characteristic is odd or above 2, :func:`planar_topology`
+returns None and :func:`refusal` says why: the caller (:func:`isocsg.testing.compare.true_topology`)
+then reads the topology from a mesh, and says so.
 """
 
 from __future__ import annotations
