@@ -336,20 +336,33 @@ def _pinched_corners(P: F64, src: I64, dst: I64, poly: I64, nxt: I64, normals: F
         d_out = P[dst[outs]] - P[src[outs]]
         d_in = P[src[ins]] - P[dst[ins]]  # from the vertex back along the arriving edge
         ang = np.concatenate([np.arctan2(d_out @ e2, d_out @ e1), np.arctan2(d_in @ e2, d_in @ e1)])
+        ang = np.round(ang, 9)  # directions within 1e-9 of each other are one: merged slivers
+        ang[ang <= -np.pi] = np.pi
         kind = np.concatenate([np.ones(len(outs), np.int64), np.zeros(len(ins), np.int64)])
         ids = np.concatenate([outs, ins])
-        srt = np.lexsort((kind, ang))  # at equal angles the arriving edge first: a slit's sides bound no sector
-        k = len(srt)
-        pairs = {}
-        for j in range(k):
-            if kind[srt[j]] == 0:  # an arriving edge: the sector runs clockwise to an outgoing one
-                o = srt[(j - 1) % k]
-                if kind[o] == 1:
-                    pairs[int(ids[srt[j]])] = int(ids[o])
-        if len(pairs) != len(ins) or len(set(pairs.values())) != len(outs):
+        # along one direction an arriving and a leaving edge bound either no sector (the two
+        # sides of a slit: arriving first) or a sliver merged flat (leaving first)
+        pairs = _sectors(ang, kind, ids, 0)
+        pairs = _sectors(ang, kind, ids, 1) if pairs is None else pairs
+        if pairs is None:
             return False  # the edges interleave within the tolerance: no sectors
         nxt[list(pairs)] = list(pairs.values())
     return True
+
+
+def _sectors(ang: F64, kind: I64, ids: I64, first: int) -> dict[int, int] | None:
+    """Each arriving edge (``kind`` 0) paired with the leaving edge (1) clockwise from it, with
+    the edges of kind ``first`` first at equal angles; None unless they alternate."""
+    srt = np.lexsort((kind if first == 0 else 1 - kind, ang))
+    k = len(srt)
+    pairs = {}
+    for j in range(k):
+        if kind[srt[j]] == 0:
+            o = srt[(j - 1) % k]
+            if kind[o] == 1:
+                pairs[int(ids[srt[j]])] = int(ids[o])
+    alternate = len(pairs) == np.count_nonzero(kind == 0) and len(set(pairs.values())) == np.count_nonzero(kind == 1)
+    return pairs if alternate else None
 
 
 def _open_euler(P: F64, src: I64, dst: I64, poly: I64, nxt: I64, normals: F64) -> F64:
