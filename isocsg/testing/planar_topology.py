@@ -15,11 +15,15 @@ were cut by different neighbours) splits that edge. Then, with no mesh in betwee
   touching sheets are kept apart, as manifold3d keeps them (the boundary of the solid shrunk by
   an infinitesimal amount); the components are the polygons so joined;
 - a vertex counts once for each fan of corners joined through those edges (a vertex where sheets
-  touch counts once per sheet);
-- ``chi = V - E + sum over polygons of chi(open polygon)``, with ``chi(open polygon) = 1 - h``
-  where ``h`` counts its holes (holes that touch each other count once, a hole that touches the
-  outer ring not at all: such an open polygon is still simply connected), per component; its
-  genus is ``(2 - chi) / 2`` and must be a whole number (else ``None``);
+  touch counts once per sheet); where a polygon's rings pass through a vertex more than once (a
+  hole touching the outer ring or another hole, as at a corner that many cubes share), its
+  corners there are the sectors between its edges in angular order, not the rings' successions;
+  where they do not alternate around the vertex (edges that cross within the merging
+  tolerance) the polygons are refused;
+- ``chi = V - E + sum over polygons of chi(open polygon)`` per component, with
+  ``chi(open polygon) = 2 * pieces - walks``: its boundary walks corner by corner bound planar
+  pieces, each with one counter-clockwise walk (``1 - h`` for a polygon with ``h`` holes that
+  touch nothing); its genus is ``(2 - chi) / 2`` and must be a whole number (else ``None``);
 - a component whose enclosed volume (the flux of ``x / 3`` through its polygons) is negative is a
   void: the inner shell of a cavity;
 - ``touching`` also where a corner of a leaf lies on another leaf's face plane without a face of
@@ -27,9 +31,10 @@ were cut by different neighbours) splits that edge. Then, with no mesh in betwee
   engine may join or separate the sheets either way (and the polygons' counts were not always
   right on grid trees with such contacts).
 
-Where the polygons do not close into an oriented surface, or a component's characteristic is
-odd or above 2, :func:`planar_topology` returns None and :func:`refusal` says why: the caller
-(:func:`isocsg.testing.compare.true_topology`) then reads the topology from a mesh, and says so.
+Where the polygons do not close into an oriented surface, a polygon's edges cross at a vertex
+its rings pass twice, or a component's characteristic is odd or above 2, :func:`planar_topology`
+returns None and :func:`refusal` says why: the caller (:func:`isocsg.testing.compare.true_topology`)
+then reads the topology from a mesh, and says so.
 """
 
 from __future__ import annotations
@@ -266,6 +271,8 @@ def _complex(polys: list[BoundaryPolygon], tol: float) -> ComplexTopology | str:
         return ComplexTopology(0, 0, 0, 0, False, ())
     src, dst, poly, nxt = (np.concatenate(a).astype(np.int64) for a in (src_l, dst_l, poly_l, nxt_l))
     normals = np.stack([p.normal for p in polys])
+    if not _pinched_corners(P, src, dst, poly, nxt, normals):
+        return "a polygon's edges at a vertex its rings pass twice cross within the merging tolerance"
     nv = len(P)
     key = np.minimum(src, dst) * nv + np.maximum(src, dst)
     order = np.argsort(key, kind="stable")
@@ -293,7 +300,7 @@ def _complex(polys: list[BoundaryPolygon], tol: float) -> ComplexTopology | str:
     touching = touching or bool(np.any(at_vertex > 1))
     V = np.bincount(comp[poly[np.unique(corner, return_index=True)[1]]], minlength=n_comp)
     E = np.bincount(comp[poly], minlength=n_comp) // 2
-    F = np.bincount(comp, weights=[_open_euler(rs) for rs in rings], minlength=n_comp).astype(np.int64)
+    F = np.bincount(comp, weights=_open_euler(P, src, dst, poly, nxt, normals), minlength=n_comp).astype(np.int64)
     chi = V - E + F
     if np.any(chi % 2) or np.any(chi > 2):
         return f"components' Euler characteristics {chi.tolist()}"
@@ -306,22 +313,76 @@ def _complex(polys: list[BoundaryPolygon], tol: float) -> ComplexTopology | str:
                            tuple(int(c) for c in chi))
 
 
-def _open_euler(rings: list[I64]) -> int:
-    """The Euler characteristic of an open polygon: 1 minus its holes, where holes that share a
-    vertex count once and a hole that shares one with the outer ring not at all."""
-    if len(rings) <= 1:
-        return 1 if rings else 0
-    a: list[int] = []
-    b: list[int] = []
-    owner: dict[int, int] = {}
-    for k, r in enumerate(rings):
-        for v in r.tolist():
-            if v in owner and owner[v] != k:
-                a.append(owner[v])
-                b.append(k)
-            owner[v] = k
-    n, _ = _groups(len(rings), np.asarray(a, dtype=np.int64), np.asarray(b, dtype=np.int64))
-    return 1 - (n - 1)  # the outer ring's group is not a hole
+def _pinched_corners(P: F64, src: I64, dst: I64, poly: I64, nxt: I64, normals: F64) -> bool:
+    """Where a polygon's rings pass through one vertex more than once (a hole touching the outer
+    ring or another hole there), its corners at that vertex are the sectors between its edges
+    in angular order, not the rings' own successions: each incoming edge is followed (``nxt``,
+    in place) by the first outgoing edge clockwise from it, seen from outside (the polygon lies
+    to the left of its edges). False where they do not alternate (arriving, leaving) around the
+    vertex: a polygon's edges cross there within the merging tolerance."""
+    key = poly * len(P) + src
+    order = np.argsort(key, kind="stable")
+    bounds = np.flatnonzero(np.diff(key[order])) + 1
+    prev = np.empty_like(nxt)
+    prev[nxt] = np.arange(len(nxt))
+    for grp in np.split(order, bounds):
+        if len(grp) < 2:
+            continue
+        n = normals[poly[grp[0]]]
+        e1 = np.cross(n, np.eye(3)[int(np.argmin(np.abs(n)))])
+        e1 /= np.linalg.norm(e1)
+        e2 = np.cross(n, e1)
+        outs, ins = grp, prev[grp]  # the half-edges leaving the vertex, and those arriving
+        d_out = P[dst[outs]] - P[src[outs]]
+        d_in = P[src[ins]] - P[dst[ins]]  # from the vertex back along the arriving edge
+        ang = np.concatenate([np.arctan2(d_out @ e2, d_out @ e1), np.arctan2(d_in @ e2, d_in @ e1)])
+        ang = np.round(ang, 9)  # directions within 1e-9 of each other are one: merged slivers
+        ang[ang <= -np.pi] = np.pi
+        kind = np.concatenate([np.ones(len(outs), np.int64), np.zeros(len(ins), np.int64)])
+        ids = np.concatenate([outs, ins])
+        # along one direction an arriving and a leaving edge bound either no sector (the two
+        # sides of a slit: arriving first) or a sliver merged flat (leaving first)
+        pairs = _sectors(ang, kind, ids, 0)
+        pairs = _sectors(ang, kind, ids, 1) if pairs is None else pairs
+        if pairs is None:
+            return False  # the edges interleave within the tolerance: no sectors
+        nxt[list(pairs)] = list(pairs.values())
+    return True
+
+
+def _sectors(ang: F64, kind: I64, ids: I64, first: int) -> dict[int, int] | None:
+    """Each arriving edge (``kind`` 0) paired with the leaving edge (1) clockwise from it, with
+    the edges of kind ``first`` first at equal angles; None unless they alternate."""
+    srt = np.lexsort((kind if first == 0 else 1 - kind, ang))
+    k = len(srt)
+    pairs = {}
+    for j in range(k):
+        if kind[srt[j]] == 0:
+            o = srt[(j - 1) % k]
+            if kind[o] == 1:
+                pairs[int(ids[srt[j]])] = int(ids[o])
+    alternate = len(pairs) == np.count_nonzero(kind == 0) and len(set(pairs.values())) == np.count_nonzero(kind == 1)
+    return pairs if alternate else None
+
+
+def _open_euler(P: F64, src: I64, dst: I64, poly: I64, nxt: I64, normals: F64) -> F64:
+    """Each open polygon's Euler characteristic (with compact support): its boundary walks (the
+    cycles of ``nxt``: rings, joined or split where they touch, corner by corner) bound planar
+    pieces, each with exactly one walk counter-clockwise seen from outside (positive area) and
+    the others its holes; so ``chi = 2 * pieces - walks``: ``1 - h`` for a polygon with ``h``
+    holes, 1 where a hole touches the outer ring, 2 where the outer ring is pinched into two."""
+    n = len(nxt)
+    _, walk = _groups(n, np.arange(n), nxt)
+    first = np.full(len(normals), n, dtype=np.int64)
+    np.minimum.at(first, poly, np.arange(n))
+    o = P[src[first[poly]]]  # a corner of each polygon: small coordinates, exact enough areas
+    area = np.einsum("ij,ij->i", np.cross(P[src] - o, P[dst] - o), normals[poly])
+    walks = np.unique(walk)
+    signed = np.bincount(walk, weights=area, minlength=len(walks))
+    owner = np.zeros(len(walks), dtype=np.int64)
+    owner[walk] = poly
+    chi = np.bincount(owner[walks], weights=np.where(signed[walks] > 0, 2.0, 0.0) - 1.0, minlength=len(normals))
+    return np.asarray(chi, dtype=np.float64)
 
 
 def planar_topology(solid: Solid) -> ComplexTopology | None:
