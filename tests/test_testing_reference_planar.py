@@ -53,8 +53,10 @@ def _judge(tree, tol: float) -> None:
     scale = max(1.0, max(abs(float(x)) for x in ref.bounds.ravel()))
     assert abs(ref.volume - v) <= ref.volume_error + ROUNDING * scale**3, (ref.volume, ref.volume_error, v)
     assert abs(ref.area - a) <= ref.area_error + ROUNDING * scale**2, (ref.area, ref.area_error, a)
-    assert ref.volume_error <= tol * max(abs(v), 1e-6 * scale**3) * 10
-    assert ref.area_error <= tol * max(a, 1e-6 * scale**2) * 10
+    # The estimates are held to tol, but not below the rounding floor of the comparison above: an
+    # empty result (cube - cube - turned cube) has a polygon-grid error of a few 1e-11.
+    assert ref.volume_error <= tol * max(abs(v), 1e-6 * scale**3) * 10 + ROUNDING * scale**3
+    assert ref.area_error <= tol * max(a, 1e-6 * scale**2) * 10 + ROUNDING * scale**2
 
 
 def test_fuzz_case_69_volume_against_sections_and_manifold3d():
