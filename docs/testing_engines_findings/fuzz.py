@@ -24,7 +24,13 @@ def case_806():
     return tree
 
 
-# case 809: over 120 s, skipped
+# case 809, trimesh-manifold: wrong area, hausdorff, topology
+# volume    0.0017402584 (true 0.00174026556): error -7.159e-09, tessellation -5.829e-14, bound 2.220e-16 -> exact
+# area      6.0000076 (true 6): error +7.603e-06, tessellation -4.174e-14 -> wrong
+# hausdorff mesh->true 5.664e-08, true->mesh 5.205e-08, tessellation 3.331e-16 -> wrong
+# topology  8 components, genus 5.5, watertight False, winding consistent False (true: 4, genus 1, from polygons) -> wrong
+# verdict   WRONG: area, hausdorff, topology
+# case 809, pyvista: crashed (exit code -11)
 def case_809():
     p0 = Box(center=(0.5000015217540914, 0.5000000026559647, 0.49999847558530436), size=(1.0, 1.0, 1.0), orientation=((0.9999969538288952, -0.0017422795411466394, 0.0017483692204342813), (0.001745325707611866, 0.999996959145464, -0.0017422795411466394), (-0.0017453283658983088, 0.001745325707611866, 0.9999969538288952)))
     p1 = Box(center=(0.5, 0.5, 0.5), size=(1.0, 1.0, 1.0))
@@ -220,7 +226,13 @@ def case_809():
     return tree
 
 
-# case 811: over 120 s, skipped
+# case 811, trimesh-manifold: wrong volume, area, hausdorff, topology
+# volume    0.0017402584 (true 0.00174026556): error -7.159e-09, tessellation -4.974e-14, bound 2.220e-16 -> wrong
+# area      6.0000076 (true 6): error +7.603e-06, tessellation +9.770e-15 -> wrong
+# hausdorff mesh->true 5.664e-08, true->mesh 3.687e-08, tessellation 2.483e-16 -> wrong
+# topology  8 components, genus 5.5, watertight False, winding consistent False (true: 4, genus 1, from polygons) -> wrong
+# verdict   WRONG: volume, area, hausdorff, topology
+# case 811, pyvista: crashed (exit code -11)
 def case_811():
     p0 = Box(center=(0.5000015217540914, 0.5000000026559647, 0.49999847558530436), size=(1.0, 1.0, 1.0), orientation=((0.9999969538288952, -0.0017422795411466394, 0.0017483692204342813), (0.001745325707611866, 0.999996959145464, -0.0017422795411466394), (-0.0017453283658983088, 0.001745325707611866, 0.9999969538288952)))
     p1 = Box(center=(0.5, 0.5, 0.5), size=(1.0, 1.0, 1.0))
@@ -626,7 +638,13 @@ def case_826():
     return tree
 
 
-# case 836: over 120 s, skipped
+# case 836, trimesh-manifold: wrong area, hausdorff, topology
+# volume    0.0017402584 (true 0.00174026556): error -7.159e-09, tessellation -5.829e-14, bound 2.220e-16 -> exact
+# area      6.0000076 (true 6): error +7.603e-06, tessellation -4.174e-14 -> wrong
+# hausdorff mesh->true 5.664e-08, true->mesh 4.701e-08, tessellation 2.483e-16 -> wrong
+# topology  8 components, genus 5.5, watertight False, winding consistent False (true: 4, genus 1, from polygons) -> wrong
+# verdict   WRONG: area, hausdorff, topology
+# case 836, pyvista: crashed (exit code -11)
 def case_836():
     p0 = Box(center=(0.5000015217540914, 0.5000000026559647, 0.49999847558530436), size=(1.0, 1.0, 1.0), orientation=((0.9999969538288952, -0.0017422795411466394, 0.0017483692204342813), (0.001745325707611866, 0.999996959145464, -0.0017422795411466394), (-0.0017453283658983088, 0.001745325707611866, 0.9999969538288952)))
     p1 = Box(center=(0.5, 0.5, 0.5), size=(1.0, 1.0, 1.0))
@@ -17613,7 +17631,8 @@ def case_984():
     return tree
 
 
-# case 985, trimesh-manifold: wrong volume, area, hausdorff, topology
+# case 985, trimesh-manifold: wrong volume, area, hausdorff
+# topology judged again against the exact polygons (polygons: 16 components, genus 3.0): not comparable (was wrong)
 # topology judged again against the exact polygons (mesh: 16 components, genus 3.0): wrong (was tessellation)
 # volume    23549726.2 (true 23549727.4): error -1.110e+00, tessellation -1.021e-05, bound 6.155e-12 -> wrong
 # area      532370.306 (true 532370.322): error -1.553e-02, tessellation -3.334e-07 -> wrong
@@ -17815,7 +17834,8 @@ def case_985():
     return tree
 
 
-# case 986, trimesh-manifold: wrong volume, area, hausdorff, topology
+# case 986, trimesh-manifold: wrong volume, area, hausdorff
+# topology judged again against the exact polygons (polygons: 16 components, genus 3.0): not comparable (was wrong)
 # topology judged again against the exact polygons (mesh: 16 components, genus 3.0): wrong (was tessellation)
 # volume    23549727.8 (true 23549728.9): error -1.110e+00, tessellation -1.021e-05, bound 6.155e-12 -> wrong
 # area      532370.236 (true 532370.252): error -1.552e-02, tessellation -3.329e-07 -> wrong
@@ -18017,7 +18037,8 @@ def case_986():
     return tree
 
 
-# case 987, trimesh-manifold: wrong volume, area, hausdorff, topology
+# case 987, trimesh-manifold: wrong volume, area, hausdorff
+# topology judged again against the exact polygons (polygons: 16 components, genus 3.0): not comparable (was wrong)
 # topology judged again against the exact polygons (mesh: 16 components, genus 3.0): wrong (was tessellation)
 # volume    23549727.8 (true 23549728.9): error -1.110e+00, tessellation -1.021e-05, bound 6.204e-12 -> wrong
 # area      532370.236 (true 532370.252): error -1.552e-02, tessellation -3.329e-07 -> wrong
@@ -18219,7 +18240,8 @@ def case_987():
     return tree
 
 
-# case 988, trimesh-manifold: wrong volume, area, hausdorff, topology
+# case 988, trimesh-manifold: wrong volume, area, hausdorff
+# topology judged again against the exact polygons (polygons: 17 components, genus 3.0): not comparable (was wrong)
 # topology judged again against the exact polygons (mesh: 17 components, genus 3.0): wrong (was tessellation)
 # volume    23549727.8 (true 23549728.9): error -1.110e+00, tessellation -1.019e-05, bound 6.201e-12 -> wrong
 # area      532371.15 (true 532371.165): error -1.552e-02, tessellation -3.327e-07 -> wrong
@@ -18421,7 +18443,8 @@ def case_988():
     return tree
 
 
-# case 989, trimesh-manifold: wrong volume, area, hausdorff, topology
+# case 989, trimesh-manifold: wrong volume, area, hausdorff
+# topology judged again against the exact polygons (polygons: 17 components, genus 3.0): not comparable (was wrong)
 # topology judged again against the exact polygons (mesh: 17 components, genus 3.0): wrong (was tessellation)
 # volume    23549727.8 (true 23549728.9): error -1.110e+00, tessellation -1.026e-05, bound 9.839e-12 -> wrong
 # area      532371.15 (true 532371.165): error -1.552e-02, tessellation -3.327e-07 -> wrong
@@ -18623,7 +18646,8 @@ def case_989():
     return tree
 
 
-# case 990, trimesh-manifold: wrong volume, area, hausdorff, topology
+# case 990, trimesh-manifold: wrong volume, area, hausdorff
+# topology judged again against the exact polygons (polygons: 15 components, genus 4.0): not comparable (was wrong)
 # topology judged again against the exact polygons (mesh: 15 components, genus 4.0): wrong (was tessellation)
 # volume    23549042.3 (true 23549043.4): error -1.110e+00, tessellation -1.023e-05, bound 9.396e-12 -> wrong
 # area      531363.388 (true 531363.404): error -1.557e-02, tessellation -3.278e-07 -> wrong
@@ -18825,7 +18849,8 @@ def case_990():
     return tree
 
 
-# case 991, trimesh-manifold: wrong volume, area, hausdorff, topology
+# case 991, trimesh-manifold: wrong volume, area, hausdorff
+# topology judged again against the exact polygons (polygons: 15 components, genus 4.0): not comparable (was wrong)
 # topology judged again against the exact polygons (mesh: 15 components, genus 4.0): wrong (was tessellation)
 # volume    23549042.3 (true 23549043.4): error -1.110e+00, tessellation -1.023e-05, bound 9.269e-12 -> wrong
 # area      531363.388 (true 531363.404): error -1.557e-02, tessellation -3.278e-07 -> wrong
