@@ -325,9 +325,10 @@ def _pinched_corners(P: F64, src: I64, dst: I64, poly: I64, nxt: I64, normals: F
     bounds = np.flatnonzero(np.diff(key[order])) + 1
     prev = np.empty_like(nxt)
     prev[nxt] = np.arange(len(nxt))
-    for grp in np.split(order, bounds):
-        if len(grp) < 2:
-            continue
+    starts = np.concatenate([[0], bounds])
+    sizes = np.diff(np.concatenate([starts, [len(order)]]))
+    for s0, size in zip(starts[sizes > 1].tolist(), sizes[sizes > 1].tolist()):  # pinched vertices only
+        grp = order[s0:s0 + size]
         n = normals[poly[grp[0]]]
         e1 = np.cross(n, np.eye(3)[int(np.argmin(np.abs(n)))])
         e1 /= np.linalg.norm(e1)
