@@ -25,7 +25,7 @@ from typing import Any
 
 __all__ = [
     "Cancelled", "pool", "background", "foreground", "checkpoint", "raise_if_cancelled", "cancel_background",
-    "EXIT_WAIT", "YIELD_WAIT",
+    "EXIT_WAIT", "YIELD_WAIT", "quiesce",
 ]
 
 #: Seconds the interpreter's exit waits, in all, for background tasks to stop at their next check.
@@ -141,6 +141,25 @@ def cancel_background(timeout: float = EXIT_WAIT) -> bool:
     deadline = None if timeout is None else time.monotonic() + timeout
     for t in tasks:
         t.join(None if deadline is None else max(0.0, deadline - time.monotonic()))
+    return not any(t.is_alive() for t in tasks)
+
+
+def quiesce(timeout: float = 60.0) -> bool:
+    """Wait up to ``timeout`` seconds for the background tasks to finish and shut the pools'
+    threads down (new ones start on next use); returns whether no isocsg thread is left.
+
+    For a process about to fork children (the command line's server): a child has none of the
+    parent's threads, so no thread of the parent should hold a lock, or half a result, then.
+    """
+    deadline = time.monotonic() + timeout
+    with _lock:
+        tasks = list(_tasks)
+        pools = list(_pools.values())
+        _pools.clear()
+    for t in tasks:
+        t.join(max(0.0, deadline - time.monotonic()))
+    for p in pools:
+        p.shutdown(wait=True)
     return not any(t.is_alive() for t in tasks)
 
 

@@ -17,6 +17,9 @@ from hypothesis import settings
 # Off-screen VTK through EGL skips a slow X display probe on machines without a screen.
 os.environ.setdefault("VTK_DEFAULT_OPENGL_WINDOW", "vtkEGLRenderWindow")
 os.environ.setdefault("NUMBA_NUM_THREADS", "2")
+# Every command line the tests run (in-process or in a subprocess) runs in its own process, as
+# before the command line's server; tests/test_cli_server.py turns it on in its own directory.
+os.environ["ISOCSG_SERVER"] = "0"
 
 from hypothesis import Phase
 

@@ -5,6 +5,10 @@ function; :func:`main` wires them together, importing only the module of the
 command it runs (``isocsg --help`` imports none), so a command loads only what
 it uses. Errors of isocsg (and bad arguments) end the program with exit code 2
 and a one-line message.
+
+Run as a program (``main()`` without arguments: the console script, ``python -m isocsg``), the
+commands that render go through a warm server process where there is one
+(:mod:`isocsg.cli.server_client`, README "Start-up"); ``main(argv)`` always runs in this process.
 """
 
 from __future__ import annotations
@@ -28,6 +32,7 @@ COMMANDS = {
     "illuminance": "illuminance map with isolux lines",
     "view": "live preview of a model in the browser, re-rendered on save",
     "report": "lighting study report (HTML or PDF)",
+    "server": "the warm process that runs render, demo and illuminance (status, start, stop)",
 }
 
 
@@ -63,8 +68,24 @@ def _command_named(argv: Sequence[str]) -> str | None:
     return next((a for a in argv if not a.startswith("-")), None)
 
 
+def _served(argv: Sequence[str]) -> int | None:
+    """The exit code of the command run by the server; None if it has not run."""
+    from .server_protocol import SERVED, enabled
+
+    if _command_named(argv) not in SERVED or not enabled():
+        return None
+    from .server_client import run_served
+
+    return run_served(argv)
+
+
 def main(argv: Sequence[str] | None = None) -> int:
     """Run the command line; returns the exit code (0 success, 2 error).
+
+    Without ``argv`` (the program: ``sys.argv``), ``render``, ``demo`` and ``illuminance`` run
+    in the server's warm process when one answers, with this process's streams, directory and
+    environment (the same output and exit code); else here, and a server is started for the
+    next commands. ``ISOCSG_SERVER=0`` keeps every command in this process.
 
     Examples
     --------
@@ -74,6 +95,9 @@ def main(argv: Sequence[str] | None = None) -> int:
     """
     if argv is None:
         argv = sys.argv[1:]
+        served = _served(argv)
+        if served is not None:
+            return served
     parser = build_parser([_command_named(argv) or ""])
     try:
         args = parser.parse_args(argv)
