@@ -17,15 +17,21 @@ ones). ``--models`` names others (OpenSCAD's own examples, ``examples/Basics`` a
 ``examples/Old`` of its installation, by file name; ``all``: every Basics example isocsg loads):
 
 - ``isocsg render model.scad -o out.png`` (the command line, which runs ``openscad`` to read a
-  ``.scad`` file; kernels already in numba's cache, bytecode already written as an installed
-  package has it: ``PYTHONDONTWRITEBYTECODE`` is dropped for the child);
+  ``.scad`` file that is not plain; kernels already in numba's cache, bytecode already written
+  as an installed package has it: ``PYTHONDONTWRITEBYTECODE`` is dropped for the child), cold:
+  ``ISOCSG_SERVER=0``, the whole command in the new process;
 - the same with ``ISOCSG_JIT=numba`` (every kernel compiled, as before :mod:`isocsg._jit`);
+- the same, warm: through the command line's server (``isocsg server start`` once before the
+  first model, in a private runtime directory, ``isocsg server stop`` after the last); its CPU
+  seconds are the client's plus those of the server's child that ran the command (``isocsg
+  server status``);
 - ``openscad --preview -o out.png model.scad`` (OpenSCAD's preview: OpenCSG, no CGAL);
 - for the cube, manifold3d + pyvista: a Python process that imports both, builds the cube and
   saves an off-screen render.
 
 Printed: medians over the repeats of wall-clock and CPU seconds (user + system of the child
-process and its children), and isocsg's ratio to each of the others (> 1: isocsg is slower),
+process and its children), and the cold and the warm isocsg's ratios to each of the others (> 1:
+isocsg is slower),
 with the machine's load average before and after. The load shows in wall-clock times; CPU
 seconds are steadier. ``--import-only`` prints
 the modules that take most of isocsg's import time for the command (self time, from
@@ -37,6 +43,7 @@ from __future__ import annotations
 import argparse
 import glob
 import os
+import re
 import resource
 import shutil
 import statistics
@@ -95,6 +102,40 @@ def medians(argv: list[str], env: dict[str, str], repeats: int, cwd: str | None 
     return statistics.median(r[0] for r in runs), statistics.median(r[1] for r in runs)
 
 
+def served_medians(argv: list[str], env: dict[str, str], repeats: int, cwd: str | None = None) -> tuple[float, float]:
+    """Median wall-clock and CPU seconds of a command the server runs: the client's CPU time plus
+    that of the server's child (after one run, as :func:`medians`)."""
+    timed(argv, env, cwd)
+    runs = []
+    for _ in range(repeats):
+        before = commands_cpu(env)
+        wall, cpu = timed(argv, env, cwd)
+        runs.append((wall, cpu + commands_cpu(env) - before))
+    return statistics.median(r[0] for r in runs), statistics.median(r[1] for r in runs)
+
+
+def commands_cpu(env: dict[str, str]) -> float:
+    """CPU seconds of the commands the running server has finished (waits for those running)."""
+    deadline = time.monotonic() + 30
+    while True:
+        status = subprocess.run([sys.executable, "-m", "isocsg", "server", "status"], env=env,
+                                capture_output=True, text=True, cwd="/").stdout
+        found = re.search(r"this installation\).*? (\d+) running, ([\d.]+) s CPU in commands", status)
+        if found is None:
+            raise RuntimeError(f"no server answers: {status.strip()}")
+        if found.group(1) == "0" or time.monotonic() > deadline:
+            return float(found.group(2))
+        time.sleep(0.05)
+
+
+def start_server(env: dict[str, str]) -> bool:
+    """Start the command line's server of ``env`` (waits until it is warm); whether it runs."""
+    proc = subprocess.run([sys.executable, "-m", "isocsg", "server", "start"], env=env, capture_output=True,
+                          text=True, cwd="/")  # not a checkout's directory: its isocsg would come first
+    print(proc.stdout.strip() or f"no server: {proc.stderr.strip()}")
+    return proc.returncode == 0
+
+
 def import_profile(workdir: Path, env: dict[str, str], top: int = 25) -> None:
     """The modules with the largest self import time of ``isocsg render`` (one run)."""
     argv = [sys.executable, "-X", "importtime", "-m", "isocsg", "render", str(workdir / "cube.csg"),
@@ -133,10 +174,16 @@ def models(work: Path, env: dict[str, str], only: str) -> dict[str, Path]:
     return found
 
 
-def contenders(model: Path, work: Path, cube: bool) -> dict[str, tuple[list[str], dict[str, str]]]:
+COLD, WARM = "isocsg render", "isocsg render, warm server"
+
+
+def contenders(model: Path, work: Path, cube: bool, served: dict[str, str] | None,
+               ) -> dict[str, tuple[list[str], dict[str, str]]]:
     """Command lines (and extra environment) that draw ``model``."""
     isocsg = [sys.executable, "-m", "isocsg", "render", str(model), "-o", str(work / "isocsg.png"), "--no-progress"]
-    found = {"isocsg render": (isocsg, {}), "isocsg render, ISOCSG_JIT=numba": (isocsg, {"ISOCSG_JIT": "numba"})}
+    found = {COLD: (isocsg, {}), "isocsg render, ISOCSG_JIT=numba": (isocsg, {"ISOCSG_JIT": "numba"})}
+    if served is not None:
+        found[WARM] = (isocsg, served)
     openscad = shutil.which("openscad")
     display = bool(os.environ.get("DISPLAY"))
     if openscad and display:
@@ -145,6 +192,28 @@ def contenders(model: Path, work: Path, cube: bool) -> dict[str, tuple[list[str]
     if display and cube:
         found["manifold3d + pyvista"] = ([sys.executable, str(work / "peer.py"), str(work / "peer.png")], {})
     return found
+
+
+def measure(name: str, model: Path, work: Path, env: dict[str, str], served: dict[str, str] | None,
+            repeats: int) -> list[list[str]]:
+    """The table's rows of one model: each contender's medians, and the cold and warm isocsg's
+    ratios to the others."""
+    results = {}
+    for who, (argv, extra) in contenders(model, work, name == "cube", served).items():
+        timing = served_medians if who == WARM else medians
+        try:
+            results[who] = timing(argv, {**env, **extra}, repeats, cwd=str(model.parent))
+        except (RuntimeError, OSError) as exc:
+            print(f"{name}, {who}: not measured ({exc})")
+    rows = []
+    for who, (wall, cpu) in results.items():
+        ratios = []
+        for ours in (COLD, WARM):
+            mine = results.get(ours)
+            mine_too = who.startswith("isocsg render")
+            ratios.append("" if mine is None or mine_too else f"{mine[0] / wall:.2f}x / {mine[1] / cpu:.2f}x")
+        rows.append([name, who, fmt_seconds(wall), fmt_seconds(cpu), *ratios])
+    return rows
 
 
 def main() -> int:
@@ -157,33 +226,32 @@ def main() -> int:
     args = parser.parse_args()
     env = {k: v for k, v in os.environ.items() if k not in ("PYTHONDONTWRITEBYTECODE", "ISOCSG_JIT")}
     env["PYTHONPATH"] = str(args.root) + os.pathsep + os.environ.get("PYTHONPATH", "")
+    env["ISOCSG_SERVER"] = "0"
     if not os.environ.get("DISPLAY"):
         print("no display (DISPLAY unset): OpenSCAD's preview and pyvista not measured; run under xvfb-run -a\n")
     rows = []
     load_before = os.getloadavg()
-    with tempfile.TemporaryDirectory() as tmp:
+    with tempfile.TemporaryDirectory() as tmp, tempfile.TemporaryDirectory(prefix="isrv-", dir="/tmp") as runtime:
         work = Path(tmp)
         (work / "cube.csg").write_text(CSG)
         (work / "peer.py").write_text(PEER)
         import_profile(work, env)
         if args.import_only:
             return 0
-        for name, model in models(work, env, args.models).items():
-            results = {}
-            for who, (argv, extra) in contenders(model, work, name == "cube").items():
-                try:
-                    results[who] = medians(argv, {**env, **extra}, args.repeats, cwd=str(model.parent))
-                except (RuntimeError, OSError) as exc:
-                    print(f"{name}, {who}: not measured ({exc})")
-            ours = results.get("isocsg render")
-            for who, (wall, cpu) in results.items():
-                mine = ours is None or who == "isocsg render"
-                ratio = "" if mine else f"{ours[0] / wall:.2f}x / {ours[1] / cpu:.2f}x"
-                rows.append([name, who, fmt_seconds(wall), fmt_seconds(cpu), ratio])
+        served: dict[str, str] | None = {"ISOCSG_SERVER": "1", "ISOCSG_RUNTIME_DIR": runtime}
+        if not start_server({**env, **served}):
+            served = None
+        try:
+            for name, model in models(work, env, args.models).items():
+                rows += measure(name, model, work, env, served, args.repeats)
+        finally:
+            if served is not None:
+                subprocess.run([sys.executable, "-m", "isocsg", "server", "stop"], env={**env, **served},
+                               capture_output=True, cwd="/")
     load = ", ".join(f"{a:.1f} -> {b:.1f}" for a, b in zip(load_before, os.getloadavg()))
     print_table(f"first image of a new process at 512 x 512 (medians of {args.repeats}; isocsg from {args.root}; "
                 f"load average 1/5/15 min before -> after: {load}; {os.cpu_count()} cores)",
-                ["model", "contender", "wall", "CPU", "isocsg / it (wall / CPU)"], rows)
+                ["model", "contender", "wall", "CPU", "cold isocsg / it (wall / CPU)", "warm isocsg / it"], rows)
     return 0
 
 

@@ -199,21 +199,40 @@ def test_a_killed_server_is_not_waited_for(env: dict[str, str], tmp_path: Path) 
     assert (tmp_path / "k.png").read_bytes() == (tmp_path / "a.png").read_bytes()
 
 
-def test_a_signal_to_the_client_reaches_the_command(env: dict[str, str], tmp_path: Path) -> None:
+def _long_command(env: dict[str, str], cwd: Path) -> subprocess.Popen[str]:
+    """A served command that draws for a while, once the server's child runs it."""
+    proc = subprocess.Popen([sys.executable, "-m", "isocsg", "demo", "--size", "3000x3000", "-o", "big.png",
+                             "--no-progress"], env=env, cwd=cwd, stdout=subprocess.PIPE,
+                            stderr=subprocess.PIPE, text=True)
+    _wait_for(env, "1 running")
+    time.sleep(0.5)  # the client is past the handshake: it passes signals on
+    return proc
+
+
+def _wait_for(env: dict[str, str], text: str, seconds: float = 60) -> None:
+    deadline = time.monotonic() + seconds
+    while text not in isocsg(env, "server", "status").stdout:
+        assert time.monotonic() < deadline, f"no server status with {text!r}"
+        time.sleep(0.05)
+
+
+def test_signals_to_the_client_reach_the_command(env: dict[str, str], tmp_path: Path) -> None:
     env = {**env, "ISOCSG_JIT": "python"}  # a long command: a large image drawn without numba
     start(env)
-    proc = subprocess.Popen([sys.executable, "-m", "isocsg", "demo", "--size", "3000x3000", "-o", "big.png",
-                             "--no-progress"], env=env, cwd=tmp_path, stdout=subprocess.PIPE,
-                            stderr=subprocess.PIPE, text=True)
-    deadline = time.monotonic() + 60
-    while "1 running" not in isocsg(env, "server", "status").stdout and time.monotonic() < deadline:
-        time.sleep(0.05)
-    time.sleep(0.5)  # the client is past the handshake: it passes signals on
+    proc = _long_command(env, tmp_path)
     proc.send_signal(signal.SIGINT)
     out, err = proc.communicate(timeout=120)
     assert (proc.returncode, out, err) == (130, "", "isocsg: interrupted\n")
     assert not (tmp_path / "big.png").exists()
-    assert "0 running" in isocsg(env, "server", "status").stdout
+    _wait_for(env, " 0 running", 10)
+    proc = _long_command(env, tmp_path)
+    proc.send_signal(signal.SIGTERM)  # the child ends by it, then the client
+    assert proc.wait(timeout=120) == -signal.SIGTERM
+    _wait_for(env, " 0 running", 10)
+    proc = _long_command(env, tmp_path)
+    proc.kill()  # the client cannot pass SIGKILL on: the child sees its socket close
+    proc.wait(timeout=120)
+    _wait_for(env, " 0 running", 10)
 
 
 def test_edited_files_are_never_served_by_the_old_server(env: dict[str, str], package: Path, tmp_path: Path) -> None:

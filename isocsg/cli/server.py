@@ -133,8 +133,8 @@ def _describe(name: str, reply: dict[str, Any]) -> str:
     ours = " (this installation)" if enabled() and digest(fingerprint()) == name else ""
     up = time.time() - float(reply.get("started", time.time()))
     return (f"server {name}{ours}: pid {reply.get('pid')}, up {up:.0f} s, {reply.get('served')} commands served, "
-            f"{reply.get('running')} running, warm in {float(reply.get('warm', 0)):.2f} s, "
-            f"idle timeout {float(reply.get('idle', 0)):g} s")
+            f"{reply.get('running')} running, {float(reply.get('cpu', 0)):.3f} s CPU in commands, "
+            f"warm in {float(reply.get('warm', 0)):.2f} s, idle timeout {float(reply.get('idle', 0)):g} s")
 
 
 def _start(folder: Path) -> int:
