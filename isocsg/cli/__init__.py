@@ -17,10 +17,12 @@ import importlib
 import importlib.util
 import sys
 from collections.abc import Collection, Sequence
+from typing import TYPE_CHECKING
 
 from .. import __version__
-from ..errors import IsocsgError
-from ._common import ArgumentParser
+
+if TYPE_CHECKING:
+    from ._common import ArgumentParser
 
 __all__ = ["COMMANDS", "build_parser", "main"]
 
@@ -46,6 +48,8 @@ def build_parser(commands: Collection[str] | None = None) -> ArgumentParser:
         parsed (default: all of :data:`COMMANDS`); the others are listed by
         ``--help`` only. Modules missing from an installation are left out.
     """
+    from ._common import ArgumentParser  # here: a command the server runs needs no argparse here
+
     parser = ArgumentParser(
         prog="isocsg",
         description="Isoluminance-contour rendering of CSG solids and soft shadows from area light sources.",
@@ -98,6 +102,8 @@ def main(argv: Sequence[str] | None = None) -> int:
         served = _served(argv)
         if served is not None:
             return served
+    from ..errors import IsocsgError
+
     parser = build_parser([_command_named(argv) or ""])
     try:
         args = parser.parse_args(argv)

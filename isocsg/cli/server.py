@@ -44,10 +44,11 @@ def run(args: argparse.Namespace) -> int:
     """Report on, start or stop the servers; prints one line per server."""
     from .server_protocol import runtime_dir
 
-    folder = runtime_dir()
-    if folder is None:
+    where = runtime_dir()
+    if where is None:
         raise IsocsgError("no usable runtime directory (ISOCSG_RUNTIME_DIR, XDG_RUNTIME_DIR or /tmp/isocsg-<uid>: "
                           "a directory of this user's, mode 0700)")
+    folder = Path(where)
     if args.action == "start":
         return _start(folder)
     if args.action == "stop":
@@ -144,7 +145,7 @@ def _start(folder: Path) -> int:
     if not enabled():
         raise IsocsgError("the server is disabled (ISOCSG_SERVER=0, or no fork and UNIX sockets here)")
     name = digest(fingerprint())
-    sock = socket_path(folder, name)
+    sock = Path(socket_path(str(folder), name))
     reply = _ask(sock, "status")
     if reply is None:
         spawn_server(folder, name)

@@ -19,7 +19,6 @@ import signal
 import socket
 import sys
 from collections.abc import Sequence
-from pathlib import Path
 from typing import Any
 
 from .server_protocol import (
@@ -43,7 +42,7 @@ COMMIT_TIMEOUT = 10.0
 FORWARDED = (signal.SIGINT, signal.SIGTERM, signal.SIGHUP)
 
 
-def server_paths() -> tuple[Path, str] | None:
+def server_paths() -> tuple[str, str] | None:
     """This installation's runtime directory and server name, or None when the server is disabled
     or the directory unusable."""
     if not enabled():
@@ -54,7 +53,7 @@ def server_paths() -> tuple[Path, str] | None:
     return folder, digest(fingerprint())
 
 
-def connect(path: Path, timeout: float | None = COMMIT_TIMEOUT) -> socket.socket | None:
+def connect(path: str | os.PathLike[str], timeout: float | None = COMMIT_TIMEOUT) -> socket.socket | None:
     """A connection to the server at ``path``, or None if none answers."""
     sock = socket.socket(socket.AF_UNIX, socket.SOCK_STREAM)
     sock.settimeout(timeout)
@@ -151,7 +150,7 @@ def _committed(sock: socket.socket, pid: int) -> int:
     return 1
 
 
-def spawn_server(folder: Path, name: str) -> None:
+def spawn_server(folder: str | os.PathLike[str], name: str) -> None:
     """Start a detached server named ``name`` in ``folder``; returns at once.
 
     Double fork: the server is in a session of its own, not this process's child, with standard
@@ -159,10 +158,10 @@ def spawn_server(folder: Path, name: str) -> None:
     that nothing waiting on this process's pipes (``subprocess.run(capture_output=True)``, CI)
     waits for it. A server already starting holds the lock and the new one leaves at once.
     """
-    package_parent = str(Path(__file__).resolve().parent.parent.parent)
+    package_parent = os.path.dirname(os.path.dirname(os.path.dirname(os.path.realpath(__file__))))
     code = (f"import sys; sys.path.insert(0, {package_parent!r}); "
             "from isocsg.cli.server_process import serve; sys.exit(serve(sys.argv[1], sys.argv[2]))")
-    argv = [sys.executable, "-c", code, str(folder), name]
+    argv = [sys.executable, "-c", code, os.fspath(folder), name]
     try:
         sys.stdout.flush()
         sys.stderr.flush()
@@ -180,7 +179,7 @@ def spawn_server(folder: Path, name: str) -> None:
         if os.fork():
             os._exit(0)
         null = os.open(os.devnull, os.O_RDWR)
-        log = os.open(str(folder / f"{name}.log"), os.O_WRONLY | os.O_CREAT | os.O_TRUNC, 0o600)
+        log = os.open(os.path.join(folder, f"{name}.log"), os.O_WRONLY | os.O_CREAT | os.O_TRUNC, 0o600)
         os.dup2(null, 0)
         os.dup2(log, 1)
         os.dup2(log, 2)

@@ -92,7 +92,7 @@ def serve(folder: str, name: str) -> int:
     signal.signal(signal.SIGTERM, lambda _s, _f: _stop.set())
     if digest(fingerprint()) != name:
         return 0
-    path = socket_path(where, name)
+    path = Path(socket_path(str(where), name))
     listener, inode = _listen(path)
     print(f"isocsg server {name}: pid {os.getpid()}, warm in {time.perf_counter() - start:.2f} s "
           f"({'compiled kernels' if compiled else 'kernels as Python'}), idle timeout {idle_seconds():g} s",

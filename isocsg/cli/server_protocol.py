@@ -20,7 +20,6 @@ import marshal
 import os
 import stat
 import sys
-from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 if TYPE_CHECKING:
@@ -76,9 +75,9 @@ def fingerprint(environ: dict[str, str] | os._Environ[str] | None = None) -> lis
     from .. import __version__
 
     env = os.environ if environ is None else environ
-    package = Path(__file__).resolve().parent.parent
+    package = os.path.dirname(os.path.dirname(os.path.realpath(__file__)))
     files: list[tuple[str, int, int]] = []
-    stack = [str(package)]
+    stack = [package]
     while stack:
         folder = stack.pop()
         with os.scandir(folder) as entries:
@@ -92,29 +91,33 @@ def fingerprint(environ: dict[str, str] | os._Environ[str] | None = None) -> lis
     files.sort()
     keyed = sorted((k, v) for k, v in env.items()
                    if (k.startswith(KEYED_PREFIXES) or k in KEYED_NAMES) and k not in _UNKEYED)
-    return [PROTOCOL, sys.executable, sys.version, str(package), __version__, files, keyed]
+    return [PROTOCOL, sys.executable, sys.version, package, __version__, files, keyed]
 
 
 def digest(print_: list[Any]) -> str:
     """A short, stable name of a :func:`fingerprint` (hex)."""
-    import hashlib
+    try:
+        from _blake2 import blake2b  # what hashlib's blake2b is, without loading OpenSSL (5 ms)
+    except ImportError:  # pragma: no cover - an interpreter without it
+        from hashlib import blake2b
 
-    return hashlib.blake2b(marshal.dumps(print_), digest_size=12).hexdigest()
+    return blake2b(marshal.dumps(print_), digest_size=12).hexdigest()
 
 
-def runtime_dir(environ: dict[str, str] | os._Environ[str] | None = None, *, create: bool = True) -> Path | None:
+def runtime_dir(environ: dict[str, str] | os._Environ[str] | None = None, *, create: bool = True) -> str | None:
     """The directory of this user's server sockets, made (mode 0700) if missing; None if it is not
-    a directory of this user's that others cannot enter, or cannot be made."""
+    a directory of this user's that others cannot enter, or cannot be made. (Paths are strings
+    here: the client does without pathlib's import.)"""
     env = os.environ if environ is None else environ
     if env.get("ISOCSG_RUNTIME_DIR"):
-        path = Path(env["ISOCSG_RUNTIME_DIR"])
+        path = env["ISOCSG_RUNTIME_DIR"]
     elif env.get("XDG_RUNTIME_DIR"):
-        path = Path(env["XDG_RUNTIME_DIR"]) / "isocsg"
+        path = os.path.join(env["XDG_RUNTIME_DIR"], "isocsg")
     else:
-        path = Path("/tmp") / f"isocsg-{os.getuid()}"
+        path = f"/tmp/isocsg-{os.getuid()}"
     try:
         if create:
-            path.mkdir(mode=0o700, parents=True, exist_ok=True)
+            os.makedirs(path, mode=0o700, exist_ok=True)
         st = os.lstat(path)
     except OSError:
         return None
@@ -123,9 +126,9 @@ def runtime_dir(environ: dict[str, str] | os._Environ[str] | None = None, *, cre
     return path
 
 
-def socket_path(folder: Path, name: str) -> Path:
+def socket_path(folder: str, name: str) -> str:
     """The socket of the server named ``name`` (a :func:`digest`) in ``folder``."""
-    return folder / f"{name}.sock"
+    return os.path.join(folder, f"{name}.sock")
 
 
 def send_message(sock: socket.socket, value: dict[str, Any], fds: list[int] | tuple[int, ...] = ()) -> None:
