@@ -4,8 +4,9 @@ A new process pays for Python's start, numpy's import (OpenBLAS) and isocsg's mo
 it draws anything: several times what OpenSCAD's preview costs in all, for a small model. The
 server pays once. Started detached by the first command that found none
 (:func:`isocsg.cli.server_client.spawn_server`), it imports what the rendering commands use,
-draws the built-in scenes and a few small models (so that the kernels are loaded: compiled ones
-from numba's disk cache when it holds them all), waits for its pools' threads to end
+draws a few small models as ``isocsg render`` does (with compiled kernels, and the built-in
+scenes too, when numba's disk cache holds every listed kernel; else as a new process draws them,
+compiling nothing), waits for its pools' threads to end
 (:func:`isocsg._workers.quiesce`: a child has none of its parent's threads), and listens on its
 socket (:mod:`isocsg.cli.server_protocol`).
 
