@@ -90,14 +90,25 @@ def isocsg(env: dict[str, str], *argv: str, cwd: Path | None = None,
            stdin: str | None = None) -> subprocess.CompletedProcess[str]:
     """``python -m isocsg argv`` in a new process (in ``cwd``, else in the copy's directory: a
     checkout's own isocsg in the working directory would come first on ``sys.path``)."""
-    return subprocess.run([sys.executable, "-m", "isocsg", *argv], env=env, cwd=cwd or env["PYTHONPATH"], input=stdin,
-                          capture_output=True, text=True, timeout=120)
+    try:
+        return subprocess.run([sys.executable, "-m", "isocsg", *argv], env=env, cwd=cwd or env["PYTHONPATH"],
+                              input=stdin, capture_output=True, text=True, timeout=120)
+    except subprocess.TimeoutExpired as exc:
+        raise AssertionError(f"isocsg {' '.join(argv)} ran over 120 s; {_logs(env)}") from exc
+
+
+def _logs(env: dict[str, str]) -> str:
+    """The servers' logs of ``env``'s directory and what runs there (for a failure's message)."""
+    folder = Path(env["ISOCSG_RUNTIME_DIR"])
+    texts = [f"{p.name}: {p.read_text(errors='replace')[-4000:]!r}" for p in sorted(folder.glob("*.log"))]
+    ps = subprocess.run(["ps", "-eo", "pid,ppid,stat,etime,time,args"], capture_output=True, text=True).stdout
+    return f"files {sorted(p.name for p in folder.iterdir())}; logs: {texts}; processes:\n{ps[-6000:]}"
 
 
 def start(env: dict[str, str]) -> int:
     """Start the server (waiting until it is warm); its pid."""
     proc = isocsg(env, "server", "start")
-    assert proc.returncode == 0, proc.stderr
+    assert proc.returncode == 0, f"{proc.stderr}; {_logs(env)}"
     return int(re.search(r"pid (\d+)", proc.stdout).group(1))
 
 

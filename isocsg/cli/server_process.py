@@ -80,18 +80,22 @@ def serve(folder: str, name: str) -> int:
     try:
         fcntl.flock(lock, fcntl.LOCK_EX | fcntl.LOCK_NB)
     except OSError:
+        print(f"isocsg server {name}: another server holds the lock; leaving", flush=True)
         return 0
     os.ftruncate(lock, 0)
     os.write(lock, str(os.getpid()).encode())  # whom `isocsg server stop` signals
     if digest(fingerprint()) != name:
+        print(f"isocsg server {name}: isocsg's files or environment differ from the client's; leaving", flush=True)
         return 0
     signal.signal(signal.SIGINT, signal.SIG_IGN)
     signal.signal(signal.SIGHUP, signal.SIG_IGN)
     signal.signal(signal.SIGTERM, _leave_now)  # while warming up: unwind (temporary files removed)
     start = time.perf_counter()
+    print(f"isocsg server {name}: pid {os.getpid()}, warming up", flush=True)
     compiled = _warm_up()
     signal.signal(signal.SIGTERM, lambda _s, _f: _stop.set())
     if digest(fingerprint()) != name:
+        print(f"isocsg server {name}: isocsg's files changed while warming up; leaving", flush=True)
         return 0
     path = Path(socket_path(str(where), name))
     listener, inode = _listen(path)
