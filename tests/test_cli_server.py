@@ -283,3 +283,18 @@ def _alive(pid: int) -> bool:
     except OSError:
         return False
     return "zombie" not in status.lower()
+
+
+def test_the_digest_depends_on_values_only() -> None:
+    """Equal fingerprints, one with a value shared by two keys (as three ``*_NUM_THREADS=1``
+    variables left by dask's nanny are), one with its own copies: one name (marshal's bytes
+    differ between them, which made a warmed-up server leave as if its files had changed)."""
+    from isocsg.cli.server_protocol import digest, fingerprint
+
+    shared_value = "".join(["4", "2"])
+    base = fingerprint({})
+    one = [*base[:-1], [("MKL_NUM_THREADS", shared_value), ("OMP_NUM_THREADS", shared_value)]]
+    other = [*base[:-1], [("MKL_NUM_THREADS", "".join(["4", "2"])), ("OMP_NUM_THREADS", "".join(["4", "2"]))]]
+    assert one == other
+    assert digest(one) == digest(other)
+    assert digest(one) != digest([*base[:-1], [("MKL_NUM_THREADS", "42"), ("OMP_NUM_THREADS", "43")]])

@@ -90,12 +90,15 @@ def serve(folder: str, name: str) -> int:
     signal.signal(signal.SIGINT, signal.SIG_IGN)
     signal.signal(signal.SIGHUP, signal.SIG_IGN)
     signal.signal(signal.SIGTERM, _leave_now)  # while warming up: unwind (temporary files removed)
+    loaded = fingerprint()
     start = time.perf_counter()
     print(f"isocsg server {name}: pid {os.getpid()}, warming up", flush=True)
     compiled = _warm_up()
     signal.signal(signal.SIGTERM, lambda _s, _f: _stop.set())
-    if digest(fingerprint()) != name:
-        print(f"isocsg server {name}: isocsg's files changed while warming up; leaving", flush=True)
+    now = fingerprint()
+    if digest(now) != name:
+        print(f"isocsg server {name}: isocsg's files or environment changed while warming up "
+              f"({_difference(loaded, now)}); leaving", flush=True)
         return 0
     path = Path(socket_path(str(where), name))
     listener, inode = _listen(path)
@@ -108,6 +111,17 @@ def serve(folder: str, name: str) -> int:
     finally:
         _leave(listener, path, inode, lock)
     return 0
+
+
+def _difference(before: list[Any], after: list[Any]) -> str:
+    """What differs between two fingerprints, in a few words (for the log)."""
+    if before[-2] != after[-2]:
+        changed = sorted(set(map(tuple, before[-2])) ^ set(map(tuple, after[-2])))
+        return f"files {changed[:4]}"
+    if before[-1] != after[-1]:
+        changed = sorted(set(map(tuple, before[-1])) ^ set(map(tuple, after[-1])))
+        return f"environment {changed[:6]}"
+    return "interpreter or version"
 
 
 def _leave_now(_signum: int, _frame: Any) -> NoReturn:

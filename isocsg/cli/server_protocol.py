@@ -101,7 +101,9 @@ def digest(print_: list[Any]) -> str:
     except ImportError:  # pragma: no cover - an interpreter without it
         from hashlib import blake2b
 
-    return blake2b(marshal.dumps(print_), digest_size=12).hexdigest()
+    # repr, not marshal: marshal marks objects referenced elsewhere in the process (FLAG_REF), so
+    # equal values can give other bytes in two processes (or in one, before and after a warm-up)
+    return blake2b(repr(print_).encode("utf-8", "surrogatepass"), digest_size=12).hexdigest()
 
 
 def runtime_dir(environ: dict[str, str] | os._Environ[str] | None = None, *, create: bool = True) -> str | None:
