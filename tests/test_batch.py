@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import os
+
 import numpy as np
 import pytest
 
@@ -47,15 +49,20 @@ def test_threaded_grid_equals_serial():
     np.testing.assert_array_equal(m.occluded, serial.occluded)
 
 
-def test_dask_cluster_equals_serial():
+def test_dask_cluster_equals_serial() -> None:
     distributed = pytest.importorskip("distributed")
     cams = turntable(SCENE.camera, 3)
     serial_map = illuminance_map(GRID, LAMP, OCCLUDERS)
     serial_views = _serial_views(cams)
-    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None) as cluster:
-        with distributed.Client(cluster) as client:
+    saved = dict(os.environ)  # dask's nanny sets *_NUM_THREADS and PYTHONHASHSEED in this process
+    try:
+        with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
+                                      dashboard_address=None) as cluster, distributed.Client(cluster) as client:
             m = illuminance_grid(GRID, LAMP, OCCLUDERS, rows_per_task=4, client=client)
             views = render_views(SCENE, cams, client=client)
+    finally:
+        os.environ.clear()
+        os.environ.update(saved)
     np.testing.assert_array_equal(m.E, serial_map.E)
     for v, ref in zip(views, serial_views):
         np.testing.assert_array_equal(v.image, ref)
