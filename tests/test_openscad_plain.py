@@ -43,6 +43,10 @@ _leaf = st.one_of(
     st.builds(lambda h, r, c: f"cylinder(h = {_num(h)}, r = {_num(r)}{c});", _positive, _positive, _center),
     st.builds(lambda h, r1, r2, c: f"cylinder(h = {_num(h)}, r1 = {_num(r1)}, r2 = {_num(r2)}{c});",
               _positive, _positive, st.sampled_from([0.0, 0.5, 2.0]), _center),
+    # statements that leave nothing in the export
+    st.builds(lambda x: f'echo("x =", {_num(x)}, [1, 2]);', _numbers),
+    st.just("echo(version=version());"),
+    st.just("echo (version = version ( ) ) ;"),
 )
 
 
@@ -107,6 +111,11 @@ def test_in_process_read_is_the_programs(tmp_path: Path, text: str) -> None:
     "translate([1, 0]) cube(1);",
     "",
     "// nothing",
+    "echo(version=version());",  # nothing but a message: an empty model, the program's to report
+    'echo("a") cube(1);',  # echo with children: a group in the export
+    "echo(version=version(1));",
+    "echo(v=version_num()); cube(1);",
+    "my_echo(version=version()); cube(1);",
 ])
 def test_files_outside_the_subset_are_left_to_the_program(text: str) -> None:
     assert plain_calls(text) is None
@@ -121,3 +130,19 @@ def test_unreadable_or_large_files_are_left_to_the_program(tmp_path: Path) -> No
     csg.write_text("cube(1);\n")
     for path in (big, latin1, csg, tmp_path / "missing.scad", tmp_path):
         assert read_plain_scad(path) is None
+
+
+def test_openscads_csg_example_is_read_in_process(tmp_path: Path) -> None:
+    """OpenSCAD's examples/Basics/CSG.scad: constant CSG and ``echo(version=version());``."""
+    text = ("translate([-24,0,0]) {\n union() {\n  cube(15, center=true);\n  sphere(10);\n }\n}\n"
+            "intersection() {\n cube(15, center=true);\n sphere(10);\n}\n"
+            "translate([24,0,0]) {\n difference() {\n  cube(15, center=true);\n  sphere(10);\n }\n}\n"
+            "\necho(version=version());\n")
+    calls = plain_calls(text)
+    assert calls is not None and [c.name for c in calls] == ["translate", "intersection", "translate"]
+    path = tmp_path / "CSG.scad"
+    path.write_text(text)
+    mine = read_plain_scad(path)
+    assert mine is not None
+    if HAS_OPENSCAD:
+        assert repr(mine.solid) == repr(read_openscad(path).solid)

@@ -9,7 +9,9 @@ the default ``$fn``/``$fa``/``$fs``) and the numbers, which it prints to 6 signi
 :func:`read_plain_scad` reads such a file directly when every number is already one that
 survives that printing, so that the model is the one the program's export gives; any other
 file (variables, modules, loops, other calls, ``$`` variables, modifiers, longer numbers,
-``d =`` diameters, positional cylinder radii, ...) is left to the program.
+``d =`` diameters, positional cylinder radii, ...) is left to the program. ``echo`` statements
+with constant arguments, and OpenSCAD's examples' ``echo(version=version());``, are read too:
+they print to the program's log, which isocsg does not show, and leave nothing in its export.
 ``tests/test_openscad_plain.py`` compares the two reads on random files of this subset.
 """
 
@@ -17,6 +19,7 @@ from __future__ import annotations
 
 import math
 import os
+import re
 from collections.abc import Callable
 from pathlib import Path
 from typing import Any
@@ -88,12 +91,24 @@ def _boolean(call: CSGCall) -> bool:
     return not call.args and not call.kwargs
 
 
+def _echo(call: CSGCall) -> bool:
+    # constant arguments (the parser reads no other), no children: nothing in the export
+    return not call.children
+
+
 #: The calls read in-process, each with the check of its arguments.
 PLAIN_CALLS: dict[str, Callable[[CSGCall], bool]] = {
     "cube": _cube, "sphere": _sphere, "cylinder": _cylinder, "translate": _translate,
-    "union": _boolean, "difference": _boolean, "intersection": _boolean,
+    "union": _boolean, "difference": _boolean, "intersection": _boolean, "echo": _echo,
 }
 _LEAVES = ("cube", "sphere", "cylinder")
+#: OpenSCAD's examples end with it; ``version()`` is the one call of an expression read here.
+_ECHO_VERSION = re.compile(r"(?<![\w$])(echo\s*\()(\s*version\s*=\s*version\s*\(\s*\)\s*)(\)\s*;)")
+
+
+def _blank(match: re.Match[str]) -> str:
+    """``echo();`` in the statement's place (newlines kept: the lines of what follows stay)."""
+    return match.group(1) + re.sub(r"[^\n]", " ", match.group(2)) + match.group(3)
 
 
 def plain_calls(text: str) -> list[CSGCall] | None:
@@ -110,16 +125,18 @@ def plain_calls(text: str) -> list[CSGCall] | None:
     True
     """
     try:
-        calls = parse_csg(text)
+        calls = parse_csg(_ECHO_VERSION.sub(_blank, text))
     except OpenSCADError:
         return None
-    todo = list(calls)
+    todo = [calls]
     while todo:  # iterative: any depth
-        call = todo.pop()
-        check = PLAIN_CALLS.get(call.name)
-        if check is None or call.modifiers or not check(call) or (call.name in _LEAVES and call.children):
-            return None
-        todo.extend(call.children)
+        block = todo.pop()
+        for call in block:
+            check = PLAIN_CALLS.get(call.name)
+            if check is None or call.modifiers or not check(call) or (call.name in _LEAVES and call.children):
+                return None
+            todo.append(call.children)
+        block[:] = [call for call in block if call.name != "echo"]
     return calls or None
 
 
