@@ -67,7 +67,7 @@ from ..csg.section import solid_program
 from ..errors import InvalidGeometryError, InvalidParameterError
 from ..kinds import Primitive, Solid
 from .crossings import curved_crossings, plane_crossings, state
-from .kinks import signature_breaks
+from .kinks import graded, signature_breaks
 from .patches import Patch, leaf_patches
 from .planar import Neighbours, PlanarFace, face_boundary
 
@@ -476,12 +476,25 @@ class _PatchRule:
         self.span = patch.s_hi - patch.s_lo
         self.signature = lambda s: _ring_signature(tree, patch, rel, self.planes, self.curved, s, samples)
         self.undecided = lambda s: _ring_signature(tree, patch, rel, self.planes, self.curved, s, samples, True)
+        self.kinks = np.zeros(0)  # the changes located (:mod:`.kinks`), graded towards before the sweep
         if len(rel):  # where the ring measure changes its form (kinks, square-root ends, jumps)
             br = self._with(br, signature_breaks(self.signature, br, undecided=self.undecided))
         self.breaks = br[np.concatenate([[True], np.diff(br) > 1e-13 * self.span])]
 
     def _with(self, br: F64, kinks: F64) -> F64:
-        return np.unique(np.concatenate([br, kinks[(kinks > self.patch.s_lo) & (kinks < self.patch.s_hi)]]))
+        kinks = kinks[(kinks > self.patch.s_lo) & (kinks < self.patch.s_hi)]
+        self.kinks = np.concatenate([self.kinks, kinks])
+        return np.unique(np.concatenate([br, kinks]))
+
+    def grade(self) -> None:
+        """Break points added next to each located change (:func:`.kinks.graded`) whose rings near
+        it have no undecided piece."""
+        pts, near, owner = graded(self.breaks, self.kinks)
+        if len(pts) == 0:
+            return
+        banded = np.unique(owner[self.undecided(near) > 0])  # (changes next to an undecided band)
+        br = np.unique(np.concatenate([self.breaks, pts[~np.isin(owner, banded)]]))
+        self.breaks = br[np.concatenate([[True], np.diff(br) > 1e-13 * self.span])]
 
     def add_seeds(self, points: F64) -> None:
         """Search the sweep again at the heights of ``points`` on this patch's leaf (where other
@@ -687,6 +700,7 @@ def _boundary_integral(
         seeds = np.concatenate(tree.seeds) if tree.seeds else np.zeros((0, 3))
         for rule in rules:  # features narrower than a patch's grid, seen from the other leaves' rings
             rule.add_seeds(seeds)
+            rule.grade()
         size = 1.0 if origin is None else float(np.max(tree.hi - tree.lo))
         v, e = _sweep(rules, tol, abs_value, 1e-6 * closed * size)
         value, error = value + v, error + e

@@ -18,6 +18,19 @@ seen on the grid; the integration adds to the grid the heights of the points whe
 patches' rings cross the leaf's surface (a rod's rings, bisected to where they enter the large
 leaf, cross it inside the footprint), so that such a feature is found from the other side. A
 patch without a sweep direction (an ellipsoid's, an elliptic truncus') takes no such heights.
+
+A break alone is not enough where the measure's form changes on a scale far below the
+interval's: next to a cone's ring tangent to a plate's face (where the cone's radius is the
+plate's half thickness ``w``), the removed arc ``2 rho asin(w / rho)`` differs from its smooth
+continuation only within a few ``w`` of the break, and the Gauss-Kronrod nodes of a long
+interval (the nearest 0.4 % of its length from its end) see none of it: case 520 of the
+1000-tree run was 1.1e-9 off in area with an error estimate of 5e-11. The sweep is therefore
+graded towards each located change (:func:`graded`: points at 4^-1 .. 4^-10 of the neighbouring
+intervals, down to 1e-7 of the sweep), so that every scale near it has an interval whose nodes
+see it, and its Kronrod-Gauss difference measures it. A change is not graded towards where the
+nodes near it would meet rings with undecided pieces (a chord touching the rim of a coincident
+disc: the band along the rim, which finer intervals would measure again and again as undecided,
+an error that does not shrink).
 """
 
 from __future__ import annotations
@@ -27,7 +40,8 @@ from collections.abc import Callable
 import numpy as np
 from numpy.typing import NDArray
 
-__all__ = ["BAND_MAX", "EDGE_GAP", "GRID_PER_INTERVAL", "centre_bands", "signature_breaks"]
+__all__ = ["BAND_MAX", "EDGE_GAP", "GRADE_FLOOR", "GRADE_LEVELS", "GRID_PER_INTERVAL", "NEAREST_NODE",
+           "centre_bands", "graded", "signature_breaks"]
 
 F64 = NDArray[np.float64]
 #: Grid rings per interval between the sweep's given break points.
@@ -42,6 +56,13 @@ SKIP = 1e-8
 BAND_MAX = 1e-6
 #: The sides of a change are looked at this fraction of the sweep away from it (bands are wider).
 EDGE_GAP = 1e-13
+#: Points of the grading next to a located change, at 4^-1 .. 4^-GRADE_LEVELS of each neighbour interval.
+GRADE_LEVELS = 10
+#: The Gauss-Kronrod 7-15 nodes nearest an interval's ends lie this fraction of it inside.
+NEAREST_NODE = 0.004
+#: The grading stops this fraction of the sweep from the change (a feature narrower than that
+#: and unseen costs at most its width squared, relative).
+GRADE_FLOOR = 1e-7
 
 
 def signature_breaks(
@@ -134,3 +155,28 @@ def centre_bands(undecided: Callable[[F64], NDArray[np.int64]], lo: F64, hi: F64
     far[ok] = 0.5 * (a + b)
     x[idx] = np.where(ok, 0.5 * (edge + far), x[idx])
     return x
+
+
+def graded(breaks: F64, kinks: F64) -> tuple[F64, F64, NDArray[np.int64]]:
+    """Points to add to ``breaks`` (sorted) next to each of ``kinks`` (located changes, among the
+    breaks to rounding): at ``4^-k`` (k = 1 .. ``GRADE_LEVELS``) of each neighbouring interval's
+    length ``d`` from the change, none closer than ``GRADE_FLOOR`` of the sweep; for each, the
+    point ``NEAREST_NODE * d`` from the change (as near as the nodes of the interval between the
+    change and the point come to it: where the caller looks for undecided rings), and the index
+    of its change in ``kinks``."""
+    if len(kinks) == 0 or len(breaks) < 2:
+        return np.zeros(0), np.zeros(0), np.zeros(0, np.int64)
+    span = float(breaks[-1] - breaks[0])
+    i = np.clip(np.searchsorted(breaks, kinks), 1, len(breaks) - 1)
+    i = np.where(kinks - breaks[i - 1] < breaks[i] - kinks, i - 1, i)  # the break nearest each change
+    b = breaks[i]
+    left = np.where(i > 0, b - breaks[np.maximum(i - 1, 0)], 0.0)
+    right = np.where(i < len(breaks) - 1, breaks[np.minimum(i + 1, len(breaks) - 1)] - b, 0.0)
+    f = 4.0 ** -np.arange(1, GRADE_LEVELS + 1)
+    dl, dr = left[:, None] * f, right[:, None] * f
+    ok_l, ok_r = dl >= GRADE_FLOOR * span, dr >= GRADE_FLOOR * span
+    bb = np.broadcast_to(b[:, None], dl.shape)
+    owner = np.broadcast_to(np.arange(len(b))[:, None], dl.shape)
+    pts = np.concatenate([(bb - dl)[ok_l], (bb + dr)[ok_r]])
+    near = np.concatenate([(bb - NEAREST_NODE * dl)[ok_l], (bb + NEAREST_NODE * dr)[ok_r]])
+    return pts, near, np.concatenate([owner[ok_l], owner[ok_r]])
