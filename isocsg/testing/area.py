@@ -24,7 +24,8 @@ classified at its midpoint and its area density integrated (Gauss-Legendre), giv
 the heights where other leaves start, end or have vertices (on a planar face also where two
 other planes meet on it, each on its leaf's surface: the ring measure's kinks), and where the
 rings' crossings or boundary pieces change in number (:mod:`isocsg.testing.kinks`: tangencies,
-rims, a ring entering another leaf, located by bisection to rounding). All patches of
+rims, a ring entering another leaf, located by bisection to rounding, and the sweep graded
+towards each: the measure's form can change on a scale far below the interval's). All patches of
 the tree are refined together, the worst intervals wherever they are, until the Kronrod-Gauss
 differences add up to less than ``SAFETY * tol`` times the whole figure (the sum of the absolute
 contributions, at least 1e-6 of the swept patches' whole area): a patch with nothing or little on
@@ -91,6 +92,8 @@ _GL_X, _GL_W = np.polynomial.legendre.leggauss(6)
 RING_GRID = 17
 #: Where another leaf's surface passes within this fraction of the scene's size, it is on it.
 COINCIDENT = 1e-11
+#: The changes of a patch's rings are located to this fraction of ``tol`` of its sweep (or to rounding).
+LOCATE = 1e-9
 #: A signed distance within this fraction of the scene's size may have the wrong sign.
 ROUNDING = 1e-14
 #: The planar faces' overlay is snap-rounded to this fraction of the face's size: GEOS' overlay
@@ -465,7 +468,12 @@ class _PatchRule:
     integral, its Kronrod-Gauss difference, and the undecided pieces' area (or, with ``origin``,
     the patch's share of the volume)."""
 
-    def __init__(self, tree: _Tree, patch: Patch, rel: NDArray[np.int64], samples: int, origin: F64 | None) -> None:
+    def __init__(
+        self, tree: _Tree, patch: Patch, rel: NDArray[np.int64], samples: int, origin: F64 | None,
+        known: F64 | None = None, resolution: float = 0.0,
+    ) -> None:
+        """``known``: the break points found for this patch before (the volume's sweep, for the
+        area's); ``resolution``: the changes of the rings are located to this fraction of the sweep."""
         faces = [f for f in (tree.planes[j] for j in rel.tolist()) if f is not None]
         self.tree, self.patch, self.rel, self.samples, self.origin = tree, patch, rel, samples, origin
         self.curved = [j for j in rel.tolist() if not tree.planar[j]]
@@ -477,8 +485,11 @@ class _PatchRule:
         self.signature = lambda s: _ring_signature(tree, patch, rel, self.planes, self.curved, s, samples)
         self.undecided = lambda s: _ring_signature(tree, patch, rel, self.planes, self.curved, s, samples, True)
         self.kinks = np.zeros(0)  # the changes located (:mod:`.kinks`), graded towards before the sweep
-        if len(rel):  # where the ring measure changes its form (kinks, square-root ends, jumps)
-            br = self._with(br, signature_breaks(self.signature, br, undecided=self.undecided))
+        self.known, self.resolution = known is not None, resolution
+        if known is not None:
+            br = known
+        elif len(rel):  # where the ring measure changes its form (kinks, square-root ends, jumps)
+            br = self._with(br, signature_breaks(self.signature, br, undecided=self.undecided, resolution=resolution))
         self.breaks = br[np.concatenate([[True], np.diff(br) > 1e-13 * self.span])]
 
     def _with(self, br: F64, kinks: F64) -> F64:
@@ -522,7 +533,8 @@ class _PatchRule:
         if len(new) == 0:
             return
         grid = np.unique(np.concatenate([br, new]))
-        br = self._with(self.breaks, signature_breaks(self.signature, self.breaks, grid, self.undecided))
+        found = signature_breaks(self.signature, self.breaks, grid, self.undecided, self.resolution)
+        br = self._with(self.breaks, found)
         self.breaks = br[np.concatenate([[True], np.diff(br) > 1e-13 * self.span])]
 
     def __call__(self, a: F64, b: F64) -> tuple[F64, F64, F64]:
@@ -646,13 +658,15 @@ def boundary_figures(solid: Solid, *, tol: float = 1e-9, samples: int = 64) -> t
     tol_ = scalar("tol", tol, low=1e-13, high=0.1, error=InvalidParameterError)
     samples_ = integer("samples", samples, low=8, high=4096, error=InvalidParameterError)
     cache: dict[int, tuple[float, float, float, float] | None] = {}
-    return (_boundary_integral(solid, tol_, samples_, volume=True, planar_cache=cache),
-            _boundary_integral(solid, tol_, samples_, volume=False, planar_cache=cache))
+    sweeps: dict[tuple[int, int], F64] = {}  # the patches' break points (the search for them costs most)
+    return (_boundary_integral(solid, tol_, samples_, volume=True, planar_cache=cache, sweep_cache=sweeps),
+            _boundary_integral(solid, tol_, samples_, volume=False, planar_cache=cache, sweep_cache=sweeps))
 
 
 def _boundary_integral(
     solid: Solid, tol: float, samples: int, *, volume: bool,
     planar_cache: dict[int, tuple[float, float, float, float] | None] | None = None,
+    sweep_cache: dict[tuple[int, int], F64] | None = None,
 ) -> AreaResult:
     prog = solid_program(solid)
     if prog.n_leaves == 0:
@@ -664,9 +678,11 @@ def _boundary_integral(
     centre = 0.5 * (tree.lo.min(axis=0) + tree.hi.max(axis=0))
     origin = centre if volume else None
     planar_cache = {} if planar_cache is None else planar_cache
+    sweep_cache = {} if sweep_cache is None else sweep_cache
     value, error, exact = 0.0, 0.0, True
     abs_value, closed = 0.0, 0.0  # the closed and planar parts' size; the swept patches' whole area
     rules: list[_PatchRule] = []
+    keys: list[tuple[int, int]] = []
     for i, prim in enumerate(prog.leaves):
         rel = tree.relevant(i)
         if len(rel) and tree.planar[i] and all(tree.planar[j] for j in rel.tolist()):
@@ -694,13 +710,17 @@ def _boundary_integral(
                 value, abs_value = value + whole, abs_value + abs(whole)
             continue
         exact = False
-        rules.extend(_PatchRule(tree, p, rel, samples, origin) for p in patches)
+        keys.extend((i, k) for k in range(len(patches)))
+        rules.extend(_PatchRule(tree, p, rel, samples, origin, sweep_cache.get((i, k)), LOCATE * tol)
+                     for k, p in enumerate(patches))
         closed += sum(p.closed_area for p in patches)
     if rules:
         seeds = np.concatenate(tree.seeds) if tree.seeds else np.zeros((0, 3))
-        for rule in rules:  # features narrower than a patch's grid, seen from the other leaves' rings
-            rule.add_seeds(seeds)
-            rule.grade()
+        for rule, key in zip(rules, keys):  # features narrower than a patch's grid, seen from the other leaves' rings
+            if not rule.known:
+                rule.add_seeds(seeds)
+                rule.grade()
+                sweep_cache[key] = rule.breaks
         size = 1.0 if origin is None else float(np.max(tree.hi - tree.lo))
         v, e = _sweep(rules, tol, abs_value, 1e-6 * closed * size)
         value, error = value + v, error + e

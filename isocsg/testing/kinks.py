@@ -67,9 +67,11 @@ GRADE_FLOOR = 1e-7
 
 def signature_breaks(
     signature: Callable[[F64], NDArray[np.int64]], breaks: F64, grid: F64 | None = None,
-    undecided: Callable[[F64], NDArray[np.int64]] | None = None,
+    undecided: Callable[[F64], NDArray[np.int64]] | None = None, resolution: float = 0.0,
 ) -> F64:
-    """The sweep parameters where ``signature`` (one integer per ring) changes, to rounding.
+    """The sweep parameters where ``signature`` (one integer per ring) changes, to rounding (or
+    to ``resolution`` of the sweep, where that is coarser: a change misplaced by ``d`` moves the
+    integral by about ``d`` of the patch's measure, so a tolerance of 1e-3 needs no rounding).
 
     ``breaks``: the sweep's break points (sorted, at least two); each interval between them is
     gridded (or ``grid`` is the grid: sorted, from the first break to the last), and every
@@ -89,7 +91,7 @@ def signature_breaks(
     while len(a) and count < MAX_CHANGES:
         lo, hi, s_hi = a.copy(), b.copy(), sb.copy()
         for _ in range(64):
-            wide = hi - lo > 4e-16 * np.maximum(np.abs(hi), span)
+            wide = hi - lo > np.maximum(4e-16 * np.maximum(np.abs(hi), span), resolution * span)
             if not wide.any():
                 break
             mid = 0.5 * (lo + hi)
@@ -98,7 +100,7 @@ def signature_breaks(
             lo = np.where(same, mid, lo)
             hi = np.where(same, hi, mid)
             s_hi = np.where(same, s_hi, sm)
-        found.append(0.5 * (lo + hi) if undecided is None else centre_bands(undecided, lo, hi, span))
+        found.append(0.5 * (lo + hi) if undecided is None else centre_bands(undecided, lo, hi, span, resolution))
         count += len(a)
         # another change between the one found and the pair's far end: searched from a little
         # beyond it (a ring through a cone's apex flickers; its neighbourhood is one break)
@@ -114,7 +116,9 @@ def signature_breaks(
     return np.concatenate(found) if found else np.zeros(0)
 
 
-def centre_bands(undecided: Callable[[F64], NDArray[np.int64]], lo: F64, hi: F64, span: float) -> F64:
+def centre_bands(
+    undecided: Callable[[F64], NDArray[np.int64]], lo: F64, hi: F64, span: float, resolution: float = 0.0,
+) -> F64:
     """The break points of changes bracketed by ``[lo, hi]`` (to rounding): where one side of a
     bracket has undecided pieces and the other none, the change is at the edge of a tolerance
     band (a ring crossing another surface at an angle lies within the coincidence tolerance of
@@ -145,7 +149,7 @@ def centre_bands(undecided: Callable[[F64], NDArray[np.int64]], lo: F64, hi: F64
     ok = ~np.isnan(outside)
     a, b = inside[ok], outside[ok]
     for _ in range(64):
-        wide = np.abs(b - a) > 4e-16 * np.maximum(np.abs(b), span)
+        wide = np.abs(b - a) > np.maximum(4e-16 * np.maximum(np.abs(b), span), resolution * span)
         if not wide.any():
             break
         m = 0.5 * (a + b)
