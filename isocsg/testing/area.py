@@ -22,7 +22,10 @@ signed distance to machine precision, 16 sections a step), every piece between c
 classified at its midpoint and its area density integrated (Gauss-Legendre), giving the ring's measure ``m(s)``.
 ``m`` is integrated over the sweep parameter by adaptive Gauss-Kronrod (7-15), split first at
 the heights where other leaves start, end or have vertices (on a planar face also where two
-other planes meet on it, each on its leaf's surface: the ring measure's kinks). All patches of
+other planes meet on it, each on its leaf's surface: the ring measure's kinks), and where the
+rings' crossings or boundary pieces change in number (:mod:`isocsg.testing.kinks`: tangencies,
+rims, a ring entering another leaf, located by bisection to rounding, and the sweep graded
+towards each: the measure's form can change on a scale far below the interval's). All patches of
 the tree are refined together, the worst intervals wherever they are, until the Kronrod-Gauss
 differences add up to less than ``SAFETY * tol`` times the whole figure (the sum of the absolute
 contributions, at least 1e-6 of the swept patches' whole area): a patch with nothing or little on
@@ -64,7 +67,9 @@ from ..csg.program import Program, combine_masks
 from ..csg.section import solid_program
 from ..errors import InvalidGeometryError, InvalidParameterError
 from ..kinds import Primitive, Solid
-from .patches import Patch, Rings, leaf_patches
+from .crossings import curved_crossings, plane_crossings, state
+from .kinks import graded, signature_breaks
+from .patches import Patch, leaf_patches
 from .planar import Neighbours, PlanarFace, face_boundary
 
 __all__ = ["AreaResult", "boundary_figures", "boundary_volume", "closed_form_area", "surface_area"]
@@ -87,8 +92,10 @@ _GL_X, _GL_W = np.polynomial.legendre.leggauss(6)
 RING_GRID = 17
 #: Where another leaf's surface passes within this fraction of the scene's size, it is on it.
 COINCIDENT = 1e-11
-#: Most ring intervals per ring kept splitting at one level of the crossing search.
-MAX_SPLITS = 64
+#: The changes of a patch's rings are located to this fraction of ``tol`` of its sweep (or to rounding).
+LOCATE = 1e-9
+#: A signed distance within this fraction of the scene's size may have the wrong sign.
+ROUNDING = 1e-14
 #: The planar faces' overlay is snap-rounded to this fraction of the face's size: GEOS' overlay
 #: in floating point can silently lose a piece where edges nearly coincide (a union of three
 #: valid polygons 0.03 short of their area, fuzz case 848); snap-rounding is robust.
@@ -163,11 +170,14 @@ class _Tree:
         #: the tangency probes' distance: at 1e-4 of the size, sd differences of 5e-9 of the size at
         #: unit relative curvature, far above the tolerance
         self.probe = 1e-4 * scale
+        #: below this, a signed distance's sign is rounding (a point's coordinates carry 1e-16 of the size)
+        self.rounding = ROUNDING * scale
         self._same: dict[tuple[int, int], bool] = {}
         self.last_inside_minus = np.zeros(0, bool)
         # every part of the surface flat, and the planes all of it (a convex polytope)
         self.planar = [bool(p.polyhedral and p.convex) for p in self.leaves]
         self.planes = [_planes(p) for p in self.leaves]
+        self.seeds: list[F64] = []  # points where rings crossed other leaves' surfaces (:mod:`.kinks`)
 
     def relevant(self, i: int) -> NDArray[np.int64]:
         """The leaves other than ``i`` whose boxes meet ``i``'s (grown by the tolerance)."""
@@ -285,145 +295,29 @@ class _Tree:
         prim_i, prim_j = self.leaves[i], self.leaves[j]
         side = np.zeros(len(p), np.int8)
         cross = np.zeros(len(p), bool)
+        smooth, least = np.zeros(len(p), np.int8), np.full(len(p), np.inf)  # the quadratic probe's side
+        rows = np.arange(len(p))
         for w in (u, v):
             q = np.concatenate([p + delta * w, p - delta * w])
             D = np.asarray(prim_j.signed_distance(q)) - np.tile(sigma, 2) * np.asarray(prim_i.signed_distance(q))
-            s = _state(D, self.tol).reshape(2, -1)
+            s = state(D, self.tol).reshape(2, -1)
             both = (s[0] == s[1]) & (s[0] != 0) & (side == 0)
             side[both] = s[0][both]
-            cross |= (s[0] * s[1]) < 0
+            here = (s[0] * s[1]) < 0
+            cross |= here
+            aD = np.abs(D).reshape(2, -1)
+            k = np.argmin(aD, axis=0)
+            better = here & (aD[k, rows] < least)
+            smooth[better], least[better] = s[k, rows][better], aD[k, rows][better]
         cross &= side == 0
         if cross.any():
-            side[cross] = np.sign(np.asarray(prim_j.signed_distance(p[cross]))).astype(np.int8)
+            sd = np.asarray(prim_j.signed_distance(p[cross]))
+            side[cross] = np.where(np.abs(sd) > self.rounding, np.sign(sd), smooth[cross]).astype(np.int8)
         out[sel] = side
         return out
 
     def state(self, j: int, p: F64) -> NDArray[np.int8]:
-        return _state(np.asarray(self.leaves[j].signed_distance(p)), self.tol)
-
-
-def _plane_crossings(rings: Rings, normals: F64, offsets: F64) -> tuple[NDArray[np.int64], F64]:
-    """Where each ring meets each plane ``n . x = d`` (closed forms), as (ring, t) pairs."""
-    nc, nA = rings.c @ normals.T, rings.A @ normals.T
-    rhs = offsets[None, :] - nc
-    k = len(rings.c)
-    if rings.trig:
-        nB = rings.B @ normals.T
-        amp = np.hypot(nA, nB)
-        ok = (amp > 0) & (np.abs(rhs) <= amp)
-        base = np.arctan2(nB, nA)
-        dl = np.arccos(np.clip(rhs / np.where(amp > 0, amp, 1.0), -1.0, 1.0))
-        t = np.mod(np.concatenate([base + dl, base - dl], axis=1), 2 * math.pi)
-        ok = np.concatenate([ok, ok], axis=1)
-    else:
-        ok = np.abs(nA) > 1e-14
-        t = rhs / np.where(ok, nA, 1.0)
-    ring = np.broadcast_to(np.arange(k)[:, None], t.shape)
-    return ring[ok], t[ok]
-
-
-def _curved_crossings(
-    tree: _Tree, rings: Rings, leaves: list[int], samples: int,
-) -> tuple[NDArray[np.int64], F64]:
-    """Sign changes of curved leaves' signed distances along the rings, bisected to rounding.
-
-    The rings are sampled at ``samples`` points; an interval without a sign change is split again
-    while its ends' distances could hide two crossings between them (``|f_a| + |f_b|`` at most
-    the arc's length bound: signed distances are 1-Lipschitz), down to 2**-30 of the ring, so that
-    thin rods and slots are not stepped over; a ring that runs along a surface (more than
-    ``MAX_SPLITS`` such intervals per ring) stops the splitting."""
-    k = len(rings.c)
-    u = np.linspace(0.0, 1.0, samples + 1)
-    T = rings.t0[:, None] + (rings.t1 - rings.t0)[:, None] * u
-    speed = np.linalg.norm(rings.A, axis=1) + (np.linalg.norm(rings.B, axis=1) if rings.trig else 0.0)
-    lo_r, hi_r = _ring_boxes(rings)
-    out_r: list[NDArray[np.int64]] = []
-    out_t: list[F64] = []
-    for j in leaves:
-        prim = tree.leaves[j]
-        # a ring outside the leaf's box cannot cross its surface: most rings, most leaves
-        box = np.asarray(prim.bounds, dtype=np.float64)
-        pad = 1e-9 * (1.0 + float(np.max(np.abs(box)))) + tree.tol
-        sel = np.flatnonzero(np.all((hi_r >= box[0] - pad) & (lo_r <= box[1] + pad), axis=1))
-        if len(sel) == 0:
-            continue
-        n_sel = len(sel)
-        Ts = T[sel]
-        f = np.asarray(prim.signed_distance(rings.points(np.repeat(sel, samples + 1), Ts.ravel())))
-        f = f.reshape(n_sel, samples + 1)
-        r, ta, tb = np.repeat(sel, samples), Ts[:, :-1].ravel(), Ts[:, 1:].ravel()
-        fa, fb = f[:, :-1].ravel(), f[:, 1:].ravel()
-        found_r, found_a, found_b, found_s = [], [], [], []
-        for _ in range(30):
-            sa, sb = _state(fa, tree.tol), _state(fb, tree.tol)
-            change = sa != sb
-            found_r.append(r[change])
-            found_a.append(ta[change])
-            found_b.append(tb[change])
-            found_s.append(sa[change])
-            hidden = ~change & (np.abs(fa) + np.abs(fb) <= 1.01 * speed[r] * (tb - ta) + tree.tol)
-            hidden &= (np.abs(fa) > tree.tol) | (np.abs(fb) > tree.tol)  # on the surface: coincident
-            if not hidden.any() or hidden.sum() > MAX_SPLITS * k:
-                break  # a ring that runs along a surface stops the splitting here
-            r, ta, tb, fa, fb = r[hidden], ta[hidden], tb[hidden], fa[hidden], fb[hidden]
-            tm = 0.5 * (ta + tb)
-            fm = np.asarray(prim.signed_distance(rings.points(r, tm)))
-            r = np.concatenate([r, r])
-            ta, tb = np.concatenate([ta, tm]), np.concatenate([tm, tb])
-            fa, fb = np.concatenate([fa, fm]), np.concatenate([fm, fb])
-        ri = np.concatenate(found_r)
-        if len(ri) == 0:
-            continue
-        lo, hi, sl = np.concatenate(found_a), np.concatenate(found_b), np.concatenate(found_s)
-        lo, hi = _section_search(tree, j, rings, ri, lo, hi, sl)
-        out_r.append(ri)
-        out_t.append(0.5 * (lo + hi))
-    if not out_r:
-        return np.zeros(0, np.int64), np.zeros(0)
-    return np.concatenate(out_r), np.concatenate(out_t)
-
-
-#: Points per bracket and step of the crossing search: 16 sections, 4 bits a step.
-SECTIONS = 15
-
-
-def _section_search(
-    tree: _Tree, j: int, rings: Rings, ri: NDArray[np.int64], lo: F64, hi: F64, sl: NDArray[np.int8],
-) -> tuple[F64, F64]:
-    """Brackets ``[lo, hi]`` on rings ``ri`` whose ends' states differ (``sl`` at ``lo``) shrunk to
-    rounding around a change of leaf ``j``'s state: bisection, ``SECTIONS`` points a step (one
-    signed-distance call per step costs about the same for 15 points a bracket as for one, and
-    takes 4 bits instead of 1: 13 steps instead of 52). The bracket kept is the first section
-    whose right end's state differs from ``sl``, so the invariant and the precision are
-    bisection's."""
-    frac = np.arange(1, SECTIONS + 1) / (SECTIONS + 1)
-    for _ in range(20):
-        width = hi - lo
-        t = lo[:, None] + width[:, None] * frac[None, :]
-        st = tree.state(j, rings.points(np.repeat(ri, SECTIONS), t.ravel())).reshape(-1, SECTIONS)
-        differs = st != sl[:, None]
-        first = np.where(differs.any(axis=1), np.argmax(differs, axis=1), SECTIONS)  # section index 0..SECTIONS
-        grid = np.concatenate([lo[:, None], t, hi[:, None]], axis=1)
-        rows = np.arange(len(lo))
-        lo, hi = grid[rows, first], grid[rows, first + 1]
-        if np.all(hi - lo <= 4e-16 * np.maximum(np.abs(hi), 1.0)):
-            break
-    return lo, hi
-
-
-def _ring_boxes(rings: Rings) -> tuple[F64, F64]:
-    """Boxes containing each ring: ``c + A cos t + B sin t`` lies within ``c +- sqrt(A^2 + B^2)``
-    per coordinate; a segment ``c + A t`` between its ends."""
-    if rings.trig:
-        half = np.sqrt(rings.A**2 + rings.B**2)
-        return rings.c - half, rings.c + half
-    a = rings.c + rings.A * rings.t0[:, None]
-    b = rings.c + rings.A * rings.t1[:, None]
-    return np.minimum(a, b), np.maximum(a, b)
-
-
-def _state(sd: F64, tol: float) -> NDArray[np.int8]:
-    return np.where(np.abs(sd) <= tol, 0, np.sign(sd)).astype(np.int8)  # type: ignore[no-any-return]
+        return state(np.asarray(self.leaves[j].signed_distance(p)), self.tol)
 
 
 def _ring_measure(
@@ -441,11 +335,11 @@ def _ring_measure(
     grid[:, 0], grid[:, -1] = rings.t0, rings.t1
     ts = [grid.ravel()]
     if planes is not None:
-        r, t = _plane_crossings(rings, *planes)
+        r, t = plane_crossings(rings, *planes)
         rs.append(r)
         ts.append(t)
     if curved:
-        r, t = _curved_crossings(tree, rings, curved, samples)
+        r, t = curved_crossings(tree, rings, curved, samples)
         rs.append(r)
         ts.append(t)
     ring, t = np.concatenate(rs), np.concatenate(ts)
@@ -469,6 +363,49 @@ def _ring_measure(
     m = np.bincount(pr, w * bound, minlength=k)
     und = np.bincount(pr, np.abs(w) * undecided, minlength=k)
     return m.astype(np.float64), und.astype(np.float64)
+
+
+def _ring_signature(
+    tree: _Tree, patch: Patch, rel: NDArray[np.int64], planes: tuple[F64, F64] | None,
+    curved: list[int], s: F64, samples: int, undecided_only: bool = False,
+) -> NDArray[np.int64]:
+    """Per ring, an integer that changes where the ring measure's form does (:mod:`.kinks`): its
+    crossings and its pieces on the boundary, counted (on a closed ring the piece through ``t = 0``
+    once: a crossing passing through it changes nothing). Undecided pieces (on another surface at
+    an angle, or within a central-difference step of its edge) are not counted: they flicker
+    along coincident surfaces, where the integration's own rule for them applies."""
+    rings = patch.rings(s)
+    k = len(s)
+    rs, ts = [np.arange(k), np.arange(k)], [rings.t0, rings.t1]
+    if planes is not None:
+        r, t = plane_crossings(rings, *planes)
+        rs.append(r)
+        ts.append(t)
+    if curved:
+        r, t = curved_crossings(tree, rings, curved, samples)
+        rs.append(r)
+        ts.append(t)
+    ring, t = np.concatenate(rs), np.concatenate(ts)
+    keep = (t >= rings.t0[ring]) & (t <= rings.t1[ring])
+    crossed = keep.copy()
+    crossed[:2 * k] = False
+    if crossed.any():
+        tree.seeds.append(rings.points(ring[crossed], t[crossed]))
+    ring, t = ring[keep], t[keep]
+    order = np.lexsort((t, ring))
+    ring, t = ring[order], t[order]
+    piece = (ring[1:] == ring[:-1]) & (t[1:] > t[:-1])
+    pr, a, b = ring[:-1][piece], t[:-1][piece], t[1:][piece]
+    if rings.trig and len(pr):  # the last piece of a closed ring is the first one's other half
+        last = np.r_[pr[1:] != pr[:-1], True] & np.r_[False, pr[1:] == pr[:-1]]
+        pr, a, b = pr[~last], a[~last], b[~last]
+    mid = 0.5 * (a + b)
+    bound, undecided = tree.classify(patch.leaf, rel, rings.points(pr, mid), patch.normal(s[pr], mid))
+    n_piece = np.bincount(pr, minlength=k)
+    if undecided_only:  # (the band of a crossing at an angle: :func:`.kinks.centre_bands`)
+        return np.bincount(pr, undecided, minlength=k).astype(np.int64)  # type: ignore[no-any-return]
+    n_bound = np.bincount(pr, bound & ~undecided, minlength=k).astype(np.int64)
+    return n_piece * 65536 + n_bound  # type: ignore[no-any-return]
 
 
 def _sweep_breaks(tree: _Tree, patch: Patch, rel: NDArray[np.int64]) -> F64:
@@ -531,7 +468,12 @@ class _PatchRule:
     integral, its Kronrod-Gauss difference, and the undecided pieces' area (or, with ``origin``,
     the patch's share of the volume)."""
 
-    def __init__(self, tree: _Tree, patch: Patch, rel: NDArray[np.int64], samples: int, origin: F64 | None) -> None:
+    def __init__(
+        self, tree: _Tree, patch: Patch, rel: NDArray[np.int64], samples: int, origin: F64 | None,
+        known: F64 | None = None, resolution: float = 0.0,
+    ) -> None:
+        """``known``: the break points found for this patch before (the volume's sweep, for the
+        area's); ``resolution``: the changes of the rings are located to this fraction of the sweep."""
         faces = [f for f in (tree.planes[j] for j in rel.tolist()) if f is not None]
         self.tree, self.patch, self.rel, self.samples, self.origin = tree, patch, rel, samples, origin
         self.curved = [j for j in rel.tolist() if not tree.planar[j]]
@@ -540,6 +482,59 @@ class _PatchRule:
             self.planes = (np.concatenate([f[0] for f in faces]), np.concatenate([f[1] for f in faces]))
         br = _sweep_breaks(tree, patch, rel)
         self.span = patch.s_hi - patch.s_lo
+        self.signature = lambda s: _ring_signature(tree, patch, rel, self.planes, self.curved, s, samples)
+        self.undecided = lambda s: _ring_signature(tree, patch, rel, self.planes, self.curved, s, samples, True)
+        self.kinks = np.zeros(0)  # the changes located (:mod:`.kinks`), graded towards before the sweep
+        self.known, self.resolution = known is not None, resolution
+        if known is not None:
+            br = known
+        elif len(rel):  # where the ring measure changes its form (kinks, square-root ends, jumps)
+            br = self._with(br, signature_breaks(self.signature, br, undecided=self.undecided, resolution=resolution))
+        self.breaks = br[np.concatenate([[True], np.diff(br) > 1e-13 * self.span])]
+
+    def _with(self, br: F64, kinks: F64) -> F64:
+        kinks = kinks[(kinks > self.patch.s_lo) & (kinks < self.patch.s_hi)]
+        self.kinks = np.concatenate([self.kinks, kinks])
+        return np.unique(np.concatenate([br, kinks]))
+
+    def grade(self) -> None:
+        """Break points added next to each located change (:func:`.kinks.graded`) whose rings near
+        it have no undecided piece."""
+        pts, near, owner = graded(self.breaks, self.kinks)
+        if len(pts) == 0:
+            return
+        banded = np.unique(owner[self.undecided(near) > 0])  # (changes next to an undecided band)
+        br = np.unique(np.concatenate([self.breaks, pts[~np.isin(owner, banded)]]))
+        self.breaks = br[np.concatenate([[True], np.diff(br) > 1e-13 * self.span])]
+
+    def add_seeds(self, points: F64) -> None:
+        """Search the sweep again at the heights of ``points`` on this patch's leaf (where other
+        patches' rings crossed it): a feature between the grid's rings is found from there."""
+        patch, tree = self.patch, self.tree
+        if patch.direction is None or patch.s_of_height is None or len(points) == 0 or len(self.rel) == 0:
+            return
+        near = 1e-9 * max(float(np.max(tree.hi - tree.lo)), 1.0)
+        on = np.abs(np.asarray(tree.leaves[patch.leaf].signed_distance(points))) <= near
+        s = np.asarray(patch.s_of_height(points[on] @ patch.direction), dtype=np.float64)
+        s = s[(s > patch.s_lo) & (s < patch.s_hi)]
+        if len(s) == 0:
+            return
+        s = np.unique(np.round((s - patch.s_lo) / (1e-7 * self.span))) * (1e-7 * self.span) + patch.s_lo
+        s = s[(s > patch.s_lo) & (s < patch.s_hi)][:4096]
+        # only the heights whose rings differ from their interval's middle: a feature unseen so far
+        br = self.breaks
+        mids = 0.5 * (br[:-1] + br[1:])
+        where = np.clip(np.searchsorted(br, s) - 1, 0, len(mids) - 1)
+        wide = (br[1:] - br[:-1])[where] > 1e-6 * self.span  # (a narrow one: a change located already)
+        s, where = s[wide], where[wide]
+        if len(s) == 0:
+            return
+        new = s[self.signature(s) != self.signature(mids)[where]][:64]
+        if len(new) == 0:
+            return
+        grid = np.unique(np.concatenate([br, new]))
+        found = signature_breaks(self.signature, self.breaks, grid, self.undecided, self.resolution)
+        br = self._with(self.breaks, found)
         self.breaks = br[np.concatenate([[True], np.diff(br) > 1e-13 * self.span])]
 
     def __call__(self, a: F64, b: F64) -> tuple[F64, F64, F64]:
@@ -663,13 +658,15 @@ def boundary_figures(solid: Solid, *, tol: float = 1e-9, samples: int = 64) -> t
     tol_ = scalar("tol", tol, low=1e-13, high=0.1, error=InvalidParameterError)
     samples_ = integer("samples", samples, low=8, high=4096, error=InvalidParameterError)
     cache: dict[int, tuple[float, float, float, float] | None] = {}
-    return (_boundary_integral(solid, tol_, samples_, volume=True, planar_cache=cache),
-            _boundary_integral(solid, tol_, samples_, volume=False, planar_cache=cache))
+    sweeps: dict[tuple[int, int], F64] = {}  # the patches' break points (the search for them costs most)
+    return (_boundary_integral(solid, tol_, samples_, volume=True, planar_cache=cache, sweep_cache=sweeps),
+            _boundary_integral(solid, tol_, samples_, volume=False, planar_cache=cache, sweep_cache=sweeps))
 
 
 def _boundary_integral(
     solid: Solid, tol: float, samples: int, *, volume: bool,
     planar_cache: dict[int, tuple[float, float, float, float] | None] | None = None,
+    sweep_cache: dict[tuple[int, int], F64] | None = None,
 ) -> AreaResult:
     prog = solid_program(solid)
     if prog.n_leaves == 0:
@@ -681,9 +678,11 @@ def _boundary_integral(
     centre = 0.5 * (tree.lo.min(axis=0) + tree.hi.max(axis=0))
     origin = centre if volume else None
     planar_cache = {} if planar_cache is None else planar_cache
+    sweep_cache = {} if sweep_cache is None else sweep_cache
     value, error, exact = 0.0, 0.0, True
     abs_value, closed = 0.0, 0.0  # the closed and planar parts' size; the swept patches' whole area
     rules: list[_PatchRule] = []
+    keys: list[tuple[int, int]] = []
     for i, prim in enumerate(prog.leaves):
         rel = tree.relevant(i)
         if len(rel) and tree.planar[i] and all(tree.planar[j] for j in rel.tolist()):
@@ -711,9 +710,17 @@ def _boundary_integral(
                 value, abs_value = value + whole, abs_value + abs(whole)
             continue
         exact = False
-        rules.extend(_PatchRule(tree, p, rel, samples, origin) for p in patches)
+        keys.extend((i, k) for k in range(len(patches)))
+        rules.extend(_PatchRule(tree, p, rel, samples, origin, sweep_cache.get((i, k)), LOCATE * tol)
+                     for k, p in enumerate(patches))
         closed += sum(p.closed_area for p in patches)
     if rules:
+        seeds = np.concatenate(tree.seeds) if tree.seeds else np.zeros((0, 3))
+        for rule, key in zip(rules, keys):  # features narrower than a patch's grid, seen from the other leaves' rings
+            if not rule.known:
+                rule.add_seeds(seeds)
+                rule.grade()
+                sweep_cache[key] = rule.breaks
         size = 1.0 if origin is None else float(np.max(tree.hi - tree.lo))
         v, e = _sweep(rules, tol, abs_value, 1e-6 * closed * size)
         value, error = value + v, error + e
