@@ -4134,6 +4134,12 @@ def case_517():
     return tree
 
 
+# case 518, trimesh-manifold: wrong volume
+# volume    0.130035208 (true 0.130874694): error -8.395e-04, tessellation -8.395e-04, bound 8.395e-04 -> wrong
+# area      2.38638026 (true 2.39587744): error -9.497e-03, tessellation -9.497e-03 -> tessellation
+# hausdorff mesh->true 1.686e-03, true->mesh 1.682e-03, tessellation 1.682e-03 -> tessellation
+# topology  2 components, genus 0, watertight True, winding consistent True (true: 2, genus 0, from mesh) -> exact
+# verdict   WRONG: volume
 # case 518, pyvista: crashed (exit code -11)
 def case_518():
     p0 = Cone(center=(0.0, 0.0, -0.75), axis=(0.5, 0.0, 0.0), radius=0.5)
@@ -4142,23 +4148,17 @@ def case_518():
     return tree
 
 
-# case 519, manifold3d: wrong volume
-# volume    0.130047715 (true 0.130887198): error -8.395e-04, tessellation -8.395e-04, bound 8.395e-04 -> wrong
-# area      2.13655613 (true 2.14580402): error -9.248e-03, tessellation -9.248e-03 -> tessellation
-# hausdorff mesh->true 1.683e-03, true->mesh 1.691e-03, tessellation 1.691e-03 -> tessellation
-# topology  1 components, genus 0, watertight True, winding consistent True (true: 1, genus 0) -> exact
-# verdict   WRONG: volume
 # case 519, trimesh-manifold: wrong volume
-# volume    0.13004771 (true 0.130887198): error -8.395e-04, tessellation -8.395e-04, bound 8.395e-04 -> wrong
-# area      2.13655609 (true 2.14580402): error -9.248e-03, tessellation -9.248e-03 -> tessellation
-# hausdorff mesh->true 1.687e-03, true->mesh 1.691e-03, tessellation 1.691e-03 -> tessellation
-# topology  1 components, genus 0, watertight True, winding consistent True (true: 1, genus 0) -> exact
+# volume    0.13004771 (true 0.130887194): error -8.395e-04, tessellation -8.395e-04, bound 8.395e-04 -> wrong
+# area      2.13655609 (true 2.14604817): error -9.492e-03, tessellation -9.492e-03 -> tessellation
+# hausdorff mesh->true 1.655e-03, true->mesh 2.091e-03, tessellation 2.091e-03 -> tessellation
+# topology  1 components, genus 0, watertight True, winding consistent True (true: 1, genus 0, from mesh) -> exact
 # verdict   WRONG: volume
 # case 519, pyvista: wrong topology
-# volume    0.130053842 (true 0.130887198): error -8.334e-04, tessellation -8.395e-04, bound 8.395e-04 -> tessellation
-# area      2.13658061 (true 2.14580402): error -9.223e-03, tessellation -9.248e-03 -> tessellation
-# hausdorff mesh->true 1.691e-03, true->mesh 1.691e-03, tessellation 1.691e-03 -> tessellation
-# topology  1 components, genus 0, watertight True, winding consistent False (true: 1, genus 0) -> wrong
+# volume    0.130053842 (true 0.130887194): error -8.334e-04, tessellation -8.395e-04, bound 8.395e-04 -> tessellation
+# area      2.13658061 (true 2.14604817): error -9.468e-03, tessellation -9.492e-03 -> tessellation
+# hausdorff mesh->true 1.669e-03, true->mesh 2.091e-03, tessellation 2.091e-03 -> tessellation
+# topology  1 components, genus 0, watertight True, winding consistent False (true: 1, genus 0, from mesh) -> wrong
 # verdict   WRONG: topology
 def case_519():
     p0 = Cone(center=(0.0, 0.0, -0.75), axis=(0.5, 0.0, 0.0), radius=0.5)
@@ -4167,23 +4167,17 @@ def case_519():
     return tree
 
 
-# case 520, manifold3d: wrong volume
-# volume    0.0650238574 (true 0.0654436052): error -4.197e-04, tessellation -4.197e-04, bound 4.197e-04 -> wrong
-# area      1.77859425 (true 1.78793081): error -9.337e-03, tessellation -9.337e-03 -> tessellation
-# hausdorff mesh->true 1.070e-03, true->mesh 1.328e-03, tessellation 1.328e-03 -> tessellation
-# topology  1 components, genus 0, watertight True, winding consistent True (true: 1, genus 0) -> exact
-# verdict   WRONG: volume
 # case 520, trimesh-manifold: wrong volume
-# volume    0.0650238549 (true 0.0654436052): error -4.198e-04, tessellation -4.197e-04, bound 4.197e-04 -> wrong
-# area      1.7785942 (true 1.78793081): error -9.337e-03, tessellation -9.337e-03 -> tessellation
-# hausdorff mesh->true 1.054e-03, true->mesh 1.328e-03, tessellation 1.328e-03 -> tessellation
-# topology  1 components, genus 0, watertight True, winding consistent True (true: 1, genus 0) -> exact
+# volume    0.0650238549 (true 0.0654435969): error -4.197e-04, tessellation -4.197e-04, bound 4.197e-04 -> wrong
+# area      1.7785942 (true 1.78841909): error -9.825e-03, tessellation -9.825e-03 -> tessellation
+# hausdorff mesh->true 1.040e-03, true->mesh 1.121e-03, tessellation 1.121e-03 -> tessellation
+# topology  1 components, genus 0, watertight True, winding consistent True (true: 1, genus 0, from mesh) -> exact
 # verdict   WRONG: volume
 # case 520, pyvista: wrong volume
-# volume    0.0650238554 (true 0.0654436052): error -4.197e-04, tessellation -4.197e-04, bound 4.197e-04 -> wrong
-# area      1.7785942 (true 1.78793081): error -9.337e-03, tessellation -9.337e-03 -> tessellation
-# hausdorff mesh->true 1.065e-03, true->mesh 1.328e-03, tessellation 1.328e-03 -> tessellation
-# topology  1 components, genus 0, watertight True, winding consistent True (true: 1, genus 0) -> exact
+# volume    0.0650238554 (true 0.0654435969): error -4.197e-04, tessellation -4.197e-04, bound 4.197e-04 -> wrong
+# area      1.7785942 (true 1.78841909): error -9.825e-03, tessellation -9.825e-03 -> tessellation
+# hausdorff mesh->true 1.055e-03, true->mesh 1.121e-03, tessellation 1.121e-03 -> tessellation
+# topology  1 components, genus 0, watertight True, winding consistent True (true: 1, genus 0, from mesh) -> exact
 # verdict   WRONG: volume
 def case_520():
     p0 = Cone(center=(0.0, 0.0, -0.75), axis=(0.25, 0.0, 0.0), radius=0.5)
@@ -4192,12 +4186,7 @@ def case_520():
     return tree
 
 
-# case 521, pyvista: wrong volume, area, hausdorff, topology
-# volume    0 (true 25.1948075): error -2.519e+01, tessellation -1.616e-01, bound 1.616e-01 -> wrong
-# area      0 (true 47.7441097): error -4.774e+01, tessellation -1.578e-01 -> wrong
-# hausdorff mesh->true inf, true->mesh inf, tessellation 8.386e-03 -> wrong
-# topology  0 components, genus 0, watertight True, winding consistent True (true: 1, genus 0) -> wrong
-# verdict   WRONG: volume, area, hausdorff, topology
+# case 521, pyvista: crashed (exit code -11)
 def case_521():
     p0 = Truncus(center=(-0.75, 0.25, 0.0), axis=(1.75, 1.75, 1.75), r1=1.75, r2=1.5)
     p1 = Cylinder(center=(1.0, -0.25, 0.25), axis=(1.0, 1.0, 1.0), radius=0.001)
@@ -4207,23 +4196,11 @@ def case_521():
     return tree
 
 
-# case 522, manifold3d: wrong volume
-# volume    25.0332313 (true 25.19483): error -1.616e-01, tessellation -1.616e-01, bound 1.616e-01 -> wrong
-# area      47.5898522 (true 47.747604): error -1.578e-01, tessellation -1.578e-01 -> tessellation
-# hausdorff mesh->true 8.376e-03, true->mesh 8.380e-03, tessellation 8.380e-03 -> tessellation
-# topology  1 components, genus 0, watertight True, winding consistent True (true: 1, genus 0) -> exact
-# verdict   WRONG: volume
-# case 522, trimesh-manifold: wrong volume
-# volume    25.0332311 (true 25.19483): error -1.616e-01, tessellation -1.616e-01, bound 1.616e-01 -> wrong
-# area      47.5898518 (true 47.747604): error -1.578e-01, tessellation -1.578e-01 -> tessellation
-# hausdorff mesh->true 8.376e-03, true->mesh 8.380e-03, tessellation 8.380e-03 -> tessellation
-# topology  1 components, genus 0, watertight True, winding consistent True (true: 1, genus 0) -> exact
-# verdict   WRONG: volume
 # case 522, pyvista: wrong volume, area, hausdorff, topology
-# volume    0 (true 25.19483): error -2.519e+01, tessellation -1.616e-01, bound 1.616e-01 -> wrong
-# area      0 (true 47.747604): error -4.775e+01, tessellation -1.578e-01 -> wrong
-# hausdorff mesh->true inf, true->mesh inf, tessellation 8.380e-03 -> wrong
-# topology  0 components, genus 0, watertight True, winding consistent True (true: 1, genus 0) -> wrong
+# volume    0 (true 25.1948092): error -2.519e+01, tessellation -1.616e-01, bound 1.616e-01 -> wrong
+# area      0 (true 47.7475658): error -4.775e+01, tessellation -1.577e-01 -> wrong
+# hausdorff mesh->true inf, true->mesh inf, tessellation 8.361e-03 -> wrong
+# topology  0 components, genus 0, watertight True, winding consistent True (true: 1, genus 0, from mesh) -> wrong
 # verdict   WRONG: volume, area, hausdorff, topology
 def case_522():
     p0 = Truncus(center=(-0.75, 0.25, 0.25), axis=(1.75, 1.75, 1.75), r1=1.75, r2=1.5)
@@ -4237,8 +4214,8 @@ def case_522():
 # case 523, trimesh-manifold: wrong volume
 # volume    25.0332286 (true 25.1948068): error -1.616e-01, tessellation -1.616e-01, bound 1.616e-01 -> wrong
 # area      47.5848501 (true 47.7427494): error -1.579e-01, tessellation -1.579e-01 -> tessellation
-# hausdorff mesh->true 8.377e-03, true->mesh 8.381e-03, tessellation 8.389e-03 -> tessellation
-# topology  1 components, genus 0, watertight True, winding consistent True (true: 1, genus 0) -> exact
+# hausdorff mesh->true 8.306e-03, true->mesh 8.382e-03, tessellation 8.382e-03 -> tessellation
+# topology  1 components, genus 0, watertight True, winding consistent True (true: 1, genus 0, from mesh) -> exact
 # verdict   WRONG: volume
 def case_523():
     p0 = Truncus(center=(-0.75, 0.25, 0.25), axis=(1.75, 1.75, 1.75), r1=1.75, r2=1.5)
@@ -4249,23 +4226,11 @@ def case_523():
     return tree
 
 
-# case 524, manifold3d: wrong volume
-# volume    14.6805443 (true 14.7753022): error -9.476e-02, tessellation -9.476e-02, bound 9.476e-02 -> wrong
-# area      36.7617593 (true 36.919573): error -1.578e-01, tessellation -1.578e-01 -> tessellation
-# hausdorff mesh->true 8.834e-03, true->mesh 8.813e-03, tessellation 8.813e-03 -> tessellation
-# topology  1 components, genus 0, watertight True, winding consistent True (true: 1, genus 0) -> exact
-# verdict   WRONG: volume
-# case 524, trimesh-manifold: wrong volume
-# volume    14.6805444 (true 14.7753022): error -9.476e-02, tessellation -9.476e-02, bound 9.476e-02 -> wrong
-# area      36.7617594 (true 36.919573): error -1.578e-01, tessellation -1.578e-01 -> tessellation
-# hausdorff mesh->true 8.834e-03, true->mesh 8.813e-03, tessellation 8.813e-03 -> tessellation
-# topology  1 components, genus 0, watertight True, winding consistent True (true: 1, genus 0) -> exact
-# verdict   WRONG: volume
 # case 524, pyvista: wrong topology
-# volume    14.6805537 (true 14.7753022): error -9.475e-02, tessellation -9.476e-02, bound 9.476e-02 -> tessellation
-# area      36.7619134 (true 36.919573): error -1.577e-01, tessellation -1.578e-01 -> tessellation
-# hausdorff mesh->true 8.703e-03, true->mesh 8.813e-03, tessellation 8.813e-03 -> tessellation
-# topology  1 components, genus 4.5, watertight False, winding consistent False (true: 1, genus 0) -> wrong
+# volume    14.6805537 (true 14.7753005): error -9.475e-02, tessellation -9.476e-02, bound 9.476e-02 -> tessellation
+# area      36.7619134 (true 36.9195693): error -1.577e-01, tessellation -1.578e-01 -> tessellation
+# hausdorff mesh->true 8.623e-03, true->mesh 8.717e-03, tessellation 8.717e-03 -> tessellation
+# topology  1 components, genus 4.5, watertight False, winding consistent False (true: 1, genus 0, from mesh) -> wrong
 # verdict   WRONG: topology
 def case_524():
     p0 = Truncus(center=(-0.5, 0.75, 1.0), axis=(1.75, 0.0, 0.0), r1=2.0, r2=1.25)
@@ -4274,23 +4239,11 @@ def case_524():
     return tree
 
 
-# case 525, manifold3d: wrong volume
-# volume    25.4274513 (true 25.5915806): error -1.641e-01, tessellation -1.641e-01, bound 1.641e-01 -> wrong
-# area      49.1872759 (true 49.3595436): error -1.723e-01, tessellation -1.723e-01 -> tessellation
-# hausdorff mesh->true 9.333e-03, true->mesh 9.252e-03, tessellation 9.252e-03 -> tessellation
-# topology  1 components, genus 0, watertight True, winding consistent True (true: 1, genus 0) -> exact
-# verdict   WRONG: volume
-# case 525, trimesh-manifold: wrong volume
-# volume    25.4274514 (true 25.5915806): error -1.641e-01, tessellation -1.641e-01, bound 1.641e-01 -> wrong
-# area      49.1872761 (true 49.3595436): error -1.723e-01, tessellation -1.723e-01 -> tessellation
-# hausdorff mesh->true 9.333e-03, true->mesh 9.252e-03, tessellation 9.252e-03 -> tessellation
-# topology  1 components, genus 0, watertight True, winding consistent True (true: 1, genus 0) -> exact
-# verdict   WRONG: volume
 # case 525, pyvista: wrong topology
-# volume    25.4277146 (true 25.5915806): error -1.639e-01, tessellation -1.641e-01, bound 1.641e-01 -> tessellation
-# area      49.1886285 (true 49.3595436): error -1.709e-01, tessellation -1.723e-01 -> tessellation
-# hausdorff mesh->true 9.326e-03, true->mesh 9.252e-03, tessellation 9.252e-03 -> tessellation
-# topology  1 components, genus 0, watertight True, winding consistent False (true: 1, genus 0) -> wrong
+# volume    25.4277146 (true 25.5915738): error -1.639e-01, tessellation -1.641e-01, bound 1.641e-01 -> tessellation
+# area      49.1886285 (true 49.3595305): error -1.709e-01, tessellation -1.723e-01 -> tessellation
+# hausdorff mesh->true 9.227e-03, true->mesh 9.073e-03, tessellation 9.159e-03 -> tessellation
+# topology  1 components, genus 0, watertight True, winding consistent False (true: 1, genus 0, from mesh) -> wrong
 # verdict   WRONG: topology
 def case_525():
     p0 = Truncus(center=(-0.5, 0.75, 1.0), axis=(1.75, 1.75, 1.75), r1=2.0, r2=1.25)
