@@ -69,7 +69,7 @@ from ..errors import InvalidGeometryError, InvalidParameterError
 from ..kinds import Primitive, Solid
 from .crossings import curved_crossings, plane_crossings, state
 from .kinks import graded, signature_breaks
-from .patches import Patch, leaf_patches
+from .patches import Patch, Rings, leaf_patches
 from .planar import Neighbours, PlanarFace, face_boundary
 
 __all__ = ["AreaResult", "boundary_figures", "boundary_volume", "closed_form_area", "surface_area"]
@@ -334,15 +334,7 @@ def _ring_measure(
     # the ring's last piece (a sixteenth of it) at random rings
     grid[:, 0], grid[:, -1] = rings.t0, rings.t1
     ts = [grid.ravel()]
-    if planes is not None:
-        r, t = plane_crossings(rings, *planes)
-        rs.append(r)
-        ts.append(t)
-    if curved:
-        r, t = curved_crossings(tree, rings, curved, samples)
-        rs.append(r)
-        ts.append(t)
-    ring, t = np.concatenate(rs), np.concatenate(ts)
+    ring, t = _with_crossings(tree, rings, planes, curved, samples, rs, ts)
     keep = (t >= rings.t0[ring]) & (t <= rings.t1[ring])
     ring, t = ring[keep], t[keep]
     order = np.lexsort((t, ring))
@@ -365,6 +357,23 @@ def _ring_measure(
     return m.astype(np.float64), und.astype(np.float64)
 
 
+def _with_crossings(
+    tree: _Tree, rings: Rings, planes: tuple[F64, F64] | None, curved: list[int], samples: int,
+    rs: list[NDArray[np.int64]], ts: list[F64],
+) -> tuple[NDArray[np.int64], F64]:
+    """The ring numbers and parameters ``rs``, ``ts`` with the rings' crossings of the planar
+    leaves' ``planes`` and of the ``curved`` leaves appended, as two flat arrays."""
+    if planes is not None:
+        r, t = plane_crossings(rings, *planes)
+        rs.append(r)
+        ts.append(t)
+    if curved:
+        r, t = curved_crossings(tree, rings, curved, samples)
+        rs.append(r)
+        ts.append(t)
+    return np.concatenate(rs), np.concatenate(ts)
+
+
 def _ring_signature(
     tree: _Tree, patch: Patch, rel: NDArray[np.int64], planes: tuple[F64, F64] | None,
     curved: list[int], s: F64, samples: int, undecided_only: bool = False,
@@ -377,15 +386,7 @@ def _ring_signature(
     rings = patch.rings(s)
     k = len(s)
     rs, ts = [np.arange(k), np.arange(k)], [rings.t0, rings.t1]
-    if planes is not None:
-        r, t = plane_crossings(rings, *planes)
-        rs.append(r)
-        ts.append(t)
-    if curved:
-        r, t = curved_crossings(tree, rings, curved, samples)
-        rs.append(r)
-        ts.append(t)
-    ring, t = np.concatenate(rs), np.concatenate(ts)
+    ring, t = _with_crossings(tree, rings, planes, curved, samples, rs, ts)
     keep = (t >= rings.t0[ring]) & (t <= rings.t1[ring])
     crossed = keep.copy()
     crossed[:2 * k] = False
