@@ -19,7 +19,12 @@ from isocsg.testing.kinks import signature_breaks
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
-from reference.slab_closed_forms import SlabCut, napkin_ring  # noqa: E402
+from reference.slab_closed_forms import (  # noqa: E402
+    SlabCut,
+    half_space_cut_volume,
+    napkin_ring,
+    sphere_cap_volume,
+)
 
 TOL = 1e-9
 
@@ -129,8 +134,10 @@ def test_box_face_near_the_axis_against_sections(
     box_turn: tuple[float, float, float],
 ) -> None:
     # a box at any orientation, one face through (or near) a point of the solid's axis: the
-    # volume against isocsg.volume's plane sections (exact areas of sections, an independent
-    # integration), each error within the reference's estimate and the sections' tolerance
+    # volume against the closed-form sections across the axis (a disc less a circular segment,
+    # integrated by scipy's quadrature) or a sphere's cap, within the reference's tolerance and
+    # estimate. (isocsg.volume's plane sections were the judge once; they are 8e-5 off on some of
+    # these trees: test_plane_sections_of_a_cone_cut_through_its_axis.)
     r, h = 0.5, 0.4
     R = _rotation(float(np.linalg.norm(solid_turn)), solid_turn if any(solid_turn) else (0.0, 0.0, 1.0))
     Q = _rotation(float(np.linalg.norm(box_turn)), box_turn if any(box_turn) else (0.0, 0.0, 1.0))
@@ -144,6 +151,39 @@ def test_box_face_near_the_axis_against_sections(
     box = Box(center=tuple(on_face - 1.0 * n), size=(2.0, 2.0, 2.0), orientation=Q)
     tree = Difference(solid, box)
     ref = reference(tree, tol=TOL)
-    sections = volume(tree, tol=1e-8, method="sections")
+    kept = _kept_volume(kind, centre, ex, r, h, on_face, n)
     scale = max(ref.volume, 1e-3 * float(solid.volume))
-    assert abs(ref.volume - sections) <= 2e-8 * scale + ref.volume_error, (ref.volume, sections, ref.volume_error)
+    assert abs(ref.volume - kept) <= TOL * scale + ref.volume_error, (ref.volume, kept, ref.volume_error)
+
+
+def _kept_volume(kind: str, centre: np.ndarray, ex: np.ndarray, r: float, h: float, on_face: np.ndarray,
+                 n: np.ndarray) -> float:
+    """The closed-form volume of the solid on the face's outer side (the box reaches past the solid)."""
+    if kind == "sphere":
+        return sphere_cap_volume(tuple(centre), r, tuple(on_face), tuple(n))
+    return half_space_cut_volume(kind, tuple(centre - 0.5 * h * ex), tuple(ex), r, h, tuple(on_face), tuple(n))
+
+
+# Two trees of the property above where isocsg.volume's plane sections miss: a cone cut by a plane
+# through a point of its axis (the cut's conic turns where the plane is tangent to a section).
+_SECTIONS_MISSES = [
+    (-0.3040439277735567, (0.0, 0.0, 0.0), (0.7240095627567293, 1.75, 0.25)),
+    (0.0, (1.75, 2.0, 0.0), (0.5, 0.0, 0.0)),
+]
+
+
+@pytest.mark.xfail(strict=True, reason="isocsg.volume(method='sections') misses 5e-8 and 8e-5 relative here "
+                                       "(not a reference defect: isocsg.testing.reference agrees to 2e-11)")
+@pytest.mark.parametrize(("along", "solid_turn", "box_turn"), _SECTIONS_MISSES)
+def test_plane_sections_of_a_cone_cut_through_its_axis(along: float, solid_turn: tuple[float, float, float],
+                                                       box_turn: tuple[float, float, float]) -> None:
+    r, h = 0.5, 0.4
+    R = _rotation(float(np.linalg.norm(solid_turn)), solid_turn if any(solid_turn) else (0.0, 0.0, 1.0))
+    Q = _rotation(float(np.linalg.norm(box_turn)), box_turn)
+    ex, n = R @ np.array([1.0, 0.0, 0.0]), Q @ np.array([0.0, 0.0, 1.0])
+    centre = np.array([0.05, -0.02, 0.03])
+    on_face = centre + along * h * ex
+    tree = Difference(Cone(center=tuple(centre), axis=tuple(h * ex), radius=r),
+                      Box(center=tuple(on_face - n), size=(2.0, 2.0, 2.0), orientation=Q))
+    kept = _kept_volume("cone", centre, ex, r, h, on_face, n)
+    assert abs(volume(tree, tol=1e-8, method="sections") - kept) <= 1e-8 * kept

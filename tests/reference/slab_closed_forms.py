@@ -127,3 +127,53 @@ def napkin_ring(r: float, a: float) -> tuple[float, float]:
     its centre: ``4/3 pi h^3`` and ``4 pi (r + a) h``, with ``h = sqrt(r^2 - a^2)``."""
     hh = math.sqrt(r * r - a * a)
     return 4 * math.pi * hh**3 / 3, 4 * math.pi * (r + a) * hh
+
+
+def half_space_cut_volume(kind: str, apex: tuple[float, float, float], ex: tuple[float, float, float],
+                          r: float, h: float, point: tuple[float, float, float],
+                          n: tuple[float, float, float]) -> float:
+    """Volume of the part of a cone (apex ``apex``, unit axis ``ex``, base radius ``r`` at height
+    ``h``) or cylinder (from ``apex`` along ``ex``, height ``h``) where ``(p - point) . n >= 0``.
+
+    Each section across the axis is a disc cut by a line: the circular segment's exact area
+    (``rho^2 acos(t / rho) - t sqrt(rho^2 - t^2)``), integrated along the axis by scipy's adaptive
+    quadrature split where the line is tangent to the disc (the only kinks). For a sphere use
+    :func:`sphere_cap_volume`.
+    """
+    from scipy.integrate import quad
+
+    a, e, q, nn = (tuple(float(c) for c in v) for v in (apex, ex, point, n))
+    along = sum(x * y for x, y in zip(nn, e))  # n . ex
+    m = math.sqrt(max(sum(x * x for x in nn) - along * along, 0.0))  # |n across the axis|
+    d0 = sum((x - y) * z for x, y, z in zip(a, q, nn))  # (apex - point) . n
+
+    def radius(s: float) -> float:
+        return r * s / h if kind == "cone" else r
+
+    def section(s: float) -> float:
+        rho, level = radius(s), d0 + along * s  # the section's centre's height above the plane
+        if rho <= 0.0:
+            return 0.0
+        if m < 1e-15:
+            return math.pi * rho * rho if level >= 0.0 else 0.0
+        t = min(max(-level / m, -rho), rho)
+        return rho * rho * math.acos(t / rho) - t * math.sqrt(max(rho * rho - t * t, 0.0))
+
+    slope = r / h if kind == "cone" else 0.0
+    kinks = []
+    for sign in (1.0, -1.0):  # level / m = +-radius(s): linear in s
+        k = along / m - sign * slope if m >= 1e-15 else along
+        c = d0 / m - (sign * r if kind != "cone" else 0.0) if m >= 1e-15 else d0
+        if k != 0.0 and 0.0 < -c / k < h:
+            kinks.append(-c / k)
+    value, _ = quad(section, 0.0, h, points=sorted(kinks) or None, epsabs=1e-16, epsrel=1e-12, limit=500)
+    return float(value)
+
+
+def sphere_cap_volume(centre: tuple[float, float, float], r: float, point: tuple[float, float, float],
+                      n: tuple[float, float, float]) -> float:
+    """Volume of the part of a sphere where ``(p - point) . n >= 0`` (``n`` a unit vector): a cap,
+    ``pi c^2 (3 r - c) / 3`` with ``c`` the cap's height."""
+    level = sum((x - y) * z for x, y, z in zip(centre, point, n))  # the centre's height above the plane
+    c = min(max(r + level, 0.0), 2.0 * r)
+    return math.pi * c * c * (3.0 * r - c) / 3.0
