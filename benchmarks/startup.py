@@ -9,6 +9,7 @@ gives one)::
     xvfb-run -a python benchmarks/startup.py --models cube,CSG,example019
     xvfb-run -a python benchmarks/startup.py --root /tmp/old   # another checkout's isocsg (before / after)
     python benchmarks/startup.py --import-only           # isocsg's imports only (python -X importtime)
+    xvfb-run -a python benchmarks/startup.py --realworld DIR   # people's models: warm isocsg against OpenSCAD
 
 Each contender draws a model at 512 x 512 to a PNG in a new process, the way a user's command
 does. The default models: ``cube(1)``, ``sphere(10)``, ``cylinder(h=10, r=3)``, a cube minus a
@@ -28,6 +29,13 @@ ones). ``--models`` names others (OpenSCAD's own examples, ``examples/Basics`` a
 - ``openscad --preview -o out.png model.scad`` (OpenSCAD's preview: OpenCSG, no CGAL);
 - for the cube, manifold3d + pyvista: a Python process that imports both, builds the cube and
   saves an off-screen render.
+
+``--realworld DIR`` times people's own models instead: those of the sample list of
+``benchmarks/openscad_realworld.py`` (under ``DIR``, laid out as that script says) whose ``.csg``
+export has 1 to 292 leaves (primitives, extrusions, imports), the issue's range; each drawn at
+512 x 512 by the warm server and by OpenSCAD's preview (``--repeats`` runs after one, default 1
+here; at most ``--timeout`` seconds a run). Printed: a row per model, then the medians of both
+and the median and quartiles of the per-model ratio.
 
 Printed: medians over the repeats of wall-clock and CPU seconds (user + system of the child
 process and its children), and the cold and the warm isocsg's ratios to each of the others (> 1:
@@ -216,6 +224,83 @@ def measure(name: str, model: Path, work: Path, env: dict[str, str], served: dic
     return rows
 
 
+LEAF = re.compile(r"\b(cube|sphere|cylinder|polyhedron|linear_extrude|rotate_extrude|import|surface)\(")
+REALWORLD_LEAVES = (1, 292)
+
+
+def realworld_models(root: Path, work: Path) -> list[tuple[str, Path, int]]:
+    """The sample's models under ``root`` with 1..292 leaves in their ``.csg`` export: (name, path, leaves)."""
+    sample = ROOT / "benchmarks" / "openscad_realworld_sample.txt"
+    found = []
+    for line in sample.read_text().splitlines():
+        if not line.strip():
+            continue
+        repo, _commit, path = line.strip().split(maxsplit=2)
+        model = root / repo.replace("/", "+") / path
+        if not model.exists():
+            continue
+        csg = work / "export.csg"
+        csg.unlink(missing_ok=True)
+        try:
+            subprocess.run(["openscad", "-o", str(csg), str(model)], capture_output=True, cwd=str(model.parent),
+                           timeout=60)
+        except subprocess.TimeoutExpired:
+            continue
+        leaves = len(LEAF.findall(csg.read_text())) if csg.exists() else 0
+        if REALWORLD_LEAVES[0] <= leaves <= REALWORLD_LEAVES[1]:
+            found.append((f"{repo}/{path}", model, leaves))
+    return found
+
+
+def realworld(root: Path, work: Path, env: dict[str, str], served: dict[str, str], repeats: int,
+              timeout: float) -> None:
+    """Warm isocsg against OpenSCAD's preview on people's models (see the module's docstring)."""
+    openscad = shutil.which("openscad")
+    if openscad is None or not os.environ.get("DISPLAY"):
+        print("--realworld needs openscad and a display (xvfb-run -a)")
+        return
+    rows, pairs = [], []
+    for name, model, leaves in realworld_models(root, work):
+        argvs = {"isocsg": ([sys.executable, "-m", "isocsg", "render", str(model), "-o", str(work / "isocsg.png"),
+                             "--no-progress"], {**env, **served}),
+                 "openscad": ([openscad, "--preview", "--imgsize=512,512", "-o", str(work / "openscad.png"),
+                               str(model)], env)}
+        times: dict[str, float | str] = {}
+        for who, (argv, run_env) in argvs.items():
+            try:
+                runs = [time_limited(argv, run_env, str(model.parent), timeout) for _ in range(repeats + 1)][1:]
+                times[who] = statistics.median(runs)
+            except (RuntimeError, OSError, subprocess.TimeoutExpired) as exc:
+                times[who] = type(exc).__name__
+        a, b = times["isocsg"], times["openscad"]
+        ratio = a / b if isinstance(a, float) and isinstance(b, float) else None
+        if ratio is not None:
+            pairs.append((a, b, ratio))
+        cells = [fmt_seconds(t) if isinstance(t, float) else t for t in (a, b)]
+        rows.append([name, str(leaves), *cells, "" if ratio is None else f"{ratio:.2f}x"])
+        print(" | ".join(rows[-1]), flush=True)
+    print_table(f"people's models at 512 x 512, warm isocsg against OpenSCAD's preview ({len(rows)} models; "
+                f"medians of {repeats} after one)", ["model", "leaves", "isocsg (warm)", "openscad --preview",
+                                                      "isocsg / openscad"], rows)
+    if pairs:
+        ratios = sorted(p[2] for p in pairs)
+        q = statistics.quantiles(ratios, n=4) if len(ratios) > 1 else [ratios[0]] * 3
+        mine = fmt_seconds(statistics.median(p[0] for p in pairs))
+        print(f"{len(pairs)} models drawn by both: median isocsg {mine}, "
+              f"median openscad {fmt_seconds(statistics.median(p[1] for p in pairs))}; isocsg / openscad per model: "
+              f"median {statistics.median(ratios):.2f}x, quartiles {q[0]:.2f}x-{q[2]:.2f}x, "
+              f"{sum(r <= 1 for r in ratios)} at or below 1x")
+
+
+def time_limited(argv: list[str], env: dict[str, str], cwd: str, timeout: float) -> float:
+    """Wall-clock seconds of one run (raises if it fails or takes longer than ``timeout``)."""
+    t0 = time.perf_counter()
+    proc = subprocess.run(argv, env=env, capture_output=True, text=True, cwd=cwd, timeout=timeout)
+    if proc.returncode != 0:
+        raise RuntimeError(f"{argv[0]} exited {proc.returncode}")
+    return time.perf_counter() - t0
+
+
 def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--repeats", type=int, default=5)
@@ -223,7 +308,12 @@ def main() -> int:
     parser.add_argument("--root", type=Path, default=ROOT, help="the checkout whose isocsg is timed")
     parser.add_argument("--models", default=DEFAULT_MODELS,
                         help=f"comma-separated names, or all (default: {DEFAULT_MODELS})")
+    parser.add_argument("--realworld", type=Path, metavar="DIR",
+                        help="people's models (benchmarks/openscad_realworld.py's sample under DIR) instead")
+    parser.add_argument("--timeout", type=float, default=30.0, help="--realworld: seconds a run may take")
     args = parser.parse_args()
+    if args.realworld is not None and "--repeats" not in sys.argv:
+        args.repeats = 1
     env = {k: v for k, v in os.environ.items() if k not in ("PYTHONDONTWRITEBYTECODE", "ISOCSG_JIT")}
     env["PYTHONPATH"] = str(args.root) + os.pathsep + os.environ.get("PYTHONPATH", "")
     env["ISOCSG_SERVER"] = "0"
@@ -235,13 +325,18 @@ def main() -> int:
         work = Path(tmp)
         (work / "cube.csg").write_text(CSG)
         (work / "peer.py").write_text(PEER)
-        import_profile(work, env)
+        if args.realworld is None:
+            import_profile(work, env)
         if args.import_only:
             return 0
         served: dict[str, str] | None = {"ISOCSG_SERVER": "1", "ISOCSG_RUNTIME_DIR": runtime}
         if not start_server({**env, **served}):
             served = None
         try:
+            if args.realworld is not None:
+                if served is not None:
+                    realworld(args.realworld, work, env, served, args.repeats, args.timeout)
+                return 0
             for name, model in models(work, env, args.models).items():
                 rows += measure(name, model, work, env, served, args.repeats)
         finally:

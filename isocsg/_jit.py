@@ -51,7 +51,7 @@ from typing import Any, TypeVar
 from .errors import InvalidParameterError
 from .limits import JIT_PYTHON_SECONDS, JIT_PYTHON_WORK, JIT_TWIN_WORK
 
-__all__ = ["LazyKernel", "njit", "prange", "use", "mode", "engaged", "on_first_compile"]
+__all__ = ["LazyKernel", "njit", "prange", "use", "mode", "engaged", "forget_spent", "on_first_compile"]
 
 F = TypeVar("F", bound=Callable[..., Any])
 
@@ -103,6 +103,14 @@ def use(choice: str) -> Iterator[None]:
             _state["mode"] = before
             _state["engaged"] = was_engaged or _state["engaged"]
             _state["spent"] = max(spent, _state["spent"])
+
+
+def forget_spent() -> None:
+    """Count the CPU time of Python runs of kernels from zero again (a process that has drawn
+    only to warm up, such as the command line's server, then lets its children choose as a
+    new process would)."""
+    with _LOCK:
+        _state["spent"] = 0.0
 
 
 def engaged() -> bool:

@@ -13,6 +13,7 @@ commands that render go through a warm server process where there is one
 
 from __future__ import annotations
 
+import functools
 import importlib
 import importlib.util
 import sys
@@ -66,6 +67,13 @@ def build_parser(commands: Collection[str] | None = None) -> ArgumentParser:
     return parser
 
 
+@functools.cache
+def _parser(command: str) -> ArgumentParser:
+    """:func:`build_parser` for one sub-command, built once a process (the server's children
+    inherit it: argparse's parsers are not changed by parsing)."""
+    return build_parser([command])
+
+
 def _command_named(argv: Sequence[str]) -> str | None:
     """The sub-command of a command line: its first word that is not an option (the top-level
     options take no values)."""
@@ -104,7 +112,7 @@ def main(argv: Sequence[str] | None = None) -> int:
             return served
     from ..errors import IsocsgError
 
-    parser = build_parser([_command_named(argv) or ""])
+    parser = _parser(_command_named(argv) or "")
     try:
         args = parser.parse_args(argv)
     except SystemExit as exc:  # --help, --version and usage errors

@@ -48,14 +48,13 @@ CHECK_SECONDS = 3.0
 _POLL = 0.5
 #: Seconds a client has to send its request, and a child waits for ``go``.
 _REQUEST_TIMEOUT = 10.0
-#: Small models drawn at start (plain OpenSCAD: no ``openscad`` run), as ``isocsg render`` draws them.
-_WARM_MODELS = {
-    "cube.scad": "cube(1);\n",
-    "sphere.scad": "sphere(10);\n",
-    "cylinder.scad": "cylinder(h=10, r=3);\n",
-    "difference.scad": "difference() { cube(10, center=true); sphere(6.5); }\n",
-    "group.csg": "group() {\n  cube(size = [1, 1, 1], center = false);\n}\n",
-}
+#: Models drawn at start, as ``isocsg render`` draws them (``isocsg/data/warm``, read without an
+#: ``openscad`` run): the plain subset's primitives, and in OpenSCAD's ``.csg`` export a tree drawn
+#: tile by tile (more than ``DENSE_MAX_LEAVES`` leaves) and one of each common 2D and extruded
+#: shape, so that a command's child finds their modules (shapely, the 2D shapes, revolution and
+#: extrusion) imported and their compiled kernels loaded.
+_WARM_MODELS = ("cube.scad", "sphere.scad", "cylinder.scad", "difference.scad", "group.csg", "tiled.csg",
+                "shapes.csg")
 
 _stop = threading.Event()
 
@@ -159,18 +158,24 @@ def _warm_up() -> bool:
     printed); returns whether the kernels run compiled.
 
     With every listed kernel in numba's disk cache, the models are drawn with compiled kernels
-    (loaded from the cache), and the built-in scenes too. Else they are drawn as a new process
-    draws them (Python and NumPy: no numba), and compiling is left to the commands that need it
-    (they say so) or to ``isocsg warmup``: a server started in passing spends no minute of CPU.
+    (loaded from the cache), and the built-in scenes too. Else they are drawn with Python and
+    NumPy only (no numba, whatever they cost), and the time they spent is forgotten, so that a
+    command's child starts as a new process does: compiling is left to the commands that need
+    it (they say so) or to ``isocsg warmup``, and a server started in passing spends no minute
+    of CPU.
     """
     from .. import _jit, _workers
     from . import demo, illuminance, render  # noqa: F401  # loaded once, for every child
 
-    compiled = _jit.mode() == "auto" and _kernels_cached()
+    automatic = _jit.mode() == "auto"
+    compiled = automatic and _kernels_cached()
+    choice = _jit.use("numba") if compiled else _jit.use("python") if automatic else contextlib.nullcontext()
     sink = io.StringIO()
-    with _jit.use("numba") if compiled else contextlib.nullcontext(), tempfile.TemporaryDirectory() as tmp, \
-            contextlib.redirect_stdout(sink), contextlib.redirect_stderr(sink):
+    with choice, tempfile.TemporaryDirectory() as tmp, contextlib.redirect_stdout(sink), \
+            contextlib.redirect_stderr(sink):
         _draw(Path(tmp), compiled)
+    if automatic and not compiled:
+        _jit.forget_spent()
     _workers.quiesce()
     return _jit.engaged()
 
@@ -197,10 +202,12 @@ def _kernels_cached() -> bool:
 
 
 def _draw(tmp: Path, compiled: bool) -> None:
+    from importlib import resources
+
     from . import main
 
-    for file, text in _WARM_MODELS.items():
-        (tmp / file).write_text(text)
+    for file in _WARM_MODELS:
+        (tmp / file).write_bytes(resources.files("isocsg").joinpath("data", "warm", file).read_bytes())
         main(["render", str(tmp / file), "-o", str(tmp / "out.png"), "--no-progress"])
     if compiled:
         main(["demo", "--size", "48x36", "--contours", "8", "-o", str(tmp / "demo.png"), "--no-progress"])

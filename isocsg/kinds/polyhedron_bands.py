@@ -43,13 +43,20 @@ def _faces(
     """The kind's local origin and its faces relative to it (counter-clockwise from outside) with
     their unit outward normals (``local_faces`` of a polyhedral kind)."""
     origin, polys = poly.local_faces()
-    out = []
-    for f in polys:
+    normals: list[Any] = [None] * len(polys)
+    by_size: dict[int, list[int]] = {}
+    for i, f in enumerate(polys):
+        by_size.setdefault(len(f), []).append(i)
+    for which in by_size.values():  # faces of one vertex count at once (the same sums, in the same order)
         # Newell's normal of the counter-clockwise (outward) face, about the face's own centroid.
-        g = f - f.mean(axis=0)
-        n = np.sum(np.cross(g, np.roll(g, -1, axis=0)), axis=0)
-        out.append((f, n / np.linalg.norm(n)))
-    return origin, out
+        f = np.stack([polys[i] for i in which])
+        g = f - f.mean(axis=1, keepdims=True)
+        h = np.concatenate([g[:, 1:], g[:, :1]], axis=1)
+        n = np.stack([g[..., 1] * h[..., 2] - g[..., 2] * h[..., 1], g[..., 2] * h[..., 0] - g[..., 0] * h[..., 2],
+                      g[..., 0] * h[..., 1] - g[..., 1] * h[..., 0]], axis=-1).sum(axis=1)
+        for i, ni in zip(which, n):
+            normals[i] = ni / np.linalg.norm(ni)
+    return origin, list(zip(polys, normals))
 
 
 def face_laminae(
@@ -111,12 +118,14 @@ def polyhedron_surface(
     size = 0.5 * float(np.linalg.norm(hi - lo))
     dist = light_reference_distance(lights, 0.5 * (lo + hi), size)
     d_eye = eye_reference_distance(eye, np.zeros(3), size)
+    # Under lights at infinity and without a highlight a face's field is one number: no sampling.
+    bending = eye is not None or not all(is_directional(light) for light in lights)
     verts, norms, tris, parts = [], [], [], []
     count = 0
     for face, (f, n) in enumerate(faces):
         diam = float(np.max(np.linalg.norm(f - f.mean(axis=0), axis=1))) * 2.0
         s = max(refinement(diam, dist, cap=16), specular_refinement(diam, d_eye, shininess, contours))
-        if lights:
+        if lights and bending:
             # Sample lines from the centroid to each corner and along each edge: the fields' bending there.
             g = f.mean(axis=0)
             t = np.linspace(0.0, 1.0, 17)[None, :, None]

@@ -387,6 +387,12 @@ class _Fields(NamedTuple):
     shininess: float
     weights: tuple[float, float]
 
+    @property
+    def straight(self) -> bool:
+        """Whether every field is constant where the normal is: lights at infinity and no
+        highlight (then nothing bends along a generator or across an end)."""
+        return self.eye is None and all(is_directional(light) for light in self.lights)
+
     def spacing(self, points: NDArray[np.float64], normals: NDArray[np.float64], origin: NDArray[np.float64],
                 **step: float) -> float:
         return curvature_spacing(points, normals, self.lights, origin, self.contours, eye=self.eye,
@@ -422,11 +428,11 @@ def _axial_pieces(truncus: Frustum, fields: _Fields, probe: NDArray[np.float64],
     a, h, k = truncus.unit_axis, truncus.height, truncus.slope
     slant = float(np.hypot(h, truncus.r1 - truncus.r2))
     n_ax = max(refinement(h, dist), specular_refinement(slant, d_eye, fields.shininess, fields.contours))
-    t = np.linspace(0.0, 1.0, 17)[None, :, None]
-    top, bottom = 0.5 * h * a + truncus.r1 * probe, -0.5 * h * a + truncus.r2 * probe
-    lines = top[:, None, :] + t * (bottom - top)[:, None, :]
-    nrm = np.broadcast_to(((probe - k * a) / np.hypot(1.0, k))[:, None, :], lines.shape)
-    if fields.lights:
+    if fields.lights and not fields.straight:
+        t = np.linspace(0.0, 1.0, 17)[None, :, None]
+        top, bottom = 0.5 * h * a + truncus.r1 * probe, -0.5 * h * a + truncus.r2 * probe
+        lines = top[:, None, :] + t * (bottom - top)[:, None, :]
+        nrm = np.broadcast_to(((probe - k * a) / np.hypot(1.0, k))[:, None, :], lines.shape)
         n_ax = max(n_ax, pieces(slant, fields.spacing(lines, nrm, truncus.center_array)))
     return n_ax
 
@@ -476,7 +482,7 @@ def _end_discs(truncus: Frustum, fields: _Fields, radial: NDArray[np.float64], p
             n_rad = 1  # never seen: its geometry alone, a fan of the rim
         else:
             n_rad = max(refinement(r, dist), specular_refinement(r, d_eye, fields.shininess, fields.contours))
-            if fields.lights:
+            if fields.lights and not fields.straight:
                 spokes = centre + t * (r * probe[::2])[:, None, :]
                 n_rad = max(n_rad, pieces(r, fields.spacing(spokes, np.broadcast_to(n, spokes.shape), ct)))
         verts.append(centre[None, :])

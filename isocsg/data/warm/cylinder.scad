@@ -1,0 +1,1 @@
+cylinder(h=10, r=3);
