@@ -46,7 +46,7 @@ KEYED_NAMES = ("LANG", "LANGUAGE", "TMPDIR", "TEMP", "TMP", "HOME", "PATH", "DIS
 #: Variables of the server itself, not of what it runs.
 _UNKEYED = ("ISOCSG_SERVER", "ISOCSG_SERVER_IDLE", "ISOCSG_RUNTIME_DIR")
 #: File names of isocsg's that hold code or data its commands read.
-_SUFFIXES = (".py", ".so", ".pyd", ".json", ".toml", ".html")
+_SUFFIXES = (".py", ".so", ".pyd", ".json", ".toml", ".html", ".scad", ".csg")
 
 
 class ProtocolError(OSError):
