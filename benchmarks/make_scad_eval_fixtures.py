@@ -54,6 +54,8 @@ HAND = {
     "booleans": "difference() { cube(10, center = true); sphere(6); for (a = [0:90:270]) rotate([0, 0, a]) translate([5, 0, 0]) cylinder(h = 20, r = 1, center = true); }\nintersection() { cube(4); sphere(5); }\nhull() { cube(1); translate([3, 3, 3]) sphere(1); }\nunion() { cube(1); }\n",
     "polyhedron": "pts = [[0, 0, 0], [10, 0, 0], [0, 10, 0], [0, 0, 10]];\npolyhedron(points = pts, faces = [[0, 1, 2], [0, 3, 1], [0, 2, 3], [1, 3, 2]]);\npolyhedron(pts, [[0, 1, 2], [0, 3, 1], [0, 2, 3], [1, 3, 2]], 3);\n",
     "polygon_extrude": "linear_extrude(height = 3) polygon([[0, 0], [4, 0], [2, 3]]);\nlinear_extrude(5, center = true, twist = 90, slices = 8) square(2, center = true);\nlinear_extrude(height = 2, scale = [2, 0.5], $fn = 16) circle(1);\nlinear_extrude(height = 1, scale = 0.5) polygon(points = [[0, 0], [3, 0], [3, 3], [0, 3], [1, 1], [2, 1], [2, 2], [1, 2]], paths = [[0, 1, 2, 3], [4, 5, 6, 7]]);\n",
+    "vector_commas": "v = [1, 2, 3, ];\nw = [1,,2,, 3];\nu = [,];\nx = [ ];\ncube(v); translate(w) sphere(len(u) + len(x) + 1);\n",
+    "offset": "offset(r = 1) square(2);\noffset(delta = 0.5) square(1);\noffset(delta = -0.25, chamfer = true, $fn = 8) circle(2);\noffset(2) polygon([[0, 0], [3, 0], [0, 3]]);\noffset() square(1);\n",
     "rotate_extrude": "rotate_extrude($fn = 24) translate([5, 0]) circle(1);\nrotate_extrude(angle = 90, convexity = 4) translate([3, 0]) square([1, 2]);\nrotate_extrude(angle = 400) translate([2, 0]) circle(0.5);\n",
     "echo_dropped": "a = 4;\necho(\"a is\", a);\necho(version=version());\nmodule e() { echo(\"inside\"); cube(a); }\ne();\n",
     "nested_blocks": "translate([1, 0, 0]) { a = 2; cube(a); rotate(45) { b = a * 2; sphere(b); } }\n",

@@ -89,7 +89,7 @@ def test_evaluator_gives_the_programs_export(name: str) -> None:
     "for (i = [0:0.0001:10]) cube(1);", "cube(1 / 0);", "cube([1, 2, 3] + 1);",
     "x = [1, 2][5]; cube(x);", "cube($preview ? 1 : 2);", "cube($vpd);",
     "linear_extrude(file = \"a.dxf\") square(1);", "rotate_extrude(360) circle(1);",
-    "offset(r = 1) square(1);", "render() cube(1);", "intersection_for (i = [0:1]) cube(i + 1);",
+    "offset(r = 1, delta = 2) square(1);", "x = 2d; cube(1);", "8mm();", "render() cube(1);", "intersection_for (i = [0:1]) cube(i + 1);",
     "function f(x) = x; cube(f(1, 2));", "module m(a) cube(a); m(b = 2);",
     "sphere(1, $fs = 0.001);", "echo(undefined_variable); cube(1);",
     "{ cube(1); }", "x = " + "(" * 200 + "1" + ")" * 200 + "; cube(x);",

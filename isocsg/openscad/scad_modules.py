@@ -45,6 +45,7 @@ _SIGNATURES: dict[str, tuple[tuple[str, ...], tuple[str, ...]]] = {
     "rotate": (("a", "v"), ()), "multmatrix": (("m",), ()), "color": (("c", "alpha"), ()),
     "linear_extrude": (("height",), ("center", "convexity", "twist", "slices", "scale")),
     "rotate_extrude": ((), ("angle", "convexity")),
+    "offset": (("r",), ("delta", "chamfer")),
     "union": ((), ()), "difference": ((), ()), "intersection": ((), ()), "hull": ((), ()),
 }
 _LEAVES = ("cube", "sphere", "cylinder", "polyhedron", "square", "circle", "polygon")
@@ -296,6 +297,17 @@ def _rotate_extrude(values: dict[str, Any], frame: Scope) -> dict[str, Any]:
             **{k: export_number(v) for k, v in _fragments(frame).items()}}
 
 
+def _offset(values: dict[str, Any], frame: Scope) -> dict[str, Any]:
+    """``offset``'s export (``offset.cc``): ``r`` (round, 1 by default) or ``delta`` and ``chamfer``."""
+    r, delta, chamfer = values.get("r"), values.get("delta"), values.get("chamfer")
+    if (r is not None and delta is not None) or (chamfer is not None and type(chamfer) is not bool):
+        raise Declined("offset arguments")
+    fragments = {k: export_number(v) for k, v in _fragments(frame).items()}
+    if delta is None:
+        return {"r": export_number(_finite(r, 1.0, "offset r")), **fragments}
+    return {"delta": export_number(_finite(delta, 1.0, "offset delta")), "chamfer": bool(chamfer), **fragments}
+
+
 def builtin_module(ev: _Evaluates, name: str, args: list[Any], children: list[Any], f: Scope,
                    line: int) -> CSGCall:
     """The export's node of a built-in module call (module docstring)."""
@@ -319,6 +331,8 @@ def builtin_module(ev: _Evaluates, name: str, args: list[Any], children: list[An
         out.kwargs = _linear_extrude(values, frame)
     elif name == "rotate_extrude":
         out.kwargs = _rotate_extrude(values, frame)
+    elif name == "offset":
+        out.kwargs = _offset(values, frame)
     elif values:
         raise Declined(f"arguments of {name}")
     # OpenSCAD's Boolean modules bind no arguments: their $ arguments do not reach their children

@@ -60,6 +60,8 @@ def _tokens(text: str) -> list[tuple[str, str, int]]:
         if m is None:
             raise Declined(f"line {line}: unexpected {text[pos]!r}")
         kind, tok = m.lastgroup or "", m.group()
+        if kind == "number" and m.end() < n and (text[m.end()].isalnum() or text[m.end()] in "_$"):
+            raise Declined(f"line {line}: a name that starts with a digit")  # OpenSCAD's lexer reads one
         if kind == "nl":
             line += 1
         elif kind == "comment":
@@ -297,6 +299,10 @@ class _Parser:
         raise Declined(f"line {line}: {tok!r} in an expression")
 
     def vector(self, line: int) -> Any:
+        while self.at(","):  # OpenSCAD reads [,] as []
+            self.i += 1
+            if not self.at("]"):
+                raise Declined(f"line {line}: a vector that starts with a comma")
         if self.at("]"):
             self.i += 1
             return ("vec", [])
@@ -313,7 +319,10 @@ class _Parser:
             return ("range", first, None, second)
         items = [first]
         while self.at(","):
-            self.i += 1
+            while self.at(","):  # repeated and trailing commas, as OpenSCAD's grammar allows
+                self.i += 1
+            if self.at("]"):
+                break
             items.append(self.expr())
         self.take("]")
         return ("vec", items)
