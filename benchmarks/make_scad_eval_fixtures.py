@@ -125,9 +125,20 @@ def random_program(seed: int) -> str:
     return "\n".join(lines) + "\n"
 
 
+def color_names() -> str:
+    """Every colour name OpenSCAD knows (the CSS keywords, as matplotlib lists them, and
+    ``transparent``), in upper and lower case, and the hexadecimal forms."""
+    from matplotlib.colors import CSS4_COLORS
+
+    names = [*sorted(CSS4_COLORS), "transparent"]
+    text = "".join(f'translate([{i}, 0, 0]) color("{n if i % 3 else n.upper()}") cube(1);\n' for i, n in enumerate(names))
+    return text + ('color("#ff8000") cube(1);\ncolor("#f80") cube(1);\ncolor("#12345678") cube(1);\n'
+                   'color("#abcd") cube(1);\ncolor("red", 0.5) cube(1);\ncolor(c = "Blue", alpha = 0.25) sphere(1);\n')
+
+
 def main() -> None:
     OUT.mkdir(parents=True, exist_ok=True)
-    cases = dict(HAND)
+    cases = {**HAND, "color_names": color_names()}
     for seed in range(24):
         cases[f"random_{seed:02d}"] = random_program(seed)
     for name, text in cases.items():

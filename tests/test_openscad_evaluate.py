@@ -81,7 +81,7 @@ def test_evaluator_gives_the_programs_export(name: str) -> None:
     "projection() cube(1);", "resize([2, 2, 2]) cube(1);", "assert(true); cube(1);",
     "*cube(1);", "!cube(1);", "#cube(1);", "%cube(1);",
     "cube(x);", "a = 1; a = 2; cube(a);", "a = b; b = 1; cube(a);",
-    'color("red") cube(1);', 'color("#ff0000") cube(1);', "color([2, 0, 0]) cube(1);",
+    'color("nosuchcolour") cube(1);', 'color("#ff000") cube(1);', 'color("#ggg") cube(1);', "color([2, 0, 0]) cube(1);",
     "cube([1, 2]);", "cube(-1);", "cube(0);", "sphere(0);", "cylinder(h = 0, r = 1);",
     "cylinder(h = 1, r = 1, r1 = 2);", "sphere(r = 1, d = 2);", "cube(1, center = 1);",
     "cube(1, size = 2);", "cube(1) sphere(1);", "rotate([1, 2, 3], [0, 0, 1]) cube(1);",

@@ -19,6 +19,7 @@ from typing import Any, Protocol
 import numpy as np
 
 from .parser import CSGCall
+from .scad_colors import COLOR_NAMES
 from .scad_syntax import Declined
 from .scad_values import Scope, cos_degrees, export_number, export_value, sin_degrees
 
@@ -242,12 +243,29 @@ def _matrix(name: str, values: dict[str, Any]) -> list[list[float]]:
     return eye
 
 
+def _named_color(name: str) -> list[float]:
+    """A colour name or ``#rgb``, ``#rgba``, ``#rrggbb``, ``#rrggbbaa`` as ``color.cc`` reads it (floats)."""
+    name = name.lower()
+    if name in COLOR_NAMES:
+        return [float(np.float32(x) / np.float32(255.0)) for x in COLOR_NAMES[name]]
+    digits = name[1:]
+    if name[:1] != "#" or len(digits) not in (3, 4, 6, 8) or not all(ch in "0123456789abcdef" for ch in digits):
+        raise Declined(f"colour {name!r}")
+    stride = 1 if len(digits) in (3, 4) else 2
+    top = np.float32(15.0 if stride == 1 else 255.0)
+    rgba = [float(np.float32(int(digits[i:i + stride], 16)) / top) for i in range(0, len(digits), stride)]
+    return [*rgba, 1.0][:4]
+
+
 def _color(values: dict[str, Any]) -> list[float]:
     c, alpha = values.get("c"), values.get("alpha")
-    rgba = _numbers(c, (3, 4))
-    if rgba is None:
-        raise Declined("color other than a vector of 3 or 4 numbers (names are not read)")
-    rgba = [*rgba, 1.0][:4]
+    if type(c) is str:
+        rgba = _named_color(c)
+    else:
+        numbers = _numbers(c, (3, 4))
+        if numbers is None:
+            raise Declined("color other than a name or a vector of 3 or 4 numbers")
+        rgba = [*numbers, 1.0][:4]
     if alpha is not None:
         if type(alpha) is not float:
             raise Declined("color alpha")
