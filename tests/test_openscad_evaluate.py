@@ -94,6 +94,11 @@ def test_evaluator_gives_the_programs_export(name: str) -> None:
     "sphere(1, $fs = 0.001);", "echo(undefined_variable); cube(1);",
     "{ cube(1); }", "x = " + "(" * 200 + "1" + ")" * 200 + "; cube(x);",
     "", "// nothing", "echo(1);",
+    # work bounded: an exponential chain of functions, a doubling vector, a huge loop
+    "function f0(x) = x;\n" + "".join(f"function f{i}(x) = f{i - 1}(x) + f{i - 1}(x);\n" for i in range(1, 40))
+    + "cube(f39(1));",
+    "v0 = [1];\n" + "".join(f"v{i} = concat(v{i - 1}, v{i - 1});\n" for i in range(1, 40)) + "cube(len(v39));",
+    "for (i = [0:9999], j = [0:9999]) echo(i);",
 ])
 def test_constructs_outside_the_subset_are_declined(text: str) -> None:
     assert evaluate_scad(text) is None
@@ -117,8 +122,10 @@ _numbers = st.one_of(st.integers(-20, 20).map(str), st.sampled_from(["30", "45",
 def _expressions(names: list[str]) -> st.SearchStrategy[str]:
     leaf = st.one_of(_numbers, st.sampled_from(names))
     return st.recursive(leaf, lambda e: st.one_of(
-        st.builds(lambda a, op, b: f"({a} {op} {b})", e, st.sampled_from(["+", "-", "*"]), e),
-        st.builds(lambda f, a: f"{f}({a})", st.sampled_from(["sin", "cos", "abs", "floor", "round"]), e),
+        st.builds(lambda a, op, b: f"({a} {op} {b})", e, st.sampled_from(["+", "-", "*", "/", "%"]), e),
+        st.builds(lambda f, a: f"{f}({a})", st.sampled_from(["sin", "cos", "tan", "abs", "floor", "round", "sqrt"]), e),
+        st.builds(lambda a, b: f"atan2({a}, {b})", e, e),
+        st.builds(lambda a, b: f"max([{a}, {b}]) ^ 0.5", e, e),
         st.builds(lambda c, a, b: f"({c} > 0 ? {a} : {b})", e, e, e),
     ), max_leaves=4)
 
@@ -135,12 +142,18 @@ def _shapes(names: list[str]) -> st.SearchStrategy[str]:
         st.builds(lambda r, fn: f"sphere(r = {r}{fn});", p, st.sampled_from(["", ", $fn = 7", ", $fa = 5"])),
         st.builds(lambda h, r: f"cylinder(h = {h}, d1 = {r}, d2 = 1);", p, p),
         st.builds(lambda x: f"part({x});", e),
+        st.builds(lambda h, r, fn: f"linear_extrude(height = {h}, twist = {r}{fn}) square([{h}, 1]);", p, e,
+                  st.sampled_from(["", ", $fn = 6", ", slices = 3"])),
+        st.builds(lambda r, a: f"rotate_extrude(angle = {a}) translate([{r} + 1, 0]) circle(1);", p, e),
     )
     return st.recursive(leaf, lambda s: st.one_of(
         st.builds(lambda a, b, c, k: f"translate([{a}, {b}, {c}]) {k}", e, e, e, s),
         st.builds(lambda a, b, c, k: f"rotate([{a}, {b}, {c}]) {k}", e, e, e, s),
         st.builds(lambda a, b, k: f"rotate({a}, [{b}, 1, 0]) {k}", e, e, s),
         st.builds(lambda a, k: f"mirror([{a}, 1, 0]) {k}", e, s),
+        st.builds(lambda a, b, k: f"scale([{a}, {b}]) {k}", p, p, s),
+        st.builds(lambda a, b, k: f"color([0.5, {a} / ({a} + {b}), 0.25], {b} / ({a} + {b})) {k}", p, p, s),
+        st.builds(lambda a, b, k: f"multmatrix([[1, {a}, 0, {b}], [0, 1, 0, 0], [{b}, 0, 1, 0]]) {k}", e, e, s),
         st.builds(lambda lo, n, k: f"for (i = [{lo}:{lo + n}]) translate([i, 0, 0]) {k}", st.integers(-2, 2),
                   st.integers(0, 3), s),
         st.builds(lambda c, a, b: f"if ({c} > 0) {a} else {b}", e, s, s),

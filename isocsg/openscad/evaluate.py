@@ -26,16 +26,19 @@ from .scad_modules import builtin_module
 from .scad_syntax import MAX_DEPTH, Declined, parse_scad
 from .scad_values import Range, Scope, binary, builtin_function, truthy, unary
 
-__all__ = ["MAX_NODES", "declined_because", "evaluate_scad"]
+__all__ = ["MAX_NODES", "MAX_STEPS", "declined_because", "evaluate_scad"]
 
 #: Most nodes built (a larger model's own work outweighs an ``openscad`` run).
 MAX_NODES = 20000
+#: Most expressions evaluated (functions calling functions can take exponential time).
+MAX_STEPS = 1_000_000
 
 
 class _Evaluator:
     def __init__(self) -> None:
         self.depth = 0
         self.nodes = 0
+        self.steps = 0
         self.active: set[int] = set()  # the definitions being evaluated (recursion declined)
 
     def enter(self) -> None:
@@ -45,6 +48,9 @@ class _Evaluator:
 
     # -- expressions
     def expr(self, e: Any, f: Scope) -> Any:
+        self.steps += 1
+        if self.steps > MAX_STEPS:
+            raise Declined("too much work (nested function calls)")
         self.enter()
         try:
             return self._expr(e, f)

@@ -269,6 +269,8 @@ def builtin_function(name: str, args: list[Any]) -> Any:
             if isinstance(v, Range):
                 raise Declined("concat of a range")
             out.extend(v) if isinstance(v, list) else out.append(v)
+        if len(out) > MAX_RANGE * 100:
+            raise Declined("a vector of more than a million values")
         return out
     raise Declined(f"unknown function {name}")
 
