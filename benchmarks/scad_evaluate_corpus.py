@@ -79,6 +79,8 @@ def main(argv: list[str]) -> int:
     for group, (ok, n) in counts.items():
         print(f"{group}: {ok} of {n} files read in-process")
     if mine:
+        print(f"evaluator: median {1e3 * statistics.median(mine):.2f} ms, max {1e3 * max(mine):.1f} ms; "
+              f"openscad: median {1e3 * statistics.median(theirs):.1f} ms, min {1e3 * min(theirs):.1f} ms")
         print(f"median evaluator {1e3 * statistics.median(mine):.2f} ms, "
               f"openscad -o x.csg {1e3 * statistics.median(theirs):.1f} ms "
               f"(total {1e3 * sum(mine):.0f} ms vs {1e3 * sum(theirs):.0f} ms over {len(mine)} files)")

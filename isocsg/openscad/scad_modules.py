@@ -326,6 +326,18 @@ def _offset(values: dict[str, Any], frame: Scope) -> dict[str, Any]:
     return {"delta": export_number(_finite(delta, 1.0, "offset delta")), "chamfer": bool(chamfer), **fragments}
 
 
+def _printed(key: str, v: Any) -> Any:
+    """A primitive's argument as the export prints it: lists of points, faces and paths as
+    OpenSCAD values, the node's own numbers through a C++ stream (:func:`export_number`)."""
+    if type(v) is bool or v is None:
+        return v
+    if key in ("points", "faces", "paths"):
+        return export_value(v)
+    if isinstance(v, list):
+        return [export_number(x) for x in v]
+    return export_number(v)
+
+
 def builtin_module(ev: _Evaluates, name: str, args: list[Any], children: list[Any], f: Scope,
                    line: int) -> CSGCall:
     """The export's node of a built-in module call (module docstring)."""
@@ -336,13 +348,12 @@ def builtin_module(ev: _Evaluates, name: str, args: list[Any], children: list[An
     if name in _LEAVES:
         if children:
             raise Declined(f"{name} with children")
-        kwargs = {k: (v if type(v) is bool or v is None else export_value(v))
-                  for k, v in _leaf(name, values, frame).items()}
+        kwargs = {k: _printed(k, v) for k, v in _leaf(name, values, frame).items()}
         return CSGCall(name, kwargs=kwargs, line=line)
     out = CSGCall(name, line=line)
     if name in ("translate", "rotate", "scale", "mirror", "multmatrix"):
         out.name = "multmatrix"
-        out.args = [[[export_number(x) for x in row] for row in _matrix(name, values)]]
+        out.args = [[[export_number(x, value=True) for x in row] for row in _matrix(name, values)]]
     elif name == "color":
         out.args = [[export_number(x) for x in _color(values)]]
     elif name == "linear_extrude":

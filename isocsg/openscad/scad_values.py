@@ -12,7 +12,7 @@ from __future__ import annotations
 import math
 from collections.abc import Callable
 from dataclasses import dataclass
-from decimal import ROUND_HALF_EVEN, ROUND_HALF_UP, Decimal
+from decimal import ROUND_HALF_UP, Decimal
 from typing import Any
 
 from .scad_syntax import Declined
@@ -336,25 +336,29 @@ def _divisor(b: float) -> float:
     return b
 
 
-def export_number(v: Any) -> float:
-    """A number as the export prints it (6 significant digits) and parse_csg reads it back."""
+def export_number(v: Any, *, value: bool = False) -> float:
+    """A number as the export prints it (6 significant digits) and parse_csg reads it back.
+
+    The nodes print their own fields through C++ streams (glibc: an exact tie to even), and
+    OpenSCAD values (``multmatrix``, a polyhedron's or polygon's lists: ``value=True``) through
+    double-conversion (a tie away from zero): ``100.0625`` is ``100.062`` in a cube's size and
+    ``100.063`` in a matrix.
+    """
     if type(v) is not float or not math.isfinite(v):
         raise Declined("a non-finite or non-number argument")
     if v == 0:
         return 0.0
+    if not value:
+        return float(f"{v:.6g}")  # Python rounds exact ties to even, as glibc does
     d = Decimal(v)
-    q = Decimal(1).scaleb(d.adjusted() - 5)
-    # ostream (glibc) and double-conversion may round an exact tie differently: decline ties
-    if d.quantize(q, ROUND_HALF_UP) != d.quantize(q, ROUND_HALF_EVEN):
-        raise Declined("a number exactly between two printed ones")
-    return float(f"{v:.6g}")
+    return float(d.quantize(Decimal(1).scaleb(d.adjusted() - 5), ROUND_HALF_UP))
 
 
 def export_value(v: Any) -> Any:
     """A polyhedron's or polygon's list argument as the export prints it (numbers and lists)."""
     if isinstance(v, list):
         return [export_value(x) for x in v]
-    return export_number(v)
+    return export_number(v, value=True)
 
 
 class Scope:
