@@ -94,6 +94,9 @@ def test_evaluator_gives_the_programs_export(name: str) -> None:
     "sphere(1, $fs = 0.001);", "echo(undefined_variable); cube(1);",
     "{ cube(1); }", "x = " + "(" * 200 + "1" + ")" * 200 + "; cube(x);",
     "", "// nothing", "echo(1);",
+    # syntax errors of OpenSCAD's grammar: the program reports them
+    "cube(1,);", "if (true) { module m() cube(1); m(); }", "translate([1, 0, 0]) { function f() = 1; cube(f()); }",
+    "translate([1, 0, 0]) a = 1; cube(1);", "if (true) a = 2; cube(1);", "cube([,1]);", "cube(1,,center = true);",
     # work bounded: an exponential chain of functions, a doubling vector, a huge loop
     "function f0(x) = x;\n" + "".join(f"function f{i}(x) = f{i - 1}(x) + f{i - 1}(x);\n" for i in range(1, 40))
     + "cube(f39(1));",

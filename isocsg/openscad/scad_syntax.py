@@ -107,45 +107,51 @@ class _Parser:
             raise Declined("nested too deeply")
 
     # -- statements
-    def statements(self, until: str) -> list[Any]:
+    def statements(self, until: str, defs: bool = True) -> list[Any]:
         out: list[Any] = []
         while not (self.at(until) if until else self.peek()[0] == "eof"):
             if self.peek()[0] == "eof":
                 raise Declined("unclosed block")
-            st = self.statement()
+            st = self.statement(defs)
             if st is not None:
                 out.append(st)
         return out
 
-    def body(self) -> list[Any]:
-        """A child: one statement or a ``{ }`` block."""
+    def body(self, defs: bool = False) -> list[Any]:
+        """A child: one statement or a ``{ }`` block; ``module`` and ``function`` definitions only
+        in a module's body (``defs``), as OpenSCAD's grammar has them (not under a call, ``for`` or
+        ``if``)."""
         if self.at("{"):
             self.i += 1
-            out = self.statements("}")
+            out = self.statements("}", defs)
             self.i += 1
             return out
-        st = self.statement()
+        st = self.statement(defs)
+        if st is not None and st[0] == "assign" and not defs:
+            raise Declined(f"line {st[3]}: an assignment as a child without braces (a syntax error)")
         return [] if st is None else [st]
 
-    def statement(self) -> Any:
+    def statement(self, defs: bool = True) -> Any:
         self.enter()
         try:
-            return self._statement()
+            return self._statement(defs)
         finally:
             self.depth -= 1
 
-    def _statement(self) -> Any:
+    def _statement(self, defs: bool) -> Any:
         kind, tok, line = self.peek()
         if kind == "op" and tok == ";":
             self.i += 1
             return None
         if kind != "name":
             raise Declined(f"line {line}: {tok!r} starts no statement read here")
+        if tok in ("module", "function") and not defs:
+            raise Declined(f"line {line}: a {tok} definition under a call, for or if (a syntax error)")
         if tok == "module":
             self.i += 1
             name = self.name()
             params = self.params()
-            return ("module", name, params, self.body(), line)
+            return ("module", name, params, self.body(defs=True), line)
         if tok == "function":
             self.i += 1
             name = self.name()
@@ -213,6 +219,8 @@ class _Parser:
             out.append((name, self.expr()))
             if not self.at(")"):
                 self.take(",")
+                if self.at(")") or self.at(","):  # OpenSCAD: no trailing comma in a call
+                    raise Declined(f"line {self.peek()[2]}: a comma before ')'")
         self.i += 1
         return out
 
