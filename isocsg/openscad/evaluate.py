@@ -129,8 +129,9 @@ class _Evaluator:
             values[key] = self.expr(x, f)
         for p, default in params:
             if p not in values:
-                if default is not None and _names(default) & set(names):
-                    raise Declined(f"a default of {name} that names a parameter")
+                if default is not None and (_names(default) & set(names)
+                                            or any(n.startswith("$") for n in _names(default))):
+                    raise Declined(f"a default of {name} that names a parameter or a $ variable")
                 values[p] = None if default is None else self.expr(default, home)
         return values
 

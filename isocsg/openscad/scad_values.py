@@ -232,6 +232,8 @@ _NUMERIC: dict[str, tuple[Callable[..., float], tuple[int, ...]]] = {
 
 def _min_max(name: str, args: list[Any]) -> float:
     items = args[0] if len(args) == 1 and isinstance(args[0], list) else args
+    if len(args) == 1 and not isinstance(args[0], list):
+        raise Declined(f"{name} of one number")
     if not items or not all(_is_num(v) for v in items):
         raise Declined(f"{name} of non-numbers")
     best = items[0]
