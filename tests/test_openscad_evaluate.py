@@ -181,3 +181,17 @@ def test_random_programs_give_the_programs_export(tmp_path: Path, text: str) -> 
         return
     theirs = parse_csg(scad_to_csg(path))
     assert _difference(mine, theirs) is None, (text, _difference(mine, theirs))
+
+
+_pieces = st.sampled_from(["cube(", "sphere(", "translate(", "for (i = ", "if (", "module m(", "function f(", "m(", "f(",
+                           "[", "]", "(", ")", "{", "}", ",", ";", "=", ":", "?", "+", "-", "*", "/", "%", "^", "!",
+                           "<", ">=", "==", "&&", "||", ".x", "1", "0.5", "-2", "1e400", "i", "a", "$fn", "\"s\"",
+                           "true", "undef", " ", "\n", "else ", "0:3", "sin(", "len(", "concat("])
+
+
+@settings(max_examples=200, deadline=None)
+@given(text=st.lists(_pieces, max_size=40).map("".join))
+def test_any_text_is_read_or_declined(text: str) -> None:
+    """Malformed or odd text never raises: it is read, or left to the program."""
+    calls = evaluate_scad(text)
+    assert calls is None or (calls and all(isinstance(c, CSGCall) for c in calls))

@@ -254,7 +254,7 @@ def _names(e: Any) -> set[str]:
 def _evaluate(text: str) -> list[CSGCall]:
     try:
         return _Evaluator().scope(parse_scad(text), Scope(None, None))
-    except (RecursionError, OverflowError, ValueError, ZeroDivisionError) as exc:
+    except (RecursionError, OverflowError, ValueError, ZeroDivisionError, TypeError, IndexError, KeyError) as exc:
         raise Declined(f"{type(exc).__name__}: {exc}") from None
 
 
