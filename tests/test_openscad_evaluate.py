@@ -95,7 +95,7 @@ def test_evaluator_gives_the_programs_export(name: str) -> None:
     "{ cube(1); }", "x = " + "(" * 200 + "1" + ")" * 200 + "; cube(x);",
     "", "// nothing", "echo(1);",
     # syntax errors of OpenSCAD's grammar: the program reports them
-    "module t(n = $fn) cube(n + 1); t($fn = 8);", "cube(1,);", "if (true) { module m() cube(1); m(); }", "translate([1, 0, 0]) { function f() = 1; cube(f()); }",
+    "module t(n = $fn) cube(n + 1); t($fn = 8);", "cylinder(h = 2, 0.5, center = true);", "module m(a, b) cube(a + b); m(a = 1, 2);", "cube(1,);", "if (true) { module m() cube(1); m(); }", "translate([1, 0, 0]) { function f() = 1; cube(f()); }",
     "translate([1, 0, 0]) a = 1; cube(1);", "if (true) a = 2; cube(1);", "cube([,1]);", "cube(1,,center = true);",
     # work bounded: an exponential chain of functions, a doubling vector, a huge loop
     "function f0(x) = x;\n" + "".join(f"function f{i}(x) = f{i - 1}(x) + f{i - 1}(x);\n" for i in range(1, 40))

@@ -58,7 +58,8 @@ def _arguments(ev: _Evaluates, name: str, args: list[Any], f: Scope) -> tuple[di
     specials: dict[str, Any] = {}
     for i, (arg_name, x) in enumerate(args):
         if arg_name is None:
-            if i >= len(positional) or values.keys() - set(positional[:i]) or specials:
+            # OpenSCAD counts a positional argument after named ones among the positional only
+            if i >= len(positional) or any(n is not None for n, _ in args[:i]):
                 raise Declined(f"a positional argument of {name} out of place")
             key = positional[i]
         else:
