@@ -214,7 +214,7 @@ def _draw(tmp: Path, compiled: bool) -> None:
         main(["demo", "--halftone", "--size", "24x18", "-o", str(tmp / "halftone.png"), "--no-progress"])
     import subprocess  # noqa: F401  # what a .scad file that is not plain needs (openscad's run)
 
-    from ..openscad import read_openscad  # noqa: F401
+    from ..openscad import evaluate, read_openscad  # noqa: F401  # evaluate: .scad files read without openscad
 
 
 def _loop(listener: socket.socket, name: str, state: dict[str, Any]) -> None:

@@ -13,6 +13,11 @@ file (variables, modules, loops, other calls, ``$`` variables, modifiers, longer
 with constant arguments, and OpenSCAD's examples' ``echo(version=version());``, are read too:
 they print to the program's log, which isocsg does not show, and leave nothing in its export.
 ``tests/test_openscad_plain.py`` compares the two reads on random files of this subset.
+
+A file outside that subset is then tried with :func:`isocsg.openscad.evaluate.evaluate_scad`,
+which evaluates a conservative subset of the language (variables, loops, ``if``, modules and
+functions, the common primitives and maps) as OpenSCAD 2021.01 does and builds the tree its
+export gives; whatever it declines goes to the program.
 """
 
 from __future__ import annotations
@@ -142,8 +147,9 @@ def plain_calls(text: str) -> list[CSGCall] | None:
 
 def read_plain_scad(path: str | os.PathLike[str], *, skip_unsupported: bool = False,
                     polygonal: bool = False) -> LoweredModel | None:
-    """:func:`~isocsg.openscad.read_openscad` of a ``.scad`` file within the plain subset, read
-    without the ``openscad`` program; None for any other file, and for a model that does not
+    """:func:`~isocsg.openscad.read_openscad` of a ``.scad`` file within the plain subset or
+    the evaluated one (:mod:`isocsg.openscad.evaluate`), read without the ``openscad`` program;
+    None for any other file, and for a model that does not
     lower (read it with the program, whose error names the line as it always did).
 
     Parameters
@@ -161,6 +167,10 @@ def read_plain_scad(path: str | os.PathLike[str], *, skip_unsupported: bool = Fa
     except (OSError, UnicodeDecodeError):
         return None  # the program's read says what is wrong
     calls = plain_calls(text)
+    if calls is None:
+        from .evaluate import evaluate_scad
+
+        calls = evaluate_scad(text)  # variables, loops, modules, ...: OpenSCAD's export computed here
     if calls is None:
         return None
     try:

@@ -1,0 +1,291 @@
+"""A conservative subset of the OpenSCAD language, evaluated in this process.
+
+:func:`evaluate_scad` reads ``.scad`` text with variables, vectors, ranges, arithmetic,
+comparisons, the trigonometric and other numeric built-in functions, ``for`` loops, ``if``/
+``else``, module and function definitions (without ``children()`` or recursion), ``echo``
+and ``$fn``/``$fa``/``$fs``, and builds the tree of :class:`~isocsg.openscad.parser.CSGCall`
+that :func:`~isocsg.openscad.parser.parse_csg` reads from OpenSCAD 2021.01's ``.csg`` export
+of the same file: the same nodes (a ``group()`` for each loop, ``if`` and module instance,
+``multmatrix`` for the maps, computed as OpenSCAD's ``transform.cc`` computes them), the same
+default arguments, and every number rounded to the 6 significant digits the export prints.
+
+Anything outside the subset, or that OpenSCAD would answer with a warning (an undefined
+variable, a bad argument, a variable assigned twice in a scope, ...), raises
+:class:`~isocsg.openscad.scad_syntax.Declined` inside and makes :func:`evaluate_scad` return
+None: the ``openscad`` program reads that file. Nesting (of the text and of module calls) is
+limited to :data:`~isocsg.openscad.scad_syntax.MAX_DEPTH`; a deeper file is declined.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Any
+
+from .parser import CSGCall
+from .scad_modules import builtin_module
+from .scad_syntax import MAX_DEPTH, Declined, parse_scad
+from .scad_values import Range, Scope, binary, builtin_function, truthy, unary
+
+__all__ = ["MAX_NODES", "MAX_STEPS", "declined_because", "evaluate_scad"]
+
+#: Most nodes built (a larger model's own work outweighs an ``openscad`` run).
+MAX_NODES = 20000
+#: Most expressions evaluated (functions calling functions can take exponential time).
+MAX_STEPS = 1_000_000
+
+
+class _Evaluator:
+    def __init__(self) -> None:
+        self.depth = 0
+        self.nodes = 0
+        self.steps = 0
+        self.active: set[int] = set()  # the definitions being evaluated (recursion declined)
+
+    def enter(self) -> None:
+        self.depth += 1
+        if self.depth > MAX_DEPTH:
+            raise Declined("nested too deeply")
+
+    # -- expressions
+    def expr(self, e: Any, f: Scope) -> Any:
+        self.steps += 1
+        if self.steps > MAX_STEPS:
+            raise Declined("too much work (nested function calls)")
+        self.enter()
+        try:
+            return self._expr(e, f)
+        finally:
+            self.depth -= 1
+
+    def _expr(self, e: Any, f: Scope) -> Any:
+        kind = e[0]
+        if kind in ("num", "str", "bool"):
+            return e[1]
+        if kind == "undef":
+            return None
+        if kind == "var":
+            return f.lookup(e[1])
+        if kind == "vec":
+            return [self.expr(x, f) for x in e[1]]
+        if kind == "range":
+            b = self.expr(e[1], f)
+            s = 1.0 if e[2] is None else self.expr(e[2], f)
+            end = self.expr(e[3], f)
+            if not all(type(x) is float for x in (b, s, end)):
+                raise Declined("a range of non-numbers")
+            if e[2] is None and b > end:
+                raise Declined("a range [begin:end] with begin > end (deprecated, a warning)")
+            return Range(b, s, end)
+        if kind == "un":
+            return unary(e[1], self.expr(e[2], f))
+        if kind == "bin":
+            op = e[1]
+            a = self.expr(e[2], f)
+            if op == "&&":
+                return truthy(a) and truthy(self.expr(e[3], f))
+            if op == "||":
+                return truthy(a) or truthy(self.expr(e[3], f))
+            return binary(op, a, self.expr(e[3], f))
+        if kind == "tern":
+            return self.expr(e[2] if truthy(self.expr(e[1], f)) else e[3], f)
+        if kind == "index":
+            return _index(self.expr(e[1], f), self.expr(e[2], f))
+        if kind == "member":
+            v = self.expr(e[1], f)
+            if e[2] not in ("x", "y", "z") or not isinstance(v, list):
+                raise Declined(f".{e[2]}")
+            return _index(v, float("xyz".index(e[2])))
+        if kind == "call":
+            return self.call_function(e[1], e[2], f)
+        raise Declined(kind)
+
+    def call_function(self, name: str, args: list[Any], f: Scope) -> Any:
+        found = f.find("functions", name)
+        if found is None:
+            if any(n is not None for n, _ in args):
+                raise Declined(f"{name} with named arguments")
+            return builtin_function(name, [self.expr(x, f) for _, x in args])
+        (_, _, params, body, _), home = found
+        if id(found[0]) in self.active:
+            raise Declined(f"recursive function {name}")
+        frame = Scope(home, f, self.bind(params, args, f, home, name))
+        self.active.add(id(found[0]))
+        try:
+            return self.expr(body, frame)
+        finally:
+            self.active.discard(id(found[0]))
+
+    def bind(self, params: list[tuple[str, Any]], args: list[Any], f: Scope, home: Scope,
+             name: str) -> dict[str, Any]:
+        """Parameters' values: arguments evaluated in the caller, defaults in the definition's scope."""
+        names = [p for p, _ in params]
+        values: dict[str, Any] = {}
+        for i, (arg_name, x) in enumerate(args):
+            key = arg_name if arg_name is not None else (names[i] if i < len(names) else None)
+            if key is None or key in values or (not key.startswith("$") and key not in names):
+                raise Declined(f"an argument of {name} that is not a parameter")
+            if arg_name is None and any(a is not None for a, _ in args[:i]):
+                raise Declined("a positional argument after named ones")
+            values[key] = self.expr(x, f)
+        for p, default in params:
+            if p not in values:
+                if default is not None and (_names(default) & set(names)
+                                            or any(n.startswith("$") for n in _names(default))):
+                    raise Declined(f"a default of {name} that names a parameter or a $ variable")
+                values[p] = None if default is None else self.expr(default, home)
+        return values
+
+    # -- statements
+    def scope(self, statements: list[Any], f: Scope) -> list[CSGCall]:
+        """The nodes of a scope's statements: definitions first, then assignments, then the rest."""
+        assigned = [s[1] for s in statements if s[0] == "assign"]
+        if len(set(assigned)) != len(assigned) or "$preview" in assigned:
+            raise Declined("a variable assigned twice in one scope")
+        if set(assigned) & set(f.vars):
+            raise Declined("an assignment of a parameter or a loop variable")
+        for s in statements:
+            if s[0] in ("module", "function"):
+                table = f.modules if s[0] == "module" else f.functions
+                if s[1] in table:
+                    raise Declined(f"{s[0]} {s[1]} defined twice")
+                table[s[1]] = (s, f)
+        f.pending = set(assigned)
+        for s in statements:
+            if s[0] == "assign":
+                f.vars[s[1]] = self.expr(s[2], f)
+                f.pending.discard(s[1])
+        out: list[CSGCall] = []
+        for s in statements:
+            if s[0] in ("inst", "for", "if"):
+                self.enter()
+                try:
+                    out.extend(self.statement(s, f))
+                finally:
+                    self.depth -= 1
+        return out
+
+    def statement(self, s: Any, f: Scope) -> list[CSGCall]:
+        self.nodes += 1
+        if self.nodes > MAX_NODES:
+            raise Declined("too many nodes")
+        if s[0] == "for":
+            children: list[CSGCall] = []
+            self.loop(s[1], s[2], f, {}, children)
+            return [CSGCall("group", children=children, line=s[3])]
+        if s[0] == "if":
+            if truthy(self.expr(s[1], f)):
+                body = s[2]
+            elif s[3] is not None:
+                body = s[3]
+            else:
+                return []  # a false if without else leaves no node in the export
+            return [CSGCall("group", children=self.scope(body, Scope(f, f)), line=s[4])]
+        return self.instance(s, f)
+
+    def loop(self, variables: list[Any], body: list[Any], f: Scope, bound: dict[str, Any],
+             out: list[CSGCall]) -> None:
+        """``for (i = ..., j = ...)``: the body for every combination, in one group."""
+        todo: list[tuple[int, dict[str, Any]]] = [(0, bound)]
+        while todo:
+            k, values = todo.pop()
+            if k == len(variables):
+                out.extend(self.scope(body, Scope(f, f, values)))
+                continue
+            name, x = variables[k]
+            seq = self.expr(x, Scope(f, f, values))
+            if isinstance(seq, Range):
+                items: list[Any] = list(seq.values())
+            elif isinstance(seq, list):
+                items = seq
+            else:
+                raise Declined("a loop over something else than a range or a vector")
+            todo.extend((k + 1, {**values, name: v}) for v in reversed(items))
+
+    def instance(self, s: Any, f: Scope) -> list[CSGCall]:
+        _, name, args, children, line = s
+        if name == "echo":
+            if children:
+                raise Declined("echo with children")
+            for _, x in args:  # echo(version=version()) ends OpenSCAD's examples
+                if x[0] != "call" or x[1:] not in (("version", []), ("version_num", [])):
+                    self.expr(x, f)
+            return []
+        found = f.find("modules", name)
+        if found is not None:
+            return [self.user_module(found, args, children, f, line)]
+        return [builtin_module(self, name, args, children, f, line)]
+
+    def user_module(self, found: tuple[Any, Scope], args: list[Any], children: list[Any], f: Scope,
+                    line: int) -> CSGCall:
+        (_, name, params, body, _), home = found
+        if children:
+            raise Declined(f"{name}() with children (children() is not read)")
+        if id(found[0]) in self.active:
+            raise Declined(f"recursive module {name}")
+        frame = Scope(home, f, self.bind(params, args, f, home, name))
+        self.active.add(id(found[0]))
+        try:
+            return CSGCall("group", children=self.scope(body, frame), line=line)
+        finally:
+            self.active.discard(id(found[0]))
+
+
+def _index(v: Any, i: Any) -> Any:
+    if not isinstance(v, list) or type(i) is not float or i != math.floor(i) or not 0 <= i < len(v):
+        raise Declined("an index out of range or of something else than a vector")
+    return v[int(i)]
+
+
+def _names(e: Any) -> set[str]:
+    """The variable names an expression reads."""
+    out: set[str] = set()
+    todo = [e]
+    while todo:
+        x = todo.pop()
+        if isinstance(x, tuple):
+            if x and x[0] == "var":
+                out.add(x[1])
+            todo.extend(x[1:])
+        elif isinstance(x, list):
+            todo.extend(x)
+    return out
+
+
+def _evaluate(text: str) -> list[CSGCall]:
+    try:
+        return _Evaluator().scope(parse_scad(text), Scope(None, None))
+    except (RecursionError, OverflowError, ValueError, ZeroDivisionError, TypeError, IndexError, KeyError) as exc:
+        raise Declined(f"{type(exc).__name__}: {exc}") from None
+
+
+def declined_because(text: str) -> str | None:
+    """Why :func:`evaluate_scad` leaves this text to the program, or None if it reads it.
+
+    >>> declined_because("cube(size = x);")
+    'unknown variable x'
+    """
+    try:
+        _evaluate(text)
+    except Declined as exc:
+        return str(exc)
+    return None
+
+
+def evaluate_scad(text: str) -> list[CSGCall] | None:
+    """The top-level nodes OpenSCAD 2021.01's ``.csg`` export of this ``.scad`` text gives, as
+    :func:`~isocsg.openscad.parser.parse_csg` reads them; None for text outside the subset
+    (:func:`declined_because` says why) and for text that makes no node.
+
+    Examples
+    --------
+    >>> (loop,) = evaluate_scad("n = 3; for (i = [0:n - 1]) translate([2 * i, 0, 0]) cube(1);")
+    >>> loop.name, [c.name for c in loop.children], loop.children[2].args[0][0][3]
+    ('group', ['multmatrix', 'multmatrix', 'multmatrix'], 4.0)
+    >>> evaluate_scad("include <lib.scad>\\ncube(1);") is None
+    True
+    """
+    try:
+        calls = _evaluate(text)
+    except Declined:
+        return None
+    return calls or None

@@ -1,0 +1,348 @@
+"""A parser of a conservative subset of the OpenSCAD language, for :mod:`isocsg.openscad.evaluate`.
+
+It reads statements (assignments, module instantiations with ``;``, one child or a ``{ }``
+block, ``for``, ``if``/``else``, ``module`` and ``function`` definitions) and expressions
+(numbers, strings, ``true``/``false``/``undef``, vectors, ranges, the operators of OpenSCAD
+2021.01's grammar with its precedence, indexing, ``.x``/``.y``/``.z`` and calls of named
+functions) into tuples. Anything else (``include``/``use``, ``let``, ``each``, list
+comprehensions, function literals, ``assert``, modifiers ``* ! # %``, bare blocks,
+``intersection_for``) raises :class:`Declined`: the file is left to the ``openscad`` program.
+
+The parser is recursive descent with a depth limit (:data:`MAX_DEPTH`): a deeper file raises
+:class:`Declined` too, never a ``RecursionError``.
+"""
+
+from __future__ import annotations
+
+import re
+from typing import Any
+
+__all__ = ["Declined", "MAX_DEPTH", "parse_scad"]
+
+#: Deepest nesting of expressions and statements read (deeper files go to the program).
+MAX_DEPTH = 60
+
+
+class Declined(Exception):  # noqa: N818 (a signal, not an error: the program reads the file)
+    """The text is outside the subset read in-process."""
+
+
+_TOKEN = re.compile(
+    r"""
+    (?P<ws>[ \t\r\f\v]+)
+  | (?P<nl>\n)
+  | (?P<comment>//[^\n]*|/\*.*?\*/)
+  | (?P<number>(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?)
+  | (?P<string>"(?:[^"\\\n]|\\[nrt"\\])*")
+  | (?P<name>\$?[A-Za-z_][A-Za-z0-9_]*)
+  | (?P<op><=|>=|==|!=|&&|\|\||[-+*/%^<>!?:=(){}\[\],;.])
+    """,
+    re.VERBOSE | re.DOTALL,
+)
+_ESCAPES = {"n": "\n", "t": "\t", "r": "\r", '"': '"', "\\": "\\"}
+# names the subset does not read; each one declines the file wherever it appears
+_REFUSED = {"include", "use", "let", "each", "assert", "function_literal", "children", "intersection_for",
+            "import", "surface", "text", "minkowski", "projection", "resize", "render", "parent_module",
+            "search", "lookup", "str", "chr", "ord", "is_undef",
+            "is_num", "is_string", "is_list", "is_bool", "is_function", "rands", "cross", "dxf_dim",
+            "dxf_cross", "roof", "fill", "object", "import_dxf", "import_stl"}
+_KEYWORDS = {"true": ("bool", True), "false": ("bool", False), "undef": ("undef",)}
+_BINARY = [  # loosest first, as OpenSCAD 2021.01's parser.y
+    ("||",), ("&&",), ("==", "!="), ("<", "<=", ">", ">="), ("+", "-"), ("*", "/", "%"),
+]
+
+
+def _tokens(text: str) -> list[tuple[str, str, int]]:
+    out: list[tuple[str, str, int]] = []
+    line, pos, n = 1, 0, len(text)
+    while pos < n:
+        m = _TOKEN.match(text, pos)
+        if m is None:
+            raise Declined(f"line {line}: unexpected {text[pos]!r}")
+        kind, tok = m.lastgroup or "", m.group()
+        if kind == "number" and m.end() < n and (text[m.end()].isalnum() or text[m.end()] in "_$"):
+            raise Declined(f"line {line}: a name that starts with a digit")  # OpenSCAD's lexer reads one
+        if kind == "nl":
+            line += 1
+        elif kind == "comment":
+            line += tok.count("\n")
+        elif kind != "ws":
+            if kind == "name" and tok in _REFUSED:
+                raise Declined(f"line {line}: {tok}")
+            out.append((kind, tok, line))
+        pos = m.end()
+    out.append(("eof", "", line))
+    return out
+
+
+class _Parser:
+    def __init__(self, text: str) -> None:
+        self.toks = _tokens(text)
+        self.i = 0
+        self.depth = 0
+
+    # -- tokens
+    def peek(self, k: int = 0) -> tuple[str, str, int]:
+        return self.toks[min(self.i + k, len(self.toks) - 1)]
+
+    def at(self, text: str, k: int = 0) -> bool:
+        kind, tok, _ = self.peek(k)
+        return kind == "op" and tok == text
+
+    def take(self, text: str) -> None:
+        if not self.at(text):
+            raise Declined(f"line {self.peek()[2]}: expected {text!r}, got {self.peek()[1]!r}")
+        self.i += 1
+
+    def name(self) -> str:
+        kind, tok, line = self.peek()
+        if kind != "name" or tok in _KEYWORDS:
+            raise Declined(f"line {line}: expected a name, got {tok!r}")
+        self.i += 1
+        return tok
+
+    def enter(self) -> None:
+        self.depth += 1
+        if self.depth > MAX_DEPTH:
+            raise Declined("nested too deeply")
+
+    # -- statements
+    def statements(self, until: str, defs: bool = True) -> list[Any]:
+        out: list[Any] = []
+        while not (self.at(until) if until else self.peek()[0] == "eof"):
+            if self.peek()[0] == "eof":
+                raise Declined("unclosed block")
+            st = self.statement(defs)
+            if st is not None:
+                out.append(st)
+        return out
+
+    def body(self, defs: bool = False) -> list[Any]:
+        """A child: one statement or a ``{ }`` block; ``module`` and ``function`` definitions only
+        in a module's body (``defs``), as OpenSCAD's grammar has them (not under a call, ``for`` or
+        ``if``)."""
+        if self.at("{"):
+            self.i += 1
+            out = self.statements("}", defs)
+            self.i += 1
+            return out
+        st = self.statement(defs)
+        if st is not None and st[0] == "assign" and not defs:
+            raise Declined(f"line {st[3]}: an assignment as a child without braces (a syntax error)")
+        return [] if st is None else [st]
+
+    def statement(self, defs: bool = True) -> Any:
+        self.enter()
+        try:
+            return self._statement(defs)
+        finally:
+            self.depth -= 1
+
+    def _statement(self, defs: bool) -> Any:
+        kind, tok, line = self.peek()
+        if kind == "op" and tok == ";":
+            self.i += 1
+            return None
+        if kind != "name":
+            raise Declined(f"line {line}: {tok!r} starts no statement read here")
+        if tok in ("module", "function") and not defs:
+            raise Declined(f"line {line}: a {tok} definition under a call, for or if (a syntax error)")
+        if tok == "module":
+            self.i += 1
+            name = self.name()
+            params = self.params()
+            return ("module", name, params, self.body(defs=True), line)
+        if tok == "function":
+            self.i += 1
+            name = self.name()
+            params = self.params()
+            self.take("=")
+            expr = self.expr()
+            self.take(";")
+            return ("function", name, params, expr, line)
+        if tok == "for":
+            self.i += 1
+            args = self.args()
+            if not args or any(n is None for n, _ in args):
+                raise Declined(f"line {line}: for without a variable")
+            return ("for", args, self.body(), line)
+        if tok == "if":
+            self.i += 1
+            self.take("(")
+            cond = self.expr()
+            self.take(")")
+            then = self.body()
+            other = None
+            if self.peek()[:2] == ("name", "else"):
+                self.i += 1
+                other = self.body()
+            return ("if", cond, then, other, line)
+        if tok in _KEYWORDS or tok == "else":
+            raise Declined(f"line {line}: {tok}")
+        if self.at("=", 1):
+            self.i += 2
+            expr = self.expr()
+            self.take(";")
+            return ("assign", tok, expr, line)
+        self.i += 1
+        args = self.args()
+        if self.at(";"):
+            self.i += 1
+            return ("inst", tok, args, [], line)
+        return ("inst", tok, args, self.body(), line)
+
+    def params(self) -> list[tuple[str, Any]]:
+        self.take("(")
+        out: list[tuple[str, Any]] = []
+        while not self.at(")"):
+            name = self.name()
+            default = None
+            if self.at("="):
+                self.i += 1
+                default = self.expr()
+            out.append((name, default))
+            if not self.at(")"):
+                self.take(",")
+        self.i += 1
+        if len({n for n, _ in out}) != len(out):
+            raise Declined("a parameter named twice")
+        return out
+
+    def args(self) -> list[tuple[str | None, Any]]:
+        self.take("(")
+        out: list[tuple[str | None, Any]] = []
+        while not self.at(")"):
+            name = None
+            if self.peek()[0] == "name" and self.at("=", 1):
+                name = self.name()
+                self.i += 1
+            out.append((name, self.expr()))
+            if not self.at(")"):
+                self.take(",")
+                if self.at(")") or self.at(","):  # OpenSCAD: no trailing comma in a call
+                    raise Declined(f"line {self.peek()[2]}: a comma before ')'")
+        self.i += 1
+        return out
+
+    # -- expressions
+    def expr(self) -> Any:
+        self.enter()
+        try:
+            cond = self.binary(0)
+            if self.at("?"):
+                self.i += 1
+                a = self.expr()
+                self.take(":")
+                return ("tern", cond, a, self.expr())
+            return cond
+        finally:
+            self.depth -= 1
+
+    def binary(self, level: int) -> Any:
+        if level == len(_BINARY):
+            return self.unary()
+        left = self.binary(level + 1)
+        while self.peek()[0] == "op" and self.peek()[1] in _BINARY[level]:
+            op = self.peek()[1]
+            self.i += 1
+            left = ("bin", op, left, self.binary(level + 1))
+        return left
+
+    def unary(self) -> Any:
+        if self.peek()[0] == "op" and self.peek()[1] in "+-!":
+            op = self.peek()[1]
+            self.i += 1
+            self.enter()
+            try:
+                inner = self.unary()
+            finally:
+                self.depth -= 1
+            return inner if op == "+" else ("un", op, inner)
+        base = self.postfix()
+        if self.at("^"):
+            self.i += 1
+            self.enter()
+            try:
+                return ("bin", "^", base, self.unary())
+            finally:
+                self.depth -= 1
+        return base
+
+    def postfix(self) -> Any:
+        e = self.primary()
+        while True:
+            if self.at("["):
+                self.i += 1
+                e = ("index", e, self.expr())
+                self.take("]")
+            elif self.at("."):
+                self.i += 1
+                e = ("member", e, self.name())
+            elif self.at("("):
+                if e[0] != "var":
+                    raise Declined("a call of an expression")
+                e = ("call", e[1], self.args())
+            else:
+                return e
+
+    def primary(self) -> Any:
+        kind, tok, line = self.peek()
+        self.i += 1
+        if kind == "number":
+            return ("num", float(tok))
+        if kind == "string":
+            return ("str", re.sub(r"\\(.)", lambda m: _ESCAPES[m.group(1)], tok[1:-1]))
+        if kind == "name":
+            if tok in _KEYWORDS:
+                return _KEYWORDS[tok]
+            if tok in ("module", "function", "for", "if", "else"):
+                raise Declined(f"line {line}: {tok} in an expression")
+            return ("var", tok)
+        if kind == "op" and tok == "(":
+            e = self.expr()
+            self.take(")")
+            return e
+        if kind == "op" and tok == "[":
+            return self.vector(line)
+        raise Declined(f"line {line}: {tok!r} in an expression")
+
+    def vector(self, line: int) -> Any:
+        while self.at(","):  # OpenSCAD reads [,] as []
+            self.i += 1
+            if not self.at("]"):
+                raise Declined(f"line {line}: a vector that starts with a comma")
+        if self.at("]"):
+            self.i += 1
+            return ("vec", [])
+        first = self.expr()
+        if self.at(":"):
+            self.i += 1
+            second = self.expr()
+            if self.at(":"):
+                self.i += 1
+                third = self.expr()
+                self.take("]")
+                return ("range", first, second, third)
+            self.take("]")
+            return ("range", first, None, second)
+        items = [first]
+        while self.at(","):
+            while self.at(","):  # repeated and trailing commas, as OpenSCAD's grammar allows
+                self.i += 1
+            if self.at("]"):
+                break
+            items.append(self.expr())
+        self.take("]")
+        return ("vec", items)
+
+
+def parse_scad(text: str) -> list[Any]:
+    """The statements of ``.scad`` text as tuples (module docstring).
+
+    Raises
+    ------
+    Declined
+        For text outside the subset (the ``openscad`` program reads it).
+    """
+    p = _Parser(text)
+    return p.statements("")

@@ -1,0 +1,5 @@
+a = 4;
+echo("a is", a);
+echo(version=version());
+module e() { echo("inside"); cube(a); }
+e();

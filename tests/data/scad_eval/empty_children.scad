@@ -1,0 +1,5 @@
+translate([1, 2, 3]);
+union();
+module nothing() { }
+nothing();
+cube(1);

@@ -1,0 +1,4 @@
+module m() { $fn = 20; sphere(1); n(); }
+module n() sphere(2);
+m();
+sphere(3);

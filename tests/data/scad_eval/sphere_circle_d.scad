@@ -1,0 +1,1 @@
+sphere(d = 5); circle(d = 3); sphere(); circle();
