@@ -64,6 +64,8 @@ HAND = {
     "nested_blocks": "translate([1, 0, 0]) { a = 2; cube(a); rotate(45) { b = a * 2; sphere(b); } }\n",
     "empty_children": "translate([1, 2, 3]);\nunion();\nmodule nothing() { }\nnothing();\ncube(1);\n",
     "long_numbers": "translate([1 / 3, 2 / 3, 0.1 + 0.2]) cube([1e-7 + 1, 123456.789, 0.000123456789]);\nsphere(PI);\n",
+    "lookup": "t = [[-1, 2], [0.5, 3.25], [4, -1], [2, 7]];\nfor (k = [-3, -1, 0, 0.3, 0.5, 1.7, 2, 3.9, 4, 6]) translate([k, lookup(k, t), 0]) cube(0.5);\ncube([lookup(1, [[1, 4]]), lookup(5, [[0, 1], [10, 3]]), lookup(2.5, [[3, 1], [2, 5], [3, 9]])]);\n",
+    "example019_lookup": "function get_cylinder_h(p) = lookup(p, [[-200, 5], [-50, 20], [-20, 18], [+80, 25], [+150, 2]]);\nfor (i = [-100:5:+100]) {\n  translate([sin(i) * 50, cos(i) * 50, 0]) cylinder(r = 5, h = get_cylinder_h(i) * 3);\n}\n",
     "undef_default": "module m(a, b) { cube(a == undef ? 1 : a); }\nm(); m(2);\n",
     "strings": "name = \"part\";\nif (name == \"part\") cube(1); else sphere(1);\nif (len(name) > 3) translate([2, 0, 0]) cube(len(name));\n",
     "range_variable": "r = [1:3];\nfor (i = r) translate([i, 0, 0]) cube(0.5);\nfor (i = [0:2:9]) translate([0, i, 0]) cube(0.5);\n",

@@ -43,7 +43,7 @@ _ESCAPES = {"n": "\n", "t": "\t", "r": "\r", '"': '"', "\\": "\\"}
 # names the subset does not read; each one declines the file wherever it appears
 _REFUSED = {"include", "use", "let", "each", "assert", "function_literal", "children", "intersection_for",
             "import", "surface", "text", "minkowski", "projection", "resize", "render", "parent_module",
-            "search", "lookup", "str", "chr", "ord", "is_undef",
+            "search", "str", "chr", "ord", "is_undef",
             "is_num", "is_string", "is_list", "is_bool", "is_function", "rands", "cross", "dxf_dim",
             "dxf_cross", "roof", "fill", "object", "import_dxf", "import_stl"}
 _KEYWORDS = {"true": ("bool", True), "false": ("bool", False), "undef": ("undef",)}

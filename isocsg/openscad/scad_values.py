@@ -245,6 +245,33 @@ def _min_max(name: str, args: list[Any]) -> float:
     return float(best)
 
 
+def _lookup(args: list[Any]) -> float:
+    """OpenSCAD 2021.01's ``lookup(key, table)`` (``func.cc``): the value at ``key`` of the
+    table's ``[key, value]`` rows, linear between the nearest keys below and above, the end
+    value beyond the ends. A table with any other row, or a key that is not finite, is declined
+    (the program skips such rows or answers undef)."""
+    if len(args) != 2 or not _is_num(args[0]) or not math.isfinite(args[0]) or not isinstance(args[1], list):
+        raise Declined("lookup: bad arguments")
+    rows = args[1]
+    if not rows or not all(isinstance(r, list) and len(r) == 2 and all(_is_num(x) and math.isfinite(x) for x in r)
+                           for r in rows):
+        raise Declined("lookup: a table of [key, value] rows of finite numbers")
+    p = args[0]
+    low_p, low_v = rows[0]
+    high_p, high_v = low_p, low_v
+    for this_p, this_v in rows[1:]:
+        if this_p <= p and (this_p > low_p or low_p > p):
+            low_p, low_v = this_p, this_v
+        if this_p >= p and (this_p < high_p or high_p < p):
+            high_p, high_v = this_p, this_v
+    if p <= low_p:
+        return float(high_v)
+    if p >= high_p:
+        return float(low_v)
+    f = (p - low_p) / (high_p - low_p)
+    return float(high_v * f + low_v * (1 - f))
+
+
 def builtin_function(name: str, args: list[Any]) -> Any:
     """The value of a built-in function call (positional arguments), or :class:`Declined`."""
     if name in _NUMERIC:
@@ -254,6 +281,8 @@ def builtin_function(name: str, args: list[Any]) -> Any:
         return float(f(*args))
     if name in ("min", "max"):
         return _min_max(name, args)
+    if name == "lookup":
+        return _lookup(args)
     if name == "norm":
         if len(args) != 1 or not isinstance(args[0], list) or not all(_is_num(v) for v in args[0]):
             raise Declined("norm: bad arguments")
