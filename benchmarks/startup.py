@@ -10,6 +10,7 @@ gives one)::
     xvfb-run -a python benchmarks/startup.py --root /tmp/old   # another checkout's isocsg (before / after)
     python benchmarks/startup.py --import-only           # isocsg's imports only (python -X importtime)
     xvfb-run -a python benchmarks/startup.py --realworld DIR   # people's models: warm isocsg against OpenSCAD
+    xvfb-run -a python benchmarks/startup.py --realworld DIR --before /tmp/old   # and an older checkout beside it
 
 Each contender draws a model at 512 x 512 to a PNG in a new process, the way a user's command
 does. The default models: ``cube(1)``, ``sphere(10)``, ``cylinder(h=10, r=3)``, a cube minus a
@@ -34,8 +35,10 @@ ones). ``--models`` names others (OpenSCAD's own examples, ``examples/Basics`` a
 ``benchmarks/openscad_realworld.py`` (under ``DIR``, laid out as that script says) whose ``.csg``
 export has 1 to 292 leaves (primitives, extrusions, imports), the issue's range; each drawn at
 512 x 512 by the warm server and by OpenSCAD's preview (``--repeats`` runs after one, default 1
-here; at most ``--timeout`` seconds a run). Printed: a row per model, then the medians of both
-and the median and quartiles of the per-model ratio.
+here; at most ``--timeout`` seconds a run); with ``--before ROOT`` another checkout's isocsg too,
+through a server of its own, each model drawn by each contender in turn (the machine's load
+falls on all alike). Printed: a row per model, then the medians and the median and quartiles of
+each isocsg's per-model ratio to OpenSCAD (and of the new to the old).
 
 Printed: medians over the repeats of wall-clock and CPU seconds (user + system of the child
 process and its children), and the cold and the warm isocsg's ratios to each of the others (> 1:
@@ -252,19 +255,22 @@ def realworld_models(root: Path, work: Path) -> list[tuple[str, Path, int]]:
     return found
 
 
-def realworld(root: Path, work: Path, env: dict[str, str], served: dict[str, str], repeats: int,
-              timeout: float) -> None:
-    """Warm isocsg against OpenSCAD's preview on people's models (see the module's docstring)."""
+def realworld(root: Path, work: Path, servers: dict[str, dict[str, str]], repeats: int, timeout: float) -> None:
+    """Warm isocsg (one or two checkouts, each through its own server: ``servers`` maps a name to
+    the command's environment) against OpenSCAD's preview on people's models, model by model in
+    turn (see the module's docstring)."""
     openscad = shutil.which("openscad")
     if openscad is None or not os.environ.get("DISPLAY"):
         print("--realworld needs openscad and a display (xvfb-run -a)")
         return
-    rows, pairs = [], []
+    names = [*servers, "openscad"]
+    rows: list[list[str]] = []
+    timings: list[dict[str, float]] = []
     for name, model, leaves in realworld_models(root, work):
-        argvs = {"isocsg": ([sys.executable, "-m", "isocsg", "render", str(model), "-o", str(work / "isocsg.png"),
-                             "--no-progress"], {**env, **served}),
-                 "openscad": ([openscad, "--preview", "--imgsize=512,512", "-o", str(work / "openscad.png"),
-                               str(model)], env)}
+        argvs = {who: ([sys.executable, "-m", "isocsg", "render", str(model), "-o", str(work / "isocsg.png"),
+                        "--no-progress"], run_env) for who, run_env in servers.items()}
+        argvs["openscad"] = ([openscad, "--preview", "--imgsize=512,512", "-o", str(work / "openscad.png"),
+                              str(model)], servers[next(iter(servers))])
         times: dict[str, float | str] = {}
         for who, (argv, run_env) in argvs.items():
             try:
@@ -272,24 +278,30 @@ def realworld(root: Path, work: Path, env: dict[str, str], served: dict[str, str
                 times[who] = statistics.median(runs)
             except (RuntimeError, OSError, subprocess.TimeoutExpired) as exc:
                 times[who] = type(exc).__name__
-        a, b = times["isocsg"], times["openscad"]
-        ratio = a / b if isinstance(a, float) and isinstance(b, float) else None
-        if ratio is not None:
-            pairs.append((a, b, ratio))
-        cells = [fmt_seconds(t) if isinstance(t, float) else t for t in (a, b)]
-        rows.append([name, str(leaves), *cells, "" if ratio is None else f"{ratio:.2f}x"])
+        cells = [fmt_seconds(t) if isinstance(t, float) else t for t in times.values()]
+        done = {k: v for k, v in times.items() if isinstance(v, float)}
+        shown = [f"{done[w] / done['openscad']:.2f}x" if w in done and "openscad" in done else "" for w in servers]
+        rows.append([name, str(leaves), *cells, *shown])
+        if len(done) == len(names):
+            timings.append(done)
         print(" | ".join(rows[-1]), flush=True)
     print_table(f"people's models at 512 x 512, warm isocsg against OpenSCAD's preview ({len(rows)} models; "
-                f"medians of {repeats} after one)", ["model", "leaves", "isocsg (warm)", "openscad --preview",
-                                                      "isocsg / openscad"], rows)
-    if pairs:
-        ratios = sorted(p[2] for p in pairs)
+                f"medians of {repeats} after one)",
+                ["model", "leaves", *names, *(f"{w} / openscad" for w in servers)], rows)
+    if not timings:
+        return
+    theirs = fmt_seconds(statistics.median(t["openscad"] for t in timings))
+    print(f"{len(timings)} models drawn by all: median openscad {theirs}")
+    for who in servers:
+        ratios = sorted(t[who] / t["openscad"] for t in timings)
         q = statistics.quantiles(ratios, n=4) if len(ratios) > 1 else [ratios[0]] * 3
-        mine = fmt_seconds(statistics.median(p[0] for p in pairs))
-        print(f"{len(pairs)} models drawn by both: median isocsg {mine}, "
-              f"median openscad {fmt_seconds(statistics.median(p[1] for p in pairs))}; isocsg / openscad per model: "
+        print(f"  {who}: median {fmt_seconds(statistics.median(t[who] for t in timings))}; {who} / openscad per model: "
               f"median {statistics.median(ratios):.2f}x, quartiles {q[0]:.2f}x-{q[2]:.2f}x, "
               f"{sum(r <= 1 for r in ratios)} at or below 1x")
+    if len(servers) == 2:
+        a, b = servers
+        ratios = sorted(t[a] / t[b] for t in timings)
+        print(f"  {a} / {b} per model: median {statistics.median(ratios):.2f}x")
 
 
 def time_limited(argv: list[str], env: dict[str, str], cwd: str, timeout: float) -> float:
@@ -311,6 +323,8 @@ def main() -> int:
     parser.add_argument("--realworld", type=Path, metavar="DIR",
                         help="people's models (benchmarks/openscad_realworld.py's sample under DIR) instead")
     parser.add_argument("--timeout", type=float, default=30.0, help="--realworld: seconds a run may take")
+    parser.add_argument("--before", type=Path, metavar="ROOT",
+                        help="--realworld: also another checkout's isocsg (its own server), model by model in turn")
     args = parser.parse_args()
     if args.realworld is not None and "--repeats" not in sys.argv:
         args.repeats = 1
@@ -335,7 +349,19 @@ def main() -> int:
         try:
             if args.realworld is not None:
                 if served is not None:
-                    realworld(args.realworld, work, env, served, args.repeats, args.timeout)
+                    servers: dict[str, dict[str, str]] = {"isocsg": {**env, **served}}
+                    if args.before is not None:  # a second checkout's own server, in a directory of its own
+                        other = tempfile.mkdtemp(prefix="isrv-", dir="/tmp")
+                        before = {**env, "PYTHONPATH": str(args.before) + os.pathsep + os.environ.get("PYTHONPATH", ""),
+                                  "ISOCSG_SERVER": "1", "ISOCSG_RUNTIME_DIR": other}
+                        if start_server(before):
+                            servers["before"] = before
+                    try:
+                        realworld(args.realworld, work, servers, args.repeats, args.timeout)
+                    finally:
+                        if "before" in servers:
+                            subprocess.run([sys.executable, "-m", "isocsg", "server", "stop"], env=servers["before"],
+                                           capture_output=True, cwd="/")
                 return 0
             for name, model in models(work, env, args.models).items():
                 rows += measure(name, model, work, env, served, args.repeats)
