@@ -611,7 +611,10 @@ def _integrate(
     ends = np.argsort(k1, kind="stable")
     prism = _prismatic(prog, w)
     area = _area_fn(prog, w, res)
-    span = float(np.max(np.concatenate([hi - lo, [z[-1] - z[0]]])))
+    # an absolute floor for results near 0, from the result's box (a difference's first operand's,
+    # an intersection's overlap), not the leaves': a small part cut by a big box keeps its tol
+    boxes = leaf_boxes(prog)
+    span = float(np.max(np.diff(prog.bounds(boxes[:, 0], boxes[:, 1]), axis=0)))
     floor = 1e-3 * tol * span**3
 
     present = np.zeros(len(prog.leaves), dtype=bool)
