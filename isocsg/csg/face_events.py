@@ -76,7 +76,7 @@ def _roots(a: NDArray[np.float64], b: NDArray[np.float64], c: NDArray[np.float64
     lin = np.abs(a) <= 1e-14 * np.maximum(big, 1e-300)
     s = np.sqrt(np.where(disc >= 0.0, disc, np.nan))
     qq = -0.5 * (b + np.copysign(s, b))  # no cancellation
-    with np.errstate(divide="ignore", invalid="ignore"):
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
         t1 = np.where(lin, -c / b, qq / a)
         t2 = np.where(lin, -c / b, c / qq)
     t = np.column_stack([t1, t2])
@@ -139,7 +139,7 @@ def _edge_points(A: _F, b: _F, c: float, r1: float, r2: float, P: _F, dP: _F) ->
     qc = np.einsum("mi,ij,mj->m", P, A, P) + P @ b + c
     ts = [_roots(qa, qb, qc)]
     if not np.isnan(r1):
-        with np.errstate(divide="ignore", invalid="ignore"):
+        with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
             ts.append(np.column_stack([(0.5 - P[:, 2]) / dP[:, 2], (-0.5 - P[:, 2]) / dP[:, 2]]))
     t = np.concatenate(ts, axis=1)
     t = np.where((t >= -1e-12) & (t <= 1.0 + 1e-12), t, np.nan)
@@ -205,9 +205,11 @@ def face_events(prog: Program, w: NDArray[np.float64]) -> NDArray[np.float64]:
             nrm, off, P, dP = _faces(prog.leaves[j])
             N = nrm @ M
             D = off - nrm @ c
-            y = [_plane_points(A, b, c0, N, D, G), _edge_points(A, b, c0, r1, r2, (P - c) @ Minv.T, dP @ Minv.T)]
-            if not np.isnan(r1):
-                y.append(_rim_points(r1, r2, N, D))
+            with np.errstate(divide="ignore", invalid="ignore", over="ignore"):  # non-finite rows dropped below
+                y = [_plane_points(A, b, c0, N, D, G),
+                     _edge_points(A, b, c0, r1, r2, (P - c) @ Minv.T, dP @ Minv.T)]
+                if not np.isnan(r1):
+                    y.append(_rim_points(r1, r2, N, D))
             Y = np.concatenate(y)
             Y = Y[np.all(np.isfinite(Y), axis=1)]
             Y = Y[_on_truncus(Y, r1, r2, eps / scale)]
