@@ -136,8 +136,8 @@ def test_box_face_near_the_axis_against_sections(
     # a box at any orientation, one face through (or near) a point of the solid's axis: the
     # volume against the closed-form sections across the axis (a disc less a circular segment,
     # integrated by scipy's quadrature) or a sphere's cap, within the reference's tolerance and
-    # estimate. (isocsg.volume's plane sections were the judge once; they are 8e-5 off on some of
-    # these trees: test_plane_sections_of_a_cone_cut_through_its_axis.)
+    # estimate. (isocsg.volume's plane sections were the judge once; they were 8e-5 off on some of
+    # these trees until the sweep split at the face's events: test_plane_sections_of_a_cone_cut_through_its_axis.)
     r, h = 0.5, 0.4
     R = _rotation(float(np.linalg.norm(solid_turn)), solid_turn if any(solid_turn) else (0.0, 0.0, 1.0))
     Q = _rotation(float(np.linalg.norm(box_turn)), box_turn if any(box_turn) else (0.0, 0.0, 1.0))
