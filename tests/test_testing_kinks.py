@@ -13,7 +13,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from isocsg import Box, Cone, Cylinder, Difference, Sphere, volume
+from isocsg import Box, Cone, Cylinder, Difference, EllipticTruncus, Sphere, Truncus, volume
 from isocsg.testing import reference
 from isocsg.testing.kinks import signature_breaks
 
@@ -136,8 +136,8 @@ def test_box_face_near_the_axis_against_sections(
     # a box at any orientation, one face through (or near) a point of the solid's axis: the
     # volume against the closed-form sections across the axis (a disc less a circular segment,
     # integrated by scipy's quadrature) or a sphere's cap, within the reference's tolerance and
-    # estimate. (isocsg.volume's plane sections were the judge once; they are 8e-5 off on some of
-    # these trees: test_plane_sections_of_a_cone_cut_through_its_axis.)
+    # estimate. (isocsg.volume's plane sections were the judge once; they were 8e-5 off on some of
+    # these trees until the sweep split at the face's events: test_plane_sections_of_a_cone_cut_through_its_axis.)
     r, h = 0.5, 0.4
     R = _rotation(float(np.linalg.norm(solid_turn)), solid_turn if any(solid_turn) else (0.0, 0.0, 1.0))
     Q = _rotation(float(np.linalg.norm(box_turn)), box_turn if any(box_turn) else (0.0, 0.0, 1.0))
@@ -164,26 +164,103 @@ def _kept_volume(kind: str, centre: np.ndarray, ex: np.ndarray, r: float, h: flo
     return half_space_cut_volume(kind, tuple(centre - 0.5 * h * ex), tuple(ex), r, h, tuple(on_face), tuple(n))
 
 
-# Two trees of the property above where isocsg.volume's plane sections miss: a cone cut by a plane
-# through a point of its axis (the cut's conic turns where the plane is tangent to a section).
+# Two trees of the property above where isocsg.volume's plane sections once missed by 5e-8 and
+# 8e-5 (at any tol): a cone cut by a plane through a point of its axis. The sweep had no
+# breakpoint where the sweep plane is tangent to the conic of the cut (the second tree's kept
+# part starts there: a sliver no quadrature node saw); isocsg.csg.face_events adds them.
 _SECTIONS_MISSES = [
     (-0.3040439277735567, (0.0, 0.0, 0.0), (0.7240095627567293, 1.75, 0.25)),
     (0.0, (1.75, 2.0, 0.0), (0.5, 0.0, 0.0)),
 ]
 
 
-@pytest.mark.xfail(strict=True, reason="isocsg.volume(method='sections') misses 5e-8 and 8e-5 relative here "
-                                       "(not a reference defect: isocsg.testing.reference agrees to 2e-11)")
+def _turn(v: tuple[float, float, float]) -> np.ndarray:
+    """The rotation by ``|v|`` radians about ``v`` (none for a tiny ``v``)."""
+    angle = float(np.linalg.norm(v))
+    return _rotation(angle, v) if angle > 1e-9 else np.eye(3)
+
+
+def _cut_by_box(kind: str, r: float, r0: float, h: float, solid_turn: tuple[float, float, float],
+                box_turn: tuple[float, float, float], along: float, offset: float) -> tuple[Difference, float]:
+    """A cone, frustum (radius ``r0`` at the E2 end) or cylinder turned by ``solid_turn``, less a
+    box turned by ``box_turn`` whose face passes ``offset`` from the point ``along`` (in heights)
+    of the axis; and the closed-form volume kept."""
+    R, Q = _turn(solid_turn), _turn(box_turn)
+    ex, n = R @ np.array([1.0, 0.0, 0.0]), Q @ np.array([0.0, 0.0, 1.0])
+    centre = np.array([0.05, -0.02, 0.03])
+    r2 = {"cone": 0.0, "cylinder": r}.get(kind, r0)
+    solid = Truncus(center=tuple(centre), axis=tuple(h * ex), r1=r, r2=r2)
+    on_face = centre + along * h * ex + offset * n
+    tree = Difference(solid, Box(center=tuple(on_face - n), size=(2.0, 2.0, 2.0), orientation=Q))
+    kept = half_space_cut_volume("frustum", tuple(centre - 0.5 * h * ex), tuple(ex), r, h, tuple(on_face),
+                                 tuple(n), r0=r2)
+    return tree, kept
+
+
+def test_frustum_cut_closed_form() -> None:
+    # the frustum's closed form: whole beyond the plane, half by a plane along its axis, and the
+    # cone's where its small radius is 0
+    r, r0, h, ex = 0.5, 0.2, 0.4, (0.0, 0.6, 0.8)
+    whole = math.pi * h * (r * r + r * r0 + r0 * r0) / 3
+    far = half_space_cut_volume("frustum", (0, 0, 0), ex, r, h, (0, 0, -1), (0, 0.6, 0.8), r0=r0)
+    half = half_space_cut_volume("frustum", (0, 0, 0), ex, r, h, (0, 0, 0), (1, 0, 0), r0=r0)
+    assert abs(far - whole) <= 1e-12 * whole and abs(half - whole / 2) <= 1e-12 * whole
+    turned = ((0.2, 0.1, 0.3), (0.6, 0.0, 0.8))
+    assert half_space_cut_volume("frustum", (0, 0, 0), ex, r, h, *turned, r0=0.0) == pytest.approx(
+        half_space_cut_volume("cone", (0, 0, 0), ex, r, h, *turned), rel=1e-12)
+
+
 @pytest.mark.parametrize(("along", "solid_turn", "box_turn"), _SECTIONS_MISSES)
 def test_plane_sections_of_a_cone_cut_through_its_axis(along: float, solid_turn: tuple[float, float, float],
                                                        box_turn: tuple[float, float, float]) -> None:
-    r, h = 0.5, 0.4
-    R = _rotation(float(np.linalg.norm(solid_turn)), solid_turn if any(solid_turn) else (0.0, 0.0, 1.0))
-    Q = _rotation(float(np.linalg.norm(box_turn)), box_turn)
-    ex, n = R @ np.array([1.0, 0.0, 0.0]), Q @ np.array([0.0, 0.0, 1.0])
-    centre = np.array([0.05, -0.02, 0.03])
-    on_face = centre + along * h * ex
-    tree = Difference(Cone(center=tuple(centre), axis=tuple(h * ex), radius=r),
-                      Box(center=tuple(on_face - n), size=(2.0, 2.0, 2.0), orientation=Q))
-    kept = _kept_volume("cone", centre, ex, r, h, on_face, n)
+    tree, kept = _cut_by_box("cone", 0.5, 0.0, 0.4, solid_turn, box_turn, along, 0.0)
     assert abs(volume(tree, tol=1e-8, method="sections") - kept) <= 1e-8 * kept
+
+
+#: A box face through a point of the axis, or within 1e-9 to 1e-3 (metres, radii 0.2 to 0.5) of it.
+_OFFSET = st.one_of(st.just(0.0), st.builds(lambda e, s: s * 10.0**e, st.floats(-9.0, -3.0), st.sampled_from([-1.0, 1.0])))
+_TURN = st.tuples(st.floats(-2.0, 2.0), st.floats(-2.0, 2.0), st.floats(-2.0, 2.0))
+
+
+@settings(max_examples=4, deadline=None)
+@given(kind=st.sampled_from(["cone", "frustum", "cylinder"]), r=st.floats(0.2, 0.5), ratio=st.floats(0.05, 0.95),
+       h=st.floats(0.1, 0.4), along=st.floats(-0.5, 0.5), offset=_OFFSET, solid_turn=_TURN, box_turn=_TURN)
+def test_plane_sections_of_a_truncus_cut_near_its_axis(kind: str, r: float, ratio: float, h: float, along: float,
+                                                      offset: float, solid_turn: tuple[float, float, float],
+                                                      box_turn: tuple[float, float, float]) -> None:
+    # a cone, frustum or cylinder turned at random less a box turned at random, one face through
+    # or near a point of the axis: isocsg.volume's plane sections (tangencies of the sweep plane
+    # to the cut's conic, rim crossings) against the closed form, at tol 1e-8. The bar is tol of
+    # the solid's volume where the part kept is smaller: the polygons' error where the face's trace
+    # crosses the curved outline is about tol of the cut leaf's sections, not of the part kept
+    # (docs/csg.md; a frustum cut through an end's centre keeping 6 %: 2.2e-8 of the part kept,
+    # 1.3e-9 of the frustum)
+    tree, kept = _cut_by_box(kind, r, ratio * r, h, solid_turn, box_turn, along, offset)
+    r2 = {"cone": 0.0, "cylinder": r}.get(kind, ratio * r)
+    scale = max(kept, math.pi * h * (r * r + r * r2 + r2 * r2) / 3)
+    got = volume(tree, tol=1e-8, method="sections")
+    assert abs(got - kept) <= 1e-8 * scale, (got, kept, (got - kept) / scale)
+
+
+@settings(max_examples=3, deadline=None)
+@given(matrix=st.lists(st.floats(-0.2, 0.2), min_size=9, max_size=9), r1=st.floats(0.3, 1.0),
+       r2=st.sampled_from([0.0, 0.2, 0.6]), along=st.floats(-0.5, 0.5), offset=_OFFSET, box_turn=_TURN)
+def test_plane_sections_of_an_elliptic_truncus_cut_near_its_axis(matrix: list[float], r1: float, r2: float,
+                                                                 along: float, offset: float,
+                                                                 box_turn: tuple[float, float, float]) -> None:
+    # an elliptic cone or frustum (a sheared, unevenly scaled truncus) less a turned box, one face
+    # through or near a point of its axis: the volume kept is |det M| times the canonical
+    # frustum's on the face's preimage (the closed form above), at tol 1e-8 of the solid's volume
+    M = np.diag([0.3, 0.25, 0.35]) + np.array(matrix).reshape(3, 3)
+    c = np.array([0.05, -0.02, 0.03])
+    Q = _turn(box_turn)
+    n = Q @ np.array([0.0, 0.0, 1.0])
+    on_face = c + M @ np.array([0.0, 0.0, along]) + offset * n
+    solid = EllipticTruncus(tuple(c), M, r1, r2)
+    tree = Difference(solid, Box(center=tuple(on_face - 2.0 * n), size=(4.0, 4.0, 4.0), orientation=Q))
+    N, D = M.T @ n, float(n @ (on_face - c))
+    kept = abs(float(np.linalg.det(M))) * half_space_cut_volume(
+        "frustum", (0.0, 0.0, -0.5), (0.0, 0.0, 1.0), r1, 1.0, tuple(N * D / (N @ N)), tuple(N / np.linalg.norm(N)),
+        r0=r2)
+    got = volume(tree, tol=1e-8, method="sections")
+    assert abs(got - kept) <= 1e-8 * max(kept, float(solid.volume)), (got, kept, (got - kept) / kept)

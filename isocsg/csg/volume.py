@@ -34,7 +34,9 @@
    ``method="sections"`` such parts are integrated as below instead (the tests compare the two).
 4. **Integration over sections.** The axis is split at every leaf's
    breakpoints (its extent, the heights of its vertices, end centres and end circles' lowest and highest points), so
-   that no leaf starts, ends or turns a corner inside a piece. Each piece
+   that no leaf starts, ends or turns a corner inside a piece, and where a flat face meets a
+   quadric leaf (:mod:`isocsg.csg.face_events`: the sweep plane tangent to their conic, a rim
+   crossing the face, an edge piercing the quadric). Each piece
    keeps only the leaves present in it (:meth:`Program.prune`):
 
    - where every present leaf is a prism along the axis (boxes and convex
@@ -68,6 +70,7 @@ from .._validation import integer, nonzero_vector3, scalar
 from ..errors import InvalidParameterError
 from ..kinds.base import LeafForm, Solid
 from ..kinds.planar import circle_ring
+from .face_events import face_events
 from .mesh import program_manifold
 from .program import OP_DIFFERENCE, OP_LEAF, OP_UNION, Program
 from .section import (
@@ -591,7 +594,7 @@ def _integrate(
     tab = leaf_table(prog)
     lo, hi = tab.extents(w)
     z = _breakpoints(prog, w)
-    ev = _crossing_events(prog, w, lo, hi)
+    ev = np.concatenate([_crossing_events(prog, w, lo, hi), face_events(prog, w)])
     if len(ev):
         z = np.unique(np.concatenate([z, ev[(ev > z[0]) & (ev < z[-1])]]))
         scale = max(float(z[-1] - z[0]), float(np.max(np.abs(z))), 1e-300)
@@ -608,7 +611,10 @@ def _integrate(
     ends = np.argsort(k1, kind="stable")
     prism = _prismatic(prog, w)
     area = _area_fn(prog, w, res)
-    span = float(np.max(np.concatenate([hi - lo, [z[-1] - z[0]]])))
+    # an absolute floor for results near 0, from the result's box (a difference's first operand's,
+    # an intersection's overlap), not the leaves': a small part cut by a big box keeps its tol
+    boxes = leaf_boxes(prog)
+    span = float(np.max(np.diff(prog.bounds(boxes[:, 0], boxes[:, 1]), axis=0)))
     floor = 1e-3 * tol * span**3
 
     present = np.zeros(len(prog.leaves), dtype=bool)

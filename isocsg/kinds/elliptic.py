@@ -175,6 +175,17 @@ class EllipticTruncus(Primitive):
         w = math.hypot(float(M[:, 0] @ v), float(M[:, 1] @ v))
         return min(c + a - self.r1 * w, c - a - self.r2 * w), max(c + a + self.r1 * w, c - a + self.r2 * w)
 
+    def breakpoints(self, n: ArrayLike) -> NDArray[np.float64]:
+        """Its extent, its end ellipses' centres and their lowest and highest points along ``n``
+        (where an end starts or stops cutting the sections, or the apex of a cone is)."""
+        v = np.asarray(n, dtype=np.float64)
+        M = self.linear
+        c = float(self.center_array @ v)
+        a = float(M[:, 2] @ v) / 2
+        w = math.hypot(float(M[:, 0] @ v), float(M[:, 1] @ v))
+        return np.array([*self.extent(v), c + a, c - a, c + a - self.r1 * w, c + a + self.r1 * w,
+                         c - a - self.r2 * w, c - a + self.r2 * w])
+
     @property
     def bounds(self) -> NDArray[np.float64]:
         """Axis-aligned bounds, shape (2, 3) (exact)."""

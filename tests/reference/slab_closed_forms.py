@@ -131,9 +131,10 @@ def napkin_ring(r: float, a: float) -> tuple[float, float]:
 
 def half_space_cut_volume(kind: str, apex: tuple[float, float, float], ex: tuple[float, float, float],
                           r: float, h: float, point: tuple[float, float, float],
-                          n: tuple[float, float, float]) -> float:
+                          n: tuple[float, float, float], r0: float | None = None) -> float:
     """Volume of the part of a cone (apex ``apex``, unit axis ``ex``, base radius ``r`` at height
-    ``h``) or cylinder (from ``apex`` along ``ex``, height ``h``) where ``(p - point) . n >= 0``.
+    ``h``), cylinder (from ``apex`` along ``ex``, height ``h``) or frustum (``kind="frustum"``:
+    radius ``r0`` at ``apex``, ``r`` at height ``h``) where ``(p - point) . n >= 0``.
 
     Each section across the axis is a disc cut by a line: the circular segment's exact area
     (``rho^2 acos(t / rho) - t sqrt(rho^2 - t^2)``), integrated along the axis by scipy's adaptive
@@ -147,8 +148,13 @@ def half_space_cut_volume(kind: str, apex: tuple[float, float, float], ex: tuple
     m = math.sqrt(max(sum(x * x for x in nn) - along * along, 0.0))  # |n across the axis|
     d0 = sum((x - y) * z for x, y, z in zip(a, q, nn))  # (apex - point) . n
 
+    start = {"cone": 0.0, "cylinder": r}.get(kind, r0)
+    if start is None:
+        raise ValueError(f"kind {kind!r} needs r0")
+    slope = (r - start) / h
+
     def radius(s: float) -> float:
-        return r * s / h if kind == "cone" else r
+        return start + slope * s
 
     def section(s: float) -> float:
         rho, level = radius(s), d0 + along * s  # the section's centre's height above the plane
@@ -159,11 +165,10 @@ def half_space_cut_volume(kind: str, apex: tuple[float, float, float], ex: tuple
         t = min(max(-level / m, -rho), rho)
         return rho * rho * math.acos(t / rho) - t * math.sqrt(max(rho * rho - t * t, 0.0))
 
-    slope = r / h if kind == "cone" else 0.0
     kinks = []
     for sign in (1.0, -1.0):  # level / m = +-radius(s): linear in s
         k = along / m - sign * slope if m >= 1e-15 else along
-        c = d0 / m - (sign * r if kind != "cone" else 0.0) if m >= 1e-15 else d0
+        c = d0 / m - sign * start if m >= 1e-15 else d0
         if k != 0.0 and 0.0 < -c / k < h:
             kinks.append(-c / k)
     value, _ = quad(section, 0.0, h, points=sorted(kinks) or None, epsabs=1e-16, epsrel=1e-12, limit=500)
