@@ -29,8 +29,6 @@ import numpy as np
 from numpy.typing import NDArray
 
 from ..kinds.base import LeafForm, Primitive
-from ..kinds.ellipsoid import Ellipsoid
-from ..kinds.elliptic import EllipticTruncus
 from .leaf_table import leaf_table
 from .program import Program, combine_masks
 from .volume_parts import leaf_boxes
@@ -52,12 +50,8 @@ def _canonical_quadric(prog: Program, i: int) -> tuple[NDArray[np.float64], NDAr
         e1 /= np.linalg.norm(e1)
         M = np.column_stack([e1, np.cross(a, e1), tab.height[i] * a])
         return tab.center[i], M, float(tab.r1[i]), float(tab.r2[i])
-    leaf = prog.leaves[i]
-    if isinstance(leaf, EllipticTruncus):
-        return leaf.center_array, leaf.linear, float(leaf.r1), float(leaf.r2)
-    if isinstance(leaf, Ellipsoid):
-        return leaf.center_array, leaf.matrix, np.nan, np.nan
-    return None
+    form = getattr(prog.leaves[i], "canonical_quadric", None)  # the affine images of the round kinds
+    return None if form is None else form()
 
 
 def _quadric(r1: float, r2: float) -> tuple[NDArray[np.float64], NDArray[np.float64], float]:
