@@ -29,6 +29,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from ..kinds.base import LeafForm, Primitive
+from ..kinds.forms import AffineBall, AffineFrustum
 from .leaf_table import leaf_table
 from .program import Program, combine_masks
 from .volume_parts import leaf_boxes
@@ -50,8 +51,12 @@ def _canonical_quadric(prog: Program, i: int) -> tuple[NDArray[np.float64], NDAr
         e1 /= np.linalg.norm(e1)
         M = np.column_stack([e1, np.cross(a, e1), tab.height[i] * a])
         return tab.center[i], M, float(tab.r1[i]), float(tab.r2[i])
-    form = getattr(prog.leaves[i], "canonical_quadric", None)  # the affine images of the round kinds
-    return None if form is None else form()
+    form = prog.leaves[i].exact_form()  # the kind's own affine image of a ball or a truncus
+    if isinstance(form, AffineFrustum):
+        return form.center, form.matrix, float(form.r1), float(form.r2)
+    if isinstance(form, AffineBall):
+        return form.center, form.linear, np.nan, np.nan
+    return None
 
 
 def _quadric(r1: float, r2: float) -> tuple[NDArray[np.float64], NDArray[np.float64], float]:

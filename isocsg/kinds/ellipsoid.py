@@ -159,11 +159,6 @@ class Ellipsoid(Primitive):
         """The linear map ``R S`` from the unit ball (own frame) to the ellipsoid (about its centre)."""
         return self.rotation * self.radii_array
 
-    def canonical_quadric(self) -> tuple[NDArray[np.float64], NDArray[np.float64], float, float]:
-        """``(c, M, nan, nan)``: the solid as the image ``c + M y`` of the unit ball (plane-section
-        breaks, :mod:`isocsg.csg.face_events`)."""
-        return self.center_array, self.matrix, math.nan, math.nan
-
     def to_unit(self, points: ArrayLike) -> NDArray[np.float64]:
         """Points in the unit-ball frame: ``S^-1 R^T (p - center)``."""
         p = np.asarray(points, dtype=np.float64).reshape(-1, 3) - self.center_array

@@ -128,12 +128,6 @@ class EllipticTruncus(Primitive):
         """``matrix`` as a (3, 3) array."""
         return np.asarray(self.matrix, dtype=np.float64)
 
-    def canonical_quadric(self) -> tuple[NDArray[np.float64], NDArray[np.float64], float, float]:
-        """``(c, M, r1, r2)``: the solid as the image ``c + M y`` of the truncus of axis z from
-        ``y_z = -1/2`` (radius ``r2``) to ``+1/2`` (radius ``r1``) (plane-section breaks,
-        :mod:`isocsg.csg.face_events`)."""
-        return self.center_array, self.linear, float(self.r1), float(self.r2)
-
     @property
     def canonical(self) -> Truncus:
         """The canonical truncus (axis z, height 1) this is the image of."""
