@@ -16,6 +16,7 @@ from __future__ import annotations
 
 import atexit
 import os
+import sys
 import threading
 import time
 from collections.abc import Callable, Iterator
@@ -136,6 +137,7 @@ def cancel_background(timeout: float = EXIT_WAIT) -> bool:
     """Ask every background task to stop and wait up to ``timeout`` seconds in all for them;
     returns whether none is left. Later tasks stop at their first check."""
     _cancel.set()
+    _close_helper()  # the Booleans of background builds: stopped at once
     with _lock:
         tasks = list(_tasks)
     deadline = None if timeout is None else time.monotonic() + timeout
@@ -160,7 +162,15 @@ def quiesce(timeout: float = 60.0) -> bool:
         t.join(max(0.0, deadline - time.monotonic()))
     for p in pools:
         p.shutdown(wait=True)
+    _close_helper()  # a child makes its own helper
     return not any(t.is_alive() for t in tasks)
+
+
+def _close_helper() -> None:
+    # Only if this process has imported the helper module (whole: another thread may be importing it).
+    close = getattr(sys.modules.get("isocsg._helper"), "close", None)
+    if close is not None:
+        close()
 
 
 def _after_fork_in_child() -> None:

@@ -15,11 +15,14 @@ that cannot be read) and can be set for the whole process with
 
 from __future__ import annotations
 
+import ctypes
+import functools
 import os
+from collections.abc import Callable
 
 from .errors import InvalidParameterError, ResourceLimitError
 
-__all__ = ["memory_budget", "set_memory_budget", "check_memory"]
+__all__ = ["memory_budget", "set_memory_budget", "check_memory", "release_freed_memory"]
 
 _BUDGET: int | None = None
 
@@ -112,3 +115,26 @@ JIT_PYTHON_SECONDS = 1.0
 #: The same bound for kernels with a vectorised NumPy twin (work: the elements the twin touches,
 #: tens of nanoseconds each).
 JIT_TWIN_WORK = 1 << 20
+
+
+@functools.cache
+def _malloc_trim() -> Callable[[int], int] | None:
+    try:
+        return ctypes.CDLL(None).malloc_trim  # glibc
+    except (AttributeError, OSError, TypeError):  # another C library, or no CDLL(None) (Windows)
+        return None
+
+
+def release_freed_memory() -> None:
+    """Give the heap memory freed so far back to the system, where the C library allows it (glibc).
+
+    manifold3d allocates on its worker threads, whose malloc arenas keep what
+    a Boolean frees; a build that runs its Booleans one result at a time
+    (slabs) would otherwise hold every slab's working memory beside the next
+    one's: the 1000-hole plate's build in ten slabs grew from 0.76 to 1.10 GB
+    resident with 0.74 GB in use, and the renderer's arrays made from the
+    surface came on top of that.
+    """
+    trim = _malloc_trim()
+    if trim is not None:
+        trim(0)

@@ -10,7 +10,9 @@ kept as :class:`~isocsg.rendering.meshes.SurfaceRuns`.
 Background builds run on daemon threads (:func:`isocsg._workers.background`):
 a process that ends meanwhile does not wait for them, and they stop at their
 next check (:func:`isocsg._workers.checkpoint`) once it is ending; they wait
-there while a view is rendered, so they never slow a view down.
+there while a view is rendered, so they never slow a view down. Their Booleans
+run in the helper process (:mod:`isocsg._helper`), which the process's exit
+kills at once: no thread is left inside manifold3d when the interpreter ends.
 """
 
 from __future__ import annotations
@@ -28,7 +30,7 @@ from ..csg.program import Program
 from ..errors import InvalidGeometryError, ResourceLimitError
 from ..kinds import Primitive
 from ..laminae.model import BandMesh
-from ..limits import memory_budget
+from ..limits import memory_budget, release_freed_memory
 from . import policy
 from .detail import LeafDetail, TreeDetail
 from .meshes import PreparedMesh, SurfaceRuns, mesh_bytes, prepare_mesh
@@ -58,6 +60,18 @@ def surface_from_bands(program: Program, bands: Sequence[BandMesh], **options: A
     from ..csg.surface import surface_from_bands as build
 
     return build(program, bands, **options)
+
+
+def surface_in_helper(program: Program, bands: Sequence[BandMesh], **options: Any) -> CSGSurface:
+    """:func:`surface_from_bands` for a background build: in the helper process
+    (:mod:`isocsg._helper`), which the process's exit stops at once, unlike a thread inside
+    manifold3d; in this thread when the call cannot be sent there (a kind defined in a script)."""
+    from .. import _helper
+
+    try:
+        return _helper.run(surface_from_bands, program, bands, cancelled=raise_if_cancelled, **options)  # type: ignore[no-any-return]
+    except _helper.HelperUnavailable:
+        return surface_from_bands(program, bands, **options)
 
 
 class SurfaceBuilds:
@@ -167,17 +181,21 @@ class SurfaceBuilds:
                 self.building.pop(key, None)
             raise
         with _SURFACE_LOCK:
-            return self._build(key, program, bands)
+            return self._build(key, program, bands, in_helper=True)
 
     def _build(
         self, key: Hashable, program: Program, bands: tuple[BandMesh, ...], view_dependent: bool = False,
+        in_helper: bool = False,
     ) -> Parts | None:
-        """Build (and keep, for view-independent bands) one clipped surface."""
+        """Build (and keep, for view-independent bands) one clipped surface; a background
+        build's Booleans run ``in_helper``."""
+        from .._helper import HelperFailed
+
         try:
             raise_if_cancelled()  # (a build on the view's own path must not wait for views)
             try:
-                surface = surface_from_bands(program, bands)
-            except (InvalidGeometryError, ResourceLimitError):
+                surface = (surface_in_helper if in_helper else surface_from_bands)(program, bands)
+            except (InvalidGeometryError, ResourceLimitError, HelperFailed):
                 if self.csg != "auto":
                     raise
                 # Bands that do not close (extreme frames) or a surface over the memory budget:
@@ -218,15 +236,15 @@ class SurfaceBuilds:
     def _build_large_locked(
         self, key: Hashable, program: Program, lights: Sequence[Any], material: Any, detail: TreeDetail, eye: Any,
     ) -> None:
-        from ..csg.surface import _release_freed_memory
+        from .._helper import HelperFailed
 
         try:
             bands, held = self._large_bands(program, lights, material, detail, eye)
             checkpoint()
             share = policy.LARGE_SURFACE_SHARE * memory_budget()
-            surface = surface_from_bands(program, bands, trim=True, max_bytes=int(share - held))
+            surface = surface_in_helper(program, bands, trim=True, max_bytes=int(share - held))
             del bands  # no cache holds them: gone before the parts below are made
-        except (InvalidGeometryError, ResourceLimitError):
+        except (InvalidGeometryError, ResourceLimitError, HelperFailed):
             with self.lock:  # too large, or bands that do not close: per pixel from now on
                 self.cache.put(key, (detail, None), 64)
             return
@@ -235,8 +253,8 @@ class SurfaceBuilds:
         del surface
         runs = SurfaceRuns.of(parts)
         del parts
-        # What the parts and the Booleans freed goes back to the system before any view runs.
-        _release_freed_memory()
+        # What the parts freed goes back to the system before any view runs.
+        release_freed_memory()
         runs.proj(policy.STRIPES - 1)  # pages touched here, not by the first view that fills it
         for scratch in runs.projs:
             scratch.fill(0.0)

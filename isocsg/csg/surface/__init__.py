@@ -49,7 +49,6 @@ keeps its part outside them.
 from __future__ import annotations
 
 # The renderer gives freed heap memory back after a build.
-from .booleans import _release_freed_memory as _release_freed_memory
 from .build import csg_surface, surface_from_bands
 from .closing import close_mesh
 from .coincident import COINCIDENT_DISTANCE

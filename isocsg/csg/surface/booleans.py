@@ -11,9 +11,7 @@ a build asked to stop (the process is ending) leaves manifold3d after the batch 
 
 from __future__ import annotations
 
-import ctypes
-import functools
-from collections.abc import Callable, Sequence
+from collections.abc import Sequence
 from typing import Any
 
 import numpy as np
@@ -22,6 +20,7 @@ from numpy.typing import NDArray
 from ... import _workers
 from ...errors import InvalidGeometryError
 from ...laminae.model import BandMesh
+from ...limits import release_freed_memory as _release_freed_memory
 from ..mesh import _manifold3d
 from .coincident import cancel_coincident, shared_planes
 from .planning import Piece, Plan
@@ -197,26 +196,3 @@ def _read_back(
     rev = np.einsum("ij,ij->i", triangle_normals(verts, tris), normals[g]) < 0
     return (verts * half + centre, tris.astype(np.int32), leaf, face.astype(np.int32), rev,
             np.where(rev, vin[g], vout[g]))
-
-
-@functools.cache
-def _malloc_trim() -> Callable[[int], int] | None:
-    try:
-        return ctypes.CDLL(None).malloc_trim  # glibc
-    except (AttributeError, OSError, TypeError):  # another C library, or no CDLL(None) (Windows)
-        return None
-
-
-def _release_freed_memory() -> None:
-    """Give the heap memory freed so far back to the system, where the C library allows it (glibc).
-
-    manifold3d allocates on its worker threads, whose malloc arenas keep what
-    a Boolean frees; a build that runs its Booleans one result at a time
-    (slabs) would otherwise hold every slab's working memory beside the next
-    one's: the 1000-hole plate's build in ten slabs grew from 0.76 to 1.10 GB
-    resident with 0.74 GB in use, and the renderer's arrays made from the
-    surface came on top of that.
-    """
-    trim = _malloc_trim()
-    if trim is not None:
-        trim(0)

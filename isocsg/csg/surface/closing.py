@@ -174,6 +174,18 @@ def _equal_rows(bits: NDArray[np.int64]) -> tuple[NDArray[np.int64], NDArray[np.
     return first[:count], kind
 
 
+@_equal_rows.twin
+def _equal_rows_numpy(bits: NDArray[np.int64]) -> tuple[NDArray[np.int64], NDArray[np.int64]]:
+    """:func:`_equal_rows` by sorting (its hash multiplies past int64, which only compiled code wraps)."""
+    if not len(bits):
+        return np.empty(0, np.int64), np.empty(0, np.int64)
+    _, first, inverse = np.unique(bits, axis=0, return_index=True, return_inverse=True)
+    order = np.argsort(first, kind="stable")  # kinds numbered in the order they first appear
+    rank = np.empty(len(order), np.int64)
+    rank[order] = np.arange(len(order))
+    return first[order].astype(np.int64), rank[inverse.reshape(-1)]
+
+
 def _open_half_edges(t: NDArray[np.int64]) -> NDArray[np.int64]:
     """Half-edges (corner j to j + 1 of each triangle, flattened) whose undirected edge is not used exactly twice."""
     tri_edge = mesh_edges(t)[1].ravel()
