@@ -63,7 +63,8 @@ def run_child(argv: Sequence[str], timeout: float, *, env: dict[str, str] | None
 
     Returns the objects read, a status (``"ok"``, ``"timeout"``, ``"over N MB"`` or
     ``"exit N"`` with the last line of its stderr) and the peak resident set of the
-    process in MB, polled with psutil while it runs (each object may also report the
+    process and its child processes together (isocsg's helper process of background
+    Booleans) in MB, polled with psutil while it runs (each object may also report the
     child's own peak).
     """
     import json
@@ -79,8 +80,14 @@ def run_child(argv: Sequence[str], timeout: float, *, env: dict[str, str] | None
         t0 = time.perf_counter()
         status = "ok"
         while proc.poll() is None:
-            try:
-                peak = max(peak, ps.memory_info().rss / 2**20)
+            try:  # the process and its own (isocsg's helper process of background Booleans), at once
+                rss = ps.memory_info().rss
+                for child in ps.children(recursive=True):
+                    try:
+                        rss += child.memory_info().rss
+                    except psutil.Error:
+                        pass
+                peak = max(peak, rss / 2**20)
             except psutil.Error:
                 pass
             if time.perf_counter() - t0 > timeout:

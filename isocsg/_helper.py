@@ -52,8 +52,9 @@ _proc: list[subprocess.Popen[bytes] | None] = [None]
 
 
 class HelperUnavailable(Exception):
-    """The call cannot be sent to the helper (its function or arguments do not pickle, or the
-    helper cannot import them); the caller runs it in its own thread instead."""
+    """The call cannot be sent to the helper (its function or arguments do not pickle, the
+    helper cannot import them, or no helper can be started); the caller runs it in its own
+    thread instead."""
 
 
 class HelperFailed(RuntimeError):
@@ -81,7 +82,8 @@ def run(fn: Callable[..., Any], *args: Any, cancelled: Callable[[], None], **kwa
     Raises
     ------
     HelperUnavailable
-        ``fn`` or the arguments cannot be sent, or the helper cannot read them.
+        ``fn`` or the arguments cannot be sent, the helper cannot read them, or no helper
+        process can be started.
     HelperFailed
         The helper ended without an answer.
     """
@@ -97,6 +99,7 @@ def run(fn: Callable[..., Any], *args: Any, cancelled: Callable[[], None], **kwa
             proc = _proc[0] = _start()
         try:
             _send(proc, payload)
+            del payload  # the helper has its own copy now
             reply = _receive(proc, cancelled)
         except BaseException:
             _kill_locked()  # cancelled, or the pipe broke: the helper's state is unknown
@@ -134,12 +137,15 @@ def _start() -> subprocess.Popen[bytes]:
     root = str(Path(__file__).resolve().parent.parent)
     env = dict(os.environ)
     env["PYTHONPATH"] = os.pathsep.join(p for p in (root, env.get("PYTHONPATH", "")) if p)
-    return subprocess.Popen(
-        [sys.executable, "-c", "from isocsg._helper import serve; serve()"],
-        stdin=subprocess.PIPE, stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, env=env,
-        # its own session: a Ctrl-C at the terminal goes to the parent, which then kills it
-        start_new_session=True,
-    )
+    try:
+        return subprocess.Popen(
+            [sys.executable, "-c", "from isocsg._helper import serve; serve()"],
+            stdin=subprocess.PIPE, stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, env=env,
+            # its own session: a Ctrl-C at the terminal goes to the parent, which then kills it
+            start_new_session=True,
+        )
+    except OSError as exc:  # no interpreter to start (an embedded Python), or no process left
+        raise HelperUnavailable(f"no helper process: {exc}") from exc
 
 
 def _send(proc: subprocess.Popen[bytes], payload: bytes) -> None:
@@ -152,22 +158,23 @@ def _send(proc: subprocess.Popen[bytes], payload: bytes) -> None:
         raise HelperFailed("the helper process ended before it read the call") from exc
 
 
-def _receive(proc: subprocess.Popen[bytes], cancelled: Callable[[], None]) -> bytes:
+def _receive(proc: subprocess.Popen[bytes], cancelled: Callable[[], None]) -> bytearray:
     assert proc.stdout is not None
     fd = proc.stdout.fileno()
 
-    def exactly(n: int) -> bytes:
-        out = bytearray()
-        while len(out) < n:
+    def exactly(n: int) -> bytearray:
+        out, got = bytearray(n), 0  # one buffer of the answer's size, filled in place
+        while got < n:
             ready, _, _ = select.select([fd], [], [], POLL)
             if not ready:
                 cancelled()
                 continue
-            chunk = os.read(fd, min(_CHUNK, n - len(out)))
+            chunk = os.read(fd, min(_CHUNK, n - got))
             if not chunk:
                 raise HelperFailed(f"the helper process ended without an answer (exit status {proc.wait()})")
-            out += chunk
-        return bytes(out)
+            out[got:got + len(chunk)] = chunk
+            got += len(chunk)
+        return out
 
     (size,) = _HEADER.unpack(exactly(_HEADER.size))
     return exactly(size)
