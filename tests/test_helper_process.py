@@ -26,8 +26,9 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from hypothesis import HealthCheck, given, settings
 
-from isocsg import Cylinder, PointLight, Sphere, _helper, _jit
+from isocsg import Camera, Cylinder, PointLight, Scene, Sphere, _helper, _jit
 from isocsg._workers import Cancelled
 from isocsg.csg.program import compile_program
 from isocsg.csg.surface import surface_from_bands
@@ -38,6 +39,10 @@ from isocsg.limits import set_memory_budget
 from isocsg.rendering.surfaces import surface_in_helper
 
 ROOT = Path(__file__).resolve().parents[1]
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from test_csg_properties import trees  # noqa: E402
+
+EXAMPLES = int(os.environ.get("ISOCSG_SEARCH_EXAMPLES", "8"))
 pytestmark = pytest.mark.skipif(sys.platform == "win32", reason="the helper's pipes are POSIX")
 
 
@@ -159,6 +164,32 @@ def test_a_surface_built_in_the_helper_is_the_one_built_here():
     assert here.n_triangles > 100
     for name in ("vertices", "triangles", "value", "leaf", "source", "reversed"):
         assert np.array_equal(getattr(here, name), getattr(there, name)), name
+
+
+def _views_after_a_background_build(scene: Scene) -> object:
+    from isocsg.rendering import Renderer
+
+    cam = scene.camera
+    r = Renderer()
+    r.render(scene, contours=16)
+    r.render(scene, camera=cam.with_view((-3.0, -4.0, 2.0)), contours=16)  # starts the build
+    r.wait_surfaces()
+    return r.render(scene, camera=cam.with_view((1.0, 4.0, 3.0)), contours=16).image
+
+
+@settings(max_examples=EXAMPLES, deadline=None, suppress_health_check=list(HealthCheck))
+@given(trees)
+def test_a_view_of_a_surface_built_in_the_helper_is_the_view_of_one_built_in_the_thread(tree):
+    scene = Scene(Camera((3, -4, 2.5), (0, 0, 0), width=64, height=64), [PointLight((3, -5, 4))], [tree])
+    in_helper = _views_after_a_background_build(scene)
+
+    def unavailable(*args: object, **kwargs: object) -> None:
+        raise _helper.HelperUnavailable("built in the thread, as before the helper")
+
+    with pytest.MonkeyPatch.context() as m:
+        m.setattr(_helper, "run", unavailable)
+        in_thread = _views_after_a_background_build(scene)
+    assert np.array_equal(in_helper, in_thread, equal_nan=True)
 
 
 def test_vertex_welding_without_numba_matches_the_compiled_kernel():
