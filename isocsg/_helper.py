@@ -40,6 +40,8 @@ from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
+from .limits import memory_budget, release_freed_memory, set_memory_budget
+
 __all__ = ["HelperUnavailable", "HelperFailed", "POLL", "run", "close", "helper_pid"]
 
 #: Seconds between two checks, while waiting for the helper, of whether the process is ending.
@@ -68,7 +70,10 @@ def helper_pid() -> int | None:
     return proc.pid if proc is not None and proc.poll() is None else None
 
 
-def run(fn: Callable[..., Any], *args: Any, cancelled: Callable[[], None], **kwargs: Any) -> Any:
+def run(
+    fn: Callable[..., Any], *args: Any, cancelled: Callable[[], None], received: Callable[[], None] | None = None,
+    **kwargs: Any,
+) -> Any:
     """``fn(*args, **kwargs)`` in the helper process; its result, or the exception it raised.
 
     Parameters
@@ -78,19 +83,20 @@ def run(fn: Callable[..., Any], *args: Any, cancelled: Callable[[], None], **kwa
     cancelled : callable
         Called every :data:`POLL` seconds while waiting; it raises to stop the call (the
         helper is then killed, and the exception passes on).
+    received : callable, optional
+        Called once the helper has read the call, before it runs it: the caller may drop
+        its own copy of large arguments then (the helper has its own).
 
     Raises
     ------
     HelperUnavailable
         ``fn`` or the arguments cannot be sent, the helper cannot read them, or no helper
-        process can be started.
+        process can be started (``received`` has not been called).
     HelperFailed
-        The helper ended without an answer.
+        The helper ended without an answer, or its answer could not be read.
     """
-    from .limits import memory_budget
-
     try:
-        payload = pickle.dumps((fn, args, kwargs, memory_budget()), protocol=pickle.HIGHEST_PROTOCOL)
+        call = _Message((fn, args, kwargs, memory_budget()))
     except (pickle.PicklingError, AttributeError, TypeError) as exc:
         raise HelperUnavailable(str(exc)) from exc
     with _lock:
@@ -98,20 +104,21 @@ def run(fn: Callable[..., Any], *args: Any, cancelled: Callable[[], None], **kwa
         if proc is None or proc.poll() is not None:
             proc = _proc[0] = _start()
         try:
-            _send(proc, payload)
-            del payload  # the helper has its own copy now
-            reply = _receive(proc, cancelled)
+            _send(proc, call)
+            del call
+            status, detail = _receive(proc, cancelled)
+            if status == "unreadable":
+                raise HelperUnavailable(detail)
+            if received is not None:
+                received()
+            status, value, caught = _receive(proc, cancelled)
+        except HelperUnavailable:
+            raise  # the helper waits for the next call
         except BaseException:
             _kill_locked()  # cancelled, or the pipe broke: the helper's state is unknown
             raise
-    try:
-        status, value, caught = pickle.loads(reply)
-    except Exception as exc:  # noqa: BLE001  # e.g. an exception class whose arguments do not round-trip
-        raise HelperFailed(f"the helper's answer could not be read: {type(exc).__name__}: {exc}") from exc
     for message, category, filename, lineno in caught:
         warnings.warn_explicit(message, category, filename, lineno)
-    if status == "unreadable":
-        raise HelperUnavailable(value)
     if status == "error":
         raise value
     return value
@@ -148,22 +155,39 @@ def _start() -> subprocess.Popen[bytes]:
         raise HelperUnavailable(f"no helper process: {exc}") from exc
 
 
-def _send(proc: subprocess.Popen[bytes], payload: bytes) -> None:
-    assert proc.stdin is not None
+class _Message:
+    """A pickled object with its large buffers (NumPy arrays) out of band: sent from their own
+    memory and received into buffers of their own, never copied into one stream of bytes."""
+
+    def __init__(self, obj: Any) -> None:
+        buffers: list[pickle.PickleBuffer] = []
+        self.meta = pickle.dumps(obj, protocol=5, buffer_callback=buffers.append)
+        self.buffers = [b.raw() for b in buffers]
+
+    def write(self, out: Any) -> None:
+        sizes = [len(self.meta)] + [b.nbytes for b in self.buffers]
+        out.write(_HEADER.pack(len(sizes)) + struct.pack(f"<{len(sizes)}Q", *sizes))
+        out.write(self.meta)
+        for b in self.buffers:
+            out.write(b)
+        out.flush()
+
+
+def _send(proc: subprocess.Popen[bytes], call: _Message) -> None:
     try:
-        proc.stdin.write(_HEADER.pack(len(payload)))
-        proc.stdin.write(payload)
-        proc.stdin.flush()
+        call.write(proc.stdin)
     except (BrokenPipeError, OSError) as exc:
         raise HelperFailed("the helper process ended before it read the call") from exc
 
 
-def _receive(proc: subprocess.Popen[bytes], cancelled: Callable[[], None]) -> bytearray:
+def _receive(proc: subprocess.Popen[bytes], cancelled: Callable[[], None]) -> Any:
+    """The helper's next message, waited for in Python and checked with ``cancelled`` every
+    :data:`POLL` seconds."""
     assert proc.stdout is not None
     fd = proc.stdout.fileno()
 
     def exactly(n: int) -> bytearray:
-        out, got = bytearray(n), 0  # one buffer of the answer's size, filled in place
+        out, got = bytearray(n), 0  # one buffer of the part's size, filled in place
         while got < n:
             ready, _, _ = select.select([fd], [], [], POLL)
             if not ready:
@@ -176,8 +200,19 @@ def _receive(proc: subprocess.Popen[bytes], cancelled: Callable[[], None]) -> by
             got += len(chunk)
         return out
 
-    (size,) = _HEADER.unpack(exactly(_HEADER.size))
-    return exactly(size)
+    try:
+        return _read_message(exactly)
+    except (pickle.UnpicklingError, TypeError, AttributeError, ImportError, ValueError) as exc:
+        # e.g. an exception class whose arguments do not round-trip
+        raise HelperFailed(f"the helper's answer could not be read: {type(exc).__name__}: {exc}") from exc
+
+
+def _read_message(exactly: Callable[[int], bytearray]) -> Any:
+    (count,) = _HEADER.unpack(exactly(_HEADER.size))
+    sizes = struct.unpack(f"<{count}Q", exactly(8 * count))
+    meta = exactly(sizes[0])
+    buffers = [exactly(n) for n in sizes[1:]]
+    return pickle.loads(meta, buffers=buffers)
 
 
 def _forget_after_fork() -> None:
@@ -194,47 +229,57 @@ os.register_at_fork(after_in_child=_forget_after_fork)
 
 
 def serve() -> None:  # pragma: no cover - runs in the helper process (tests/test_helper_process.py)
-    """The helper's loop: read a call from standard input, answer on standard output, until
-    the input closes or the parent ends."""
+    """The helper's loop: read a call from standard input, say it was read, run it, answer on
+    standard output; until the input closes or the parent ends."""
     import gc
-    import traceback
-
-    from .limits import release_freed_memory, set_memory_budget
 
     out = os.fdopen(os.dup(1), "wb")
     os.dup2(2, 1)  # anything a call prints goes where standard error goes, not into the answers
     inp = os.fdopen(0, "rb")
     threading.Thread(target=_watch_parent, args=(os.getppid(),), daemon=True).start()
+
+    def exactly(n: int) -> bytearray:
+        buf = bytearray(n)
+        view, got = memoryview(buf), 0
+        while got < n:
+            k = inp.readinto(view[got:])
+            if not k:
+                raise EOFError
+            got += k
+        return buf
+
     while True:
-        head = inp.read(_HEADER.size)
-        if len(head) < _HEADER.size:
-            return
-        body = inp.read(_HEADER.unpack(head)[0])
-        with warnings.catch_warnings(record=True) as caught:
-            try:
-                fn, args, kwargs, budget = pickle.loads(body)
-            except Exception as exc:  # noqa: BLE001  # e.g. a kind defined in the parent's script
-                reply: tuple[Any, ...] = ("unreadable", f"{type(exc).__name__}: {exc}")
-            else:
-                set_memory_budget(budget)
-                try:
-                    reply = ("ok", fn(*args, **kwargs))
-                except Exception as exc:  # noqa: BLE001  # handed to the caller, who raises it
-                    exc.add_note("in isocsg's helper process:\n" + "".join(traceback.format_tb(exc.__traceback__)))
-                    reply = ("error", exc)
-            del body
-        shown = [(str(w.message), w.category, w.filename, w.lineno) for w in caught]
         try:
-            data = pickle.dumps((*reply, shown), protocol=pickle.HIGHEST_PROTOCOL)
-        except Exception as exc:  # noqa: BLE001  # an exception that does not pickle: its text
-            data = pickle.dumps(("error", RuntimeError(f"{reply[1]!r} ({exc})"), shown))
-        del reply
-        out.write(_HEADER.pack(len(data)))
-        out.write(data)
-        out.flush()
-        del data
+            call = _read_message(exactly)
+        except EOFError:
+            return  # the parent closed the pipe (or ended)
+        except Exception as exc:  # noqa: BLE001  # e.g. a kind defined in the parent's script
+            _Message(("unreadable", f"{type(exc).__name__}: {exc}")).write(out)
+            continue
+        _Message(("received", None)).write(out)
+        _answer(out, *call)
+        del call
         gc.collect()
         release_freed_memory()  # what the call freed goes back to the system while the helper waits
+
+
+def _answer(out: Any, fn: Callable[..., Any], args: Any, kwargs: Any, budget: int) -> None:  # pragma: no cover
+    import traceback
+
+    set_memory_budget(budget)
+    with warnings.catch_warnings(record=True) as caught:
+        try:
+            reply: tuple[Any, ...] = ("ok", fn(*args, **kwargs))
+        except Exception as exc:  # noqa: BLE001  # handed to the caller, who raises it
+            exc.add_note("in isocsg's helper process:\n" + "".join(traceback.format_tb(exc.__traceback__)))
+            reply = ("error", exc)
+    shown = [(str(w.message), w.category, w.filename, w.lineno) for w in caught]
+    try:
+        message = _Message((*reply, shown))
+    except Exception as exc:  # noqa: BLE001  # an exception that does not pickle: its text
+        message = _Message(("error", RuntimeError(f"{reply[1]!r} ({exc})"), shown))
+    del reply
+    message.write(out)
 
 
 def _watch_parent(parent: int) -> None:  # pragma: no cover - runs in the helper process

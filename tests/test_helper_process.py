@@ -86,6 +86,33 @@ def test_a_call_that_cannot_be_sent_says_so():
         _helper.run(lambda: 1, cancelled=_never)
 
 
+def test_a_call_the_helper_cannot_read_says_so_before_it_runs(tmp_path, monkeypatch):
+    # A module on this process's path only (as a user's script's kinds are): the helper cannot import it.
+    (tmp_path / "only_here_module.py").write_text("def only_here():\n    return 1\n")
+    monkeypatch.syspath_prepend(str(tmp_path))
+    from only_here_module import only_here  # type: ignore[import-not-found]
+
+    _helper.run(abs, 1, cancelled=_never)
+    pid = _helper.helper_pid()
+    told: list[bool] = []
+    with pytest.raises(_helper.HelperUnavailable, match="only_here_module"):
+        _helper.run(only_here, cancelled=_never, received=lambda: told.append(True))
+    assert not told  # the caller keeps its arguments: it runs the call itself
+    assert _helper.helper_pid() == pid  # the helper waits for the next call
+    seen: list[bool] = []
+    assert _helper.run(abs, -3, cancelled=_never, received=lambda: seen.append(True)) == 3
+    assert seen == [True]
+
+
+def test_large_arrays_travel_out_of_band_intact():
+    rng = np.random.default_rng(3)
+    a = rng.standard_normal((300_000, 3))
+    b = np.asfortranarray(rng.integers(0, 9, (500, 7)))  # not C-contiguous: pickled in band
+    out = _helper.run(np.concatenate, [a, a[::-1]], cancelled=_never)
+    assert np.array_equal(out, np.concatenate([a, a[::-1]]))
+    assert np.array_equal(_helper.run(np.transpose, b, cancelled=_never), b.T)
+
+
 def test_warnings_raised_in_the_helper_are_raised_again():
     with pytest.warns(UserWarning, match="from the helper"):
         _helper.run(warnings.warn, "from the helper", cancelled=_never)

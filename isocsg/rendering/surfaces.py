@@ -62,14 +62,22 @@ def surface_from_bands(program: Program, bands: Sequence[BandMesh], **options: A
     return build(program, bands, **options)
 
 
-def surface_in_helper(program: Program, bands: Sequence[BandMesh], **options: Any) -> CSGSurface:
+def surface_in_helper(
+    program: Program, bands: Sequence[BandMesh], *, give_bands: bool = False, **options: Any
+) -> CSGSurface:
     """:func:`surface_from_bands` for a background build: in the helper process
     (:mod:`isocsg._helper`), which the process's exit stops at once, unlike a thread inside
-    manifold3d; in this thread when the call cannot be sent there (a kind defined in a script)."""
+    manifold3d; in this thread when the call cannot be sent there (a kind defined in a script).
+
+    ``give_bands``: ``bands`` (a list no one else holds) is emptied once the helper has read
+    it, so that this process's copy is freed while the helper works (a large tree's bands)."""
     from .. import _helper
 
+    received = bands.clear if give_bands and isinstance(bands, list) else None
     try:
-        return _helper.run(surface_from_bands, program, bands, cancelled=raise_if_cancelled, **options)  # type: ignore[no-any-return]
+        return _helper.run(  # type: ignore[no-any-return]
+            surface_from_bands, program, bands, cancelled=raise_if_cancelled, received=received, **options
+        )
     except _helper.HelperUnavailable:
         return surface_from_bands(program, bands, **options)
 
@@ -242,8 +250,9 @@ class SurfaceBuilds:
             bands, held = self._large_bands(program, lights, material, detail, eye)
             checkpoint()
             share = policy.LARGE_SURFACE_SHARE * memory_budget()
-            surface = surface_in_helper(program, bands, trim=True, max_bytes=int(share - held))
-            del bands  # no cache holds them: gone before the parts below are made
+            # No cache holds the bands: this process's copy goes once the helper has it.
+            surface = surface_in_helper(program, bands, give_bands=True, trim=True, max_bytes=int(share - held))
+            del bands
         except (InvalidGeometryError, ResourceLimitError, HelperFailed):
             with self.lock:  # too large, or bands that do not close: per pixel from now on
                 self.cache.put(key, (detail, None), 64)
