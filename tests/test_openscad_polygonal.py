@@ -251,3 +251,17 @@ def test_preview_is_false_as_in_a_render(tmp_path: Path) -> None:
     scad.write_text("if ($preview) cube(1); else sphere(1);\n")
     solid = read_openscad(scad).solid
     assert abs(volume(solid, tol=1e-6) - 4 / 3 * math.pi) < 1e-5
+
+
+@pytest.mark.skipif(shutil.which("openscad") is None, reason="the openscad program is not installed")
+def test_preview_is_still_true_in_top_level_assignments(tmp_path: Path) -> None:
+    """``-D '$preview=false'`` is applied after the file's own top-level assignments are
+    evaluated (OpenSCAD 2021.01): ``x = $preview ? 1 : 2`` is 1 and ``$fn = $preview ? 32 : 128``
+    is 32, while an ``if ($preview)`` among the statements sees false (docs/openscad.md)."""
+    from isocsg.openscad import read_openscad
+
+    scad = tmp_path / "m.scad"
+    scad.write_text("$fn = $preview ? 32 : 128;\nx = $preview ? 1 : 2;\ncube(x);\nif ($preview) sphere(5);\n")
+    solid = read_openscad(scad).solid
+    assert abs(volume(solid, tol=1e-9) - 1.0) < 1e-9  # the cube of 1, no sphere of 5
+
