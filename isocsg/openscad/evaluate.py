@@ -23,6 +23,7 @@ from typing import Any
 
 from .parser import CSGCall
 from .scad_modules import builtin_module
+from .scad_comprehensions import vector
 from .scad_syntax import MAX_DEPTH, Declined, parse_scad
 from .scad_values import Range, Scope, binary, builtin_function, truthy, unary
 
@@ -30,8 +31,11 @@ __all__ = ["MAX_NODES", "MAX_STEPS", "declined_because", "evaluate_scad"]
 
 #: Most nodes built (a larger model's own work outweighs an ``openscad`` run).
 MAX_NODES = 20000
-#: Most expressions evaluated (functions calling functions can take exponential time).
+#: Most expressions evaluated (functions calling functions can take exponential time); the
+#: values a list comprehension's ``each`` splices in count too.
 MAX_STEPS = 1_000_000
+#: The statements that instantiate (what ``children()`` counts and indexes).
+INSTANTIATIONS = ("inst", "for", "if", "let")
 
 
 class _Evaluator:
@@ -66,7 +70,9 @@ class _Evaluator:
         if kind == "var":
             return f.lookup(e[1])
         if kind == "vec":
-            return [self.expr(x, f) for x in e[1]]
+            return vector(self, e[1], f)
+        if kind == "let":
+            return self.expr(e[2], self.let_scope(e[1], f))
         if kind == "range":
             b = self.expr(e[1], f)
             s = 1.0 if e[2] is None else self.expr(e[2], f)
@@ -135,6 +141,13 @@ class _Evaluator:
                 values[p] = None if default is None else self.expr(default, home)
         return values
 
+    def let_scope(self, bindings: list[tuple[str, Any]], f: Scope) -> Scope:
+        """``let (a = 1, b = a + 1)``: a scope whose values are bound in turn, each seeing the ones before."""
+        frame = Scope(f, f)
+        for name, x in bindings:
+            frame.vars[name] = self.expr(x, frame)
+        return frame
+
     # -- statements
     def scope(self, statements: list[Any], f: Scope) -> list[CSGCall]:
         """The nodes of a scope's statements: definitions first, then assignments, then the rest."""
@@ -156,7 +169,7 @@ class _Evaluator:
                 f.pending.discard(s[1])
         out: list[CSGCall] = []
         for s in statements:
-            if s[0] in ("inst", "for", "if"):
+            if s[0] in INSTANTIATIONS:
                 self.enter()
                 try:
                     out.extend(self.statement(s, f))
@@ -180,6 +193,8 @@ class _Evaluator:
             else:
                 return []  # a false if without else leaves no node in the export
             return [CSGCall("group", children=self.scope(body, Scope(f, f)), line=s[4])]
+        if s[0] == "let":  # a group of its children, in a scope of its values
+            return [CSGCall("group", children=self.scope(s[2], self.let_scope(s[1], f)), line=s[3])]
         return self.instance(s, f)
 
     def loop(self, variables: list[Any], body: list[Any], f: Scope, bound: dict[str, Any],
