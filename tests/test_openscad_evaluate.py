@@ -73,7 +73,16 @@ def test_evaluator_gives_the_programs_export(name: str) -> None:
 
 @pytest.mark.parametrize("text", [
     "include <lib.scad>\ncube(1);", "use <lib.scad>\ncube(1);",
-    "module m() { children(); } m() cube(1);", "module m() cube(1); m() sphere(1);",
+    # children(): what OpenSCAD warns about (an index out of range, a bad argument, $children
+    # unknown in a caller's block), and what is left to it (children() outside a module)
+    "children(); cube(1);", "module m() children(); m() children();", "module m() children(2); m() cube(1);",
+    "module m() children(-1); m() cube(1);", "module m() children([0, 5]); m() cube(1);",
+    "module m() children(true); m() cube(1);", "module m() children(1e10); m() cube(1);",
+    "module m() children(index = 0); m() cube(1);", "module m() children(0, 1); m() { cube(1); cube(2); }",
+    "module m() children([5:6]); m() cube(1);", "module m() children(); m() cube($children);",
+    "module m() children(); m() { a = $children; cube(1); }", "module m() cube(1); m() { a = undefined_var; cube(1); }",
+    "function f() = $children; module m() cube(f() + 1); m() cube(1);", "module children() cube(1); children();",
+    "module m() children(); m() cube(1) sphere(1);", "module m() children() cube(1); m() cube(1);",
     # let and list comprehensions: what OpenSCAD warns about, and a syntax error
     "x = let (a = 1, a = 2) a; cube(x);", "let (1) cube(1);", "let (a = 1) { a = 2; cube(a); }",
     "x = 1 + let (a = 1) a; cube(x);", "x = [for (i = [0:3]) i : 3]; cube(1);", "x = [each undef]; cube(1);",
@@ -123,8 +132,8 @@ def test_in_process_read_uses_the_evaluator(tmp_path: Path) -> None:
         assert repr(model.solid) == repr(read_openscad(path).solid)
 
 
-# Random programs of the subset: variables, a function, a module, loops, ifs, lets, list
-# comprehensions, maps and primitives with expressions at special and generic angles.
+# Random programs of the subset: variables, a function, modules (one with children), loops, ifs,
+# lets, list comprehensions, maps and primitives with expressions at special and generic angles.
 _numbers = st.one_of(st.integers(-20, 20).map(str), st.sampled_from(["30", "45", "60", "90", "180", "-270"]),
                      st.floats(-50, 50, allow_nan=False).map(lambda x: f"{x:.{len(repr(x)) % 8}f}"))
 
@@ -172,12 +181,16 @@ def _shapes(names: list[str]) -> st.SearchStrategy[str]:
                   st.integers(0, 3), s),
         st.builds(lambda c, a, b: f"if ({c} > 0) {a} else {b}", e, s, s),
         st.builds(lambda a, k: f"let (w = {a}) translate([w, 0, 0]) {k}", e, s),
+        st.builds(lambda a, k: f"wrap({a}) {k}", e, s),
+        st.builds(lambda a, k, j: f"wrap({a}) {{ {k} {j} }}", e, s, s),
         st.builds(lambda op, a, b: f"{op}() {{ {a} {b} }}", st.sampled_from(["union", "difference", "hull"]), s, s),
     ), max_leaves=4)
 
 
 _programs = st.builds(
-    lambda a, fn, body: f"a = {a};\n{fn}function f(x) = x * a + 1;\nmodule part(s) {{ cube(abs(f(s)) + 1); }}\n{body}\n",
+    lambda a, fn, body: f"a = {a};\n{fn}function f(x) = x * a + 1;\nmodule part(s) {{ cube(abs(f(s)) + 1); }}\n"
+    "module wrap(d) { translate([d, 0, 0]) children(0); if ($children > 1) mirror([1, 0, 0]) children([1:$children - 1]); }\n"
+    f"{body}\n",
     _numbers, st.sampled_from(["", "$fn = 12;\n"]), _shapes(["a", "f(a)"]),
 )
 

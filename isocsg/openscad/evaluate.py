@@ -1,12 +1,14 @@
 """A conservative subset of the OpenSCAD language, evaluated in this process.
 
 :func:`evaluate_scad` reads ``.scad`` text with variables, vectors, ranges, arithmetic,
-comparisons, the trigonometric and other numeric built-in functions, ``for`` loops, ``if``/
-``else``, module and function definitions (without ``children()`` or recursion), ``echo``
-and ``$fn``/``$fa``/``$fs``, and builds the tree of :class:`~isocsg.openscad.parser.CSGCall`
-that :func:`~isocsg.openscad.parser.parse_csg` reads from OpenSCAD 2021.01's ``.csg`` export
-of the same file: the same nodes (a ``group()`` for each loop, ``if`` and module instance,
-``multmatrix`` for the maps, computed as OpenSCAD's ``transform.cc`` computes them), the same
+comparisons, the trigonometric and other numeric built-in functions, ``let``, list
+comprehensions (:mod:`~isocsg.openscad.scad_comprehensions`), ``for`` loops, ``if``/``else``,
+the ``let`` statement, module and function definitions (not recursive), ``children()`` in
+modules, ``echo`` and ``$fn``/``$fa``/``$fs``, and builds the tree of
+:class:`~isocsg.openscad.parser.CSGCall` that :func:`~isocsg.openscad.parser.parse_csg` reads
+from OpenSCAD 2021.01's ``.csg`` export of the same file: the same nodes (a ``group()`` for each
+loop, ``if``, ``let``, module instance and ``children()`` but ``children(i)``, ``multmatrix`` for
+the maps, computed as OpenSCAD's ``transform.cc`` computes them), the same
 default arguments, and every number rounded to the 6 significant digits the export prints.
 
 Anything outside the subset, or that OpenSCAD would answer with a warning (an undefined
@@ -22,8 +24,8 @@ import math
 from typing import Any
 
 from .parser import CSGCall
-from .scad_modules import builtin_module
 from .scad_comprehensions import vector
+from .scad_modules import builtin_module
 from .scad_syntax import MAX_DEPTH, Declined, parse_scad
 from .scad_values import Range, Scope, binary, builtin_function, truthy, unary
 
@@ -151,6 +153,23 @@ class _Evaluator:
     # -- statements
     def scope(self, statements: list[Any], f: Scope) -> list[CSGCall]:
         """The nodes of a scope's statements: definitions first, then assignments, then the rest."""
+        self.prepare(statements, f)
+        out: list[CSGCall] = []
+        for s in statements:
+            if s[0] in INSTANTIATIONS:
+                out.extend(self.child(s, f))
+        return out
+
+    def child(self, s: Any, f: Scope) -> list[CSGCall]:
+        """The node of one instantiation (none for a false ``if`` or an ``echo``)."""
+        self.enter()
+        try:
+            return self.statement(s, f)
+        finally:
+            self.depth -= 1
+
+    def prepare(self, statements: list[Any], f: Scope) -> None:
+        """A scope's definitions and assignments (in turn: a variable read before its assignment is declined)."""
         assigned = [s[1] for s in statements if s[0] == "assign"]
         if len(set(assigned)) != len(assigned) or "$preview" in assigned:
             raise Declined("a variable assigned twice in one scope")
@@ -167,15 +186,6 @@ class _Evaluator:
             if s[0] == "assign":
                 f.vars[s[1]] = self.expr(s[2], f)
                 f.pending.discard(s[1])
-        out: list[CSGCall] = []
-        for s in statements:
-            if s[0] in INSTANTIATIONS:
-                self.enter()
-                try:
-                    out.extend(self.statement(s, f))
-                finally:
-                    self.depth -= 1
-        return out
 
     def statement(self, s: Any, f: Scope) -> list[CSGCall]:
         self.nodes += 1
@@ -227,22 +237,76 @@ class _Evaluator:
             return []
         found = f.find("modules", name)
         if found is not None:
+            if name == "children":
+                raise Declined("a module named children")
             return [self.user_module(found, args, children, f, line)]
+        if name == "children":
+            if children:
+                raise Declined("children() with children")
+            return self.children(args, f, line)
         return [builtin_module(self, name, args, children, f, line)]
 
     def user_module(self, found: tuple[Any, Scope], args: list[Any], children: list[Any], f: Scope,
                     line: int) -> CSGCall:
+        """A ``group()`` of the module's body. The children's assignments are evaluated here, once,
+        in the caller's scope (as OpenSCAD does, whether or not the body calls ``children()``); the
+        body's ``$`` variables see them (they are below the module's own on OpenSCAD's stack)."""
         (_, name, params, body, _), home = found
-        if children:
-            raise Declined(f"{name}() with children (children() is not read)")
         if id(found[0]) in self.active:
             raise Declined(f"recursive module {name}")
-        frame = Scope(home, f, self.bind(params, args, f, home, name))
+        block = Scope(f, f)
+        self.prepare(children, block)
+        frame = Scope(home, block, self.bind(params, args, f, home, name))
+        instances = [s for s in children if s[0] in INSTANTIATIONS]
+        frame.vars["$children"] = float(len(instances))
+        frame.call = (instances, block, set(self.active))
         self.active.add(id(found[0]))
         try:
             return CSGCall("group", children=self.scope(body, frame), line=line)
         finally:
             self.active.discard(id(found[0]))
+
+    def children(self, args: list[Any], f: Scope, line: int) -> list[CSGCall]:
+        """``children()`` (a group of all), ``children(i)`` (the child's node itself, or none),
+        ``children([i, j])`` and ``children(range)`` (a group): the children of the nearest user
+        module call around (through the definitions), each evaluated in the caller's scope for
+        names and in this one for ``$`` variables, as OpenSCAD 2021.01 does."""
+        frame: Scope | None = f
+        while frame is not None and frame.call is None:
+            frame = frame.lex
+        if frame is None:
+            raise Declined("children() outside a module")
+        instances, block, active = frame.call
+        group = True
+        picked: list[int] = list(range(len(instances)))
+        if args:
+            if len(args) > 1 or args[0][0] is not None:
+                raise Declined("children() with a named argument or more than one")
+            v = self.expr(args[0][1], f)
+            group = type(v) is not float
+            if isinstance(v, Range):
+                v = v.values()
+                if len(v) >= 10000:
+                    raise Declined("children() of a range of 10000 values or more")
+            picked = [_child_index(x, len(instances)) for x in (v if isinstance(v, list) else [v])]
+        nodes: list[CSGCall] = []
+        saved, self.active = self.active, set(active)  # the children's calls are the caller's
+        try:
+            for k in picked:
+                nodes.extend(self.child(instances[k], Scope(block, f)))
+        finally:
+            self.active = saved
+        return [CSGCall("group", children=nodes, line=line)] if group else nodes
+
+
+def _child_index(v: Any, count: int) -> int:
+    """``children(v)``'s index: a number truncated, within the children (OpenSCAD warns otherwise)."""
+    if type(v) is not float or not abs(v) < 2**31:
+        raise Declined("children() of something else than a number, a vector or a range")
+    k = int(math.trunc(v))
+    if not 0 <= k < count:
+        raise Declined("a children() index out of range")
+    return k
 
 
 def _index(v: Any, i: Any) -> Any:
