@@ -24,7 +24,7 @@ import math
 from typing import Any
 
 from .parser import CSGCall
-from .scad_comprehensions import vector
+from .scad_comprehensions import loop_values, vector
 from .scad_modules import builtin_module
 from .scad_syntax import MAX_DEPTH, Declined, parse_scad
 from .scad_values import Range, Scope, binary, builtin_function, truthy, unary
@@ -217,13 +217,7 @@ class _Evaluator:
                 out.extend(self.scope(body, Scope(f, f, values)))
                 continue
             name, x = variables[k]
-            seq = self.expr(x, Scope(f, f, values))
-            if isinstance(seq, Range):
-                items: list[Any] = list(seq.values())
-            elif isinstance(seq, list):
-                items = seq
-            else:
-                raise Declined("a loop over something else than a range or a vector")
+            items = loop_values(self.expr(x, Scope(f, f, values)))
             todo.extend((k + 1, {**values, name: v}) for v in reversed(items))
 
     def instance(self, s: Any, f: Scope) -> list[CSGCall]:

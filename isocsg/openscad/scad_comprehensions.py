@@ -3,13 +3,13 @@
 A vector's elements are expressions, whose values it holds, and elements of a list
 comprehension, whose values it splices in (an element of an element too: ``[for (i = a) for
 (j = b) [i, j]]`` is a list of pairs): ``for (i = range_or_vector, j = ...)`` (nested, each
-sequence evaluated with the variables before it bound), the C-style ``for (i = 0; i < n; i = i +
+sequence evaluated with the variables before it bound; a number or a boolean is iterated over
+once, ``undef`` not at all), the C-style ``for (i = 0; i < n; i = i +
 1)`` (its steps assigned in turn, each seeing the ones before), ``if``/``else``, ``let`` (bound in
 turn) and ``each`` (a vector's elements, a range's values, any other value but a string or
-``undef`` itself). A loop over anything else than a range or a vector, ``each`` of a string or
-``undef``, and a vector of more than a million values raise
-:class:`~isocsg.openscad.scad_syntax.Declined`; every element evaluated and every value spliced
-counts towards the evaluator's work bound.
+``undef`` itself). A loop over a string, ``each`` of a string or ``undef``, and a vector of more
+than a million values raise :class:`~isocsg.openscad.scad_syntax.Declined`; every element
+evaluated and every value spliced counts towards the evaluator's work bound.
 """
 
 from __future__ import annotations
@@ -19,7 +19,7 @@ from typing import Any, Protocol
 from .scad_syntax import Declined
 from .scad_values import MAX_RANGE, Range, Scope, truthy
 
-__all__ = ["vector"]
+__all__ = ["loop_values", "vector"]
 
 #: Most values of one vector.
 MAX_VALUES = MAX_RANGE * 100
@@ -93,15 +93,24 @@ def _for(ev: _Evaluates, variables: list[tuple[str, Any]], body: Any, f: Scope, 
             _emit(ev, body, frame, out)
             continue
         name, x = variables[k]
-        seq = ev.expr(x, frame)
-        if isinstance(seq, Range):
-            items: list[Any] = seq.values()
-        elif isinstance(seq, list):
-            items = seq
-        else:
-            raise Declined("a comprehension over something else than a range or a vector")
+        items = loop_values(ev.expr(x, frame))
         ev.steps += len(items)
         todo.extend((k + 1, {**values, name: v}) for v in reversed(items))
+
+
+def loop_values(seq: Any) -> list[Any]:
+    """What ``for (i = seq)`` (a statement or a comprehension) iterates over: a range's values, a
+    vector's elements, a number or a boolean once, nothing for ``undef``. A string (OpenSCAD
+    iterates over its characters) is declined."""
+    if isinstance(seq, Range):
+        return seq.values()
+    if isinstance(seq, list):
+        return seq
+    if seq is None:
+        return []
+    if type(seq) in (float, bool):
+        return [seq]
+    raise Declined("a loop over a string")
 
 
 def _for_c(ev: _Evaluates, x: Any, f: Scope, out: list[Any]) -> None:
