@@ -99,7 +99,8 @@ def test_evaluator_gives_the_programs_export(name: str) -> None:
     "cube([1, 2]);", "cube(-1);", "cube(0);", "sphere(0);", "cylinder(h = 0, r = 1);",
     "cylinder(h = 1, r = 1, r1 = 2);", "sphere(r = 1, d = 2);", "cube(1, center = 1);",
     "cube(1, size = 2);", "cube(1) sphere(1);", "rotate([1, 2, 3], [0, 0, 1]) cube(1);",
-    "translate(1) cube(1);", "scale(0) cube(1);", "for (i = [3:1]) cube(i);",
+    "translate(1) cube(1);", "scale(0) cube(1);", "for (i = [3:1]) cube(i);", "for (i = [5:1:1]) cube(i);", "for (i = [1:-1:5]) cube(i);",
+    "module m() children([5:1:1]); m() cube(1);",
     "for (i = [0:0.0001:10]) cube(1);", "cube(1 / 0);", "cube([1, 2, 3] + 1);",
     "x = [1, 2][5]; cube(x);", "cube($preview ? 1 : 2);", "cube($vpd);",
     "linear_extrude(file = \"a.dxf\") square(1);", "rotate_extrude(360) circle(1);",
@@ -211,7 +212,8 @@ def test_random_programs_give_the_programs_export(tmp_path: Path, text: str) -> 
 _pieces = st.sampled_from(["cube(", "sphere(", "translate(", "for (i = ", "if (", "module m(", "function f(", "m(", "f(",
                            "[", "]", "(", ")", "{", "}", ",", ";", "=", ":", "?", "+", "-", "*", "/", "%", "^", "!",
                            "<", ">=", "==", "&&", "||", ".x", "1", "0.5", "-2", "1e400", "i", "a", "$fn", "\"s\"",
-                           "true", "undef", " ", "\n", "else ", "0:3", "sin(", "len(", "concat("])
+                           "true", "undef", " ", "\n", "else ", "0:3", "sin(", "len(", "concat(", "let (", "each ",
+                           "children(", "$children", "for (k = [0:2]) ", "; i < 3; i = i + 1"])
 
 
 @settings(max_examples=200, deadline=None)

@@ -83,6 +83,8 @@ class _Evaluator:
                 raise Declined("a range of non-numbers")
             if e[2] is None and b > end:
                 raise Declined("a range [begin:end] with begin > end (deprecated, a warning)")
+            if (s > 0 and b > end) or (s < 0 and b < end):
+                raise Declined("a range whose step goes away from its end (a warning)")
             return Range(b, s, end)
         if kind == "un":
             return unary(e[1], self.expr(e[2], f))
