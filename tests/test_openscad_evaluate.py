@@ -119,6 +119,10 @@ def test_evaluator_gives_the_programs_export(name: str) -> None:
     "for (i = [0:9999], j = [0:9999]) echo(i);",
     "x = [for (i = [0:9999], j = [0:9999]) 0]; cube(1);", "x = [for (i = 0; true; i = i) if (false) 1]; cube(1);",
     "v0 = [1];\n" + "".join(f"v{i} = [each v{i - 1}, each v{i - 1}];\n" for i in range(1, 40)) + "cube(len(v39));",
+    "b = [for (i = [0:9999]) i]; c = [for (i = [0:49]) each b]; v = [for (i = [0:9999]) len(concat(c, c))]; cube(1);",
+    "b = [for (i = [0:9999]) i]; c = [for (i = [0:49]) each b]; v = [for (i = [0:9999]) len(c + c)]; cube(1);",
+    "b = [for (i = [0:9999]) i]; x0 = [for (i = [0:49]) each b];\n"
+    + "".join(f"x{i} = [x{i - 1}, x{i - 1}];\n" for i in range(1, 30)) + "cube(x29 == x29 ? 1 : 2);",
 ])
 def test_constructs_outside_the_subset_are_declined(text: str) -> None:
     assert evaluate_scad(text) is None

@@ -34,7 +34,8 @@ __all__ = ["MAX_NODES", "MAX_STEPS", "declined_because", "evaluate_scad"]
 #: Most nodes built (a larger model's own work outweighs an ``openscad`` run).
 MAX_NODES = 20000
 #: Most expressions evaluated (functions calling functions can take exponential time); the
-#: values a list comprehension's ``each`` splices in count too.
+#: values a list comprehension's ``each`` splices in, and the elements of the vectors an
+#: operator or a built-in function reads or gives, count too.
 MAX_STEPS = 1_000_000
 #: The statements that instantiate (what ``children()`` counts and indexes).
 INSTANTIATIONS = ("inst", "for", "if", "let")
@@ -87,7 +88,7 @@ class _Evaluator:
                 raise Declined("a range whose step goes away from its end (a warning)")
             return Range(b, s, end)
         if kind == "un":
-            return unary(e[1], self.expr(e[2], f))
+            return unary(e[1], self.counted(self.expr(e[2], f)))
         if kind == "bin":
             op = e[1]
             a = self.expr(e[2], f)
@@ -95,7 +96,10 @@ class _Evaluator:
                 return truthy(a) and truthy(self.expr(e[3], f))
             if op == "||":
                 return truthy(a) or truthy(self.expr(e[3], f))
-            return binary(op, a, self.expr(e[3], f))
+            b = self.expr(e[3], f)
+            if op in ("==", "!="):  # compares nested vectors all the way down
+                self.steps += _size(a, MAX_STEPS) + _size(b, MAX_STEPS)
+            return binary(op, self.counted(a), self.counted(b))
         if kind == "tern":
             return self.expr(e[2] if truthy(self.expr(e[1], f)) else e[3], f)
         if kind == "index":
@@ -109,12 +113,19 @@ class _Evaluator:
             return self.call_function(e[1], e[2], f)
         raise Declined(kind)
 
+    def counted(self, v: Any) -> Any:
+        """``v``, its length counted as work when it is a vector (an operator or a built-in
+        function goes through it: ``concat`` of long vectors in a loop takes long)."""
+        if isinstance(v, list):
+            self.steps += len(v)
+        return v
+
     def call_function(self, name: str, args: list[Any], f: Scope) -> Any:
         found = f.find("functions", name)
         if found is None:
             if any(n is not None for n, _ in args):
                 raise Declined(f"{name} with named arguments")
-            return builtin_function(name, [self.expr(x, f) for _, x in args])
+            return self.counted(builtin_function(name, [self.counted(self.expr(x, f)) for _, x in args]))
         (_, _, params, body, _), home = found
         if id(found[0]) in self.active:
             raise Declined(f"recursive function {name}")
@@ -293,6 +304,20 @@ class _Evaluator:
         finally:
             self.active = saved
         return [CSGCall("group", children=nodes, line=line)] if group else nodes
+
+
+def _size(v: Any, limit: int) -> int:
+    """The count of the values a vector holds, nested ones too (declined beyond ``limit``)."""
+    count = 0
+    todo = [v]
+    while todo:
+        x = todo.pop()
+        if isinstance(x, list):
+            count += len(x)
+            if count > limit:
+                raise Declined("too much work (comparing long vectors)")
+            todo.extend(y for y in x if isinstance(y, list))
+    return count
 
 
 def _child_index(v: Any, count: int) -> int:
