@@ -35,7 +35,7 @@ __all__ = ["MAX_NODES", "MAX_STEPS", "declined_because", "evaluate_scad"]
 MAX_NODES = 20000
 #: Most expressions evaluated (functions calling functions can take exponential time); the
 #: values a list comprehension's ``each`` splices in, and the elements of the vectors an
-#: operator or a built-in function reads or gives, count too.
+#: operator or a built-in function other than ``len`` reads or gives, count too.
 MAX_STEPS = 1_000_000
 #: The statements that instantiate (what ``children()`` counts and indexes).
 INSTANTIATIONS = ("inst", "for", "if", "let")
@@ -97,9 +97,11 @@ class _Evaluator:
             if op == "||":
                 return truthy(a) or truthy(self.expr(e[3], f))
             b = self.expr(e[3], f)
-            if op in ("==", "!="):  # compares nested vectors all the way down
-                self.steps += _size(a, MAX_STEPS) + _size(b, MAX_STEPS)
-            return binary(op, self.counted(a), self.counted(b))
+            if op not in ("==", "!="):
+                return binary(op, self.counted(a), self.counted(b))
+            if isinstance(a, list) and isinstance(b, list) and len(a) == len(b):  # compared all the way down
+                self.steps += _size(a, MAX_STEPS)
+            return binary(op, a, b)
         if kind == "tern":
             return self.expr(e[2] if truthy(self.expr(e[1], f)) else e[3], f)
         if kind == "index":
@@ -125,7 +127,11 @@ class _Evaluator:
         if found is None:
             if any(n is not None for n, _ in args):
                 raise Declined(f"{name} with named arguments")
-            return self.counted(builtin_function(name, [self.counted(self.expr(x, f)) for _, x in args]))
+            values = [self.expr(x, f) for _, x in args]
+            if name != "len":  # the others read every element
+                for v in values:
+                    self.counted(v)
+            return self.counted(builtin_function(name, values))
         (_, _, params, body, _), home = found
         if id(found[0]) in self.active:
             raise Declined(f"recursive function {name}")
