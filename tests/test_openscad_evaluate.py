@@ -73,8 +73,22 @@ def test_evaluator_gives_the_programs_export(name: str) -> None:
 
 @pytest.mark.parametrize("text", [
     "include <lib.scad>\ncube(1);", "use <lib.scad>\ncube(1);",
-    "module m() { children(); } m() cube(1);", "module m() cube(1); m() sphere(1);",
-    "x = [for (i = [0:3]) i]; cube(x[1]);", "x = let (a = 1) a; cube(x);", "x = [each [1, 2]];",
+    # children(): what OpenSCAD warns about (an index out of range, a bad argument, $children
+    # unknown in a caller's block), and what is left to it (children() outside a module)
+    "children(); cube(1);", "module m() children(); m() children();", "module m() children(2); m() cube(1);",
+    "module m() children(-1); m() cube(1);", "module m() children([0, 5]); m() cube(1);",
+    "module m() children(true); m() cube(1);", "module m() children(1e10); m() cube(1);",
+    "module m() children(index = 0); m() cube(1);", "module m() children(0, 1); m() { cube(1); cube(2); }",
+    "module m() children([5:6]); m() cube(1);", "module m() children(); m() cube($children);",
+    "module m() children(); m() { a = $children; cube(1); }", "module m() cube(1); m() { a = undefined_var; cube(1); }",
+    "function f() = $children; module m() cube(f() + 1); m() cube(1);", "module children() cube(1); children();",
+    "module m() children(); m() cube(1) sphere(1);", "module m() children() cube(1); m() cube(1);",
+    # let and list comprehensions: what OpenSCAD warns about, and a syntax error
+    "x = let (a = 1, a = 2) a; cube(x);", "let (1) cube(1);", "let (a = 1) { a = 2; cube(a); }",
+    "x = 1 + let (a = 1) a; cube(x);", "x = [for (i = [0:3]) i : 3]; cube(1);", "x = [each undef]; cube(1);",
+    'x = [each "ab"]; cube(1);', 'x = [for (i = "ab") 1]; cube(1);', 'for (i = "ab") cube(1);', "x = [for () 1]; cube(1);",
+    "x = [for (i = 0; i < 3; j = i) i]; cube(1);", "x = [for (i = [0:99999]) i]; cube(1);",
+    "each = 1; cube(each);", "let = 1; cube(1);", "$children = 1; cube(1);",
     "module r(n) { if (n > 0) r(n - 1); cube(n + 1); } r(3);",
     "function f(n) = n <= 0 ? 1 : f(n - 1); cube(f(2));",
     'text("hi");', 'import("a.stl");', 'surface("a.dat");', "minkowski() { cube(1); sphere(1); }",
@@ -85,7 +99,8 @@ def test_evaluator_gives_the_programs_export(name: str) -> None:
     "cube([1, 2]);", "cube(-1);", "cube(0);", "sphere(0);", "cylinder(h = 0, r = 1);",
     "cylinder(h = 1, r = 1, r1 = 2);", "sphere(r = 1, d = 2);", "cube(1, center = 1);",
     "cube(1, size = 2);", "cube(1) sphere(1);", "rotate([1, 2, 3], [0, 0, 1]) cube(1);",
-    "translate(1) cube(1);", "scale(0) cube(1);", "for (i = [3:1]) cube(i);",
+    "translate(1) cube(1);", "scale(0) cube(1);", "for (i = [3:1]) cube(i);", "for (i = [5:1:1]) cube(i);", "for (i = [1:-1:5]) cube(i);",
+    "module m() children([5:1:1]); m() cube(1);",
     "for (i = [0:0.0001:10]) cube(1);", "cube(1 / 0);", "cube([1, 2, 3] + 1);",
     "x = [1, 2][5]; cube(x);", "cube($preview ? 1 : 2);", "cube($vpd);",
     "linear_extrude(file = \"a.dxf\") square(1);", "rotate_extrude(360) circle(1);",
@@ -102,6 +117,12 @@ def test_evaluator_gives_the_programs_export(name: str) -> None:
     + "cube(f39(1));",
     "v0 = [1];\n" + "".join(f"v{i} = concat(v{i - 1}, v{i - 1});\n" for i in range(1, 40)) + "cube(len(v39));",
     "for (i = [0:9999], j = [0:9999]) echo(i);",
+    "x = [for (i = [0:9999], j = [0:9999]) 0]; cube(1);", "x = [for (i = 0; true; i = i) if (false) 1]; cube(1);",
+    "v0 = [1];\n" + "".join(f"v{i} = [each v{i - 1}, each v{i - 1}];\n" for i in range(1, 40)) + "cube(len(v39));",
+    "b = [for (i = [0:9999]) i]; c = [for (i = [0:49]) each b]; v = [for (i = [0:9999]) len(concat(c, c))]; cube(1);",
+    "b = [for (i = [0:9999]) i]; c = [for (i = [0:49]) each b]; v = [for (i = [0:9999]) len(c + c)]; cube(1);",
+    "b = [for (i = [0:9999]) i]; x0 = [for (i = [0:49]) each b];\n"
+    + "".join(f"x{i} = [x{i - 1}, x{i - 1}];\n" for i in range(1, 30)) + "cube(x29 == x29 ? 1 : 2);",
 ])
 def test_constructs_outside_the_subset_are_declined(text: str) -> None:
     assert evaluate_scad(text) is None
@@ -116,8 +137,8 @@ def test_in_process_read_uses_the_evaluator(tmp_path: Path) -> None:
         assert repr(model.solid) == repr(read_openscad(path).solid)
 
 
-# Random programs of the subset: variables, a function, a module, loops, ifs, maps and
-# primitives with expressions at special and generic angles.
+# Random programs of the subset: variables, a function, modules (one with children), loops, ifs,
+# lets, list comprehensions, maps and primitives with expressions at special and generic angles.
 _numbers = st.one_of(st.integers(-20, 20).map(str), st.sampled_from(["30", "45", "60", "90", "180", "-270"]),
                      st.floats(-50, 50, allow_nan=False).map(lambda x: f"{x:.{len(repr(x)) % 8}f}"))
 
@@ -130,6 +151,10 @@ def _expressions(names: list[str]) -> st.SearchStrategy[str]:
         st.builds(lambda a, b: f"atan2({a}, {b})", e, e),
         st.builds(lambda a, b: f"max([{a}, {b}]) ^ 0.5", e, e),
         st.builds(lambda c, a, b: f"({c} > 0 ? {a} : {b})", e, e, e),
+        st.builds(lambda a, b: f"let (t = {a}, u = t * 2) (u - {b})", e, e),
+        st.builds(lambda a, n: f"[for (k = [0:3]) {a} + k][{n}]", e, st.integers(0, 3)),
+        st.builds(lambda a, b: f"max([each [{a}, {b}], for (k = [1:2]) if (k > 1) k * {a} else -k])", e, e),
+        st.builds(lambda a: f"len([for (k = 0; k < abs({a}) % 4; k = k + 1) let (j = k) j])", e),
     ), max_leaves=4)
 
 
@@ -160,12 +185,17 @@ def _shapes(names: list[str]) -> st.SearchStrategy[str]:
         st.builds(lambda lo, n, k: f"for (i = [{lo}:{lo + n}]) translate([i, 0, 0]) {k}", st.integers(-2, 2),
                   st.integers(0, 3), s),
         st.builds(lambda c, a, b: f"if ({c} > 0) {a} else {b}", e, s, s),
+        st.builds(lambda a, k: f"let (w = {a}) translate([w, 0, 0]) {k}", e, s),
+        st.builds(lambda a, k: f"wrap({a}) {k}", e, s),
+        st.builds(lambda a, k, j: f"wrap({a}) {{ {k} {j} }}", e, s, s),
         st.builds(lambda op, a, b: f"{op}() {{ {a} {b} }}", st.sampled_from(["union", "difference", "hull"]), s, s),
     ), max_leaves=4)
 
 
 _programs = st.builds(
-    lambda a, fn, body: f"a = {a};\n{fn}function f(x) = x * a + 1;\nmodule part(s) {{ cube(abs(f(s)) + 1); }}\n{body}\n",
+    lambda a, fn, body: f"a = {a};\n{fn}function f(x) = x * a + 1;\nmodule part(s) {{ cube(abs(f(s)) + 1); }}\n"
+    "module wrap(d) { translate([d, 0, 0]) children(0); if ($children > 1) mirror([1, 0, 0]) children([1:$children - 1]); }\n"
+    f"{body}\n",
     _numbers, st.sampled_from(["", "$fn = 12;\n"]), _shapes(["a", "f(a)"]),
 )
 
@@ -186,7 +216,8 @@ def test_random_programs_give_the_programs_export(tmp_path: Path, text: str) -> 
 _pieces = st.sampled_from(["cube(", "sphere(", "translate(", "for (i = ", "if (", "module m(", "function f(", "m(", "f(",
                            "[", "]", "(", ")", "{", "}", ",", ";", "=", ":", "?", "+", "-", "*", "/", "%", "^", "!",
                            "<", ">=", "==", "&&", "||", ".x", "1", "0.5", "-2", "1e400", "i", "a", "$fn", "\"s\"",
-                           "true", "undef", " ", "\n", "else ", "0:3", "sin(", "len(", "concat("])
+                           "true", "undef", " ", "\n", "else ", "0:3", "sin(", "len(", "concat(", "let (", "each ",
+                           "children(", "$children", "for (k = [0:2]) ", "; i < 3; i = i + 1"])
 
 
 @settings(max_examples=200, deadline=None)

@@ -1,12 +1,14 @@
 """A conservative subset of the OpenSCAD language, evaluated in this process.
 
 :func:`evaluate_scad` reads ``.scad`` text with variables, vectors, ranges, arithmetic,
-comparisons, the trigonometric and other numeric built-in functions, ``for`` loops, ``if``/
-``else``, module and function definitions (without ``children()`` or recursion), ``echo``
-and ``$fn``/``$fa``/``$fs``, and builds the tree of :class:`~isocsg.openscad.parser.CSGCall`
-that :func:`~isocsg.openscad.parser.parse_csg` reads from OpenSCAD 2021.01's ``.csg`` export
-of the same file: the same nodes (a ``group()`` for each loop, ``if`` and module instance,
-``multmatrix`` for the maps, computed as OpenSCAD's ``transform.cc`` computes them), the same
+comparisons, the trigonometric and other numeric built-in functions, ``let``, list
+comprehensions (:mod:`~isocsg.openscad.scad_comprehensions`), ``for`` loops, ``if``/``else``,
+the ``let`` statement, module and function definitions (not recursive), ``children()`` in
+modules, ``echo`` and ``$fn``/``$fa``/``$fs``, and builds the tree of
+:class:`~isocsg.openscad.parser.CSGCall` that :func:`~isocsg.openscad.parser.parse_csg` reads
+from OpenSCAD 2021.01's ``.csg`` export of the same file: the same nodes (a ``group()`` for each
+loop, ``if``, ``let``, module instance and ``children()`` but ``children(i)``, ``multmatrix`` for
+the maps, computed as OpenSCAD's ``transform.cc`` computes them), the same
 default arguments, and every number rounded to the 6 significant digits the export prints.
 
 Anything outside the subset, or that OpenSCAD would answer with a warning (an undefined
@@ -22,6 +24,7 @@ import math
 from typing import Any
 
 from .parser import CSGCall
+from .scad_comprehensions import loop_values, vector
 from .scad_modules import builtin_module
 from .scad_syntax import MAX_DEPTH, Declined, parse_scad
 from .scad_values import Range, Scope, binary, builtin_function, truthy, unary
@@ -30,8 +33,12 @@ __all__ = ["MAX_NODES", "MAX_STEPS", "declined_because", "evaluate_scad"]
 
 #: Most nodes built (a larger model's own work outweighs an ``openscad`` run).
 MAX_NODES = 20000
-#: Most expressions evaluated (functions calling functions can take exponential time).
+#: Most expressions evaluated (functions calling functions can take exponential time); the
+#: values a list comprehension's ``each`` splices in, and the elements of the vectors an
+#: operator or a built-in function other than ``len`` reads or gives, count too.
 MAX_STEPS = 1_000_000
+#: The statements that instantiate (what ``children()`` counts and indexes).
+INSTANTIATIONS = ("inst", "for", "if", "let")
 
 
 class _Evaluator:
@@ -66,7 +73,9 @@ class _Evaluator:
         if kind == "var":
             return f.lookup(e[1])
         if kind == "vec":
-            return [self.expr(x, f) for x in e[1]]
+            return vector(self, e[1], f)
+        if kind == "let":
+            return self.expr(e[2], self.let_scope(e[1], f))
         if kind == "range":
             b = self.expr(e[1], f)
             s = 1.0 if e[2] is None else self.expr(e[2], f)
@@ -75,9 +84,11 @@ class _Evaluator:
                 raise Declined("a range of non-numbers")
             if e[2] is None and b > end:
                 raise Declined("a range [begin:end] with begin > end (deprecated, a warning)")
+            if (s > 0 and b > end) or (s < 0 and b < end):
+                raise Declined("a range whose step goes away from its end (a warning)")
             return Range(b, s, end)
         if kind == "un":
-            return unary(e[1], self.expr(e[2], f))
+            return unary(e[1], self.counted(self.expr(e[2], f)))
         if kind == "bin":
             op = e[1]
             a = self.expr(e[2], f)
@@ -85,7 +96,12 @@ class _Evaluator:
                 return truthy(a) and truthy(self.expr(e[3], f))
             if op == "||":
                 return truthy(a) or truthy(self.expr(e[3], f))
-            return binary(op, a, self.expr(e[3], f))
+            b = self.expr(e[3], f)
+            if op not in ("==", "!="):
+                return binary(op, self.counted(a), self.counted(b))
+            if isinstance(a, list) and isinstance(b, list) and len(a) == len(b):  # compared all the way down
+                self.steps += _size(a, MAX_STEPS)
+            return binary(op, a, b)
         if kind == "tern":
             return self.expr(e[2] if truthy(self.expr(e[1], f)) else e[3], f)
         if kind == "index":
@@ -99,12 +115,23 @@ class _Evaluator:
             return self.call_function(e[1], e[2], f)
         raise Declined(kind)
 
+    def counted(self, v: Any) -> Any:
+        """``v``, its length counted as work when it is a vector (an operator or a built-in
+        function goes through it: ``concat`` of long vectors in a loop takes long)."""
+        if isinstance(v, list):
+            self.steps += len(v)
+        return v
+
     def call_function(self, name: str, args: list[Any], f: Scope) -> Any:
         found = f.find("functions", name)
         if found is None:
             if any(n is not None for n, _ in args):
                 raise Declined(f"{name} with named arguments")
-            return builtin_function(name, [self.expr(x, f) for _, x in args])
+            values = [self.expr(x, f) for _, x in args]
+            if name != "len":  # the others read every element
+                for v in values:
+                    self.counted(v)
+            return self.counted(builtin_function(name, values))
         (_, _, params, body, _), home = found
         if id(found[0]) in self.active:
             raise Declined(f"recursive function {name}")
@@ -135,9 +162,33 @@ class _Evaluator:
                 values[p] = None if default is None else self.expr(default, home)
         return values
 
+    def let_scope(self, bindings: list[tuple[str, Any]], f: Scope) -> Scope:
+        """``let (a = 1, b = a + 1)``: a scope whose values are bound in turn, each seeing the ones before."""
+        frame = Scope(f, f)
+        for name, x in bindings:
+            frame.vars[name] = self.expr(x, frame)
+        return frame
+
     # -- statements
     def scope(self, statements: list[Any], f: Scope) -> list[CSGCall]:
         """The nodes of a scope's statements: definitions first, then assignments, then the rest."""
+        self.prepare(statements, f)
+        out: list[CSGCall] = []
+        for s in statements:
+            if s[0] in INSTANTIATIONS:
+                out.extend(self.child(s, f))
+        return out
+
+    def child(self, s: Any, f: Scope) -> list[CSGCall]:
+        """The node of one instantiation (none for a false ``if`` or an ``echo``)."""
+        self.enter()
+        try:
+            return self.statement(s, f)
+        finally:
+            self.depth -= 1
+
+    def prepare(self, statements: list[Any], f: Scope) -> None:
+        """A scope's definitions and assignments (in turn: a variable read before its assignment is declined)."""
         assigned = [s[1] for s in statements if s[0] == "assign"]
         if len(set(assigned)) != len(assigned) or "$preview" in assigned:
             raise Declined("a variable assigned twice in one scope")
@@ -154,15 +205,6 @@ class _Evaluator:
             if s[0] == "assign":
                 f.vars[s[1]] = self.expr(s[2], f)
                 f.pending.discard(s[1])
-        out: list[CSGCall] = []
-        for s in statements:
-            if s[0] in ("inst", "for", "if"):
-                self.enter()
-                try:
-                    out.extend(self.statement(s, f))
-                finally:
-                    self.depth -= 1
-        return out
 
     def statement(self, s: Any, f: Scope) -> list[CSGCall]:
         self.nodes += 1
@@ -180,6 +222,8 @@ class _Evaluator:
             else:
                 return []  # a false if without else leaves no node in the export
             return [CSGCall("group", children=self.scope(body, Scope(f, f)), line=s[4])]
+        if s[0] == "let":  # a group of its children, in a scope of its values
+            return [CSGCall("group", children=self.scope(s[2], self.let_scope(s[1], f)), line=s[3])]
         return self.instance(s, f)
 
     def loop(self, variables: list[Any], body: list[Any], f: Scope, bound: dict[str, Any],
@@ -192,13 +236,7 @@ class _Evaluator:
                 out.extend(self.scope(body, Scope(f, f, values)))
                 continue
             name, x = variables[k]
-            seq = self.expr(x, Scope(f, f, values))
-            if isinstance(seq, Range):
-                items: list[Any] = list(seq.values())
-            elif isinstance(seq, list):
-                items = seq
-            else:
-                raise Declined("a loop over something else than a range or a vector")
+            items = loop_values(self.expr(x, Scope(f, f, values)))
             todo.extend((k + 1, {**values, name: v}) for v in reversed(items))
 
     def instance(self, s: Any, f: Scope) -> list[CSGCall]:
@@ -212,22 +250,90 @@ class _Evaluator:
             return []
         found = f.find("modules", name)
         if found is not None:
+            if name == "children":
+                raise Declined("a module named children")
             return [self.user_module(found, args, children, f, line)]
+        if name == "children":
+            if children:
+                raise Declined("children() with children")
+            return self.children(args, f, line)
         return [builtin_module(self, name, args, children, f, line)]
 
     def user_module(self, found: tuple[Any, Scope], args: list[Any], children: list[Any], f: Scope,
                     line: int) -> CSGCall:
+        """A ``group()`` of the module's body. The children's assignments are evaluated here, once,
+        in the caller's scope (as OpenSCAD does, whether or not the body calls ``children()``); the
+        body's ``$`` variables see them (they are below the module's own on OpenSCAD's stack)."""
         (_, name, params, body, _), home = found
-        if children:
-            raise Declined(f"{name}() with children (children() is not read)")
         if id(found[0]) in self.active:
             raise Declined(f"recursive module {name}")
-        frame = Scope(home, f, self.bind(params, args, f, home, name))
+        block = Scope(f, f)
+        self.prepare(children, block)
+        frame = Scope(home, block, self.bind(params, args, f, home, name))
+        instances = [s for s in children if s[0] in INSTANTIATIONS]
+        frame.vars["$children"] = float(len(instances))
+        frame.call = (instances, block, set(self.active))
         self.active.add(id(found[0]))
         try:
             return CSGCall("group", children=self.scope(body, frame), line=line)
         finally:
             self.active.discard(id(found[0]))
+
+    def children(self, args: list[Any], f: Scope, line: int) -> list[CSGCall]:
+        """``children()`` (a group of all), ``children(i)`` (the child's node itself, or none),
+        ``children([i, j])`` and ``children(range)`` (a group): the children of the nearest user
+        module call around (through the definitions), each evaluated in the caller's scope for
+        names and in this one for ``$`` variables, as OpenSCAD 2021.01 does."""
+        frame: Scope | None = f
+        while frame is not None and frame.call is None:
+            frame = frame.lex
+        if frame is None:
+            raise Declined("children() outside a module")
+        instances, block, active = frame.call
+        group = True
+        picked: list[int] = list(range(len(instances)))
+        if args:
+            if len(args) > 1 or args[0][0] is not None:
+                raise Declined("children() with a named argument or more than one")
+            v = self.expr(args[0][1], f)
+            group = type(v) is not float
+            if isinstance(v, Range):
+                v = v.values()
+                if len(v) >= 10000:
+                    raise Declined("children() of a range of 10000 values or more")
+            picked = [_child_index(x, len(instances)) for x in (v if isinstance(v, list) else [v])]
+        nodes: list[CSGCall] = []
+        saved, self.active = self.active, set(active)  # the children's calls are the caller's
+        try:
+            for k in picked:
+                nodes.extend(self.child(instances[k], Scope(block, f)))
+        finally:
+            self.active = saved
+        return [CSGCall("group", children=nodes, line=line)] if group else nodes
+
+
+def _size(v: Any, limit: int) -> int:
+    """The count of the values a vector holds, nested ones too (declined beyond ``limit``)."""
+    count = 0
+    todo = [v]
+    while todo:
+        x = todo.pop()
+        if isinstance(x, list):
+            count += len(x)
+            if count > limit:
+                raise Declined("too much work (comparing long vectors)")
+            todo.extend(y for y in x if isinstance(y, list))
+    return count
+
+
+def _child_index(v: Any, count: int) -> int:
+    """``children(v)``'s index: a number truncated, within the children (OpenSCAD warns otherwise)."""
+    if type(v) is not float or not abs(v) < 2**31:
+        raise Declined("children() of something else than a number, a vector or a range")
+    k = int(math.trunc(v))
+    if not 0 <= k < count:
+        raise Declined("a children() index out of range")
+    return k
 
 
 def _index(v: Any, i: Any) -> Any:

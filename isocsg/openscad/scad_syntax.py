@@ -4,9 +4,10 @@ It reads statements (assignments, module instantiations with ``;``, one child or
 block, ``for``, ``if``/``else``, ``module`` and ``function`` definitions) and expressions
 (numbers, strings, ``true``/``false``/``undef``, vectors, ranges, the operators of OpenSCAD
 2021.01's grammar with its precedence, indexing, ``.x``/``.y``/``.z`` and calls of named
-functions) into tuples. Anything else (``include``/``use``, ``let``, ``each``, list
-comprehensions, function literals, ``assert``, modifiers ``* ! # %``, bare blocks,
-``intersection_for``) raises :class:`Declined`: the file is left to the ``openscad`` program.
+functions, ``let``, list comprehensions with ``for``, C-style ``for``, ``each``, ``if``/``else``
+and ``let``) into tuples, and the ``let`` statement. Anything else (``include``/``use``, function
+literals, ``assert``, modifiers ``* ! # %``, bare blocks, ``intersection_for``) raises
+:class:`Declined`: the file is left to the ``openscad`` program.
 
 The parser is recursive descent with a depth limit (:data:`MAX_DEPTH`): a deeper file raises
 :class:`Declined` too, never a ``RecursionError``.
@@ -41,12 +42,18 @@ _TOKEN = re.compile(
 )
 _ESCAPES = {"n": "\n", "t": "\t", "r": "\r", '"': '"', "\\": "\\"}
 # names the subset does not read; each one declines the file wherever it appears
-_REFUSED = {"include", "use", "let", "each", "assert", "function_literal", "children", "intersection_for",
+_REFUSED = {"include", "use", "assert", "function_literal", "intersection_for",
             "import", "surface", "text", "minkowski", "projection", "resize", "render", "parent_module",
             "search", "str", "chr", "ord", "is_undef",
             "is_num", "is_string", "is_list", "is_bool", "is_function", "rands", "cross", "dxf_dim",
             "dxf_cross", "roof", "fill", "object", "import_dxf", "import_stl"}
 _KEYWORDS = {"true": ("bool", True), "false": ("bool", False), "undef": ("undef",)}
+#: Words of OpenSCAD's grammar that name nothing (no variable, parameter or module).
+_RESERVED = {*_KEYWORDS, "module", "function", "for", "if", "else", "let", "each"}
+#: Names whose value OpenSCAD sets itself (an assignment or argument of one is declined).
+_SET_BY_OPENSCAD = {"$children", "$parent_modules", "$preview"}
+#: What starts an element of a list comprehension.
+_ELEMENTS = {"for", "each", "if", "let"}
 _BINARY = [  # loosest first, as OpenSCAD 2021.01's parser.y
     ("||",), ("&&",), ("==", "!="), ("<", "<=", ">", ">="), ("+", "-"), ("*", "/", "%"),
 ]
@@ -96,8 +103,10 @@ class _Parser:
 
     def name(self) -> str:
         kind, tok, line = self.peek()
-        if kind != "name" or tok in _KEYWORDS:
+        if kind != "name" or tok in _RESERVED:
             raise Declined(f"line {line}: expected a name, got {tok!r}")
+        if tok in _SET_BY_OPENSCAD:
+            raise Declined(f"line {line}: {tok} set in the file")
         self.i += 1
         return tok
 
@@ -177,10 +186,14 @@ class _Parser:
                 self.i += 1
                 other = self.body()
             return ("if", cond, then, other, line)
-        if tok in _KEYWORDS or tok == "else":
+        if tok == "let":
+            self.i += 1
+            return ("let", self.assignments(")"), self.body(), line)
+        if tok in _RESERVED:
             raise Declined(f"line {line}: {tok}")
         if self.at("=", 1):
-            self.i += 2
+            self.name()
+            self.i += 1
             expr = self.expr()
             self.take(";")
             return ("assign", tok, expr, line)
@@ -224,10 +237,36 @@ class _Parser:
         self.i += 1
         return out
 
+    def assignments(self, close: str) -> list[tuple[str, Any]]:
+        """``(a = 1, b = a + 1)`` of ``let``: named, each name once (OpenSCAD warns otherwise)."""
+        self.take("(")
+        out = self.bindings((close,))
+        self.take(close)
+        return out
+
+    def bindings(self, ends: tuple[str, ...]) -> list[tuple[str, Any]]:
+        """``a = 1, b = a + 1`` up to one of ``ends`` (not taken)."""
+        out: list[tuple[str, Any]] = []
+        while not any(self.at(end) for end in ends):
+            line = self.peek()[2]
+            name = self.name()
+            self.take("=")
+            out.append((name, self.expr()))
+            if not any(self.at(end) for end in ends):
+                self.take(",")
+                if any(self.at(end) for end in (*ends, ",")):  # no trailing comma, as in a call
+                    raise Declined(f"line {line}: a comma before {self.peek()[1]!r}")
+        if len({n for n, _ in out}) != len(out):
+            raise Declined("a variable bound twice in one let or for (a warning)")
+        return out
+
     # -- expressions
     def expr(self) -> Any:
         self.enter()
         try:
+            if self.peek()[:2] == ("name", "let"):  # let (a = 1, b = a + 1) expr
+                self.i += 1
+                return ("let", self.assignments(")"), self.expr())
             cond = self.binary(0)
             if self.at("?"):
                 self.i += 1
@@ -295,7 +334,7 @@ class _Parser:
         if kind == "name":
             if tok in _KEYWORDS:
                 return _KEYWORDS[tok]
-            if tok in ("module", "function", "for", "if", "else"):
+            if tok in _RESERVED:
                 raise Declined(f"line {line}: {tok} in an expression")
             return ("var", tok)
         if kind == "op" and tok == "(":
@@ -314,8 +353,10 @@ class _Parser:
         if self.at("]"):
             self.i += 1
             return ("vec", [])
-        first = self.expr()
+        first = self.element()
         if self.at(":"):
+            if first[0].startswith("lc_"):
+                raise Declined(f"line {line}: a list comprehension in a range")
             self.i += 1
             second = self.expr()
             if self.at(":"):
@@ -331,9 +372,55 @@ class _Parser:
                 self.i += 1
             if self.at("]"):
                 break
-            items.append(self.expr())
+            items.append(self.element())
         self.take("]")
         return ("vec", items)
+
+    def element(self) -> Any:
+        """An element of a vector: an expression, or an element of a list comprehension
+        (``for``, C-style ``for``, ``each``, ``if``/``else``, ``let``; their values are spliced in)."""
+        kind, tok, line = self.peek()
+        if kind != "name" or tok not in _ELEMENTS:
+            return self.expr()
+        self.enter()
+        try:
+            return self._element(tok, line)
+        finally:
+            self.depth -= 1
+
+    def _element(self, tok: str, line: int) -> Any:
+        self.i += 1
+        if tok == "let":
+            bound = self.assignments(")")
+            body = self.element()
+            return ("lc_let", bound, body) if body[0].startswith("lc_") else ("let", bound, body)
+        if tok == "each":
+            return ("lc_each", self.element())
+        if tok == "if":
+            self.take("(")
+            cond = self.expr()
+            self.take(")")
+            then = self.element()
+            other = None
+            if self.peek()[:2] == ("name", "else"):
+                self.i += 1
+                other = self.element()
+            return ("lc_if", cond, then, other)
+        self.take("(")  # for
+        first = self.bindings((")", ";"))
+        if self.at(";"):  # for (i = 0; i < n; i = i + 1)
+            self.i += 1
+            cond = self.expr()
+            self.take(";")
+            step = self.bindings((")",))
+            self.take(")")
+            if not first or not {n for n, _ in step} <= {n for n, _ in first}:
+                raise Declined(f"line {line}: a C-style for that sets a variable it does not start with")
+            return ("lc_forc", first, cond, step, self.element())
+        self.take(")")
+        if not first:
+            raise Declined(f"line {line}: for without a variable")
+        return ("lc_for", first, self.element())
 
 
 def parse_scad(text: str) -> list[Any]:

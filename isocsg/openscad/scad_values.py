@@ -393,9 +393,11 @@ def export_value(v: Any) -> Any:
 
 
 class Scope:
-    """A scope: its variables, modules and functions; ``lex`` for names, ``dyn`` for ``$`` names."""
+    """A scope: its variables, modules and functions; ``lex`` for names, ``dyn`` for ``$`` names
+    (``$children`` excepted: OpenSCAD finds it through the definitions, ``lex``); a user module's
+    scope keeps its ``call`` (what ``children()`` reads)."""
 
-    __slots__ = ("vars", "pending", "modules", "functions", "lex", "dyn")
+    __slots__ = ("vars", "pending", "modules", "functions", "lex", "dyn", "call")
 
     def __init__(self, lex: Scope | None, dyn: Scope | None, variables: dict[str, Any] | None = None) -> None:
         self.vars: dict[str, Any] = dict(variables or {})
@@ -403,6 +405,7 @@ class Scope:
         self.modules: dict[str, tuple[Any, Scope]] = {}
         self.functions: dict[str, tuple[Any, Scope]] = {}
         self.lex, self.dyn = lex, dyn
+        self.call: Any = None
 
     def lookup(self, name: str) -> Any:
         if name == "$preview":  # the program's -D $preview=false comes after the file's assignments
@@ -413,7 +416,7 @@ class Scope:
                 raise Declined(f"{name} used before its assignment")
             if name in frame.vars:
                 return frame.vars[name]
-            frame = frame.dyn if name.startswith("$") else frame.lex
+            frame = frame.dyn if name.startswith("$") and name != "$children" else frame.lex
         if name in _SPECIALS:
             return _SPECIALS[name]
         if name == "PI":

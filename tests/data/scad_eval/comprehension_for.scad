@@ -1,0 +1,12 @@
+v = [for (i = [0:3]) i * 2];
+cube([v[1], v[2], v[3]]);
+polygon([for (i = [0:2], j = [0:i]) [i, j + 0.5 * i]]);
+n = 5;
+translate([10, 0, 0]) polygon([for (k = [0:n - 1]) [cos(360 * k / n), sin(360 * k / n)]]);
+for (p = [for (q = [[1, 2, 3], [4, 5, 6]]) q / 2]) translate(p) cube(1);
+m = [for (i = [0:2]) [for (j = [0:3]) i == j ? 1 : j / 10]];
+multmatrix(m) cube(1);
+w = [for (i = [0:0.25:1]) i * i, for (x = []) x, for (i = [3:-1:1]) -i];
+translate([w[1], w[5], w[7]]) cube(len(w));
+pairs = [for (i = [0:1]) for (j = [0:1]) [i, j]];
+translate([len(pairs), pairs[3][0], pairs[2][1]]) sphere(1);

@@ -1,0 +1,12 @@
+v = [for (i = [0:5]) if (i % 2 == 0) i + 1];
+cube(v);
+polygon([for (i = [0:4]) if (i < 2) [i, i * i] else if (i < 4) [-i, 2] else [0, -3]]);
+d = [for (a = [0:1]) if (a == 0) if (false) 1 else 2];
+e = concat([if (true) 1], [if (false) 1], [if (false) 1 else each [2, 3]]);
+translate([d[0], len(d), 0]) cube(e);
+f = [each [1, 2], each [0:2], 5, each 5, each true ? 1 : 0, each [[7, 8]]];
+cube([len(f), f[6], f[8][1]]);
+g = [each for (i = [0:1]) [i + 1, i + 2]];
+h = [for (i = [0:2]) each [i, -i]];
+k = [each each [[1, 2], [3]]];
+translate([g[3], h[5], len(k)]) cube([len(g), len(h), k[2]]);

@@ -1,0 +1,11 @@
+v = [let (a = 1) for (i = [0:a]) i + 1, for (i = [0:3]) let (a = i * 2) if (a > 2) a, 1, for (i = [0:1]) i + 3];
+cube([len(v), v[2], v[5]]);
+polygon([for (i = 0, j = 0; i < 3; i = i + 1, j = i) [i, j * j + 1]]);
+w = [for (x = 1; x < 100; x = x * 3) x];
+translate([len(w), w[3], 0]) cube(1);
+z = [for (i = 10; i < 3; i = i + 1) i];
+cube(len(z) + 1);
+function pts(n, r) = [for (i = [0:n - 1]) let (a = 360 * i / n) [r * cos(a), r * sin(a)]];
+linear_extrude(2) polygon(pts(6, 3));
+u = [for (i = [0:2]) let (b = i, c = b * b) [b, c, let (e = c + 1) e]];
+translate(u[2]) cube(u[1] + [1, 1, 1]);
