@@ -5,7 +5,9 @@ in the background and then waited at exit for that build, which it never used
 (OpenSCAD's example017: views done in 0.8 s, process ended after 29 s); a
 thread still inside manifold3d at finalisation could abort the process.
 Background builds now run on daemon threads, are asked to stop at exit and
-stop at their next check.
+stop at their next check; their Booleans run in a helper process that exit
+kills (tests/test_helper_process.py). The build here is a Python function
+defined in the script, which the helper cannot import: it runs in the thread.
 """
 
 from __future__ import annotations
