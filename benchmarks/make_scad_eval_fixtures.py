@@ -8,6 +8,7 @@ tests/test_openscad_evaluate.py compares with the evaluator's tree.
 
 from __future__ import annotations
 
+import os
 import random
 from pathlib import Path
 
@@ -83,6 +84,49 @@ HAND = {
 }
 
 OPS = ["+", "-", "*"]
+
+#: Programs with library files: NAME.scad names NAME.lib/<path>; NAME.lib/openscadpath/ and
+#: NAME.lib/home/ (when given) are OPENSCADPATH and HOME for the export (see :func:`fixture_env`).
+FILES: dict[str, tuple[str, dict[str, str]]] = {
+    "include_basic": ("include <include_basic.lib/parts.scad>\nw = 2 * size;\npeg(w);\ntranslate([f(3), 0, 0]) cube(size);\n",
+                      {"parts.scad": "// parts\nsize = 1.5;\nfunction f(x) = x * size;\nmodule peg(h) cylinder(h = h, r = size / 3);\nsphere(size);"}),
+    "include_nested_relative": ("include <include_nested_relative.lib/sub/a.scad>\ncube(b);\ninclude <include_nested_relative.lib/b.scad>\nsphere(c);\n",
+                                {"sub/a.scad": "include <b.scad>\na = 1;\n", "sub/b.scad": "b = 2; translate([b, 0, 0]) cube(1);\n",
+                                 "b.scad": "c = 3;\n"}),
+    "include_in_module": ("module m(s) {\n  include <include_in_module.lib/body.scad>\n}\nm(2);\nm(s = 3);\n",
+                          {"body.scad": "k = s * 2;\ntranslate([k, 0, 0]) cube(s);\n"}),
+    "use_basic": ("use <use_basic.lib/lib.scad>\nk = 100;\npart(f(1)) sphere(1);\ntranslate([f(2), 0, 0]) part(k / 50);\n",
+                  {"lib.scad": "k = 3;\nfunction f(x, y = k) = x * y;\nmodule part(s) { cube(s + k); children(); }\nsphere(9);\ncube(9);\n"}),
+    "use_transitive": ("use <use_transitive.lib/lib.scad>\nwrapped(2);\n",
+                       {"lib.scad": "use <sub/other.scad>\nmodule wrapped(h) translate([1, 0, 0]) other(h);\n",
+                        "sub/other.scad": "r = 0.5;\nmodule other(h) cylinder(h = h, r = r);\nfunction g() = 1;\n"}),
+    "use_position_and_included": ("$fn = 7;\nbolt(3);\ninclude <use_position_and_included.lib/inc.scad>\nnut();\nuse <use_position_and_included.lib/bolt.scad>\n",
+                                  {"inc.scad": "use <nut.scad>\nnut_size = 4;\n",
+                                   "nut.scad": "module nut() cylinder(h = 2, r = 2, $fn = 6);\n",
+                                   "bolt.scad": "module bolt(l) { sphere(1); cylinder(h = l, r = 0.5); }\n"}),
+    "use_children_and_dollar": ("use <use_children_and_dollar.lib/ops.scad>\nspread(3) { sphere(1, $fn = 8); cube(1); }\nround_thing($fn = 5);\nspread(1) round_thing();\n",
+                                {"ops.scad": "module spread(d) for (i = [0:$children - 1]) translate([i * d, 0, 0]) children(i);\n"
+                                             "module round_thing() sphere(2);\n"}),
+    "use_local_wins": ("use <use_local_wins.lib/lib.scad>\nmodule thing() cube(1);\nfunction v() = 1;\nthing();\nother();\nsphere(v());\n",
+                       {"lib.scad": "module thing() sphere(5);\nmodule other() thing();\nfunction v() = 5;\n"}),
+    "use_twice": ("use <use_twice.lib/lib.scad>\nuse <use_twice.lib/lib.scad>\npart();\n",
+                  {"lib.scad": "module part() cube(2);\n"}),
+    "library_path_order": ("use <onpath.scad>\ninclude <both.scad>\nonpath();\ncube(which);\nuse <inhome.scad>\ninhome();\n",
+                           {"openscadpath/onpath.scad": "module onpath() cube(11);\n", "openscadpath/both.scad": "which = 2;\n",
+                            "home/.local/share/OpenSCAD/libraries/both.scad": "which = 3;\n",
+                            "home/.local/share/OpenSCAD/libraries/inhome.scad": "module inhome() cube(13);\n",
+                            "home/.local/share/OpenSCAD/libraries/onpath.scad": "module onpath() cube(12);\n"}),
+    "library_home": ("use <inhome.scad>\ninhome();\n",
+                     {"home/.local/share/OpenSCAD/libraries/inhome.scad": "module inhome() cube(13);\n"}),
+}
+
+
+def fixture_env(lib: Path) -> dict[str, str]:
+    """OPENSCADPATH and HOME for a fixture's export and evaluation: its folders when it has them."""
+    env = {"OPENSCADPATH": str(lib / "openscadpath") if (lib / "openscadpath").is_dir() else ""}
+    if (lib / "home").is_dir():
+        env["HOME"] = str(lib / "home")
+    return env
 
 
 def _num(rng: random.Random) -> str:
@@ -161,7 +205,21 @@ def main() -> None:
         scad = OUT / f"{name}.scad"
         scad.write_text(text)
         (OUT / f"{name}.csg").write_text(scad_to_csg(scad))
-    print(f"wrote {len(cases)} programs and their exports to {OUT}")
+    for name, (text, files) in FILES.items():
+        lib = OUT / f"{name}.lib"
+        for rel, body in files.items():
+            (lib / rel).parent.mkdir(parents=True, exist_ok=True)
+            (lib / rel).write_text(body)
+        scad = OUT / f"{name}.scad"
+        scad.write_text(text)
+        saved = dict(os.environ)
+        os.environ.update(fixture_env(lib))
+        try:
+            (OUT / f"{name}.csg").write_text(scad_to_csg(scad))
+        finally:
+            os.environ.clear()
+            os.environ.update(saved)
+    print(f"wrote {len(cases) + len(FILES)} programs and their exports to {OUT}")
 
 
 if __name__ == "__main__":

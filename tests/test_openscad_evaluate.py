@@ -59,14 +59,19 @@ def test_fixtures_are_there() -> None:
 
 
 @pytest.mark.parametrize("name", FIXTURES)
-def test_evaluator_gives_the_programs_export(name: str) -> None:
+def test_evaluator_gives_the_programs_export(name: str, monkeypatch: pytest.MonkeyPatch) -> None:
+    # a program with library files NAME.lib/: OPENSCADPATH and HOME as make_scad_eval_fixtures.py set them
+    lib = DATA / f"{name}.lib"
+    monkeypatch.setenv("OPENSCADPATH", str(lib / "openscadpath") if (lib / "openscadpath").is_dir() else "")
+    if (lib / "home").is_dir():
+        monkeypatch.setenv("HOME", str(lib / "home"))
     text = (DATA / f"{name}.scad").read_text()
     theirs = parse_csg((DATA / f"{name}.csg").read_text())
-    mine = evaluate_scad(text)
+    mine = evaluate_scad(text, path=DATA / f"{name}.scad")
     if name == "vector_ops":  # a negative cube size: OpenSCAD draws nothing without a warning; declined
         assert mine is None and declined_because(text) == "cube size"
         return
-    assert mine is not None, declined_because(text)
+    assert mine is not None, declined_because(text, path=DATA / f"{name}.scad")
     assert _difference(mine, theirs) is None, _difference(mine, theirs)
     _same_solid(mine, theirs)
 
@@ -128,9 +133,48 @@ def test_constructs_outside_the_subset_are_declined(text: str) -> None:
     assert evaluate_scad(text) is None
 
 
+@pytest.mark.parametrize(("text", "files"), [
+    ("include <nothere.scad>\ncube(1);", {}), ("use <nothere.scad>\ncube(1);", {}),
+    ("include <a.scad>\ncube(1);", {"a.scad": "include <b.scad>\n", "b.scad": "include <a.scad>\n"}),
+    ("include <model.scad>\ncube(1);", {}),
+    ("use <a.scad>\nm();", {"a.scad": "use <b.scad>\nmodule m() n();\n", "b.scad": "use <a.scad>\nmodule n() cube(1);\n"}),
+    ("module m() { use <a.scad> }\nm();", {"a.scad": "module n() cube(1);\n"}),
+    ("module m() { include <a.scad> }\nm();", {"a.scad": "use <b.scad>\n", "b.scad": "module n() cube(1);\n"}),
+    ("use <a.scad>\nuse <b.scad>\nn();", {"a.scad": "module n() cube(1);\n", "b.scad": "module n() cube(2);\n"}),
+    ("use <a.scad>\nn();", {"a.scad": "$fn = 5;\nmodule n() sphere(1);\n"}),
+    ("use <a.scad>\nn();", {"a.scad": "r = $fn + 1;\nmodule n() sphere(r);\n"}),
+    ("use <a.scad>\nn();", {"a.scad": "module n() cube(k);\n"}),  # the user's k is not the used file's
+    ("k = 1;\nuse <a.scad>\nn();", {"a.scad": "module n() cube(k);\n"}),
+    ("use <a.scad>\nm();", {"a.scad": "use <b.scad>\nmodule n() m();\n", "b.scad": "module m() cube(1);\n"}),
+    ("use <a.txt>\ncube(1);", {"a.txt": "module n() cube(1);\n"}), ("include <>\ncube(1);", {}),
+    ("use <a.scad>\nn();", {"a.scad": "module n() text(\"hi\");\n"}),
+    ("include <a.scad>\ncube(1);", {"a.scad": "x = [" + "1, " * 100000 + "1];\n"}),
+])
+def test_include_and_use_outside_the_subset_are_declined(tmp_path: Path, text: str, files: dict[str, str]) -> None:
+    # a file found nowhere, cycles, use below the top level, a name two used files define, a
+    # used file's $ variables at its top level, names a used file does not see, too large a file
+    for rel, body in files.items():
+        (tmp_path / rel).write_text(body)
+    (tmp_path / "model.scad").write_text(text)
+    assert evaluate_scad(text, path=tmp_path / "model.scad") is None
+
+
 def test_in_process_read_uses_the_evaluator(tmp_path: Path) -> None:
     path = tmp_path / "model.scad"
     path.write_text("n = 3;\nfor (i = [0:n - 1]) translate([2 * i, 0, 0]) cube(1);\n")
+    model = read_plain_scad(path)
+    assert model is not None
+    if HAS_OPENSCAD:
+        assert repr(model.solid) == repr(read_openscad(path).solid)
+
+
+def test_in_process_read_follows_include_and_use(tmp_path: Path) -> None:
+    (tmp_path / "lib").mkdir()
+    (tmp_path / "lib" / "parts.scad").write_text("include <sizes.scad>\nmodule peg() cylinder(h = h, r = 1);\n")
+    (tmp_path / "lib" / "sizes.scad").write_text("h = 4;\n")
+    path = tmp_path / "model.scad"
+    path.write_text("use <lib/parts.scad>\ninclude <lib/sizes.scad>\npeg();\ncube(h);\n")
+    assert evaluate_scad(path.read_text()) is None  # without its path: declined
     model = read_plain_scad(path)
     assert model is not None
     if HAS_OPENSCAD:

@@ -397,7 +397,7 @@ class Scope:
     (``$children`` excepted: OpenSCAD finds it through the definitions, ``lex``); a user module's
     scope keeps its ``call`` (what ``children()`` reads)."""
 
-    __slots__ = ("vars", "pending", "modules", "functions", "lex", "dyn", "call")
+    __slots__ = ("vars", "pending", "modules", "functions", "lex", "dyn", "call", "uses")
 
     def __init__(self, lex: Scope | None, dyn: Scope | None, variables: dict[str, Any] | None = None) -> None:
         self.vars: dict[str, Any] = dict(variables or {})
@@ -406,6 +406,7 @@ class Scope:
         self.functions: dict[str, tuple[Any, Scope]] = {}
         self.lex, self.dyn = lex, dyn
         self.call: Any = None
+        self.uses: list[Scope] = []  # a file's used files (their own modules and functions only)
 
     def lookup(self, name: str) -> Any:
         if name == "$preview":  # the program's -D $preview=false comes after the file's assignments
@@ -427,6 +428,11 @@ class Scope:
         frame: Scope | None = self
         while frame is not None:
             found = getattr(frame, table).get(name)
+            if found is None and frame.uses:  # after the file's own: the used files' definitions
+                hits = [h for lib in frame.uses if (h := getattr(lib, table).get(name)) is not None]
+                if len(hits) > 1:
+                    raise Declined(f"{name} defined in two used files (which one OpenSCAD takes is not defined)")
+                found = hits[0] if hits else None
             if found is not None:
                 return found  # type: ignore[no-any-return]
             frame = frame.lex
