@@ -81,6 +81,13 @@ HAND = {
     "children_skipped": "module m() { cube($children); children(0); children(1); children(3); children([1, 3]); children(2); }\nm() { echo(1); if (false) cube(2); cube(3); for (i = []) cube(4); }\nmodule n() { children(); }\nn() { if (true) cube(1); else sphere(1); let (a = 2) cube(a); for (i = [1:2]) cube(i); }\nn();\nn() n() n();\n",
     "for_scalars": "for (i = 5) cube(i);\nfor (i = true) sphere(1);\nfor (i = undef) cube(3);\nfor (i = [1:2], j = i * 2) translate([j, 0, 0]) cube(1);\nv = [for (i = undef) 1, for (i = 2, j = i + 1) [i, j], for (i = -0.5) i, for (b = false) b ? 1 : 2];\ntranslate([len(v), v[1], v[2]]) cube(v[0][1]);\nmodule ngon(num, r) polygon([for (i = [0:num - 1], a = i * 360 / num) [r * cos(a), r * sin(a)]]);\nngon(3, 10);\ntranslate([20, 0]) ngon(6, 8);\n",
     "range_variable": "r = [1:3];\nfor (i = r) translate([i, 0, 0]) cube(0.5);\nfor (i = [0:2:9]) translate([0, i, 0]) cube(0.5);\n",
+    "cross_products": "a = cross([1, 2, 3], [4, 5, 6]);\nb = cross([0.1, -2.5, 3e3], [7, 0.3, -1]);\nc = cross([1, 0, 0], [0, 1, 0]);\nd = cross([2, 3], [5, -7]);\ntranslate(a) cube(c + [1, 1, 0]);\ntranslate(b / 1000) sphere(abs(d) / 10);\n",
+    "minkowski_args": "minkowski() { cube(1); sphere(1); }\nminkowski(3) { cube([2, 1, 1]); cylinder(h = 1, r = 0.5); }\nminkowski(convexity = 2.7) cube(1);\nminkowski($fn = 5) { cube(1); sphere(1); }\nminkowski();\n",
+    "minkowski_nested": "module rounded(r) minkowski() { children(); sphere(r, $fn = 8); }\nrounded(0.5) cube([3, 2, 1]);\ntranslate([5, 0, 0]) minkowski() { minkowski() { cube(1); cube(2); } for (i = [0:1]) sphere(i + 1); }\n",
+    "intersection_for_basic": "intersection_for (i = [0:2]) rotate(i * 30) cube(5, center = true);\nintersection_for (a = [[1, 2, 3], [2, 1, 3]]) cube(a);\n",
+    "intersection_for_edges": "intersection_for (i = [0:1], j = [0:1]) translate([i, j, 0]) cube(3);\nintersection_for (i = []) cube(1);\nintersection_for (i = [1]) { cube(i); sphere(2); }\nintersection_for (i = [0:1]) echo(i);\nintersection_for (i = [0:1], $fn = 4) sphere(i + 1);\nmodule m(n) intersection_for (k = [1:n]) children(k - 1);\nm(2) { cube(2); sphere(1.5); }\n",
+    "builtins_shadowed": "module intersection_for() cube(1);\nintersection_for();\nmodule minkowski() sphere(1);\nminkowski() cube(1);\nfunction cross(a, b) = a + b;\ncube(cross([1, 2, 3], [1, 1, 1]));\n",
+    "bare_blocks": "{ cube(1); sphere(2); }\n{ a = 3; cube(a); }\n{ }\n{ { translate([a, 0, 0]) cube(1); } }\nmodule m() { { b = 2; cube(b); } { module inner() sphere(b); } inner(); }\nm();\ntranslate([1, 0, 0]) { { cylinder(h = 1, r = 1); } c = 4; { sphere(c); } }\n{ function f() = 5; }\ncube(f());\n",
 }
 
 OPS = ["+", "-", "*"]

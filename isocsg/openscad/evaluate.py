@@ -288,6 +288,12 @@ class _Evaluator:
             if children:
                 raise Declined("children() with children")
             return self.children(args, f, line)
+        if name == "intersection_for":  # the nodes of every iteration, flat, in an intersection()
+            if not args or any(n is None for n, _ in args):
+                raise Declined("intersection_for without a variable")
+            nodes: list[CSGCall] = []
+            self.loop(args, children, f, {}, nodes)
+            return [CSGCall("intersection", children=nodes, line=line)]
         return [builtin_module(self, name, args, children, f, line)]
 
     def user_module(self, found: tuple[Any, Scope], args: list[Any], children: list[Any], f: Scope,

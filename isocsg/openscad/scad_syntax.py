@@ -1,13 +1,14 @@
 """A parser of a conservative subset of the OpenSCAD language, for :mod:`isocsg.openscad.evaluate`.
 
 It reads statements (assignments, module instantiations with ``;``, one child or a ``{ }``
-block, ``for``, ``if``/``else``, ``module`` and ``function`` definitions) and expressions
+block, a bare ``{ }`` block (its statements are those of the scope around, as OpenSCAD's
+grammar has them), ``for``, ``if``/``else``, ``module`` and ``function`` definitions) and expressions
 (numbers, strings, ``true``/``false``/``undef``, vectors, ranges, the operators of OpenSCAD
 2021.01's grammar with its precedence, indexing, ``.x``/``.y``/``.z`` and calls of named
 functions, ``let``, list comprehensions with ``for``, C-style ``for``, ``each``, ``if``/``else``
 and ``let``) into tuples, the ``let`` statement, and ``include``/``use`` of a file found
 (:mod:`~isocsg.openscad.scad_files`). Anything else (function
-literals, ``assert``, modifiers ``* ! # %``, bare blocks, ``intersection_for``) raises
+literals, ``assert``, modifiers ``* ! # %``, ...) raises
 :class:`Declined`: the file is left to the ``openscad`` program.
 
 The parser is recursive descent with a depth limit (:data:`MAX_DEPTH`): a deeper file raises
@@ -54,10 +55,10 @@ _TOKEN = re.compile(
 _FILE_STATEMENT = re.compile(r"(include|use)[ \t\r\n>]*<([^\t\r\n>]*)>")
 _ESCAPES = {"n": "\n", "t": "\t", "r": "\r", '"': '"', "\\": "\\"}
 # names the subset does not read; each one declines the file wherever it appears
-_REFUSED = {"assert", "function_literal", "intersection_for",
-            "import", "surface", "text", "minkowski", "projection", "resize", "render", "parent_module",
+_REFUSED = {"assert", "function_literal",
+            "import", "surface", "text", "projection", "resize", "render", "parent_module",
             "search", "str", "chr", "ord", "is_undef",
-            "is_num", "is_string", "is_list", "is_bool", "is_function", "rands", "cross", "dxf_dim",
+            "is_num", "is_string", "is_list", "is_bool", "is_function", "rands", "dxf_dim",
             "dxf_cross", "roof", "fill", "object", "import_dxf", "import_stl"}
 _KEYWORDS = {"true": ("bool", True), "false": ("bool", False), "undef": ("undef",)}
 #: Words of OpenSCAD's grammar that name nothing (no variable, parameter or module).
@@ -156,7 +157,9 @@ class _Parser:
             if self.peek()[0] == "eof":
                 raise Declined("unclosed block")
             st = self.statement(defs)
-            if st is not None:
+            if st is not None and st[0] == "block":  # a bare { } block: its statements are the scope's
+                out.extend(st[1])
+            elif st is not None:
                 out.append(st)
         return out
 
@@ -186,6 +189,11 @@ class _Parser:
         if kind == "op" and tok == ";":
             self.i += 1
             return None
+        if kind == "op" and tok == "{":
+            self.i += 1
+            block = self.statements("}", defs)
+            self.i += 1
+            return ("block", block, line)
         if kind == "use":
             if self.depth != 1:
                 raise Declined(f"line {line}: use below the top level (a syntax error)")

@@ -272,6 +272,17 @@ def _lookup(args: list[Any]) -> float:
     return float(high_v * f + low_v * (1 - f))
 
 
+def _cross(args: list[Any]) -> Any:
+    """``cross(a, b)`` of two vectors of 3 (or 2) finite numbers, as ``func.cc`` computes it."""
+    if (len(args) != 2 or not all(isinstance(v, list) and len(v) == len(args[0]) in (2, 3) for v in args)
+            or not all(_is_num(x) and math.isfinite(x) for v in args for x in v)):
+        raise Declined("cross: bad arguments (a warning)")
+    a, b = args
+    if len(a) == 2:
+        return a[0] * b[1] - a[1] * b[0]
+    return [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
+
+
 def builtin_function(name: str, args: list[Any]) -> Any:
     """The value of a built-in function call (positional arguments), or :class:`Declined`."""
     if name in _NUMERIC:
@@ -290,6 +301,8 @@ def builtin_function(name: str, args: list[Any]) -> Any:
         for x in args[0]:
             total += x * x
         return math.sqrt(total)
+    if name == "cross":
+        return _cross(args)
     if name == "len":
         if len(args) != 1 or not isinstance(args[0], (list, str)):
             raise Declined("len: bad arguments")
