@@ -156,6 +156,9 @@ def test_constructs_outside_the_subset_are_declined(text: str) -> None:
     ("use <a.txt>\ncube(1);", {"a.txt": "module n() cube(1);\n"}), ("include <>\ncube(1);", {}),
     ("use <a.scad>\nn();", {"a.scad": "module n() text(\"hi\");\n"}),
     ("include <a.scad>\ncube(1);", {"a.scad": "x = [" + "1, " * 100000 + "1];\n"}),
+    ("include <f0.scad>\ncube(1);", {f"f{i}.scad": f"include <f{i + 1}.scad>\n" for i in range(10)} | {"f10.scad": ""}),
+    ("use <f0.scad>\nm0();", {f"f{i}.scad": f"use <f{i + 1}.scad>\nmodule m{i}() m{i + 1}();\n" for i in range(10)}
+     | {"f10.scad": "module m10() cube(1);\n"}),
 ])
 def test_include_and_use_outside_the_subset_are_declined(tmp_path: Path, text: str, files: dict[str, str]) -> None:
     # a file found nowhere, cycles, use below the top level, a name two used files define, a
