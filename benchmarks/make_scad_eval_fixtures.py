@@ -8,6 +8,7 @@ tests/test_openscad_evaluate.py compares with the evaluator's tree.
 
 from __future__ import annotations
 
+import os
 import random
 from pathlib import Path
 
@@ -80,9 +81,62 @@ HAND = {
     "children_skipped": "module m() { cube($children); children(0); children(1); children(3); children([1, 3]); children(2); }\nm() { echo(1); if (false) cube(2); cube(3); for (i = []) cube(4); }\nmodule n() { children(); }\nn() { if (true) cube(1); else sphere(1); let (a = 2) cube(a); for (i = [1:2]) cube(i); }\nn();\nn() n() n();\n",
     "for_scalars": "for (i = 5) cube(i);\nfor (i = true) sphere(1);\nfor (i = undef) cube(3);\nfor (i = [1:2], j = i * 2) translate([j, 0, 0]) cube(1);\nv = [for (i = undef) 1, for (i = 2, j = i + 1) [i, j], for (i = -0.5) i, for (b = false) b ? 1 : 2];\ntranslate([len(v), v[1], v[2]]) cube(v[0][1]);\nmodule ngon(num, r) polygon([for (i = [0:num - 1], a = i * 360 / num) [r * cos(a), r * sin(a)]]);\nngon(3, 10);\ntranslate([20, 0]) ngon(6, 8);\n",
     "range_variable": "r = [1:3];\nfor (i = r) translate([i, 0, 0]) cube(0.5);\nfor (i = [0:2:9]) translate([0, i, 0]) cube(0.5);\n",
+    "cross_products": "a = cross([1, 2, 3], [4, 5, 6]);\nb = cross([0.1, -2.5, 3e3], [7, 0.3, -1]);\nc = cross([1, 0, 0], [0, 1, 0]);\nd = cross([2, 3], [5, -7]);\ntranslate(a) cube(c + [1, 1, 0]);\ntranslate(b / 1000) sphere(abs(d) / 10);\n",
+    "minkowski_args": "minkowski() { cube(1); sphere(1); }\nminkowski(3) { cube([2, 1, 1]); cylinder(h = 1, r = 0.5); }\nminkowski(convexity = 2.7) cube(1);\nminkowski($fn = 5) { cube(1); sphere(1); }\nminkowski();\n",
+    "minkowski_nested": "module rounded(r) minkowski() { children(); sphere(r, $fn = 8); }\nrounded(0.5) cube([3, 2, 1]);\ntranslate([5, 0, 0]) minkowski() { minkowski() { cube(1); cube(2); } for (i = [0:1]) sphere(i + 1); }\n",
+    "intersection_for_basic": "intersection_for (i = [0:2]) rotate(i * 30) cube(5, center = true);\nintersection_for (a = [[1, 2, 3], [2, 1, 3]]) cube(a);\n",
+    "intersection_for_edges": "intersection_for (i = [0:1], j = [0:1]) translate([i, j, 0]) cube(3);\nintersection_for (i = []) cube(1);\nintersection_for (i = [1]) { cube(i); sphere(2); }\nintersection_for (i = [0:1]) echo(i);\nintersection_for (i = [0:1], $fn = 4) sphere(i + 1);\nmodule m(n) intersection_for (k = [1:n]) children(k - 1);\nm(2) { cube(2); sphere(1.5); }\n",
+    "builtins_shadowed": "module intersection_for() cube(1);\nintersection_for();\nmodule minkowski() sphere(1);\nminkowski() cube(1);\nfunction cross(a, b) = a + b;\ncube(cross([1, 2, 3], [1, 1, 1]));\n",
+    "bare_blocks": "{ cube(1); sphere(2); }\n{ a = 3; cube(a); }\n{ }\n{ { translate([a, 0, 0]) cube(1); } }\nmodule m() { { b = 2; cube(b); } { module inner() sphere(b); } inner(); }\nm();\ntranslate([1, 0, 0]) { { cylinder(h = 1, r = 1); } c = 4; { sphere(c); } }\n{ function f() = 5; }\ncube(f());\n",
 }
 
 OPS = ["+", "-", "*"]
+
+#: Programs with library files: NAME.scad names NAME.lib/<path>; NAME.lib/openscadpath/ and
+#: NAME.lib/home/ (when given) are OPENSCADPATH and HOME for the export (see :func:`fixture_env`).
+FILES: dict[str, tuple[str, dict[str, str]]] = {
+    "include_basic": ("include <include_basic.lib/parts.scad>\nw = 2 * size;\npeg(w);\ntranslate([f(3), 0, 0]) cube(size);\n",
+                      {"parts.scad": "// parts\nsize = 1.5;\nfunction f(x) = x * size;\nmodule peg(h) cylinder(h = h, r = size / 3);\nsphere(size);"}),
+    "include_nested_relative": ("include <include_nested_relative.lib/sub/a.scad>\ncube(b);\ninclude <include_nested_relative.lib/b.scad>\nsphere(c);\n",
+                                {"sub/a.scad": "include <b.scad>\na = 1;\n", "sub/b.scad": "b = 2; translate([b, 0, 0]) cube(1);\n",
+                                 "b.scad": "c = 3;\n"}),
+    "include_in_module": ("module m(s) {\n  include <include_in_module.lib/body.scad>\n}\nm(2);\nm(s = 3);\n",
+                          {"body.scad": "k = s * 2;\ntranslate([k, 0, 0]) cube(s);\n"}),
+    "use_basic": ("use <use_basic.lib/lib.scad>\nk = 100;\npart(f(1)) sphere(1);\ntranslate([f(2), 0, 0]) part(k / 50);\n",
+                  {"lib.scad": "k = 3;\nfunction f(x, y = k) = x * y;\nmodule part(s) { cube(s + k); children(); }\nsphere(9);\ncube(9);\n"}),
+    "use_transitive": ("use <use_transitive.lib/lib.scad>\nwrapped(2);\n",
+                       {"lib.scad": "use <sub/other.scad>\nmodule wrapped(h) translate([1, 0, 0]) other(h);\n",
+                        "sub/other.scad": "r = 0.5;\nmodule other(h) cylinder(h = h, r = r);\nfunction g() = 1;\n"}),
+    "use_position_and_included": ("$fn = 7;\nbolt(3);\ninclude <use_position_and_included.lib/inc.scad>\nnut();\nuse <use_position_and_included.lib/bolt.scad>\n",
+                                  {"inc.scad": "use <nut.scad>\nnut_size = 4;\n",
+                                   "nut.scad": "module nut() cylinder(h = 2, r = 2, $fn = 6);\n",
+                                   "bolt.scad": "module bolt(l) { sphere(1); cylinder(h = l, r = 0.5); }\n"}),
+    "use_children_and_dollar": ("use <use_children_and_dollar.lib/ops.scad>\nspread(3) { sphere(1, $fn = 8); cube(1); }\nround_thing($fn = 5);\nspread(1) round_thing();\n",
+                                {"ops.scad": "module spread(d) for (i = [0:$children - 1]) translate([i * d, 0, 0]) children(i);\n"
+                                             "module round_thing() sphere(2);\n"}),
+    "use_local_wins": ("use <use_local_wins.lib/lib.scad>\nmodule thing() cube(1);\nfunction v() = 1;\nthing();\nother();\nsphere(v());\n",
+                       {"lib.scad": "module thing() sphere(5);\nmodule other() thing();\nfunction v() = 5;\n"}),
+    "use_includes": ("use <use_includes.lib/sub/parts.scad>\nh = 50;\npeg();\ntranslate([0, 0, 9]) peg(2);\n",
+                     {"sub/parts.scad": "include <sizes.scad>\nmodule peg(k = 1) cylinder(h = h * k, r = r);\ncube(100);\n",
+                      "sub/sizes.scad": "h = 4;\nr = h / 8;\n", "sizes.scad": "h = 1000;\nr = 1000;\n"}),
+    "use_twice": ("use <use_twice.lib/lib.scad>\nuse <use_twice.lib/lib.scad>\npart();\n",
+                  {"lib.scad": "module part() cube(2);\n"}),
+    "library_path_order": ("use <onpath.scad>\ninclude <both.scad>\nonpath();\ncube(which);\nuse <inhome.scad>\ninhome();\n",
+                           {"openscadpath/onpath.scad": "module onpath() cube(11);\n", "openscadpath/both.scad": "which = 2;\n",
+                            "home/.local/share/OpenSCAD/libraries/both.scad": "which = 3;\n",
+                            "home/.local/share/OpenSCAD/libraries/inhome.scad": "module inhome() cube(13);\n",
+                            "home/.local/share/OpenSCAD/libraries/onpath.scad": "module onpath() cube(12);\n"}),
+    "library_home": ("use <inhome.scad>\ninhome();\n",
+                     {"home/.local/share/OpenSCAD/libraries/inhome.scad": "module inhome() cube(13);\n"}),
+}
+
+
+def fixture_env(lib: Path) -> dict[str, str]:
+    """OPENSCADPATH and HOME for a fixture's export and evaluation: its folders when it has them."""
+    env = {"OPENSCADPATH": str(lib / "openscadpath") if (lib / "openscadpath").is_dir() else ""}
+    if (lib / "home").is_dir():
+        env["HOME"] = str(lib / "home")
+    return env
 
 
 def _num(rng: random.Random) -> str:
@@ -161,7 +215,21 @@ def main() -> None:
         scad = OUT / f"{name}.scad"
         scad.write_text(text)
         (OUT / f"{name}.csg").write_text(scad_to_csg(scad))
-    print(f"wrote {len(cases)} programs and their exports to {OUT}")
+    for name, (text, files) in FILES.items():
+        lib = OUT / f"{name}.lib"
+        for rel, body in files.items():
+            (lib / rel).parent.mkdir(parents=True, exist_ok=True)
+            (lib / rel).write_text(body)
+        scad = OUT / f"{name}.scad"
+        scad.write_text(text)
+        saved = dict(os.environ)
+        os.environ.update(fixture_env(lib))
+        try:
+            (OUT / f"{name}.csg").write_text(scad_to_csg(scad))
+        finally:
+            os.environ.clear()
+            os.environ.update(saved)
+    print(f"wrote {len(cases) + len(FILES)} programs and their exports to {OUT}")
 
 
 if __name__ == "__main__":

@@ -58,7 +58,7 @@ def main(argv: list[str]) -> int:
     for group, path in files:
         text = path.read_text(encoding="utf-8", errors="replace")
         t0 = time.perf_counter()
-        calls = evaluate_scad(text)
+        calls = evaluate_scad(text, path=path)
         t1 = time.perf_counter()
         seen = counts.setdefault(group, [0, 0])
         seen[1] += 1

@@ -59,14 +59,19 @@ def test_fixtures_are_there() -> None:
 
 
 @pytest.mark.parametrize("name", FIXTURES)
-def test_evaluator_gives_the_programs_export(name: str) -> None:
+def test_evaluator_gives_the_programs_export(name: str, monkeypatch: pytest.MonkeyPatch) -> None:
+    # a program with library files NAME.lib/: OPENSCADPATH and HOME as make_scad_eval_fixtures.py set them
+    lib = DATA / f"{name}.lib"
+    monkeypatch.setenv("OPENSCADPATH", str(lib / "openscadpath") if (lib / "openscadpath").is_dir() else "")
+    if (lib / "home").is_dir():
+        monkeypatch.setenv("HOME", str(lib / "home"))
     text = (DATA / f"{name}.scad").read_text()
     theirs = parse_csg((DATA / f"{name}.csg").read_text())
-    mine = evaluate_scad(text)
+    mine = evaluate_scad(text, path=DATA / f"{name}.scad")
     if name == "vector_ops":  # a negative cube size: OpenSCAD draws nothing without a warning; declined
         assert mine is None and declined_because(text) == "cube size"
         return
-    assert mine is not None, declined_because(text)
+    assert mine is not None, declined_because(text, path=DATA / f"{name}.scad")
     assert _difference(mine, theirs) is None, _difference(mine, theirs)
     _same_solid(mine, theirs)
 
@@ -91,7 +96,7 @@ def test_evaluator_gives_the_programs_export(name: str) -> None:
     "each = 1; cube(each);", "let = 1; cube(1);", "$children = 1; cube(1);",
     "module r(n) { if (n > 0) r(n - 1); cube(n + 1); } r(3);",
     "function f(n) = n <= 0 ? 1 : f(n - 1); cube(f(2));",
-    'text("hi");', 'import("a.stl");', 'surface("a.dat");', "minkowski() { cube(1); sphere(1); }",
+    'text("hi");', 'import("a.stl");', 'surface("a.dat");',
     "projection() cube(1);", "resize([2, 2, 2]) cube(1);", "assert(true); cube(1);",
     "*cube(1);", "!cube(1);", "#cube(1);", "%cube(1);",
     "cube(x);", "a = 1; a = 2; cube(a);", "a = b; b = 1; cube(a);",
@@ -104,11 +109,18 @@ def test_evaluator_gives_the_programs_export(name: str) -> None:
     "for (i = [0:0.0001:10]) cube(1);", "cube(1 / 0);", "cube([1, 2, 3] + 1);",
     "x = [1, 2][5]; cube(x);", "cube($preview ? 1 : 2);", "cube($vpd);",
     "linear_extrude(file = \"a.dxf\") square(1);", "rotate_extrude(360) circle(1);",
-    "offset(r = 1, delta = 2) square(1);", "x = 2d; cube(1);", "8mm();", "render() cube(1);", "intersection_for (i = [0:1]) cube(i + 1);",
+    "offset(r = 1, delta = 2) square(1);", "x = 2d; cube(1);", "8mm();", "render() cube(1);",
     "function f(x) = x; cube(f(1, 2));", "module m(a) cube(a); m(b = 2);",
     "sphere(1, $fs = 0.001);", "echo(undefined_variable); cube(1);",
-    "{ cube(1); }", "x = " + "(" * 200 + "1" + ")" * 200 + "; cube(x);",
+    "x = " + "(" * 200 + "1" + ")" * 200 + "; cube(x);",
     "", "// nothing", "echo(1);",
+    # cross, minkowski, intersection_for and bare blocks: what OpenSCAD warns about, and syntax errors
+    "cube(cross([1, 2], [1, 2, 3]));", 'cube(cross([1, 2, 3], [1, 2, "a"]));', "cube(cross([1, 2, 3, 4], [1, 2, 3, 4]));",
+    "cube(cross([1, 2, 3], [1, 2, 1 / 0]));", "cube(cross([1, 2, 3]));", "minkowski(convexity = -1) cube(1);",
+    "minkowski(convexity = true) cube(1);", "minkowski(1, 2) cube(1);", "minkowski(size = 1) cube(1);",
+    "intersection_for () cube(1);", "intersection_for (1) cube(1);", 'intersection_for (i = "ab") cube(1);',
+    "{ a = 1; } a = 2; cube(a);",
+    "module m() cube(1); { module m() sphere(1); } m();", "translate([1, 0, 0]) { { module m() cube(1); } m(); }", "{ cube(1);",
     # syntax errors of OpenSCAD's grammar: the program reports them
     "module t(n = $fn) cube(n + 1); t($fn = 8);", "cylinder(h = 2, 0.5, center = true);", "module m(a, b) cube(a + b); m(a = 1, 2);", "cube(1,);", "if (true) { module m() cube(1); m(); }", "translate([1, 0, 0]) { function f() = 1; cube(f()); }",
     "translate([1, 0, 0]) a = 1; cube(1);", "if (true) a = 2; cube(1);", "cube([,1]);", "cube(1,,center = true);",
@@ -128,9 +140,51 @@ def test_constructs_outside_the_subset_are_declined(text: str) -> None:
     assert evaluate_scad(text) is None
 
 
+@pytest.mark.parametrize(("text", "files"), [
+    ("include <nothere.scad>\ncube(1);", {}), ("use <nothere.scad>\ncube(1);", {}),
+    ("include <a.scad>\ncube(1);", {"a.scad": "include <b.scad>\n", "b.scad": "include <a.scad>\n"}),
+    ("include <model.scad>\ncube(1);", {}),
+    ("use <a.scad>\nm();", {"a.scad": "use <b.scad>\nmodule m() n();\n", "b.scad": "use <a.scad>\nmodule n() cube(1);\n"}),
+    ("module m() { use <a.scad> }\nm();", {"a.scad": "module n() cube(1);\n"}),
+    ("module m() { include <a.scad> }\nm();", {"a.scad": "use <b.scad>\n", "b.scad": "module n() cube(1);\n"}),
+    ("use <a.scad>\nuse <b.scad>\nn();", {"a.scad": "module n() cube(1);\n", "b.scad": "module n() cube(2);\n"}),
+    ("use <a.scad>\nn();", {"a.scad": "$fn = 5;\nmodule n() sphere(1);\n"}),
+    ("use <a.scad>\nn();", {"a.scad": "r = $fn + 1;\nmodule n() sphere(r);\n"}),
+    ("use <a.scad>\nn();", {"a.scad": "module n() cube(k);\n"}),  # the user's k is not the used file's
+    ("k = 1;\nuse <a.scad>\nn();", {"a.scad": "module n() cube(k);\n"}),
+    ("use <a.scad>\nm();", {"a.scad": "use <b.scad>\nmodule n() m();\n", "b.scad": "module m() cube(1);\n"}),
+    ("use <a.txt>\ncube(1);", {"a.txt": "module n() cube(1);\n"}), ("include <>\ncube(1);", {}),
+    ("use <a.scad>\nn();", {"a.scad": "module n() text(\"hi\");\n"}),
+    ("include <a.scad>\ncube(1);", {"a.scad": "x = [" + "1, " * 100000 + "1];\n"}),
+    ("include <f0.scad>\ncube(1);", {f"f{i}.scad": f"include <f{i + 1}.scad>\n" for i in range(10)} | {"f10.scad": ""}),
+    ("use <f0.scad>\nm0();", {f"f{i}.scad": f"use <f{i + 1}.scad>\nmodule m{i}() m{i + 1}();\n" for i in range(10)}
+     | {"f10.scad": "module m10() cube(1);\n"}),
+])
+def test_include_and_use_outside_the_subset_are_declined(tmp_path: Path, text: str, files: dict[str, str]) -> None:
+    # a file found nowhere, cycles, use below the top level, a name two used files define, a
+    # used file's $ variables at its top level, names a used file does not see, too large a file
+    for rel, body in files.items():
+        (tmp_path / rel).write_text(body)
+    (tmp_path / "model.scad").write_text(text)
+    assert evaluate_scad(text, path=tmp_path / "model.scad") is None
+
+
 def test_in_process_read_uses_the_evaluator(tmp_path: Path) -> None:
     path = tmp_path / "model.scad"
     path.write_text("n = 3;\nfor (i = [0:n - 1]) translate([2 * i, 0, 0]) cube(1);\n")
+    model = read_plain_scad(path)
+    assert model is not None
+    if HAS_OPENSCAD:
+        assert repr(model.solid) == repr(read_openscad(path).solid)
+
+
+def test_in_process_read_follows_include_and_use(tmp_path: Path) -> None:
+    (tmp_path / "lib").mkdir()
+    (tmp_path / "lib" / "parts.scad").write_text("include <sizes.scad>\nmodule peg() cylinder(h = h, r = 1);\n")
+    (tmp_path / "lib" / "sizes.scad").write_text("h = 4;\n")
+    path = tmp_path / "model.scad"
+    path.write_text("use <lib/parts.scad>\ninclude <lib/sizes.scad>\npeg();\ncube(h);\n")
+    assert evaluate_scad(path.read_text()) is None  # without its path: declined
     model = read_plain_scad(path)
     assert model is not None
     if HAS_OPENSCAD:

@@ -4,7 +4,8 @@
 comparisons, the trigonometric and other numeric built-in functions, ``let``, list
 comprehensions (:mod:`~isocsg.openscad.scad_comprehensions`), ``for`` loops, ``if``/``else``,
 the ``let`` statement, module and function definitions (not recursive), ``children()`` in
-modules, ``echo`` and ``$fn``/``$fa``/``$fs``, and builds the tree of
+modules, ``echo``, ``$fn``/``$fa``/``$fs`` and, for text read from a file, ``include`` and ``use``
+(:mod:`~isocsg.openscad.scad_files`), and builds the tree of
 :class:`~isocsg.openscad.parser.CSGCall` that :func:`~isocsg.openscad.parser.parse_csg` reads
 from OpenSCAD 2021.01's ``.csg`` export of the same file: the same nodes (a ``group()`` for each
 loop, ``if``, ``let``, module instance and ``children()`` but ``children(i)``, ``multmatrix`` for
@@ -21,10 +22,13 @@ limited to :data:`~isocsg.openscad.scad_syntax.MAX_DEPTH`; a deeper file is decl
 from __future__ import annotations
 
 import math
+import os
+from pathlib import Path
 from typing import Any
 
 from .parser import CSGCall
 from .scad_comprehensions import loop_values, vector
+from .scad_files import MAX_FILE_DEPTH, Files
 from .scad_modules import builtin_module
 from .scad_syntax import MAX_DEPTH, Declined, parse_scad
 from .scad_values import Range, Scope, binary, builtin_function, truthy, unary
@@ -42,7 +46,10 @@ INSTANTIATIONS = ("inst", "for", "if", "let")
 
 
 class _Evaluator:
-    def __init__(self) -> None:
+    def __init__(self, files: Files | None = None) -> None:
+        self.files = files
+        self.libraries: dict[str, Scope] = {}  # the used files read, by path
+        self.loading: list[str] = []  # the used files being read (a cycle is declined)
         self.depth = 0
         self.nodes = 0
         self.steps = 0
@@ -200,11 +207,35 @@ class _Evaluator:
                 if s[1] in table:
                     raise Declined(f"{s[0]} {s[1]} defined twice")
                 table[s[1]] = (s, f)
+        for path in dict.fromkeys(s[1] for s in statements if s[0] == "use"):
+            f.uses.append(self.library(path))
         f.pending = set(assigned)
         for s in statements:
             if s[0] == "assign":
                 f.vars[s[1]] = self.expr(s[2], f)
                 f.pending.discard(s[1])
+
+    def library(self, path: str) -> Scope:
+        """The scope of a used file: its modules, functions and uses, and its top-level variables,
+        which its definitions see (OpenSCAD 2021.01 evaluates them in the used file's scope, where
+        the user's variables are unknown); its geometry is not read. A used file's top-level
+        ``$`` variable (set or read) is declined: OpenSCAD evaluates those at each call."""
+        if path in self.libraries:
+            return self.libraries[path]
+        if path in self.loading or len(self.loading) >= MAX_FILE_DEPTH or self.files is None:
+            raise Declined(f"use <{path}>: a cycle or nested too deeply")
+        self.loading.append(path)
+        try:
+            found = Path(path)
+            statements = parse_scad(self.files.read(found, (found,)), self.files, found)
+            if any(s[0] == "assign" and s[1].startswith("$") for s in statements):
+                raise Declined(f"{path}: a $ variable set at its top level")
+            lib = Scope(None, _LIBRARY_TOP)
+            self.prepare(statements, lib)
+        finally:
+            self.loading.pop()
+        self.libraries[path] = lib
+        return lib
 
     def statement(self, s: Any, f: Scope) -> list[CSGCall]:
         self.nodes += 1
@@ -257,6 +288,12 @@ class _Evaluator:
             if children:
                 raise Declined("children() with children")
             return self.children(args, f, line)
+        if name == "intersection_for":  # the nodes of every iteration, flat, in an intersection()
+            if not args or any(n is None for n, _ in args):
+                raise Declined("intersection_for without a variable")
+            nodes: list[CSGCall] = []
+            self.loop(args, children, f, {}, nodes)
+            return [CSGCall("intersection", children=nodes, line=line)]
         return [builtin_module(self, name, args, children, f, line)]
 
     def user_module(self, found: tuple[Any, Scope], args: list[Any], children: list[Any], f: Scope,
@@ -312,6 +349,12 @@ class _Evaluator:
         return [CSGCall("group", children=nodes, line=line)] if group else nodes
 
 
+#: Below a used file's top-level scope for ``$`` names: OpenSCAD reads them from the stack of
+#: the call that evaluates the file's variables, which is not known here (declined).
+_LIBRARY_TOP = Scope(None, None)
+_LIBRARY_TOP.pending = {"$fn", "$fa", "$fs", "$t"}
+
+
 def _size(v: Any, limit: int) -> int:
     """The count of the values a vector holds, nested ones too (declined beyond ``limit``)."""
     count = 0
@@ -357,30 +400,34 @@ def _names(e: Any) -> set[str]:
     return out
 
 
-def _evaluate(text: str) -> list[CSGCall]:
+def _evaluate(text: str, path: str | os.PathLike[str] | None) -> list[CSGCall]:
     try:
-        return _Evaluator().scope(parse_scad(text), Scope(None, None))
+        root = None if path is None else Path(path).resolve()
+        files = None if root is None else Files(root)
+        return _Evaluator(files).scope(parse_scad(text, files, root), Scope(None, None))
     except (RecursionError, OverflowError, ValueError, ZeroDivisionError, TypeError, IndexError, KeyError) as exc:
         raise Declined(f"{type(exc).__name__}: {exc}") from None
 
 
-def declined_because(text: str) -> str | None:
+def declined_because(text: str, *, path: str | os.PathLike[str] | None = None) -> str | None:
     """Why :func:`evaluate_scad` leaves this text to the program, or None if it reads it.
 
     >>> declined_because("cube(size = x);")
     'unknown variable x'
     """
     try:
-        _evaluate(text)
+        _evaluate(text, path)
     except Declined as exc:
         return str(exc)
     return None
 
 
-def evaluate_scad(text: str) -> list[CSGCall] | None:
+def evaluate_scad(text: str, *, path: str | os.PathLike[str] | None = None) -> list[CSGCall] | None:
     """The top-level nodes OpenSCAD 2021.01's ``.csg`` export of this ``.scad`` text gives, as
     :func:`~isocsg.openscad.parser.parse_csg` reads them; None for text outside the subset
-    (:func:`declined_because` says why) and for text that makes no node.
+    (:func:`declined_because` says why) and for text that makes no node. ``path`` is the text's
+    file: its ``include <f>`` and ``use <f>`` are read (:mod:`~isocsg.openscad.scad_files`);
+    text without one declines them.
 
     Examples
     --------
@@ -391,7 +438,7 @@ def evaluate_scad(text: str) -> list[CSGCall] | None:
     True
     """
     try:
-        calls = _evaluate(text)
+        calls = _evaluate(text, path)
     except Declined:
         return None
     return calls or None

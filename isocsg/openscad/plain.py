@@ -170,7 +170,7 @@ def read_plain_scad(path: str | os.PathLike[str], *, skip_unsupported: bool = Fa
     if calls is None:
         from .evaluate import evaluate_scad
 
-        calls = evaluate_scad(text)  # variables, loops, modules, ...: OpenSCAD's export computed here
+        calls = evaluate_scad(text, path=p)  # variables, loops, modules, ...: OpenSCAD's export computed here
     if calls is None:
         return None
     try:

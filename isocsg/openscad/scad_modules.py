@@ -48,6 +48,7 @@ _SIGNATURES: dict[str, tuple[tuple[str, ...], tuple[str, ...]]] = {
     "rotate_extrude": ((), ("angle", "convexity")),
     "offset": (("r",), ("delta", "chamfer")),
     "union": ((), ()), "difference": ((), ()), "intersection": ((), ()), "hull": ((), ()),
+    "minkowski": (("convexity",), ()),
 }
 _LEAVES = ("cube", "sphere", "cylinder", "polyhedron", "square", "circle", "polygon")
 
@@ -363,6 +364,11 @@ def builtin_module(ev: _Evaluates, name: str, args: list[Any], children: list[An
         out.kwargs = _rotate_extrude(values, frame)
     elif name == "offset":
         out.kwargs = _offset(values, frame)
+    elif name == "minkowski":  # cgaladv.cc: an int, 0 unless a number is given (a negative one wraps)
+        convexity = _finite(values.get("convexity"), 0.0, "convexity")
+        if not 0 <= convexity < 2**31:
+            raise Declined("minkowski convexity")
+        out.kwargs = {"convexity": float(int(convexity))}
     elif values:
         raise Declined(f"arguments of {name}")
     # OpenSCAD's Boolean modules bind no arguments: their $ arguments do not reach their children

@@ -1,12 +1,14 @@
 """A parser of a conservative subset of the OpenSCAD language, for :mod:`isocsg.openscad.evaluate`.
 
 It reads statements (assignments, module instantiations with ``;``, one child or a ``{ }``
-block, ``for``, ``if``/``else``, ``module`` and ``function`` definitions) and expressions
+block, a bare ``{ }`` block (its statements are those of the scope around, as OpenSCAD's
+grammar has them), ``for``, ``if``/``else``, ``module`` and ``function`` definitions) and expressions
 (numbers, strings, ``true``/``false``/``undef``, vectors, ranges, the operators of OpenSCAD
 2021.01's grammar with its precedence, indexing, ``.x``/``.y``/``.z`` and calls of named
 functions, ``let``, list comprehensions with ``for``, C-style ``for``, ``each``, ``if``/``else``
-and ``let``) into tuples, and the ``let`` statement. Anything else (``include``/``use``, function
-literals, ``assert``, modifiers ``* ! # %``, bare blocks, ``intersection_for``) raises
+and ``let``) into tuples, the ``let`` statement, and ``include``/``use`` of a file found
+(:mod:`~isocsg.openscad.scad_files`). Anything else (function
+literals, ``assert``, modifiers ``* ! # %``, ...) raises
 :class:`Declined`: the file is left to the ``openscad`` program.
 
 The parser is recursive descent with a depth limit (:data:`MAX_DEPTH`): a deeper file raises
@@ -16,12 +18,21 @@ The parser is recursive descent with a depth limit (:data:`MAX_DEPTH`): a deeper
 from __future__ import annotations
 
 import re
-from typing import Any
+from pathlib import Path
+from typing import Any, Protocol
 
 __all__ = ["Declined", "MAX_DEPTH", "parse_scad"]
 
 #: Deepest nesting of expressions and statements read (deeper files go to the program).
 MAX_DEPTH = 60
+
+
+class Files(Protocol):
+    """What finds and reads the files of ``include`` and ``use`` (:class:`isocsg.openscad.scad_files.Files`)."""
+
+    def find(self, name: str, source: Path | None, open_files: tuple[Path, ...]) -> Path: ...
+
+    def read(self, path: Path, open_files: tuple[Path, ...]) -> str: ...
 
 
 class Declined(Exception):  # noqa: N818 (a signal, not an error: the program reads the file)
@@ -40,12 +51,14 @@ _TOKEN = re.compile(
     """,
     re.VERBOSE | re.DOTALL,
 )
+#: What OpenSCAD's lexer reads as ``include <...>`` and ``use <...>``.
+_FILE_STATEMENT = re.compile(r"(include|use)[ \t\r\n>]*<([^\t\r\n>]*)>")
 _ESCAPES = {"n": "\n", "t": "\t", "r": "\r", '"': '"', "\\": "\\"}
 # names the subset does not read; each one declines the file wherever it appears
-_REFUSED = {"include", "use", "assert", "function_literal", "intersection_for",
-            "import", "surface", "text", "minkowski", "projection", "resize", "render", "parent_module",
+_REFUSED = {"assert", "function_literal",
+            "import", "surface", "text", "projection", "resize", "render", "parent_module",
             "search", "str", "chr", "ord", "is_undef",
-            "is_num", "is_string", "is_list", "is_bool", "is_function", "rands", "cross", "dxf_dim",
+            "is_num", "is_string", "is_list", "is_bool", "is_function", "rands", "dxf_dim",
             "dxf_cross", "roof", "fill", "object", "import_dxf", "import_stl"}
 _KEYWORDS = {"true": ("bool", True), "false": ("bool", False), "undef": ("undef",)}
 #: Words of OpenSCAD's grammar that name nothing (no variable, parameter or module).
@@ -59,7 +72,10 @@ _BINARY = [  # loosest first, as OpenSCAD 2021.01's parser.y
 ]
 
 
-def _tokens(text: str) -> list[tuple[str, str, int]]:
+def _tokens(text: str, files: Files | None = None, path: Path | None = None,
+            open_files: tuple[Path, ...] = ()) -> list[tuple[str, str, int]]:
+    """The tokens of ``text`` (of the file ``path``): an ``include``'s file's tokens in its place,
+    a ``use`` as one token of the path found (:mod:`~isocsg.openscad.scad_files`)."""
     out: list[tuple[str, str, int]] = []
     line, pos, n = 1, 0, len(text)
     while pos < n:
@@ -76,15 +92,34 @@ def _tokens(text: str) -> list[tuple[str, str, int]]:
         elif kind != "ws":
             if kind == "name" and tok in _REFUSED:
                 raise Declined(f"line {line}: {tok}")
+            if kind == "name" and tok in ("include", "use"):
+                pos = _file_statement(text, pos, line, files, path, open_files, out)
+                line += text.count("\n", m.start(), pos)
+                continue
             out.append((kind, tok, line))
         pos = m.end()
     out.append(("eof", "", line))
     return out
 
 
+def _file_statement(text: str, pos: int, line: int, files: Files | None, path: Path | None,
+                    open_files: tuple[Path, ...], out: list[tuple[str, str, int]]) -> int:
+    """``include <f>`` (``f``'s tokens appended) or ``use <f>`` (a ``use`` token) at ``pos``; where it ends."""
+    m = _FILE_STATEMENT.match(text, pos)
+    if m is None or files is None:
+        raise Declined(f"line {line}: include or use")
+    found = files.find(m.group(2), None if path is None else path.parent, open_files)
+    if m.group(1) == "use":
+        out.append(("use", str(found), line))
+    else:
+        inner = (*open_files, found)
+        out.extend(_tokens(files.read(found, inner), files, found, inner)[:-1])
+    return m.end()
+
+
 class _Parser:
-    def __init__(self, text: str) -> None:
-        self.toks = _tokens(text)
+    def __init__(self, text: str, files: Files | None = None, path: Path | None = None) -> None:
+        self.toks = _tokens(text, files, path, () if path is None else (path,))
         self.i = 0
         self.depth = 0
 
@@ -122,7 +157,9 @@ class _Parser:
             if self.peek()[0] == "eof":
                 raise Declined("unclosed block")
             st = self.statement(defs)
-            if st is not None:
+            if st is not None and st[0] == "block":  # a bare { } block: its statements are the scope's
+                out.extend(st[1])
+            elif st is not None:
                 out.append(st)
         return out
 
@@ -152,6 +189,16 @@ class _Parser:
         if kind == "op" and tok == ";":
             self.i += 1
             return None
+        if kind == "op" and tok == "{":
+            self.i += 1
+            block = self.statements("}", defs)
+            self.i += 1
+            return ("block", block, line)
+        if kind == "use":
+            if self.depth != 1:
+                raise Declined(f"line {line}: use below the top level (a syntax error)")
+            self.i += 1
+            return ("use", tok, line)
         if kind != "name":
             raise Declined(f"line {line}: {tok!r} starts no statement read here")
         if tok in ("module", "function") and not defs:
@@ -423,13 +470,15 @@ class _Parser:
         return ("lc_for", first, self.element())
 
 
-def parse_scad(text: str) -> list[Any]:
-    """The statements of ``.scad`` text as tuples (module docstring).
+def parse_scad(text: str, files: Files | None = None, path: Path | None = None) -> list[Any]:
+    """The statements of ``.scad`` text as tuples (module docstring); with ``files`` and the
+    text's ``path`` (resolved), its ``include``s are read in place and its ``use``s are
+    ``("use", path found, line)`` statements.
 
     Raises
     ------
     Declined
         For text outside the subset (the ``openscad`` program reads it).
     """
-    p = _Parser(text)
+    p = _Parser(text, files, path)
     return p.statements("")

@@ -272,6 +272,17 @@ def _lookup(args: list[Any]) -> float:
     return float(high_v * f + low_v * (1 - f))
 
 
+def _cross(args: list[Any]) -> Any:
+    """``cross(a, b)`` of two vectors of 3 (or 2) finite numbers, as ``func.cc`` computes it."""
+    if (len(args) != 2 or not all(isinstance(v, list) and len(v) == len(args[0]) in (2, 3) for v in args)
+            or not all(_is_num(x) and math.isfinite(x) for v in args for x in v)):
+        raise Declined("cross: bad arguments (a warning)")
+    a, b = args
+    if len(a) == 2:
+        return a[0] * b[1] - a[1] * b[0]
+    return [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
+
+
 def builtin_function(name: str, args: list[Any]) -> Any:
     """The value of a built-in function call (positional arguments), or :class:`Declined`."""
     if name in _NUMERIC:
@@ -290,6 +301,8 @@ def builtin_function(name: str, args: list[Any]) -> Any:
         for x in args[0]:
             total += x * x
         return math.sqrt(total)
+    if name == "cross":
+        return _cross(args)
     if name == "len":
         if len(args) != 1 or not isinstance(args[0], (list, str)):
             raise Declined("len: bad arguments")
@@ -397,7 +410,7 @@ class Scope:
     (``$children`` excepted: OpenSCAD finds it through the definitions, ``lex``); a user module's
     scope keeps its ``call`` (what ``children()`` reads)."""
 
-    __slots__ = ("vars", "pending", "modules", "functions", "lex", "dyn", "call")
+    __slots__ = ("vars", "pending", "modules", "functions", "lex", "dyn", "call", "uses")
 
     def __init__(self, lex: Scope | None, dyn: Scope | None, variables: dict[str, Any] | None = None) -> None:
         self.vars: dict[str, Any] = dict(variables or {})
@@ -406,6 +419,7 @@ class Scope:
         self.functions: dict[str, tuple[Any, Scope]] = {}
         self.lex, self.dyn = lex, dyn
         self.call: Any = None
+        self.uses: list[Scope] = []  # a file's used files (their own modules and functions only)
 
     def lookup(self, name: str) -> Any:
         if name == "$preview":  # the program's -D $preview=false comes after the file's assignments
@@ -427,6 +441,11 @@ class Scope:
         frame: Scope | None = self
         while frame is not None:
             found = getattr(frame, table).get(name)
+            if found is None and frame.uses:  # after the file's own: the used files' definitions
+                hits = [h for lib in frame.uses if (h := getattr(lib, table).get(name)) is not None]
+                if len(hits) > 1:
+                    raise Declined(f"{name} defined in two used files (which one OpenSCAD takes is not defined)")
+                found = hits[0] if hits else None
             if found is not None:
                 return found  # type: ignore[no-any-return]
             frame = frame.lex

@@ -1,0 +1,2 @@
+include <b.scad>
+a = 1;

@@ -1,0 +1,1 @@
+b = 2; translate([b, 0, 0]) cube(1);

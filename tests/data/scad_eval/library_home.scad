@@ -1,0 +1,2 @@
+use <inhome.scad>
+inhome();

@@ -1,0 +1,1 @@
+module inhome() cube(13);

@@ -1,0 +1,1 @@
+module onpath() cube(12);

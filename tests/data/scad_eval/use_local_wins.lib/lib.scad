@@ -1,0 +1,3 @@
+module thing() sphere(5);
+module other() thing();
+function v() = 5;

@@ -1,0 +1,2 @@
+use <nut.scad>
+nut_size = 4;

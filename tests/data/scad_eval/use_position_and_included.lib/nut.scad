@@ -1,0 +1,1 @@
+module nut() cylinder(h = 2, r = 2, $fn = 6);

@@ -1,0 +1,2 @@
+use <use_transitive.lib/lib.scad>
+wrapped(2);

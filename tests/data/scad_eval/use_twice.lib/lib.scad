@@ -1,0 +1,1 @@
+module part() cube(2);

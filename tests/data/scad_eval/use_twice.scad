@@ -1,0 +1,3 @@
+use <use_twice.lib/lib.scad>
+use <use_twice.lib/lib.scad>
+part();
