@@ -13,8 +13,9 @@ thread sends the call and waits for the answer, in Python, checking every
 When it is, the thread kills the helper and raises :class:`~isocsg._workers.Cancelled`.
 At exit, :func:`isocsg._workers.cancel_background` kills the helper too.
 
-- The helper runs the same isocsg (its package directory comes first on the helper's
-  ``PYTHONPATH``), with the parent's environment and memory budget.
+- The helper runs the same isocsg (the folder holding the package comes first on the
+  helper's ``PYTHONPATH`` unless it is a site directory), with the parent's environment and
+  memory budget.
 - It has no terminal: its standard error goes to ``/dev/null``, so a caller that captures
   the parent's output never waits for the helper. Warnings raised in the helper are raised
   again in the parent.
@@ -125,7 +126,12 @@ def run(
 
 
 def close() -> None:
-    """Kill the helper, if there is one (it is made again on next use)."""
+    """Kill the helper, if there is one (it is made again on next use). A call in progress is
+    not waited for: the helper is killed first, and the call ends at once with
+    :class:`HelperFailed` (or its caller's cancellation)."""
+    proc = _proc[0]
+    if proc is not None:
+        proc.kill()  # before the lock, which a waiting call holds until it sees the helper end
     with _lock:
         _kill_locked()
 
@@ -141,9 +147,14 @@ def _kill_locked() -> None:
 
 
 def _start() -> subprocess.Popen[bytes]:
+    import site
+
     root = str(Path(__file__).resolve().parent.parent)
     env = dict(os.environ)
-    env["PYTHONPATH"] = os.pathsep.join(p for p in (root, env.get("PYTHONPATH", "")) if p)
+    # This isocsg first, unless it is installed: a site directory on PYTHONPATH would come
+    # before the standard library (and an old backport there would shadow it).
+    if root not in {*site.getsitepackages(), site.getusersitepackages()}:
+        env["PYTHONPATH"] = os.pathsep.join(p for p in (root, env.get("PYTHONPATH", "")) if p)
     try:
         return subprocess.Popen(
             [sys.executable, "-c", "from isocsg._helper import serve; serve()"],

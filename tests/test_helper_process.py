@@ -154,6 +154,30 @@ def test_a_cancelled_call_kills_the_helper_at_once():
     assert _helper.helper_pid() is None
 
 
+def test_close_during_a_call_does_not_wait_for_it():
+    # What exit does (_workers.cancel_background): the helper is killed at once, the call ends.
+    outcome: list[BaseException] = []
+
+    def call() -> None:
+        try:
+            _helper.run(time.sleep, 60, cancelled=_never)
+        except BaseException as exc:  # noqa: BLE001
+            outcome.append(exc)
+
+    thread = threading.Thread(target=call)
+    thread.start()
+    deadline = time.monotonic() + 10
+    while _helper.helper_pid() is None and time.monotonic() < deadline:
+        time.sleep(0.01)
+    time.sleep(0.3)
+    t = time.perf_counter()
+    _helper.close()
+    assert time.perf_counter() - t < 2.0
+    thread.join(10)
+    assert len(outcome) == 1 and isinstance(outcome[0], _helper.HelperFailed)
+    assert _helper.helper_pid() is None
+
+
 def test_a_forked_child_makes_its_own_helper():
     _helper.run(abs, 1, cancelled=_never)
     parent_helper = _helper.helper_pid()

@@ -69,9 +69,12 @@ class Files:
         if len(open_files) > MAX_FILE_DEPTH:
             raise Declined("include or use nested too deeply")
         try:
+            # the size first: a huge file is declined without being read
+            if self.bytes + path.stat().st_size > MAX_LIBRARY_BYTES:
+                raise Declined("too much work (included or used files too large)")
             data = path.read_bytes()
             self.bytes += len(data)
-            if self.bytes > MAX_LIBRARY_BYTES:
+            if self.bytes > MAX_LIBRARY_BYTES:  # (grown since its size was read)
                 raise Declined("too much work (included or used files too large)")
             return data.decode("utf-8")
         except (OSError, UnicodeDecodeError) as exc:
