@@ -124,6 +124,24 @@ def test_a_helper_that_dies_gives_an_error_and_the_next_call_a_new_helper():
     assert _helper.run(abs, -2, cancelled=_never) == 2
 
 
+def _sleep_in_the_helper(cancelled: object) -> tuple[threading.Thread, list[BaseException]]:
+    """A thread whose call sleeps a minute in the helper (started once the helper runs it);
+    what the call raised is put in the list."""
+    _helper.run(abs, 1, cancelled=_never)  # a helper up
+    outcome: list[BaseException] = []
+
+    def call() -> None:
+        try:
+            _helper.run(time.sleep, 60, cancelled=cancelled)  # type: ignore[arg-type]
+        except BaseException as exc:  # noqa: BLE001
+            outcome.append(exc)
+
+    thread = threading.Thread(target=call)
+    thread.start()
+    time.sleep(0.3)
+    return thread, outcome
+
+
 def test_a_cancelled_call_kills_the_helper_at_once():
     stop = threading.Event()
 
@@ -131,20 +149,9 @@ def test_a_cancelled_call_kills_the_helper_at_once():
         if stop.is_set():
             raise Cancelled()
 
-    _helper.run(abs, 1, cancelled=_never)
+    thread, outcome = _sleep_in_the_helper(cancelled)
     pid = _helper.helper_pid()
     assert pid is not None
-    outcome: list[BaseException] = []
-
-    def call() -> None:
-        try:
-            _helper.run(time.sleep, 60, cancelled=cancelled)
-        except BaseException as exc:  # noqa: BLE001
-            outcome.append(exc)
-
-    thread = threading.Thread(target=call)
-    thread.start()
-    time.sleep(0.3)
     t = time.perf_counter()
     stop.set()
     thread.join(10)
@@ -156,20 +163,7 @@ def test_a_cancelled_call_kills_the_helper_at_once():
 
 def test_close_during_a_call_does_not_wait_for_it():
     # What exit does (_workers.cancel_background): the helper is killed at once, the call ends.
-    outcome: list[BaseException] = []
-
-    def call() -> None:
-        try:
-            _helper.run(time.sleep, 60, cancelled=_never)
-        except BaseException as exc:  # noqa: BLE001
-            outcome.append(exc)
-
-    thread = threading.Thread(target=call)
-    thread.start()
-    deadline = time.monotonic() + 10
-    while _helper.helper_pid() is None and time.monotonic() < deadline:
-        time.sleep(0.01)
-    time.sleep(0.3)
+    thread, outcome = _sleep_in_the_helper(_never)
     t = time.perf_counter()
     _helper.close()
     assert time.perf_counter() - t < 2.0
